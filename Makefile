@@ -1,0 +1,151 @@
+# shitsukan — plain Makefile (GNU make). See README.md.
+#
+#   make figures   install missing packages, build, render every paper figure
+#   make test      install missing packages, build and run the tests
+#   make all | test-sanitize | examples | bench | check-small | install PREFIX=... | deps | clean
+#
+# Sources are discovered: any lib/shitsukan/**/*.cpp is part of the library, any
+# paper_figures/**/*.cpp part of the figures driver, tests/*.cpp part of the test runner,
+# tests/bench/*.cpp part of the benchmark, examples/NN_name.cpp one example each.
+
+CXX      ?= g++
+AR       ?= ar
+PREFIX   ?= /usr/local
+BUILD    := build
+JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
+FIGURES_ARGS ?=
+
+# DESIGN.md: same inputs, same bits -> no FMA contraction, no fast-math.
+WARN     := -Wall -Wextra -Wpedantic
+ifdef CI
+WARN     += -Werror
+endif
+override CXXFLAGS := -std=c++17 -O2 $(WARN) -ffp-contract=off $(CXXFLAGS)
+override CPPFLAGS := -Ilib -Ipaper_figures $(CPPFLAGS)
+SAN_FLAGS := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
+SMALL_FLAGS := -fno-exceptions -fno-rtti -DSHITSUKAN_SMALL_DEVICE
+
+LIB_SRCS     := $(shell find lib -name '*.cpp' 2>/dev/null | LC_ALL=C sort)
+FIG_SRCS     := $(shell find paper_figures -name '*.cpp' -not -path 'paper_figures/out/*' 2>/dev/null | LC_ALL=C sort)
+TEST_SRCS    := $(sort $(wildcard tests/*.cpp))
+BENCH_SRCS   := $(sort $(wildcard tests/bench/*.cpp))
+EXAMPLE_SRCS := $(sort $(wildcard examples/*.cpp))
+# Files that promise the small-device rules (no allocation, no exceptions) carry the line
+# "// small-device: yes"; `make check-small` holds them to it.
+SMALL_SRCS   := $(shell grep -rl '^// small-device: yes' lib 2>/dev/null | LC_ALL=C sort)
+
+LIB_OBJS   := $(LIB_SRCS:%.cpp=$(BUILD)/obj/%.o)
+FIG_OBJS   := $(FIG_SRCS:%.cpp=$(BUILD)/obj/%.o)
+TEST_OBJS  := $(TEST_SRCS:%.cpp=$(BUILD)/obj/%.o)
+BENCH_OBJS := $(BENCH_SRCS:%.cpp=$(BUILD)/obj/%.o)
+SAN_OBJS   := $(LIB_SRCS:%.cpp=$(BUILD)/san/%.o) $(TEST_SRCS:%.cpp=$(BUILD)/san/%.o)
+SMALL_OBJS := $(SMALL_SRCS:%.cpp=$(BUILD)/small/%.o)
+EXAMPLES   := $(EXAMPLE_SRCS:examples/%.cpp=$(BUILD)/examples/%)
+LIBRARY    := $(BUILD)/libshitsukan.a
+
+.PHONY: all test test-sanitize figures examples bench check-small install deps bench-deps clean
+
+all: deps
+	@$(MAKE) --no-print-directory -j$(JOBS) $(LIBRARY) $(EXAMPLES) $(BUILD)/paper_figures
+
+# ---- packages: installed when missing (apt-get as root), otherwise named ----
+REQUIRED := /usr/include/doctest/doctest.h:doctest-dev /usr/include/stb/stb_image_write.h:libstb-dev
+BENCH_REQUIRED := /usr/include/libnoise/noise.h:libnoise-dev /usr/include/boost/polygon/voronoi.hpp:libboost-dev
+define ensure_packages
+	@missing=""; for pair in $(1); do f=$${pair%%:*}; p=$${pair##*:}; \
+	  [ -f "$$f" ] || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
+	    echo "shitsukan: installing$$missing (apt-get)"; \
+	    apt-get update -qq >/dev/null && \
+	    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing >/dev/null || \
+	    { echo "shitsukan: apt-get install$$missing failed"; exit 1; }; \
+	  else echo "shitsukan: missing packages:$$missing -- run: sudo apt-get install$$missing"; exit 1; fi; \
+	fi
+endef
+
+deps:
+	$(call ensure_packages,$(REQUIRED))
+
+bench-deps: deps
+	$(call ensure_packages,$(BENCH_REQUIRED))
+
+# ---- the two set-up commands ----
+test: deps
+	@$(MAKE) --no-print-directory -j$(JOBS) $(BUILD)/tests
+	$(BUILD)/tests
+
+figures: deps
+	@$(MAKE) --no-print-directory -j$(JOBS) $(BUILD)/paper_figures
+	$(BUILD)/paper_figures $(FIGURES_ARGS)
+
+test-sanitize: deps
+	@$(MAKE) --no-print-directory -j$(JOBS) $(BUILD)/tests-sanitize
+	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 $(BUILD)/tests-sanitize
+
+examples: deps
+	@$(MAKE) --no-print-directory -j$(JOBS) $(EXAMPLES)
+	@mkdir -p $(BUILD)/examples/out
+	@for e in $(EXAMPLES); do echo "== $$e"; (cd $(BUILD)/examples/out && ../$$(basename $$e)) || exit 1; done
+
+bench: bench-deps
+	@$(MAKE) --no-print-directory -j$(JOBS) $(BUILD)/bench
+	$(BUILD)/bench
+
+# Small-device core: compile with -fno-exceptions -fno-rtti and refuse any allocation.
+check-small: $(SMALL_OBJS)
+	@bad=$$(nm -C --undefined-only $(SMALL_OBJS) 2>/dev/null | \
+	  grep -E ' (operator new|operator delete|malloc|calloc|realloc|free|__cxa_throw|__cxa_allocate_exception)' | sort -u); \
+	if [ -n "$$bad" ]; then echo "check-small: allocation or exceptions in small-device files:"; echo "$$bad"; exit 1; fi; \
+	echo "check-small: $(words $(SMALL_OBJS)) files compile with -fno-exceptions -fno-rtti and allocate nothing"
+
+# ---- linking ----
+$(LIBRARY): $(LIB_OBJS)
+	@mkdir -p $(@D)
+	@rm -f $@
+	$(AR) rcs $@ $^
+
+$(BUILD)/tests: $(TEST_OBJS) $(LIBRARY)
+	$(CXX) $(CXXFLAGS) -o $@ $(TEST_OBJS) $(LIBRARY)
+
+$(BUILD)/tests-sanitize: $(SAN_OBJS)
+	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $(SAN_OBJS)
+
+# Figure objects are linked directly (not through an archive): they register themselves.
+$(BUILD)/paper_figures: $(FIG_OBJS) $(LIBRARY)
+	$(CXX) $(CXXFLAGS) -o $@ $(FIG_OBJS) $(LIBRARY)
+
+$(BUILD)/bench: $(BENCH_OBJS) $(LIBRARY)
+	$(CXX) $(CXXFLAGS) -o $@ $(BENCH_OBJS) $(LIBRARY) -lnoise
+
+$(BUILD)/examples/%: $(BUILD)/obj/examples/%.o $(LIBRARY)
+	@mkdir -p $(@D)
+	$(CXX) $(CXXFLAGS) -o $@ $< $(LIBRARY)
+
+# ---- compiling ----
+$(BUILD)/obj/%.o: %.cpp
+	@mkdir -p $(@D)
+	$(CXX) $(CPPFLAGS) $(CXXFLAGS) -MMD -MP -c $< -o $@
+
+$(BUILD)/san/%.o: %.cpp
+	@mkdir -p $(@D)
+	$(CXX) $(CPPFLAGS) $(CXXFLAGS) $(SAN_FLAGS) -MMD -MP -c $< -o $@
+
+$(BUILD)/small/%.o: %.cpp
+	@mkdir -p $(@D)
+	$(CXX) $(CPPFLAGS) $(CXXFLAGS) $(SMALL_FLAGS) -MMD -MP -c $< -o $@
+
+# ---- install: headers, static library, pkg-config file ----
+install: all
+	@mkdir -p $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	cd lib && find shitsukan -name '*.hpp' -exec install -D -m 644 {} $(DESTDIR)$(PREFIX)/include/{} \;
+	install -m 644 $(LIBRARY) $(DESTDIR)$(PREFIX)/lib/libshitsukan.a
+	@printf 'prefix=%s\nincludedir=$${prefix}/include\nlibdir=$${prefix}/lib\n\nName: shitsukan\nDescription: natural-material textures from five Japanese CG papers\nVersion: %s\nCflags: -I$${includedir} -std=c++17\nLibs: -L$${libdir} -lshitsukan\n' \
+	  '$(PREFIX)' "$$(sed -n 's/.*VERSION_STRING "\(.*\)"/\1/p' lib/shitsukan/core/config.hpp)" \
+	  > $(DESTDIR)$(PREFIX)/lib/pkgconfig/shitsukan.pc
+	@echo "installed into $(DESTDIR)$(PREFIX)"
+
+clean:
+	rm -rf $(BUILD) paper_figures/out
+
+-include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

@@ -1,0 +1,14 @@
+// small-device: yes (no allocation, no exceptions)
+#include "shitsukan/core/assert.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace shitsukan::detail {
+
+void assert_failed(const char* expr, const char* file, int line) {
+    std::fprintf(stderr, "shitsukan: internal check failed: %s (%s:%d)\n", expr, file, line);
+    std::abort();
+}
+
+}  // namespace shitsukan::detail

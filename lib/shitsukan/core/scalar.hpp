@@ -1,0 +1,36 @@
+// shitsukan/core/scalar.hpp — clamp, lerp, smoothstep, pi, finiteness checks.
+//
+// Manual
+//   clamp(x, lo, hi), lerp(a, b, t) = a + (b - a)·t, smoothstep(e0, e1, x) (cubic Hermite),
+//   is_finite(x) (false for NaN and ±inf; works under -ffast-math-free builds only, which is
+//   what the Makefile uses), kPi / kTwoPi as float, kPiD as double.
+#pragma once
+
+#include <cmath>
+
+namespace shitsukan {
+
+constexpr float kPi = 3.14159265358979323846f;
+constexpr float kTwoPi = 6.28318530717958647692f;
+constexpr double kPiD = 3.14159265358979323846;
+
+template <class T>
+constexpr T clamp(T x, T lo, T hi) {
+    return x < lo ? lo : (hi < x ? hi : x);
+}
+
+template <class T, class U>
+constexpr T lerp(T a, T b, U t) {
+    return a + (b - a) * t;
+}
+
+// 0 below e0, 1 above e1, 3t^2 - 2t^3 in between.
+inline float smoothstep(float e0, float e1, float x) {
+    float t = clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
+    return t * t * (3.0f - 2.0f * t);
+}
+
+inline bool is_finite(float x) { return std::isfinite(x); }
+inline bool is_finite(double x) { return std::isfinite(x); }
+
+}  // namespace shitsukan

@@ -1,0 +1,22 @@
+// shitsukan/image/image_io.hpp — write images as PNG (stb_image_write) or PPM/PGM.
+//
+// Manual
+//   Status s = write_png("out.png", img.view());   // RgbView or GrayView
+//   Status s = write_ppm("out.ppm", rgb_view);     // binary P6
+//   Status s = write_pgm("out.pgm", gray_view);    // binary P5
+// Failures (empty image, unwritable path) come back as a Status with the path in the
+// message; nothing is silent. Views with a stride are handled.
+// Host side: PNG encoding allocates inside stb_image_write.
+#pragma once
+
+#include "shitsukan/core/status.hpp"
+#include "shitsukan/image/image.hpp"
+
+namespace shitsukan {
+
+Status write_png(const char* path, const RgbView& image);
+Status write_png(const char* path, const GrayView& image);
+Status write_ppm(const char* path, const RgbView& image);
+Status write_pgm(const char* path, const GrayView& image);
+
+}  // namespace shitsukan
