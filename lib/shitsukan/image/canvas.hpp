@@ -1,0 +1,46 @@
+// shitsukan/image/canvas.hpp — 2D drawing for the papers' diagrams and plots (CONTRACT).
+//
+// Manual
+//   RgbImage img(640, 480, Rgb8{255, 255, 255});
+//   RasterCanvas canvas(img.view());            // draws into pixels (anti-aliased lines)
+//   SvgCanvas svg(640, 480);                      // records the same calls as SVG elements
+//   Canvas& c = canvas;                           // figure code draws through the interface
+//   c.line({10, 10}, {200, 50}, Rgb8{0, 0, 0}, 1.5f);
+//   c.polyline(points, n, color, width);   c.polygon_outline(points, n, color, width);
+//   c.fill_polygon(points, n, color);      // even-odd rule, any simple or complex polygon
+//   c.fill_rect({x, y}, {w, h}, color);    c.rect_outline(...);
+//   c.marker({x, y}, MarkerShape::dot, 4.0f, color);
+//   c.text({x, y}, "k = 16", color, 1);     // built-in bitmap font, top-left anchored,
+//                                            // scale = integer magnification
+//   svg.save("fig02.svg")                    // Status; svg.str() gives the text
+//   Axes: see image/plot.hpp (data -> pixel mapping, ticks, labels, drawn on any Canvas).
+// Coordinates are pixels, x right, y down, (0, 0) the top-left corner of the image.
+// Pixel (i, j) covers [i, i+1) x [j, j+1): the centre of pixel (i, j) is (i + 0.5, j + 0.5).
+#pragma once
+
+#include <string>
+
+#include "shitsukan/core/status.hpp"
+#include "shitsukan/core/vec.hpp"
+#include "shitsukan/image/image.hpp"
+
+namespace shitsukan {
+
+enum class MarkerShape { dot, circle, square, cross, plus, triangle };
+
+class Canvas {
+public:
+    virtual ~Canvas() = default;
+    virtual int width() const = 0;
+    virtual int height() const = 0;
+    virtual void line(Vec2 a, Vec2 b, Rgb8 color, float width = 1.0f) = 0;
+    virtual void polyline(const Vec2* points, int count, Rgb8 color, float width = 1.0f) = 0;
+    virtual void polygon_outline(const Vec2* points, int count, Rgb8 color, float width = 1.0f) = 0;
+    virtual void fill_polygon(const Vec2* points, int count, Rgb8 color) = 0;
+    virtual void fill_rect(Vec2 corner, Vec2 size, Rgb8 color) = 0;
+    virtual void rect_outline(Vec2 corner, Vec2 size, Rgb8 color, float width = 1.0f) = 0;
+    virtual void marker(Vec2 center, MarkerShape shape, float size, Rgb8 color) = 0;
+    virtual void text(Vec2 top_left, const std::string& text, Rgb8 color, int scale = 1) = 0;
+};
+
+}  // namespace shitsukan

@@ -1,0 +1,100 @@
+// shitsukan/raster/rasterizer.hpp — the tiny scanline rasterizer (CONTRACT; see below).
+//
+// Manual
+//   RgbImage color(512, 512); FloatImage depth(512, 512);
+//   FrameBand band = full_frame_band(color.view(), depth.view());   // or any band of rows
+//   clear_band(band, Rgb8{0, 0, 0});
+//   DrawOptions opt;  opt.model = Mat4::rotate_y(0.3f);  opt.cull = CullMode::back;
+//   auto shader = [&](const Fragment& f) { return shade_marble(f.object_position); };
+//   Status s = draw_mesh(camera, band, mesh.view(), opt, shader, &stats);
+//
+// CONVENTIONS (small3dlib-style)
+//   - Right-handed world; camera looks down -z of eye space; counter-clockwise = front face.
+//   - Screen: x right, y down, pixel (x, y) covers [x, x+1) x [y, y+1), sampled at its
+//     centre (x + 0.5, y + 0.5). Vertices keep sub-pixel positions.
+//   - Fill rule: top-left. A pixel centre exactly on a shared edge belongs to exactly one
+//     of the two triangles; a grid of triangles tiling the screen covers each pixel once.
+//   - Depth: z in [0, 1] (0 = near plane), float Z-buffer, a fragment is kept when its depth
+//     is strictly less than the stored one. clear_band sets depth to +inf.
+//   - Near-plane clipping in homogeneous clip space before the divide (a triangle with a
+//     vertex at w <= 0 is clipped, never dropped whole and never wrapped around).
+//   - Interpolation: object position, normal, uv and colour are perspective-correct
+//     (attributes / w interpolated linearly in screen space, then divided by 1/w).
+//   - Bands: a FrameBand is the rows [y0, y0 + color.height) of a frame of
+//     frame_width x frame_height pixels. Rendering all bands of a frame and stacking them
+//     gives the full frame bit for bit. The rasterizer allocates nothing.
+#pragma once
+
+#include <cstdint>
+
+#include "shitsukan/core/status.hpp"
+#include "shitsukan/core/vec.hpp"
+#include "shitsukan/geom/mesh_view.hpp"
+#include "shitsukan/image/image.hpp"
+#include "shitsukan/raster/camera.hpp"
+
+namespace shitsukan {
+
+// What the per-pixel shader receives: the interpolated surface point.
+struct Fragment {
+    Vec3 object_position;  // object space (before DrawOptions::model): solid textures use this
+    Vec3 world_position;   // after model
+    Vec3 normal;           // world space, interpolated and normalised (geometric if no normals)
+    Vec3 object_normal;    // object space, interpolated and normalised
+    Vec2 uv;               // (0, 0) when the mesh has none
+    Vec3 color;            // interpolated vertex colour, (1, 1, 1) when the mesh has none
+    int x = 0, y = 0;      // pixel in the full frame
+    float depth = 0;       // [0, 1]
+    int triangle = 0;      // index of the triangle in the mesh
+    bool front_facing = true;
+};
+
+// A per-pixel shader: plain function pointer + user pointer (no std::function, no heap).
+using FragmentShader = Rgb8 (*)(const Fragment& fragment, void* user);
+
+enum class CullMode : std::uint8_t { none, back, front };
+
+struct DrawOptions {
+    Mat4 model = Mat4::identity();  // object -> world
+    CullMode cull = CullMode::back;
+};
+
+struct FrameBand {
+    RgbView color;       // band-sized colour buffer (width = frame width)
+    FloatView depth;     // band-sized depth buffer, same size as color
+    int y0 = 0;          // first frame row held by this band
+    int frame_width = 0, frame_height = 0;
+};
+
+struct RasterStats {
+    long triangles_in = 0;       // triangles submitted
+    long triangles_drawn = 0;    // after culling and clipping, touching this band
+    long triangles_clipped = 0;  // that needed near-plane clipping
+    long triangles_rejected = 0; // degenerate (zero area, NaN/inf vertices)
+    long fragments_shaded = 0;   // shader calls that passed the depth test
+};
+
+FrameBand full_frame_band(const RgbView& color, const FloatView& depth);
+FrameBand make_band(const RgbView& color, const FloatView& depth, int y0, int frame_width, int frame_height);
+void clear_band(const FrameBand& band, Rgb8 background);
+
+// Draws the mesh into the band. Shades only fragments that pass the depth test
+// (early-z: each pixel's front layer is shaded exactly once for a closed mesh when drawn
+// front-to-back; later nearer fragments overwrite). Returns invalid_argument for a band whose
+// buffers disagree in size, a mesh with out-of-range indices, etc. Degenerate triangles
+// (zero area, NaN/inf) are skipped and counted, not an error.
+Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
+                 const DrawOptions& options, FragmentShader shader, void* user,
+                 RasterStats* stats = nullptr);
+
+// Convenience for lambdas and functors (no allocation: passes &f as the user pointer).
+template <class F>
+Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
+                 const DrawOptions& options, F& shader, RasterStats* stats = nullptr) {
+    return draw_mesh(
+        camera, band, mesh, options,
+        [](const Fragment& f, void* u) -> Rgb8 { return (*static_cast<F*>(u))(f); }, &shader,
+        stats);
+}
+
+}  // namespace shitsukan
