@@ -1,0 +1,47 @@
+// shitsukan/geom/mesh_builders.hpp — triangle meshes for the papers' objects.
+//
+// Manual (every builder appends nothing: it replaces *out; returns a Status on bad input)
+//   TriangleMesh m;
+//   make_box({-1,-1,-1}, {1,1,1}, &m);               // 6 faces, per-face normals, uv per face
+//   make_uv_sphere(1.0f, 64, 32, &m);                // poles on the y axis
+//   make_cylinder(0.5f, 0.0f, 2.0f, 48, true, &m);   // axis y from y0 to y1, optional caps
+//   make_torus(1.0f, 0.35f, 64, 32, &m);             // around the y axis, in the xz plane
+//   make_revolution(profile, n, 96, &m);             // profile (r, y) points, r >= 0,
+//                                                    // revolved about the y axis
+//   sample_spline(ctrl, n, 16, &points);             // Catmull-Rom through ctrl, in double
+//   make_extrusion(outline, -0.1f, 0.1f, &m);        // outline[0] outer (any orientation),
+//                                                    // outline[1..] holes; extruded along z
+//   make_block_text("NAGOYA", 1.0f, 0.3f, &m);       // block capitals A-Z, baseline y = 0,
+//                                                    // letter height 1, depth along z
+//   make_sphere_without_octant(1.0f, 24, &m);        // closed: the x,y,z > 0 octant removed,
+//                                                    // three quarter-disc cut faces
+//   append(&dst, src, transform);                    // merge, transforming points and normals
+//   compute_vertex_normals(&m);                      // area-weighted smooth normals
+// Sizes: segment counts 3..4096; radii > 0 and finite. Counter-clockwise front faces,
+// outward normals, closed solids are watertight (shared vertices along seams are duplicated
+// only where normals or uvs differ, never leaving a crack).
+#pragma once
+
+#include <vector>
+
+#include "shitsukan/core/status.hpp"
+#include "shitsukan/geom/mesh.hpp"
+
+namespace shitsukan {
+
+Status make_box(Vec3 min_corner, Vec3 max_corner, TriangleMesh* out);
+Status make_uv_sphere(float radius, int slices, int stacks, TriangleMesh* out);
+Status make_cylinder(float radius, float y0, float y1, int slices, bool caps, TriangleMesh* out);
+Status make_torus(float major_radius, float minor_radius, int major_segments, int minor_segments,
+                  TriangleMesh* out);
+Status make_revolution(const Vec2d* profile, int count, int segments, TriangleMesh* out);
+Status sample_spline(const Vec2d* control, int count, int samples_per_segment,
+                     std::vector<Vec2d>* out);
+Status make_extrusion(const std::vector<std::vector<Vec2>>& outline, float z0, float z1,
+                      TriangleMesh* out);
+Status make_block_text(const char* text, float letter_height, float depth, TriangleMesh* out);
+Status make_sphere_without_octant(float radius, int subdivisions, TriangleMesh* out);
+void append(TriangleMesh* dst, const TriangleMesh& src, const Mat4& transform);
+void compute_vertex_normals(TriangleMesh* mesh);
+
+}  // namespace shitsukan
