@@ -7,8 +7,8 @@
 //   cam.view (world -> eye, right-handed, looking down -z), cam.projection (eye -> clip,
 //   OpenGL convention: NDC z in [-1, 1]), cam.width / cam.height (the full frame in pixels).
 //   project(cam, p) -> screen (x right, y down, pixels; z = depth in [0, 1]).
-//   clip_to_screen(cam, clip) -> the same mapping from homogeneous clip coordinates (w > 0):
-//   the rasterizer uses exactly this function, so project() lands where pixels are drawn.
+//   clip_to_screen(cam, clip) -> the same mapping from homogeneous clip coordinates (w > 0);
+//   the rasterizer maps its vertices with the same operations.
 //   Ranges: fov_y_degrees in (0, 180), 0 < near_plane < far_plane, half_height > 0,
 //   width, height >= 1. These are not validated here; draw_mesh() checks the camera.
 #pragma once

@@ -45,21 +45,6 @@ void clip_against(int plane, const ClipPolygon& src, ClipPolygon* dst) {
     }
 }
 
-// Outside one side of the view volume entirely: nothing can be drawn.
-bool trivially_outside(const ClipVertex t[3]) {
-    int right = 0, left = 0, top = 0, bottom = 0, far_side = 0, behind = 0;
-    for (int i = 0; i < 3; ++i) {
-        Vec4 p = t[i].clip;
-        right += p.x > p.w;
-        left += p.x < -p.w;
-        top += p.y > p.w;
-        bottom += p.y < -p.w;
-        far_side += p.z > p.w;
-        behind += p.z + p.w < 0.0f;
-    }
-    return right == 3 || left == 3 || top == 3 || bottom == 3 || far_side == 3 || behind == 3;
-}
-
 }  // namespace
 }  // namespace detail
 
@@ -73,15 +58,14 @@ ClipResult clip_triangle(const ClipVertex triangle[3], ClipPolygon* out) {
             return result;
         }
     }
-    if (detail::trivially_outside(triangle)) {
+    unsigned c0 = clip_outcode(triangle[0].clip), c1 = clip_outcode(triangle[1].clip),
+             c2 = clip_outcode(triangle[2].clip);
+    if (c0 & c1 & c2 & kOutsideBits) {  // all three beyond one side of the view volume
         result.outside = true;
         return result;
     }
     // Which planes does the triangle cross? (Most triangles: none, and no copy is made.)
-    unsigned crossing = 0;
-    for (int plane = 0; plane < detail::kPlaneCount; ++plane)
-        for (int i = 0; i < 3; ++i)
-            if (detail::clip_plane_value(plane, triangle[i].clip) < 0.0f) crossing |= 1u << plane;
+    unsigned crossing = (c0 | c1 | c2) & kClipPlaneBits;
     for (int i = 0; i < 3; ++i) out->v[i] = triangle[i];
     out->count = 3;
     if (crossing == 0) return result;

@@ -54,8 +54,31 @@ struct ClipResult {
 // the far plane), since nothing of them can be drawn.
 ClipResult clip_triangle(const ClipVertex triangle[3], ClipPolygon* out);
 
+// Outcode of a clip-space point: which clipping planes it is outside of (bits 0-4, in the
+// order above) and on which sides of the view volume it lies (bits 5-10: right, left, top,
+// bottom, far, near). A triangle whose three outcodes share a view-volume bit is invisible;
+// one whose outcodes have no plane bit needs no clipping. NaN gives neither: check finiteness
+// first (clip_triangle does).
+constexpr unsigned kClipPlaneBits = 0x1fu;
+constexpr unsigned kOutsideBits = 0x7e0u;
+inline unsigned clip_outcode(Vec4 p) {
+    unsigned code = 0;
+    if (p.z + p.w < 0.0f) code |= 1u | (1u << 10);  // near (a clipping plane and a side)
+    if (kGuardBand * p.w - p.x < 0.0f) code |= 1u << 1;
+    if (kGuardBand * p.w + p.x < 0.0f) code |= 1u << 2;
+    if (kGuardBand * p.w - p.y < 0.0f) code |= 1u << 3;
+    if (kGuardBand * p.w + p.y < 0.0f) code |= 1u << 4;
+    if (p.x > p.w) code |= 1u << 5;
+    if (p.x < -p.w) code |= 1u << 6;
+    if (p.y > p.w) code |= 1u << 7;
+    if (p.y < -p.w) code |= 1u << 8;
+    if (p.z > p.w) code |= 1u << 9;
+    return code;
+}
+
 namespace detail {
-// Signed distance-like value of a clip point to plane `plane` (0 = near, 1..4 = guard).
+// Signed distance-like value of a clip point to plane `plane` (0 = near, 1..4 = guard);
+// inside when >= 0. Must agree with clip_outcode.
 float clip_plane_value(int plane, Vec4 p);
 }  // namespace detail
 

@@ -32,23 +32,34 @@ struct VertexData {
     Vec2 uv;
 };
 
-// The original triangle: its vertices and (when the mesh has no normals) its plane normal.
+// The original triangle. Its clip-space corners are computed for every triangle; the rest
+// (world positions, normals, uv, colours) only when a part of it survives culling and lies
+// in the band (prepare), since most triangles of a band render do not.
 struct SourceTriangle {
     VertexData v[3];
+    const std::uint32_t* corner_index = nullptr;  // the three mesh indices
+    Vec3d object_cross;                           // (p1 - p0) x (p2 - p0), nonzero
     int index = 0;
+    bool ready = false;
+};
+
+struct MeshContext {
+    const MeshView* mesh;
+    const Mat4* model;
+    const Mat4* normal_matrix;
 };
 
 // A sub-triangle corner after the divide: fixed-point screen position, depth, 1/w and the
 // barycentric coordinates in the original triangle.
-struct ScreenVertex {
-    i64 x = 0, y = 0;  // pixels · 256
-    float z = 0;       // depth in [0, 1]
-    float inv_w = 1;   // 1 / w_clip, for perspective-correct interpolation
+struct ScreenVertex {  // no default member values: arrays of these are not zeroed
+    i64 x, y;     // pixels · 256
+    float z;      // depth in [0, 1]
+    float inv_w;  // 1 / w_clip, for perspective-correct interpolation
     Vec3 bary;
 };
 
 struct DrawContext {
-    const Camera* camera;
+    MeshContext mesh;
     const FrameBand* band;
     CullMode cull;
     FragmentShader shader;
@@ -79,9 +90,55 @@ inline i64 to_fixed(float v) {
     return i64(s < 0.0f ? s - 0.5f : s + 0.5f);  // round half away from zero
 }
 
-Vec3 normalize_or(Vec3 v, Vec3 fallback) {
-    float l2 = length_squared(v);
-    return l2 > 0.0f && is_finite(l2) ? v / std::sqrt(l2) : fallback;
+// One square root and one division per vector: this runs twice per fragment.
+inline Vec3 normalize_or(Vec3 v, Vec3 fallback) {
+    float l2 = v.x * v.x + v.y * v.y + v.z * v.z;
+    if (!(l2 > 0.0f) || !(l2 < 3.0e38f)) return fallback;
+    return v * (1.0f / std::sqrt(l2));
+}
+
+// M·(p, 1) without the divide (inline: three of these per triangle).
+inline Vec4 transform_homogeneous(const Mat4& m, Vec3 p) {
+    return {m.m[0][0] * p.x + m.m[0][1] * p.y + m.m[0][2] * p.z + m.m[0][3],
+            m.m[1][0] * p.x + m.m[1][1] * p.y + m.m[1][2] * p.z + m.m[1][3],
+            m.m[2][0] * p.x + m.m[2][1] * p.y + m.m[2][2] * p.z + m.m[2][3],
+            m.m[3][0] * p.x + m.m[3][1] * p.y + m.m[3][2] * p.z + m.m[3][3]};
+}
+
+// transform_point and transform_vector of core/vec, inline (same operations, same bits).
+inline Vec3 model_point(const Mat4& m, Vec3 p) {
+    Vec4 r = transform_homogeneous(m, p);
+    if (r.w != 0.0f && r.w != 1.0f) return {r.x / r.w, r.y / r.w, r.z / r.w};
+    return {r.x, r.y, r.z};
+}
+inline Vec3 model_vector(const Mat4& m, Vec3 v) {
+    return {m.m[0][0] * v.x + m.m[0][1] * v.y + m.m[0][2] * v.z,
+            m.m[1][0] * v.x + m.m[1][1] * v.y + m.m[1][2] * v.z,
+            m.m[2][0] * v.x + m.m[2][1] * v.y + m.m[2][2] * v.z};
+}
+
+// The per-vertex attributes of the original triangle: world position, world and object
+// normals (the plane's when the mesh has none), uv and colour.
+void prepare(const MeshContext& mc, SourceTriangle* t) {
+    const MeshView& mesh = *mc.mesh;
+    double cross_length = std::sqrt(length_squared(t->object_cross));
+    Vec3 object_n = to_float(t->object_cross / cross_length);
+    Vec3 world_n = normalize_or(model_vector(*mc.normal_matrix, object_n), object_n);
+    for (int k = 0; k < 3; ++k) {
+        std::uint32_t i = t->corner_index[k];
+        VertexData& v = t->v[k];
+        v.world_position = model_point(*mc.model, v.object_position);
+        v.uv = mesh.uvs ? mesh.uvs[i] : Vec2{0, 0};
+        v.color = mesh.colors ? mesh.colors[i] : Vec3{1, 1, 1};
+        if (mesh.normals) {
+            v.object_normal = normalize_or(mesh.normals[i], object_n);
+            v.normal = normalize_or(model_vector(*mc.normal_matrix, v.object_normal), world_n);
+        } else {
+            v.object_normal = object_n;  // flat: the plane's normal
+            v.normal = world_n;
+        }
+    }
+    t->ready = true;
 }
 
 // Fills the fragment's surface point from the perspective-correct barycentrics b.
@@ -101,7 +158,7 @@ void interpolate(const SourceTriangle& t, Vec3 b, Fragment* f) {
 
 // Rasterizes one sub-triangle into the band. Returns true when it passed culling and
 // touches the band's rows.
-bool raster_triangle(DrawContext& ctx, const SourceTriangle& src, const ScreenVertex& a,
+bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& a,
                      const ScreenVertex& b, const ScreenVertex& c) {
     const FrameBand& band = *ctx.band;
     // Twice the signed area, in (1/256 pixel)^2. Screen y points down, so a counter-
@@ -128,6 +185,7 @@ bool raster_triangle(DrawContext& ctx, const SourceTriangle& src, const ScreenVe
     if (row_begin < band_begin) row_begin = band_begin;
     if (row_end > band_end) row_end = band_end;
     if (row_begin >= row_end) return false;
+    if (!src.ready) prepare(ctx.mesh, &src);
 
     // Is the middle vertex right of the long edge v0 -> v2? Then the long edge is the left.
     bool middle_right = (v1->x - v0->x) * (v2->y - v0->y) - (v2->x - v0->x) * (v1->y - v0->y) > 0;
@@ -184,13 +242,19 @@ bool raster_triangle(DrawContext& ctx, const SourceTriangle& src, const ScreenVe
     return true;
 }
 
+inline bool finite_clip(Vec4 p) {
+    return is_finite(p.x) && is_finite(p.y) && is_finite(p.z) && is_finite(p.w);
+}
+
+// The divide and the viewport mapping, as clip_to_screen (camera.cpp) does it, keeping 1/w.
 ScreenVertex to_screen(const Camera& camera, const ClipVertex& v) {
-    Vec3 s = clip_to_screen(camera, v.clip);
     ScreenVertex r;
-    r.x = to_fixed(s.x);
-    r.y = to_fixed(s.y);
-    r.z = s.z;
-    r.inv_w = 1.0f / v.clip.w;
+    float inv_w = 1.0f / v.clip.w;
+    float nx = v.clip.x * inv_w, ny = v.clip.y * inv_w, nz = v.clip.z * inv_w;
+    r.x = to_fixed((nx * 0.5f + 0.5f) * float(camera.width));
+    r.y = to_fixed((0.5f - ny * 0.5f) * float(camera.height));
+    r.z = nz * 0.5f + 0.5f;
+    r.inv_w = inv_w;
     r.bary = v.bary;
     return r;
 }
@@ -209,77 +273,73 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
     SHITSUKAN_TRY(validate_model(options.model, &normal_matrix));
 
     const Mat4 mvp = camera.projection * (camera.view * options.model);
-    DrawContext ctx{&camera, &band, options.cull, shader, user, 0};
+    DrawContext ctx{{&mesh, &options.model, &normal_matrix}, &band, options.cull, shader, user, 0};
     RasterStats local;
     local.triangles_in = mesh.triangle_count;
 
     for (int t = 0; t < mesh.triangle_count; ++t) {
-        // ---- 1. Fetch and transform the three vertices ----
+        // ---- 1. Fetch the three corners, into clip space ----
         SourceTriangle src;
         src.index = t;
+        src.corner_index = mesh.indices + 3 * t;
         ClipVertex corners[3];
         bool finite = true;
         for (int k = 0; k < 3; ++k) {
-            std::uint32_t i = mesh.indices[3 * t + k];
-            VertexData& v = src.v[k];
-            Vec3 p = mesh.positions[i];
+            Vec3 p = mesh.positions[src.corner_index[k]];
             finite = finite && is_finite(p);
-            v.object_position = p;
-            v.world_position = transform_point(options.model, p);
-            v.uv = mesh.uvs ? mesh.uvs[i] : Vec2{0, 0};
-            v.color = mesh.colors ? mesh.colors[i] : Vec3{1, 1, 1};
-            corners[k].clip = mvp * Vec4{p.x, p.y, p.z, 1.0f};
+            src.v[k].object_position = p;
+            corners[k].clip = transform_homogeneous(mvp, p);
             corners[k].bary = Vec3{k == 0 ? 1.0f : 0.0f, k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f};
         }
         // Zero-area and NaN/inf triangles are degenerate: skipped and counted. The plane
         // normal is computed in double so that huge but finite coordinates do not overflow.
         Vec3d e1 = to_double(src.v[1].object_position - src.v[0].object_position);
         Vec3d e2 = to_double(src.v[2].object_position - src.v[0].object_position);
-        Vec3d object_cross = cross(e1, e2);
-        double cross2 = length_squared(object_cross);
+        src.object_cross = cross(e1, e2);
+        double cross2 = length_squared(src.object_cross);
         if (!finite || !(cross2 > 0.0) || !is_finite(cross2)) {
             ++local.triangles_rejected;
             continue;
         }
-        Vec3 object_n = to_float(object_cross / std::sqrt(cross2));
-        Vec3 world_n = normalize_or(transform_vector(normal_matrix, object_n), object_n);
-        for (int k = 0; k < 3; ++k) {
-            VertexData& v = src.v[k];
-            if (mesh.normals) {
-                std::uint32_t i = mesh.indices[3 * t + k];
-                v.object_normal = normalize_or(mesh.normals[i], object_n);
-                v.normal = normalize_or(transform_vector(normal_matrix, v.object_normal), world_n);
-            } else {
-                v.object_normal = object_n;  // flat: the plane's normal
-                v.normal = world_n;
-            }
-        }
 
-        // ---- 2. Clip in homogeneous space ----
-        ClipPolygon poly;
-        ClipResult clip = clip_triangle(corners, &poly);
-        if (clip.not_finite) {
-            ++local.triangles_rejected;
-            continue;
-        }
-        if (clip.outside) continue;
-        if (clip.clipped_near) ++local.triangles_clipped;
-
-        // ---- 3./4. Divide, snap, cull and walk each triangle of the clipped polygon ----
+        // ---- 2. Clip in homogeneous space (most triangles need not: outcodes tell) ----
         ScreenVertex s[kMaxClipVertices];
-        bool usable = true;
-        for (int k = 0; k < poly.count; ++k) {
-            // After near clipping w > 0 for the projections this library makes; a custom
-            // projection could still give w <= 0: such a triangle cannot be drawn.
-            if (!(poly.v[k].clip.w > 0.0f)) usable = false;
-            s[k] = to_screen(camera, poly.v[k]);
+        int count = 0;
+        unsigned c0 = clip_outcode(corners[0].clip), c1 = clip_outcode(corners[1].clip),
+                 c2 = clip_outcode(corners[2].clip);
+        if (c0 & c1 & c2 & kOutsideBits) continue;  // wholly beyond one side of the view
+        if (((c0 | c1 | c2) & kClipPlaneBits) == 0 && finite_clip(corners[0].clip) &&
+            finite_clip(corners[1].clip) && finite_clip(corners[2].clip)) {
+            // ---- 3. Divide and snap (w > 0 here: every corner is in front of the near plane)
+            for (int k = 0; k < 3; ++k) s[k] = to_screen(camera, corners[k]);
+            count = 3;
+        } else {
+            ClipPolygon poly;
+            ClipResult clip = clip_triangle(corners, &poly);
+            if (clip.not_finite) {
+                ++local.triangles_rejected;
+                continue;
+            }
+            if (clip.outside) continue;
+            if (clip.clipped_near) ++local.triangles_clipped;
+            // ---- 3. Divide and snap each corner of the clipped polygon ----
+            bool usable = true;
+            for (int k = 0; k < poly.count; ++k) {
+                // After near clipping w > 0 for the projections this library makes; a custom
+                // projection could still give w <= 0: such a triangle cannot be drawn.
+                if (!(poly.v[k].clip.w > 0.0f)) usable = false;
+                s[k] = to_screen(camera, poly.v[k]);
+            }
+            if (!usable) {
+                ++local.triangles_rejected;
+                continue;
+            }
+            count = poly.count;
         }
-        if (!usable) {
-            ++local.triangles_rejected;
-            continue;
-        }
+
+        // ---- 4. Cull and walk each triangle of the (fan-triangulated) polygon ----
         bool drawn = false;
-        for (int k = 1; k + 1 < poly.count; ++k)
+        for (int k = 1; k + 1 < count; ++k)
             drawn = raster_triangle(ctx, src, s[0], s[k], s[k + 1]) || drawn;
         if (drawn) ++local.triangles_drawn;
     }

@@ -26,6 +26,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/core/vec.hpp"
@@ -101,8 +102,10 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
                  const DrawOptions& options, FragmentShader shader, void* user,
                  RasterStats* stats = nullptr);
 
-// Convenience for lambdas and functors (no allocation: passes &f as the user pointer).
-template <class F>
+// Convenience for lambdas and functors taking (const Fragment&) (no allocation: passes &f as
+// the user pointer). A captureless lambda taking (const Fragment&, void*) goes to the
+// function-pointer overload above.
+template <class F, class = decltype(std::declval<F&>()(std::declval<const Fragment&>()))>
 Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
                  const DrawOptions& options, F& shader, RasterStats* stats = nullptr) {
     return draw_mesh(
