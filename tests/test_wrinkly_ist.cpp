@@ -477,3 +477,37 @@ TEST_CASE("on a cyclic axis any table has a closed scale reverse form like eq. (
             }
     }
 }
+
+TEST_CASE("procedure steps == digit steps at every u^k and u^{k.5} (eqs. 25, 26)") {
+    for (int n : {3, 5}) {
+        for (const char* name : {"fully", "none", "fig6b"}) {
+            if (n != 5 && std::string(name) == "fig6b") continue;
+            for (IstEnds ends : {IstEnds::cyclic, IstEnds::translation}) {
+                IstShuffle s;
+                REQUIRE(ist_shuffle_named(name, n, &s).ok());
+                IstAxis axis;
+                REQUIRE(ist_connected_axis(s, 3, 5, ends, &axis).ok());
+                CAPTURE(describe(axis));
+                const std::uint64_t count = ist_sub_interval_count(axis);
+                for (int b = 0; b < 5; ++b)
+                    for (std::uint64_t i = 0; i < count; ++i) {
+                        IstDigits alpha;
+                        ist_digits_from_index(axis, b, i, &alpha);
+                        IstPoint p;
+                        ist_procedure_start(axis, nullptr, midpoint(axis, b, i), &p);
+                        for (int k = 1; k <= 3; ++k) {
+                            ist_internal_shuffle(axis, k, &alpha);  // -> u^{(k-1).5}
+                            ist_divide_and_shuffle_internally(axis, nullptr, &p);
+                            REQUIRE(p.u == doctest::Approx(midpoint(axis, alpha.base,
+                                                                    ist_digits_index(axis, alpha))));
+                            ist_external_shuffle(axis, &alpha);  // -> u^k
+                            ist_shuffle_externally(axis, nullptr, &p);
+                            REQUIRE(p.u == doctest::Approx(midpoint(axis, alpha.base,
+                                                                    ist_digits_index(axis, alpha))));
+                            REQUIRE(p.base == alpha.base);
+                        }
+                    }
+            }
+        }
+    }
+}
