@@ -22,24 +22,28 @@ struct LevelStep {
     Pcg32* rng;              // only for NoiseSource::sequential
 
     std::int64_t index(int x, int y, int z) const { return (z * side + y) * side + x; }
+    std::uint64_t hash_start;  // of (seed, kLatticeStream), computed once
     float g(int x, int y, int z) const {
-        float gauss = params->noise == NoiseSource::hash ? node_gaussian(params->seed, x, y, z)
+        float gauss = params->noise == NoiseSource::hash ? node_gaussian_from(hash_start, x, y, z)
                                                          : rng->gaussian();
         return gauss * amplitude;
     }
 };
 
-// Visits the nodes of this level that are odd multiples of h on exactly `odd_count` axes.
+// Visits the nodes of this level that are odd multiples of h on exactly `odd_count` axes:
+// pattern by pattern (odd axes as a bit mask x = 1, y = 2, z = 4, in increasing order), each
+// scanning z, y, x upwards. An odd axis runs h, 3h, 5h, ...; an even one 0, 2h, 4h, ...
 template <class F>
 void for_each_new_node(const LevelStep& s, int odd_count, F&& visit) {
-    const int h = s.h;
-    for (int z = 0; z < s.side; z += h)
-        for (int y = 0; y < s.side; y += h)
-            for (int x = 0; x < s.side; x += h) {
-                int mask = ((x / h) & 1) | (((y / h) & 1) << 1) | (((z / h) & 1) << 2);
-                int count = (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1);
-                if (count == odd_count) visit(x, y, z, mask);
-            }
+    const int h = s.h, step = 2 * h, side = int(s.side);
+    for (int mask = 1; mask < 8; ++mask) {
+        if ((mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) != odd_count) continue;
+        const int x_start = (mask & 1) ? h : 0, y_start = (mask & 2) ? h : 0,
+                  z_start = (mask & 4) ? h : 0;
+        for (int z = z_start; z < side; z += step)
+            for (int y = y_start; y < side; y += step)
+                for (int x = x_start; x < side; x += step) visit(x, y, z, mask);
+    }
 }
 
 // Step (1), eq. (1): each of the 12 edge midpoints of every cell of the previous level.
@@ -108,7 +112,8 @@ Status build_fractal_lattice(const FractalParams& params, float* buffer, std::si
     Pcg32 rng(params.seed, kLatticeStream);
     for (int n = 1; n <= levels; ++n) {
         LevelStep s{buffer, side, {1, side, side * side}, R, 1 << (R - n),
-                    level_amplitude(n, params.beta), &params, &rng};
+                    level_amplitude(n, params.beta), &params, &rng,
+                    hash_start(params.seed, kLatticeStream)};
         compute_edge_midpoints(s);
         compute_face_centres(s);
         compute_cube_centres(s);

@@ -15,7 +15,8 @@
 // smaller than that is refused with both byte counts in the message; R is limited to
 // kTypeIMaxDepth. Layout: x fastest, then y, then z: index (z·side + y)·side + x.
 // Order of one level n (h = 2^(R-n)): step (1) all edge midpoints, step (2) all face
-// centres, step (3) all cube centres, each step scanning z, y, x upwards. With
+// centres, step (3) all cube centres; within a step pattern by pattern (which axes are odd:
+// x, y, z for edges; xy, xz, yz for faces), each scanning z, y, x upwards. With
 // NoiseSource::sequential the numbers g are drawn from Pcg32(seed) in exactly that order.
 // small-device: yes (caller buffer, no allocation)
 #pragma once

@@ -2,6 +2,7 @@
 #include "shitsukan/solid/lattice_type3.hpp"
 
 #include "shitsukan/core/assert.hpp"
+#include "shitsukan/core/hash.hpp"
 #include "shitsukan/solid/fractal_node.hpp"
 #include "shitsukan/solid/turbulence.hpp"
 
@@ -17,97 +18,116 @@ Status TypeIIILattice::init(const FractalParams& params) {
                              "Type III lattice: needs NoiseSource::hash (a sequential stream "
                              "depends on the order of queries)");
     R_ = params.R;
-    seed_ = params.seed;
+    hash_start_ = hash_start(params.seed, kLatticeStream);
     for (int n = 1; n <= R_; ++n) amplitude_[n] = level_amplitude(n, params.beta);
-    // Level 0: the initial cube and its eight given corner values.
-    cells_[0].x0 = cells_[0].y0 = cells_[0].z0 = 0;
-    for (int i = 0; i < 8; ++i) cells_[0].corner[i] = params.corners[i];
+    for (int i = 0; i < 8; ++i) corners0_[i] = params.corners[i];
     cached_depth_ = 0;
     subdivisions_ = 0;
+    last_cell_[0] = last_cell_[1] = last_cell_[2] = -1;
+    for (Block& b : row_cache_) b.x0 = b.y0 = b.z0 = -1;
     return Status::success();
 }
 
-// One recursion level on one cell (okada1987 §2.2 steps (1)-(3)): the cell of level n-1 is
-// split into 27 nodes on a 3x3x3 grid (h apart); the sub-cell (ox, oy, oz) becomes level n.
-void TypeIIILattice::subdivide(int n, std::int32_t ox, std::int32_t oy, std::int32_t oz) {
-    const Cell& parent = cells_[n - 1];
+// One recursion level on one cell (okada1987 §2.2 steps (1)-(3)): the cell of level n-1 with
+// lower corner (x0, y0, z0) and the given corners becomes the 27-node block of level n.
+void TypeIIILattice::subdivide(int n, const float corners[8], std::int32_t x0, std::int32_t y0,
+                               std::int32_t z0) {
+    Block& block = blocks_[n];
+    float* grid = block.v;
     const std::int32_t h = std::int32_t(1) << (R_ - n);
     const float amplitude = amplitude_[n];
-    float grid[27];
     auto g = [&](int a, int b, int c) {
-        return node_gaussian(seed_, parent.x0 + a * h, parent.y0 + b * h, parent.z0 + c * h) *
-               amplitude;
+        return node_gaussian_from(hash_start_, x0 + a * h, y0 + b * h, z0 + c * h) * amplitude;
     };
     // The parent's corners sit at the even grid positions.
     for (int k = 0; k < 2; ++k)
         for (int j = 0; j < 2; ++j)
             for (int i = 0; i < 2; ++i)
-                grid[grid_index(2 * i, 2 * j, 2 * k)] = parent.corner[i + 2 * j + 4 * k];
-    // Step (1), eq. (1): the 12 edge midpoints (one grid index is 1).
-    for (int c = 0; c < 3; ++c)
-        for (int b = 0; b < 3; ++b)
-            for (int a = 0; a < 3; ++a) {
-                int odd = (a == 1) + (b == 1) + (c == 1);
-                if (odd != 1) continue;
-                float lo, hi;
-                if (a == 1) {
-                    lo = grid[grid_index(0, b, c)], hi = grid[grid_index(2, b, c)];
-                } else if (b == 1) {
-                    lo = grid[grid_index(a, 0, c)], hi = grid[grid_index(a, 2, c)];
-                } else {
-                    lo = grid[grid_index(a, b, 0)], hi = grid[grid_index(a, b, 2)];
-                }
-                grid[grid_index(a, b, c)] = edge_midpoint(lo, hi, g(a, b, c));
-            }
+                grid[grid_index(2 * i, 2 * j, 2 * k)] = corners[i + 2 * j + 4 * k];
+    // Step (1), eq. (1): the 12 edge midpoints (exactly one grid index is 1).
+    for (int c = 0; c <= 2; c += 2)
+        for (int b = 0; b <= 2; b += 2) {
+            grid[grid_index(1, b, c)] =
+                edge_midpoint(grid[grid_index(0, b, c)], grid[grid_index(2, b, c)], g(1, b, c));
+            grid[grid_index(b, 1, c)] =
+                edge_midpoint(grid[grid_index(b, 0, c)], grid[grid_index(b, 2, c)], g(b, 1, c));
+            grid[grid_index(b, c, 1)] =
+                edge_midpoint(grid[grid_index(b, c, 0)], grid[grid_index(b, c, 2)], g(b, c, 1));
+        }
     // Step (2), eq. (3): the 6 face centres from the face's four edge midpoints, in the
     // order (first odd axis -, +, second odd axis -, +).
-    for (int c = 0; c < 3; ++c)
-        for (int b = 0; b < 3; ++b)
-            for (int a = 0; a < 3; ++a) {
-                int odd = (a == 1) + (b == 1) + (c == 1);
-                if (odd != 2) continue;
-                float e[4];
-                if (a != 1) {  // odd axes y, z
-                    e[0] = grid[grid_index(a, 0, 1)], e[1] = grid[grid_index(a, 2, 1)];
-                    e[2] = grid[grid_index(a, 1, 0)], e[3] = grid[grid_index(a, 1, 2)];
-                } else if (b != 1) {  // odd axes x, z
-                    e[0] = grid[grid_index(0, b, 1)], e[1] = grid[grid_index(2, b, 1)];
-                    e[2] = grid[grid_index(1, b, 0)], e[3] = grid[grid_index(1, b, 2)];
-                } else {  // odd axes x, y
-                    e[0] = grid[grid_index(0, 1, c)], e[1] = grid[grid_index(2, 1, c)];
-                    e[2] = grid[grid_index(1, 0, c)], e[3] = grid[grid_index(1, 2, c)];
-                }
-                grid[grid_index(a, b, c)] = face_centre(e, g(a, b, c));
-            }
+    for (int e = 0; e <= 2; e += 2) {
+        const float yz[4] = {grid[grid_index(e, 0, 1)], grid[grid_index(e, 2, 1)],
+                             grid[grid_index(e, 1, 0)], grid[grid_index(e, 1, 2)]};
+        grid[grid_index(e, 1, 1)] = face_centre(yz, g(e, 1, 1));
+        const float xz[4] = {grid[grid_index(0, e, 1)], grid[grid_index(2, e, 1)],
+                             grid[grid_index(1, e, 0)], grid[grid_index(1, e, 2)]};
+        grid[grid_index(1, e, 1)] = face_centre(xz, g(1, e, 1));
+        const float xy[4] = {grid[grid_index(0, 1, e)], grid[grid_index(2, 1, e)],
+                             grid[grid_index(1, 0, e)], grid[grid_index(1, 2, e)]};
+        grid[grid_index(1, 1, e)] = face_centre(xy, g(1, 1, e));
+    }
     // Step (3), eq. (4): the centre from the six face centres x-, x+, y-, y+, z-, z+.
     const float faces[6] = {grid[grid_index(0, 1, 1)], grid[grid_index(2, 1, 1)],
                             grid[grid_index(1, 0, 1)], grid[grid_index(1, 2, 1)],
                             grid[grid_index(1, 1, 0)], grid[grid_index(1, 1, 2)]};
     grid[grid_index(1, 1, 1)] = cube_centre(faces, g(1, 1, 1));
-
-    Cell& child = cells_[n];
-    child.x0 = parent.x0 + ox * h;
-    child.y0 = parent.y0 + oy * h;
-    child.z0 = parent.z0 + oz * h;
-    for (int k = 0; k < 2; ++k)
-        for (int j = 0; j < 2; ++j)
-            for (int i = 0; i < 2; ++i)
-                child.corner[i + 2 * j + 4 * k] = grid[grid_index(ox + i, oy + j, oz + k)];
+    block.x0 = x0, block.y0 = y0, block.z0 = z0;
     ++subdivisions_;
 }
 
-const float* TypeIIILattice::descend_to_unit_cell(std::int32_t ix, std::int32_t iy,
-                                                  std::int32_t iz) {
-    for (int n = 1; n <= R_; ++n) {
-        const std::int32_t size = std::int32_t(1) << (R_ - n);  // cell edge at level n
-        const std::int32_t x0 = ix & ~(size - 1), y0 = iy & ~(size - 1), z0 = iz & ~(size - 1);
-        if (n <= cached_depth_ && cells_[n].x0 == x0 && cells_[n].y0 == y0 && cells_[n].z0 == z0)
-            continue;  // the ancestry cached from the previous query still holds this point
-        const Cell& parent = cells_[n - 1];
-        subdivide(n, (x0 - parent.x0) / size, (y0 - parent.y0) / size, (z0 - parent.z0) / size);
-        cached_depth_ = n;
+// The 8 corners of the sub-cell (ox, oy, oz) in {0, 1}^3 of a block.
+static void block_corners(const float* grid, int ox, int oy, int oz, float out[8]) {
+    for (int k = 0; k < 2; ++k)
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i)
+                out[i + 2 * j + 4 * k] = grid[grid_index(ox + i, oy + j, oz + k)];
+}
+
+const float* TypeIIILattice::unit_cell_corners(std::int32_t ix, std::int32_t iy,
+                                               std::int32_t iz) {
+    if (ix == last_cell_[0] && iy == last_cell_[1] && iz == last_cell_[2]) return cell_;
+    if (R_ == 0) {
+        for (int i = 0; i < 8; ++i) cell_[i] = corners0_[i];
+    } else {
+        // The finest block (edge 2) holding the unit cell: first look in the row cache.
+        const std::int32_t fx0 = ix & ~1, fy0 = iy & ~1, fz0 = iz & ~1;
+        Block* slot = nullptr;
+        if (kTypeIIIRowCache > 0) {
+            std::uint32_t key = (std::uint32_t(fx0 >> 1) * 73856093u) ^
+                                (std::uint32_t(fy0 >> 1) * 19349663u) ^
+                                (std::uint32_t(fz0 >> 1) * 83492791u);
+            slot = &row_cache_[key & std::uint32_t(kTypeIIIRowCache - 1)];
+            if (slot->x0 == fx0 && slot->y0 == fy0 && slot->z0 == fz0) {
+                block_corners(slot->v, ix - fx0, iy - fy0, iz - fz0, cell_);
+                last_cell_[0] = ix, last_cell_[1] = iy, last_cell_[2] = iz;
+                return cell_;
+            }
+        }
+        float corners[8];
+        for (int n = 1; n <= R_; ++n) {
+            // The cell of level n-1 holding the query: edge 2^(R-n+1).
+            const std::int32_t edge = std::int32_t(1) << (R_ - n + 1);
+            const std::int32_t x0 = ix & ~(edge - 1), y0 = iy & ~(edge - 1), z0 = iz & ~(edge - 1);
+            const Block& b = blocks_[n];
+            if (n <= cached_depth_ && b.x0 == x0 && b.y0 == y0 && b.z0 == z0) continue;
+            // Cache miss: take the cell's corners from the block of level n-1 and subdivide.
+            if (n == 1) {
+                for (int i = 0; i < 8; ++i) corners[i] = corners0_[i];
+            } else {
+                const Block& up = blocks_[n - 1];
+                block_corners(up.v, (x0 - up.x0) / edge, (y0 - up.y0) / edge,
+                              (z0 - up.z0) / edge, corners);
+            }
+            subdivide(n, corners, x0, y0, z0);
+            cached_depth_ = n;
+        }
+        const Block& last = blocks_[R_];
+        block_corners(last.v, ix - last.x0, iy - last.y0, iz - last.z0, cell_);
+        if (slot != nullptr) *slot = last;
     }
-    return cells_[R_].corner;
+    last_cell_[0] = ix, last_cell_[1] = iy, last_cell_[2] = iz;
+    return cell_;
 }
 
 float TypeIIILattice::node_value(std::int32_t x, std::int32_t y, std::int32_t z) {
@@ -117,14 +137,14 @@ float TypeIIILattice::node_value(std::int32_t x, std::int32_t y, std::int32_t z)
     // The unit cell whose lower corner is the node (the last node uses the last cell).
     const std::int32_t ix = x < last ? x : last - 1, iy = y < last ? y : last - 1,
                        iz = z < last ? z : last - 1;
-    if (R_ == 0) return cells_[0].corner[x + 2 * y + 4 * z];
-    const float* corner = descend_to_unit_cell(ix, iy, iz);
+    const float* corner = unit_cell_corners(ix, iy, iz);
     return corner[(x - ix) + 2 * (y - iy) + 4 * (z - iz)];
 }
 
 Status TypeIIILattice::node_value_checked(std::int32_t x, std::int32_t y, std::int32_t z,
                                           float* out) {
-    if (R_ < 0) return Status::error(StatusCode::invalid_argument, "Type III lattice: not initialised");
+    if (R_ < 0)
+        return Status::error(StatusCode::invalid_argument, "Type III lattice: not initialised");
     const std::int32_t last = std::int32_t(1) << R_;
     if (x < 0 || y < 0 || z < 0 || x > last || y > last || z > last)
         return Status::error(StatusCode::out_of_range,
@@ -143,12 +163,12 @@ float TypeIIILattice::turbulence(Vec3 p) {
     split_lattice_coordinate(p.x, cells, &ix, &fx);
     split_lattice_coordinate(p.y, cells, &iy, &fy);
     split_lattice_coordinate(p.z, cells, &iz, &fz);
-    const float* corner = R_ == 0 ? cells_[0].corner : descend_to_unit_cell(ix, iy, iz);
-    return trilinear_corners(corner, fx, fy, fz);
+    return trilinear_corners(unit_cell_corners(ix, iy, iz), fx, fy, fz);  // eq. (6)
 }
 
 Status TypeIIILattice::turbulence_checked(Vec3 p, float* out) {
-    if (R_ < 0) return Status::error(StatusCode::invalid_argument, "Type III lattice: not initialised");
+    if (R_ < 0)
+        return Status::error(StatusCode::invalid_argument, "Type III lattice: not initialised");
     if (out == nullptr) return Status::error(StatusCode::invalid_argument, "out must not be null");
     SHITSUKAN_TRY(check_lattice_point(p, R_));
     *out = turbulence(p);

@@ -27,10 +27,11 @@ float turbulence(const LatticeView& lattice, Vec3 p) {
     split_lattice_coordinate(p.y, cells, &iy, &fy);
     split_lattice_coordinate(p.z, cells, &iz, &fz);
     // The eight nodes P_i around P (fig. 6), in the order i + 2j + 4k.
-    float d[8];
-    for (int k = 0; k < 2; ++k)
-        for (int j = 0; j < 2; ++j)
-            for (int i = 0; i < 2; ++i) d[i + 2 * j + 4 * k] = lattice.at(ix + i, iy + j, iz + k);
+    const std::size_t side = std::size_t(lattice.side), plane = side * side;
+    const float* base = lattice.values + (std::size_t(iz) * side + std::size_t(iy)) * side +
+                        std::size_t(ix);
+    const float d[8] = {base[0],         base[1],         base[side],         base[side + 1],
+                        base[plane],     base[plane + 1], base[plane + side], base[plane + side + 1]};
     return trilinear_corners(d, fx, fy, fz);
 }
 

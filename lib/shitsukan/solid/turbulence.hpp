@@ -28,11 +28,12 @@ namespace shitsukan {
 // weights are exactly 1 and 0, so node values come back bit for bit.
 inline float trilinear_corners(const float d[8], float fx, float fy, float fz) {
     const float wx[2] = {1.0f - fx, fx}, wy[2] = {1.0f - fy, fy}, wz[2] = {1.0f - fz, fz};
-    float sum = 0.0f;
+    float v[8];  // D_i · V_i, with V_i = the product of the three opposite extents
     for (int k = 0; k < 2; ++k)
         for (int j = 0; j < 2; ++j)
-            for (int i = 0; i < 2; ++i) sum += d[i + 2 * j + 4 * k] * (wx[i] * wy[j] * wz[k]);
-    return sum;
+            for (int i = 0; i < 2; ++i) v[i + 2 * j + 4 * k] = d[i + 2 * j + 4 * k] * (wx[i] * wy[j] * wz[k]);
+    // Summed pairwise (a fixed order, shorter dependency chain than left to right).
+    return ((v[0] + v[1]) + (v[2] + v[3])) + ((v[4] + v[5]) + (v[6] + v[7]));
 }
 
 // Splits one coordinate into the unit cell [cell, cell + 1] holding it and the fraction
