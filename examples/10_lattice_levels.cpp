@@ -28,7 +28,8 @@ int main() {
     std::printf("level  spacing  new nodes  mean of eps   sd of eps   exp(-(n-1)beta)\n");
     for (int n = 1; n <= params.R; ++n) {
         LatticeView v;
-        Status s = build_fractal_lattice(params, values.data(), values.size() * sizeof(float), &v, n);
+        Status s =
+            build_fractal_lattice(params, values.data(), values.size() * sizeof(float), &v, n);
         if (!s) {
             std::fprintf(stderr, "%s\n", s.message());
             return 1;

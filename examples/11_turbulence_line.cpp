@@ -69,9 +69,10 @@ int main() {
                             Rgb8{220, 90, 20});
     if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
     canvas.text({axes.corner.x + 8, axes.corner.y + 6}, "grey: G(z) (k = 0)", Rgb8{120, 120, 120});
-    canvas.text({axes.corner.x + 8, axes.corner.y + 18}, "blue: backward G(z + k D(z))", Rgb8{30, 80, 200});
-    canvas.text({axes.corner.x + 8, axes.corner.y + 30}, "orange dots: forward, G(z) moved to z + k D(z)",
-                Rgb8{220, 90, 20});
+    canvas.text({axes.corner.x + 8, axes.corner.y + 18}, "blue: backward G(z + k D(z))",
+                Rgb8{30, 80, 200});
+    canvas.text({axes.corner.x + 8, axes.corner.y + 30},
+                "orange dots: forward, G(z) moved to z + k D(z)", Rgb8{220, 90, 20});
     s = write_png("11_turbulence_line.png", img.view());
     if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
     std::printf("wrote 11_turbulence_line.png\n");

@@ -24,9 +24,13 @@ int main() {
     FractalParams params;  // R = 6, hash noise
     const int n = 256;
     std::vector<float> d1(n * n), d2(n * n), d3(n * n);
-    auto point = [&](int i, int j) { return Vec3{64.0f * (i + 0.5f) / n, 64.0f * (j + 0.5f) / n, 20.7f}; };
+    auto point = [&](int i, int j) {
+        return Vec3{64.0f * (i + 0.5f) / n, 64.0f * (j + 0.5f) / n, 20.7f};
+    };
     auto now = [] { return std::chrono::steady_clock::now(); };
-    auto ms = [](auto t0, auto t1) { return std::chrono::duration<double, std::milli>(t1 - t0).count(); };
+    auto ms = [](auto t0, auto t1) {
+        return std::chrono::duration<double, std::milli>(t1 - t0).count();
+    };
 
     auto t0 = now();
     FractalLattice type1;

@@ -79,7 +79,8 @@ TEST_CASE("marble eq. (8): trapezoid with exponential skirt, sum of stripes, pix
     CHECK(marble_texture(p, 0.25f, m) == doctest::Approx(marble_original(9.0f, two, 2)));
     // k = 0 gives G itself, whatever D is.
     m.k = 0.0f;
-    for (float d : {-2.0f, 0.0f, 1.5f}) CHECK(marble_texture(p, d, m) == marble_original(5.0f, two, 2));
+    for (float d : {-2.0f, 0.0f, 1.5f})
+        CHECK(marble_texture(p, d, m) == marble_original(5.0f, two, 2));
     // bad stripes
     MarbleStripe zero_width{10.0f, 0.0f, 1.0f};
     Status bad = validate_marble(MarbleParams{&zero_width, 1, 16.0f});
@@ -111,7 +112,8 @@ TEST_CASE("wood eqs. (10), (11): radial sine, radial displacement, r = 0") {
     CHECK(u.z == 0.0f);
     // Shifted along the radius: r' = r + k·D.
     const Vec3 p{13.0f, 24.0f, 2.0f};  // r = 5
-    CHECK(wood_texture(p, 0.5f, w) == doctest::Approx(std::sin(0.5f * (5.0f + 0.8f))).epsilon(1e-5));
+    CHECK(wood_texture(p, 0.5f, w) ==
+          doctest::Approx(std::sin(0.5f * (5.0f + 0.8f))).epsilon(1e-5));
     w.k = 0.0f;
     CHECK(wood_texture(p, 3.0f, w) == wood_original(p, w));
     // On the axis: a degenerate status, and the texture stays defined (no displacement).

@@ -33,8 +33,8 @@ Status level_panels(figures::FigureContext& ctx, int R, const char* what, float 
                 return value_at(n, i, j);
             },
             -kRange, kRange);
-        canvas.text({float(x0), float(y0 - 14)}, fmt("level %d: %d x %d", n, (1 << n) + 1, (1 << n) + 1),
-                    okada::kInk);
+        canvas.text({float(x0), float(y0 - 14)},
+                    fmt("level %d: %d x %d", n, (1 << n) + 1, (1 << n) + 1), okada::kInk);
     }
     canvas.text({10.0f, float(img.height() - 16)},
                 fmt("%s   colour: blue -%g .. white 0 .. red +%g", what, double(kRange),
@@ -61,7 +61,8 @@ SHITSUKAN_FIGURE(okada1987_fig01, "okada1987", "fig01",
     int side = 0;
     for (int n = 1; n <= 6; ++n)
         SHITSUKAN_TRY(build_quadtree_lattice(q, levels[std::size_t(n)].data(),
-                                             levels[std::size_t(n)].size() * sizeof(float), &side, n));
+                                             levels[std::size_t(n)].size() * sizeof(float), &side,
+                                             n));
     ctx.note("Each panel shows the heights defined after level n, each as the square around it; "
              "a level halves the spacing and adds corrections of amplitude exp(-(n-1)·beta).");
     return level_panels(ctx, 6, "2D heights h(x, y)", 1.2f, [&](int n, int i, int j) {
@@ -88,7 +89,8 @@ SHITSUKAN_FIGURE(okada1987_fig02, "okada1987", "fig02",
     for (int i = 0; i < 65 * 65 * 65; ++i)
         if (levels[6][std::size_t(i)] != full.values[i]) ++differ;
     if (differ != 0)
-        return Status::error(StatusCode::invalid_argument, "fig02: level-6 build differs at %d nodes", differ);
+        return Status::error(StatusCode::invalid_argument,
+                             "fig02: level-6 build differs at %d nodes", differ);
     ctx.note("After level 6 the slice is the z = 32 plane of the lattice every figure uses "
              "(checked: 0 of 274625 nodes differ).");
     return level_panels(ctx, 6, "3D lattice D(x, y, 32)", 2.0f, [&](int n, int i, int j) {

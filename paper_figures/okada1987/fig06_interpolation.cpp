@@ -29,15 +29,19 @@ SHITSUKAN_FIGURE(okada1987_fig06, "okada1987", "fig06",
     RgbImage img(640, 400, Rgb8{255, 255, 255});
     RasterCanvas c(img.view());
     const Axes axes = axes_in(c, xa, xb, lo - pad, hi + pad);
-    SHITSUKAN_TRY(draw_axes(c, axes, {"D along two lines (eq. 6)", "x (lattice units)", "D(x, y, z)"}));
+    SHITSUKAN_TRY(
+        draw_axes(c, axes, {"D along two lines (eq. 6)", "x (lattice units)", "D(x, y, z)"}));
     const Rgb8 blue{30, 90, 200}, orange{220, 110, 20};
     SHITSUKAN_TRY(plot_function(c, axes, off, 641, orange, 1.5f));
     SHITSUKAN_TRY(plot_function(c, axes, on, 641, blue, 1.5f));
     std::vector<float> xs, ys;
     for (int x = int(xa); x <= int(xb); ++x) xs.push_back(float(x)), ys.push_back(v.at(x, 20, 33));
-    SHITSUKAN_TRY(plot_scatter(c, axes, xs.data(), ys.data(), int(xs.size()), MarkerShape::dot, 6.0f, blue));
-    c.text({axes.corner.x + 8, axes.corner.y + 6}, "D(x, 20, 33): straight between the lattice samples (dots)", blue);
-    c.text({axes.corner.x + 8, axes.corner.y + 18}, "D(x, 20.5, 33.3): between four lines of samples", orange);
+    SHITSUKAN_TRY(
+        plot_scatter(c, axes, xs.data(), ys.data(), int(xs.size()), MarkerShape::dot, 6.0f, blue));
+    c.text({axes.corner.x + 8, axes.corner.y + 6},
+           "D(x, 20, 33): straight between the lattice samples (dots)", blue);
+    c.text({axes.corner.x + 8, axes.corner.y + 18},
+           "D(x, 20.5, 33.3): between four lines of samples", orange);
     ctx.note("Between two nodes the blue line is straight (eq. (6) is linear along cell edges) "
              "and passes through every node value exactly.");
     return ctx.save_png(img.view());

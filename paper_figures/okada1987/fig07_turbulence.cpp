@@ -22,7 +22,8 @@ SHITSUKAN_FIGURE(okada1987_fig07, "okada1987", "fig07",
             for (int i = 0; i < panel; ++i) {
                 Vec3 p = at((float(i) + 0.5f) / panel, (float(j) + 0.5f) / panel);
                 Vec3 col = okada::material_color(m, okada::density(m, k, p));
-                img.at(x0 + i, 30 + j) = Rgb8{std::uint8_t(col.x), std::uint8_t(col.y), std::uint8_t(col.z)};
+                img.at(x0 + i, 30 + j) =
+                    Rgb8{std::uint8_t(col.x), std::uint8_t(col.y), std::uint8_t(col.z)};
             }
     };
     paint_density(10, 0.0f);

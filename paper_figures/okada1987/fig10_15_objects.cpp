@@ -29,14 +29,16 @@ SHITSUKAN_FIGURE(okada1987_fig13b, "okada1987", "fig13b", "Sphere with a part cu
 }
 SHITSUKAN_FIGURE(okada1987_fig14a, "okada1987", "fig14a",
                  "Pot: solid of revolution of a spline curve, marble") {
-    ctx.given("profile", "spline curve revolved about the axis, computed in double", "okada1987 §4.4");
+    ctx.given("profile", "spline curve revolved about the axis, computed in double",
+              "okada1987 §4.4");
     ctx.chosen("spline", "Catmull-Rom through 8 control points (r, y), 16 samples per segment",
                "the paper names no spline type");
     return okada::object_figure(ctx, "pot", Material::marble);
 }
 SHITSUKAN_FIGURE(okada1987_fig14b, "okada1987", "fig14b",
                  "Pot: solid of revolution of a spline curve, wood") {
-    ctx.given("profile", "spline curve revolved about the axis, computed in double", "okada1987 §4.4");
+    ctx.given("profile", "spline curve revolved about the axis, computed in double",
+              "okada1987 §4.4");
     ctx.chosen("spline", "Catmull-Rom through 8 control points (r, y), 16 samples per segment",
                "the paper names no spline type");
     return okada::object_figure(ctx, "pot", Material::wood);

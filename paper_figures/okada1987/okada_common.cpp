@@ -30,7 +30,8 @@ const FractalLattice& shared_lattice() {
         p.seed = kSeed;
         auto t0 = std::chrono::steady_clock::now();
         Status s = lattice.build(p);
-        g_build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        g_build_seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         SHITSUKAN_ASSERT(s.ok());  // fixed, valid parameters: a failure is a bug
     }
     return lattice;
@@ -42,7 +43,8 @@ double shared_lattice_build_seconds() {
 }
 
 void record_lattice(figures::FigureContext& ctx) {
-    ctx.given("lattice", "65^3 (R = 6), one lattice for every figure", "okada1987 §4.4, okada1989 §4-4");
+    ctx.given("lattice", "65^3 (R = 6), one lattice for every figure",
+              "okada1987 §4.4, okada1989 §4-4");
     ctx.given("noise g", "N(0, 1), amplitude exp(-(n-1)·beta)", "okada1987 eqs. (1)-(5)");
     ctx.given("lattice type", "Type I (the whole 65^3 array in memory)", "okada1989 §4-4");
     ctx.chosen("beta", fmt("%g", double(kBeta)),
@@ -86,7 +88,8 @@ void record_material(figures::FigureContext& ctx, Material m, float k) {
         ctx.chosen("k2", fmt("%g (rings every %.1f lattice units)", double(kWoodK2),
                              2.0 * 3.14159265 / double(kWoodK2)),
                    "not given; about 10 rings across an object");
-        ctx.chosen("axis (x0, y0)", fmt("(%g, %g) lattice", double(kWoodAxis.x), double(kWoodAxis.y)),
+        ctx.chosen("axis (x0, y0)",
+                   fmt("(%g, %g) lattice", double(kWoodAxis.x), double(kWoodAxis.y)),
                    "off the objects' centre, as a board cut beside the pith");
         ctx.chosen("G'", "(sin + 1)/2", "sin lies in [-1, 1], eq. (12) needs [0, 1]; linear map");
         ctx.chosen("r = 0", "u = 0 (no shift)", "radial direction undefined on the axis");
@@ -268,7 +271,8 @@ Status object_figure(figures::FigureContext& ctx, const std::string& scene_name,
     record_lattice(ctx);
     record_material(ctx, m, k);
     record_camera(ctx, scene_camera_text(scene));
-    ctx.given("image", "512 x 512, RGB 8 bit", ctx.paper() == "okada1989" ? "okada1989 §4-4" : "okada1987 §4.4");
+    ctx.given("image", "512 x 512, RGB 8 bit",
+              ctx.paper() == "okada1989" ? "okada1989 §4-4" : "okada1987 §4.4");
     RgbImage img;
     SHITSUKAN_TRY(render_scene(scene, m, k, ctx.quick() ? 128 : 512, &img));
     return ctx.save_png(img.view());

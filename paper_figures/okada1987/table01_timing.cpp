@@ -40,12 +40,16 @@ SHITSUKAN_FIGURE(okada1987_table01, "okada1987", "table01",
     const int size = ctx.quick() ? 128 : 512;
     ctx.given("paper times", "Table 1 (CPU s, FACOM M-382); lattice 5.9 s, file write 0.9 s",
               "okada1987 Table 1, §4.4");
-    ctx.chosen("our times", fmt("wall clock, best of 3, %d x %d, one core; fig. 12 = all 16 cubes "
-                                "(128 px each); lattice already built (timed separately)", size, size),
+    ctx.chosen("our times",
+               fmt("wall clock, best of 3, %d x %d, one core; fig. 12 = all 16 cubes "
+                   "(128 px each); lattice already built (timed separately)",
+                   size, size),
                "the paper's figures also exclude the lattice build");
     Status status;
     std::string md;
-    md += "| Fig. | paper (a) marble [s] | paper (b) wood [s] | ours (a) marble [s] | ours (b) wood [s] | speed-up (a) |\n";
+    md +=
+        "| Fig. | paper (a) marble [s] | paper (b) wood [s] | ours (a) marble [s] | ours (b) wood "
+        "[s] | speed-up (a) |\n";
     md += "|---|---|---|---|---|---|\n";
     (void)okada::shared_lattice();
     for (const Row& r : rows) {
@@ -65,8 +69,8 @@ SHITSUKAN_FIGURE(okada1987_table01, "okada1987", "table01",
                 },
                 &status);
         }
-        md += fmt("| %s | %.1f | %.1f | %.4f | %.4f | %.0fx |\n", r.fig, r.paper_marble, r.paper_wood,
-                  t[0], t[1], r.paper_marble / t[0]);
+        md += fmt("| %s | %.1f | %.1f | %.4f | %.4f | %.0fx |\n", r.fig, r.paper_marble,
+                  r.paper_wood, t[0], t[1], r.paper_marble / t[0]);
     }
     // The lattice build (a fresh one, not the shared cached lattice) and its file write.
     FractalLattice fresh;
@@ -80,7 +84,8 @@ SHITSUKAN_FIGURE(okada1987_table01, "okada1987", "table01",
     SHITSUKAN_TRY(okada::build_scene("cube", ctx.quick(), &scene));
     SHITSUKAN_TRY(okada::render_scene(scene, okada::Material::marble, okada::kMarbleK, size, &img));
     const std::string tmp_png = ctx.path(".png.tmp");
-    const double png = best_seconds([&] { return write_png(tmp_png.c_str(), img.view()); }, &status);
+    const double png =
+        best_seconds([&] { return write_png(tmp_png.c_str(), img.view()); }, &status);
     std::remove(tmp_png.c_str());
     SHITSUKAN_TRY(status);
     md += fmt("| lattice 65^3 | 5.9 | | %.4f | | %.0fx |\n", build, 5.9 / build);

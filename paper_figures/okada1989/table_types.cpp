@@ -109,7 +109,8 @@ SHITSUKAN_FIGURE(okada1989_table_types, "okada1989", "table-types",
     int order_differs = 0;
     std::vector<float> fwd;
     for (int x = 0; x <= 64; ++x) fwd.push_back(forward.node_value(x, 17, 40));
-    for (int x = 64; x >= 0; --x) order_differs += !same_bits(backward.node_value(x, 17, 40), fwd[std::size_t(x)]);
+    for (int x = 64; x >= 0; --x)
+        order_differs += !same_bits(backward.node_value(x, 17, 40), fwd[std::size_t(x)]);
 
     const double us = 1e6;
     std::string md = "# okada1989: lattice Types I, II, III\n\n";
@@ -119,9 +120,10 @@ SHITSUKAN_FIGURE(okada1989_table_types, "okada1989", "table-types",
     md += fmt("| type | memory | setup [s] | %dx%d slice [us/point] | %d scattered [us/point] |\n",
               slice, slice, scattered);
     md += "|---|---|---|---|---|\n";
-    md += fmt("| I (whole array, O(2^{3R})) | %llu bytes (65^3 floats) | %.4f (build) | %.3f | %.3f |\n",
-              static_cast<unsigned long long>(type1.bytes()), build1,
-              slice1 * us / double(coherent.size()), rand1 * us / double(random_points.size()));
+    md += fmt(
+        "| I (whole array, O(2^{3R})) | %llu bytes (65^3 floats) | %.4f (build) | %.3f | %.3f |\n",
+        static_cast<unsigned long long>(type1.bytes()), build1,
+        slice1 * us / double(coherent.size()), rand1 * us / double(random_points.size()));
     md += fmt("| II (ancestor list, kept) | %zu nodes = %zu bytes payload after the slice, %zu "
               "nodes = %zu bytes after the scattered set | 0 | %.3f | %.3f |\n",
               list_slice, list_slice * 12, list_rand, list_rand * 12,

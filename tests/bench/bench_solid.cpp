@@ -27,7 +27,8 @@ const FractalLattice& bench_lattice() {
 std::vector<Vec3> scattered_points(int n) {
     Pcg32 rng(7u, 3u);
     std::vector<Vec3> pts(static_cast<std::size_t>(n));
-    for (Vec3& p : pts) p = Vec3{rng.uniform(0.0f, 64.0f), rng.uniform(0.0f, 64.0f), rng.uniform(0.0f, 64.0f)};
+    for (Vec3& p : pts)
+        p = Vec3{rng.uniform(0.0f, 64.0f), rng.uniform(0.0f, 64.0f), rng.uniform(0.0f, 64.0f)};
     return pts;
 }
 
@@ -66,7 +67,8 @@ SHITSUKAN_BENCH(solid_type1_sample) {
         for (const Vec3& p : pts) s += perlin.GetValue(p.x / 8, p.y / 8, p.z / 8);
         bench::sink(s);
     }) / n;
-    bench::report("D(P) Type I per sample, scattered points (goal ratio >= 15)", ours, "stb_perlin fbm-6", stb);
+    bench::report("D(P) Type I per sample, scattered points (goal ratio >= 15)", ours,
+                  "stb_perlin fbm-6", stb);
     bench::report("D(P) Type I per sample, scattered points", ours, "libnoise Perlin-6", libnoise);
 }
 

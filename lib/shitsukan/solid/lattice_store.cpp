@@ -51,7 +51,8 @@ Status FractalLattice::build(const FractalParams& params, std::uint64_t budget_b
     SHITSUKAN_TRY(check_budget(params.R, budget_bytes));
     std::vector<float> values(std::size_t(lattice_bytes(params.R) / sizeof(float)));
     LatticeView view;
-    SHITSUKAN_TRY(build_fractal_lattice(params, values.data(), values.size() * sizeof(float), &view));
+    SHITSUKAN_TRY(
+        build_fractal_lattice(params, values.data(), values.size() * sizeof(float), &view));
     values_.swap(values);
     view_ = view;
     view_.values = values_.data();
@@ -63,7 +64,8 @@ Status save_lattice(const std::string& path, const FractalLattice& lattice) {
     if (lattice.empty())
         return Status::error(StatusCode::invalid_argument, "save_lattice: the lattice is empty");
     std::FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) return Status::error(StatusCode::io_error, "save_lattice: cannot open %s", path.c_str());
+    if (!f)
+        return Status::error(StatusCode::io_error, "save_lattice: cannot open %s", path.c_str());
     const FractalParams& p = lattice.params();
     unsigned char header[kHeaderBytes];
     std::memcpy(header, kMagic, 8);
@@ -83,16 +85,21 @@ Status save_lattice(const std::string& path, const FractalLattice& lattice) {
         ok = std::fwrite(chunk, 1, 4 * n, f) == 4 * n;
     }
     ok = (std::fclose(f) == 0) && ok;
-    if (!ok) return Status::error(StatusCode::io_error, "save_lattice: write to %s failed", path.c_str());
+    if (!ok)
+        return Status::error(StatusCode::io_error, "save_lattice: write to %s failed",
+                             path.c_str());
     return Status::success();
 }
 
 Status load_lattice(const std::string& path, FractalLattice* out, std::uint64_t budget_bytes) {
-    if (out == nullptr) return Status::error(StatusCode::invalid_argument, "load_lattice: out is null");
+    if (out == nullptr)
+        return Status::error(StatusCode::invalid_argument, "load_lattice: out is null");
     std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) return Status::error(StatusCode::io_error, "load_lattice: cannot open %s", path.c_str());
+    if (!f)
+        return Status::error(StatusCode::io_error, "load_lattice: cannot open %s", path.c_str());
     unsigned char header[kHeaderBytes];
-    if (std::fread(header, 1, kHeaderBytes, f) != kHeaderBytes || std::memcmp(header, kMagic, 8) != 0) {
+    if (std::fread(header, 1, kHeaderBytes, f) != kHeaderBytes ||
+        std::memcmp(header, kMagic, 8) != 0) {
         std::fclose(f);
         return Status::error(StatusCode::io_error, "load_lattice: %s is not a lattice file",
                              path.c_str());
@@ -116,10 +123,12 @@ Status load_lattice(const std::string& path, FractalLattice* out, std::uint64_t 
     for (std::size_t i = 0; ok && i < values.size(); i += 4096) {
         std::size_t n = values.size() - i < 4096 ? values.size() - i : 4096;
         ok = std::fread(chunk, 1, 4 * n, f) == 4 * n;
-        for (std::size_t j = 0; ok && j < n; ++j) values[i + j] = bits_float(get_u32(chunk + 4 * j));
+        for (std::size_t j = 0; ok && j < n; ++j)
+            values[i + j] = bits_float(get_u32(chunk + 4 * j));
     }
     std::fclose(f);
-    if (!ok) return Status::error(StatusCode::io_error, "load_lattice: %s is truncated", path.c_str());
+    if (!ok)
+        return Status::error(StatusCode::io_error, "load_lattice: %s is truncated", path.c_str());
     out->values_.swap(values);
     out->params_ = p;
     out->view_.values = out->values_.data();

@@ -42,7 +42,8 @@ float TypeIILattice::compute(std::int32_t x, std::int32_t y, std::int32_t z) {
     const std::int32_t h = c.half;
     const std::int32_t step[3][3] = {{h, 0, 0}, {0, h, 0}, {0, 0, h}};
     auto parent = [&](int axis, int sign) {
-        return compute(x + sign * step[axis][0], y + sign * step[axis][1], z + sign * step[axis][2]);
+        return compute(x + sign * step[axis][0], y + sign * step[axis][1],
+                       z + sign * step[axis][2]);
     };
     // Parents first (recursively), then the node's own g: the order a sequential stream sees.
     float parents[6];
@@ -79,7 +80,8 @@ float TypeIILattice::node_value(std::int32_t x, std::int32_t y, std::int32_t z) 
 
 Status TypeIILattice::node_value_checked(std::int32_t x, std::int32_t y, std::int32_t z,
                                          float* out) {
-    if (!ready_) return Status::error(StatusCode::invalid_argument, "Type II lattice: not initialised");
+    if (!ready_)
+        return Status::error(StatusCode::invalid_argument, "Type II lattice: not initialised");
     const std::int32_t last = std::int32_t(1) << params_.R;
     if (x < 0 || y < 0 || z < 0 || x > last || y > last || z > last)
         return Status::error(StatusCode::out_of_range,

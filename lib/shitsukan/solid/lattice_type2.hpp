@@ -45,7 +45,9 @@ public:
 
     std::size_t list_size() const { return list_.size(); }
     // Payload of the list: per node its packed coordinates (8 bytes) and value (4 bytes).
-    std::size_t list_bytes() const { return list_.size() * (sizeof(std::uint64_t) + sizeof(float)); }
+    std::size_t list_bytes() const {
+        return list_.size() * (sizeof(std::uint64_t) + sizeof(float));
+    }
 
 private:
     float compute(std::int32_t x, std::int32_t y, std::int32_t z);

@@ -20,9 +20,10 @@
 // last level or two. A small direct-mapped cache of finest-level blocks (kTypeIIIRowCache
 // = 64 blocks, 7.7 KB; define SHITSUKAN_TYPE3_ROW_CACHE=0 to leave it out) keeps the blocks
 // of the previous raster row, so the next row reuses them without any descent: a block's
-// values depend only on its coordinates, never on the path that computed it. Ranges: 0 <= R <= kTypeIIIMaxDepth (24: float
-// coordinates still resolve single cells). NoiseSource::sequential is refused
-// (not_supported): an order-dependent stream is exactly what Type III cannot use.
+// values depend only on its coordinates, never on the path that computed it.
+// Ranges: 0 <= R <= kTypeIIIMaxDepth (24: float coordinates still resolve single cells).
+// NoiseSource::sequential is refused (not_supported): an order-dependent stream is exactly
+// what Type III cannot use.
 // Agreement: with NoiseSource::hash, Types I, II and III return the same float at every
 // node (the same rules in fractal_node.hpp, summed in the same order).
 // small-device: yes (no allocation; state is this object)

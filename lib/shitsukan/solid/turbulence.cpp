@@ -30,8 +30,8 @@ float turbulence(const LatticeView& lattice, Vec3 p) {
     const std::size_t side = std::size_t(lattice.side), plane = side * side;
     const float* base = lattice.values + (std::size_t(iz) * side + std::size_t(iy)) * side +
                         std::size_t(ix);
-    const float d[8] = {base[0],         base[1],         base[side],         base[side + 1],
-                        base[plane],     base[plane + 1], base[plane + side], base[plane + side + 1]};
+    const float d[8] = {base[0],     base[1],         base[side],         base[side + 1],
+                        base[plane], base[plane + 1], base[plane + side], base[plane + side + 1]};
     return trilinear_corners(d, fx, fy, fz);
 }
 

@@ -31,7 +31,8 @@ inline float trilinear_corners(const float d[8], float fx, float fy, float fz) {
     float v[8];  // D_i · V_i, with V_i = the product of the three opposite extents
     for (int k = 0; k < 2; ++k)
         for (int j = 0; j < 2; ++j)
-            for (int i = 0; i < 2; ++i) v[i + 2 * j + 4 * k] = d[i + 2 * j + 4 * k] * (wx[i] * wy[j] * wz[k]);
+            for (int i = 0; i < 2; ++i)
+                v[i + 2 * j + 4 * k] = d[i + 2 * j + 4 * k] * (wx[i] * wy[j] * wz[k]);
     // Summed pairwise (a fixed order, shorter dependency chain than left to right).
     return ((v[0] + v[1]) + (v[2] + v[3])) + ((v[4] + v[5]) + (v[6] + v[7]));
 }

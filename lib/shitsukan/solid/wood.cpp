@@ -42,7 +42,8 @@ Status validate_wood(const WoodParams& w) {
         return Status::error(StatusCode::invalid_argument, "wood: axis (x0, y0) is not finite");
     if (!is_finite(w.k2) || !(w.k2 > 0.0f))
         return Status::error(StatusCode::invalid_argument,
-                             "wood: ring frequency k2 must be finite and > 0 (got %g)", double(w.k2));
+                             "wood: ring frequency k2 must be finite and > 0 (got %g)",
+                             double(w.k2));
     if (!is_finite(w.k))
         return Status::error(StatusCode::invalid_argument, "wood: k is not finite");
     return Status::success();
