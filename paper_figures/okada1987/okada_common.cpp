@@ -55,6 +55,9 @@ void record_lattice(figures::FigureContext& ctx) {
     ctx.chosen("corner values", "0 (all eight)", "not given; D then has mean 0 everywhere");
     ctx.chosen("object -> lattice", "(32 + 30x, 32 - 30z, 32 + 30y), object in [-1, 1]^3, y up",
                "objects fill [2, 62]^3 of the lattice; texture z = object up");
+    ctx.chosen("texture units", "one lattice spacing: P, c_j, w_j, r and the shift k·D(P)",
+               "the paper does not say in which unit k applies; in lattice units k = 16 folds "
+               "the layers and k = 1.6 bends rings 5.2 units apart");
 }
 
 void record_material(figures::FigureContext& ctx, Material m, float k) {

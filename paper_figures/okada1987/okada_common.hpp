@@ -14,7 +14,8 @@
 //   mapping    object space [-1, 1]^3 (y up) -> lattice (32 + 30x, 32 - 30z, 32 + 30y): the
 //              texture's z axis (marble's layer normal, wood's axis) is the object's up
 //              axis, the objects fill [2, 62]^3 of [0, 64]^3, so D(P) never leaves the
-//              lattice (even the wood's displaced point is not looked up again).
+//              lattice (even the wood's displaced point is not looked up again). All texture
+//              lengths (P, c_j, w_j, r, the shift k·D) are in lattice spacings.
 //   marble     six stripes (kStripes, lattice units), G' = 1 - min(G, 1) so that G' = 1
 //              (I_max) is limestone and the stripes take the impurity colour I_min.
 //   okada1989  one stripe kSingleStripe (c 32, w 3, alpha 0.5), same G' and colours.
