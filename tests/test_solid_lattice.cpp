@@ -263,3 +263,27 @@ TEST_CASE("quadtree lattice (okada1987 §2.1): midpoints and centres, level by l
     q.R = 13;
     CHECK(build_quadtree_lattice(q, h, sizeof h, &side).code() == StatusCode::invalid_argument);
 }
+
+TEST_CASE("tiny lattices (R = 0, 1, 2): the three types still agree") {
+    for (int R = 0; R <= 2; ++R) {
+        FractalParams p;
+        p.R = R;
+        for (int i = 0; i < 8; ++i) p.corners[i] = 0.25f * float(i) - 1.0f;
+        LatticeView v;
+        std::vector<float> values = build_type1(p, &v);
+        TypeIILattice t2;
+        REQUIRE(t2.init(p).ok());
+        TypeIIILattice t3;
+        REQUIRE(t3.init(p).ok());
+        const int last = 1 << R;
+        for (int z = 0; z <= last; ++z)
+            for (int y = 0; y <= last; ++y)
+                for (int x = 0; x <= last; ++x) {
+                    CHECK(same_bits(v.at(x, y, z), t2.node_value(x, y, z)));
+                    CHECK(same_bits(v.at(x, y, z), t3.node_value(x, y, z)));
+                }
+        CHECK(v.at(last, 0, last) == p.corners[5]);  // corner (1, 0, 1)
+        const Vec3 mid{0.5f * float(last), 0.25f * float(last), 0.75f * float(last)};
+        CHECK(same_bits(turbulence(v, mid), t3.turbulence(mid)));
+    }
+}
