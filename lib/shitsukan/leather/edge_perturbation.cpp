@@ -6,6 +6,7 @@
 #include <limits>
 #include <vector>
 
+#include "shitsukan/core/assert.hpp"
 #include "shitsukan/core/hash.hpp"
 #include "shitsukan/geom/polygon.hpp"
 #include "shitsukan/leather/seed_layout.hpp"
@@ -28,12 +29,18 @@ double slope_bound(Vec2d a, Vec2d b, Vec2d c) {
     Vec2d ab = b - a;
     double l = length(ab);
     Vec2d u = ab / l;
-    double h = std::fabs(cross(u, c - a));       // distance from c to the chord's line
+    double h = std::fabs(cross(u, c - a));           // distance from c to the chord's line
     double da = dot(u, c - a), db = dot(-u, c - b);  // c's foot seen from a and from b
-    double tan_a = da > 0.0 ? h / da : inf;       // base angles of the fan triangle (a, b, c)
+    double tan_a = da > 0.0 ? h / da : inf;           // base angles of the fan triangle (a, b, c)
     double tan_b = db > 0.0 ? h / db : inf;
-    double L = std::max(std::fabs(da), std::fabs(db));
-    double star = h / (0.5 * l + L);              // G (l/2 + L) < h: star-shaped from c
+    // Star-shaped from c: at chord parameter s the curve point must satisfy
+    // |s - s0| G + |f(s)| < h with |f(s)| <= G min(s, l - s) (s0: c's foot). The left side is
+    // piecewise linear in s with breaks at s0 and l/2, so its maximum is at one of them or at
+    // an end.
+    double s0 = std::min(std::max(da, 0.0), l);
+    double worst = 0.0;
+    for (double s : {0.0, l, 0.5 * l, s0}) worst = std::max(worst, std::fabs(s - da) + std::min(s, l - s));
+    double star = h / worst;
     return std::min(std::min(tan_a, tan_b), star);
 }
 
@@ -68,7 +75,7 @@ void append_polygon(ScalePattern* out, std::vector<Vec2>& poly) {
 }  // namespace
 
 void midpoint_displacement(Vec2d a, Vec2d b, const PerturbationParams& prm, std::uint32_t seed,
-                           double* f) {
+                           double* f, const double* level_cap) {
     if (lex_less(b, a)) std::swap(a, b);
     const int n = 1 << prm.levels;
     std::uint64_t h = hash_start(seed, kStreamPerturbation);
@@ -79,11 +86,13 @@ void midpoint_displacement(Vec2d a, Vec2d b, const PerturbationParams& prm, std:
     f[0] = 0.0;
     f[n] = 0.0;
     double amplitude = double(prm.p);
-    for (int step = n; step >= 2; step /= 2) {
+    int level = 0;
+    for (int step = n; step >= 2; step /= 2, ++level) {
+        double amp = level_cap ? std::min(amplitude, level_cap[level]) : amplitude;
         for (int i = 0; i < n; i += step) {
             int mid = i + step / 2;
             double rnd = 2.0 * double(uniform_from_bits(hash_add(h, std::uint64_t(mid)))) - 1.0;
-            f[mid] = 0.5 * (f[i] + f[i + step]) + amplitude * rnd;
+            f[mid] = 0.5 * (f[i] + f[i + step]) + amp * rnd;
         }
         amplitude *= double(prm.decay);
     }
@@ -114,19 +123,27 @@ Status perturb_subdivision(const PlanarSubdivision& sub, const PerturbationParam
         if (edge.right >= 0 && prm.p > 0.0f && n > 1) {
             Vec2d a = sub.vertices[std::size_t(edge.v0)], b = sub.vertices[std::size_t(edge.v1)];
             if (lex_less(b, a)) std::swap(a, b);
-            midpoint_displacement(a, b, prm, seed, f.data());
-            double l = length(b - a), ds = l / n, slope = 0.0;
-            for (int i = 0; i < n; ++i) slope = std::max(slope, std::fabs(f[std::size_t(i) + 1] - f[std::size_t(i)]) / ds);
+            double l = length(b - a), ds = l / n;
+            // the slope budget G, shared by the levels: level k (half-segment l / 2^k) may use
+            // w_k = 2^-k / (1 - 2^-L) of it, so the coarse bends keep most of their amplitude
             double bound = double(prm.safety) * std::min(slope_bound(a, b, centre[std::size_t(edge.left)]),
                                                          slope_bound(a, b, centre[std::size_t(edge.right)]));
-            double scale = 1.0;
-            if (slope > bound) {
-                scale = bound / slope;
-                ++rep.clamped;
+            double cap[kMaxPerturbationLevels];
+            double half = 0.5 * l, weight_sum = 1.0 - std::ldexp(1.0, -prm.levels);
+            bool capped = false;
+            double amplitude = double(prm.p);
+            for (int k = 0; k < prm.levels; ++k, half *= 0.5, amplitude *= double(prm.decay)) {
+                cap[k] = bound * (std::ldexp(1.0, -(k + 1)) / weight_sum) * half;
+                capped = capped || amplitude > cap[k];
             }
+            rep.clamped += capped;
+            midpoint_displacement(a, b, prm, seed, f.data(), cap);
+            double slope = 0.0;
+            for (int i = 0; i < n; ++i) slope = std::max(slope, std::fabs(f[std::size_t(i) + 1] - f[std::size_t(i)]) / ds);
+            SHITSUKAN_ASSERT(slope <= bound * (1.0 + 1e-9));  // the sum of the caps' slopes
             Vec2d u = (b - a) / l, nrm{-u.y, u.x};
             for (int i = 1; i < n; ++i) {
-                double off = f[std::size_t(i)] * scale;
+                double off = f[std::size_t(i)];
                 rep.max_offset = std::max(rep.max_offset, std::fabs(off));
                 curve.push_back(a + u * (ds * i) + nrm * off);
             }
