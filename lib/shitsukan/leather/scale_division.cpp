@@ -97,9 +97,13 @@ Status divide_scales(const ScaleParams& prm, ScaleDivision* out) {
         region.clear();
         for (int k = 0; k < m; ++k) region.push_back(s1.vertices[std::size_t(s1.face_vertex(s1.face_edges[std::size_t(e0 + k)]))]);
         // processings 1-2: a row parallel to x through this polygon's own seed, moved along x
+        // (the columns of the polygon's own half: its scales end at the centre-line joint;
+        // with d = 0 both rows sit on the centre line and every polygon spans both halves)
         const int site = out->stage1_site[std::size_t(f)];
+        const Vec2d own = out->stage1_seeds.original[std::size_t(site)];
+        const int side = prm.d > 0.0f ? (own.x < 0.5 * double(prm.width) ? -1 : 1) : 0;
         SHITSUKAN_TRY(stage2_row_seeds(out->columns, prm.a, out->stage1_seeds.moved[std::size_t(site)].y, site,
-                                       prm.seed, &row));
+                                       prm.seed, &row, side));
         out->stage2_seeds.original.insert(out->stage2_seeds.original.end(), row.original.begin(), row.original.end());
         out->stage2_seeds.moved.insert(out->stage2_seeds.moved.end(), row.moved.begin(), row.moved.end());
         out->stage2_row.insert(out->stage2_row.end(), row.moved.size(), f);

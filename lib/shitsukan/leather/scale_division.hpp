@@ -16,7 +16,8 @@
 //   stage 1: two seed rows parallel to y at distance d from the centre line, spacing D,
 //            moved along y (seed_layout.hpp), Voronoi division of the rectangle;
 //   stage 2: for each stage-1 polygon, one seed row parallel to x through its (moved) seed,
-//            columns narrowing toward the left and right edges, moved along x; Voronoi
+//            on the columns of its own half (left or right of the centre line; both when
+//            d = 0), narrowing toward the left and right edges, moved along x; Voronoi
 //            division clipped to that polygon. The pieces of a stage-1 edge seen from its two
 //            sides are split at each other's end points (T junctions become vertices), so the
 //            final polygons share every edge and form one planar subdivision;
