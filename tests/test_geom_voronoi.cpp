@@ -26,7 +26,8 @@ std::vector<Vec2d> random_sites(int n, std::uint64_t seed) {
 }
 
 // Every sample of cell i is at least as near to site i as to any other site (1e-12 slack).
-void check_nearest_site(const std::vector<Vec2d>& sites, const VoronoiCells& cells, int samples_per_cell) {
+void check_nearest_site(const std::vector<Vec2d>& sites, const VoronoiCells& cells,
+                        int samples_per_cell) {
     Pcg32 rng(99, 3);
     for (int i = 0; i < cells.cell_count(); ++i) {
         int k;
@@ -39,7 +40,8 @@ void check_nearest_site(const std::vector<Vec2d>& sites, const VoronoiCells& cel
         }
         int tested = 0;
         for (int tries = 0; tested < samples_per_cell && tries < 50 * samples_per_cell; ++tries) {
-            Vec2d q{lo.x + (hi.x - lo.x) * rng.uniform_double(), lo.y + (hi.y - lo.y) * rng.uniform_double()};
+            Vec2d q{lo.x + (hi.x - lo.x) * rng.uniform_double(),
+                    lo.y + (hi.y - lo.y) * rng.uniform_double()};
             if (!point_in_polygon(v, k, q)) continue;
             ++tested;
             double own = length_squared(q - sites[std::size_t(i)]);
@@ -90,7 +92,8 @@ TEST_CASE("delaunay: empty circumcircles on random points") {
     DelaunayTriangulation dt;
     REQUIRE(build_delaunay(sites.data(), int(sites.size()), &dt).ok());
     for (const auto& t : dt.triangles) {
-        CHECK(orient2d(dt.points[std::size_t(t.v[0])], dt.points[std::size_t(t.v[1])], dt.points[std::size_t(t.v[2])]) > 0);
+        CHECK(orient2d(dt.points[std::size_t(t.v[0])], dt.points[std::size_t(t.v[1])],
+                       dt.points[std::size_t(t.v[2])]) > 0);
         for (std::size_t p = 0; p < sites.size(); ++p)
             REQUIRE(incircle(dt.points[std::size_t(t.v[0])], dt.points[std::size_t(t.v[1])],
                              dt.points[std::size_t(t.v[2])], sites[p]) <= 0.0);
@@ -146,10 +149,12 @@ TEST_CASE("voronoi: a = 0 triangular lattice -> equal regular hexagons with exac
         int k;
         const Vec2d* v = cells.cell(c, &k);
         Vec2d s = sites[std::size_t(c)];
-        if (s.x < side || s.x > 1 - side || s.y < side || s.y > 1 - side) continue;  // may be clipped
+        if (s.x < side || s.x > 1 - side || s.y < side || s.y > 1 - side)
+            continue;  // may be clipped
         ++hexagons;
         REQUIRE(k == 6);
-        CHECK(polygon_area(v, k) == doctest::Approx(1.5 * std::sqrt(3.0) * side * side).epsilon(1e-12));
+        CHECK(polygon_area(v, k) ==
+              doctest::Approx(1.5 * std::sqrt(3.0) * side * side).epsilon(1e-12));
         for (int j = 0; j < k; ++j) CHECK(length(v[j] - s) == doctest::Approx(side).epsilon(1e-12));
     }
     CHECK(hexagons > 60);

@@ -47,8 +47,8 @@ void check_exactly_one(const ScalePattern& pat, int samples, std::uint64_t seed)
         Vec2 q{rng.uniform() * pat.width, rng.uniform() * pat.height};
         int count = 0;
         for (int f = 0; f < pat.polygon_count(); ++f) {
-            if (q.x < lo[std::size_t(f)].x || q.x > hi[std::size_t(f)].x || q.y < lo[std::size_t(f)].y ||
-                q.y > hi[std::size_t(f)].y)
+            if (q.x < lo[std::size_t(f)].x || q.x > hi[std::size_t(f)].x ||
+                q.y < lo[std::size_t(f)].y || q.y > hi[std::size_t(f)].y)
                 continue;
             int n;
             const Vec2* v = pat.polygon(f, &n);
@@ -77,7 +77,9 @@ int count_not_star(const ScalePattern& pat) {
     return bad;
 }
 
-ScaleParams fig07() { return ScaleParams{}; }
+ScaleParams fig07() {
+    return ScaleParams{};
+}
 
 }  // namespace
 
@@ -198,7 +200,8 @@ TEST_CASE("determinism: same seed, same polygons bit for bit; edge curves indepe
     CHECK(matched == p1.polygon_count());
 }
 
-TEST_CASE("pattern statistics claimed by fig. 7: near-quadrilateral scales, narrower at the edges") {
+TEST_CASE(
+    "pattern statistics claimed by fig. 7: near-quadrilateral scales, narrower at the edges") {
     double corners = 0, cells = 0, centre_w = 0, edge_w = 0;
     int centre_n = 0, edge_n = 0;
     for (std::uint32_t seed = 1; seed <= 8; ++seed) {
@@ -209,14 +212,17 @@ TEST_CASE("pattern statistics claimed by fig. 7: near-quadrilateral scales, narr
         const PlanarSubdivision& sub = steps.cells;
         for (int f = 0; f < sub.face_count(); ++f) {
             std::vector<Vec2d> v;
-            for (int k = sub.face_offsets[std::size_t(f)]; k < sub.face_offsets[std::size_t(f) + 1]; ++k)
-                v.push_back(sub.vertices[std::size_t(sub.face_vertex(sub.face_edges[std::size_t(k)]))]);
+            for (int k = sub.face_offsets[std::size_t(f)]; k < sub.face_offsets[std::size_t(f) + 1];
+                 ++k)
+                v.push_back(
+                    sub.vertices[std::size_t(sub.face_vertex(sub.face_edges[std::size_t(k)]))]);
             const int n = int(v.size());
             // corners: vertices where the boundary turns (T junctions of the other side do not)
             int c = 0;
             double lo = v[0].x, hi = v[0].x, ylo = v[0].y, yhi = v[0].y;
             for (int k = 0; k < n; ++k) {
-                Vec2d a = v[std::size_t((k + n - 1) % n)], b = v[std::size_t(k)], d = v[std::size_t((k + 1) % n)];
+                Vec2d a = v[std::size_t((k + n - 1) % n)], b = v[std::size_t(k)],
+                      d = v[std::size_t((k + 1) % n)];
                 if (std::fabs(cross(b - a, d - b)) > 1e-9 * length(b - a) * length(d - b)) ++c;
                 lo = std::min(lo, b.x);
                 hi = std::max(hi, b.x);
@@ -239,7 +245,8 @@ TEST_CASE("pattern statistics claimed by fig. 7: near-quadrilateral scales, narr
     }
     const double mean_corners = corners / cells;
     const double ratio = (edge_w / edge_n) / (centre_w / centre_n);
-    MESSAGE("stage-2 cells: mean corner count " << mean_corners << ", edge / centre width " << ratio);
+    MESSAGE("stage-2 cells: mean corner count " << mean_corners << ", edge / centre width "
+                                                << ratio);
     CHECK(mean_corners > 3.8);
     CHECK(mean_corners < 4.6);
     CHECK(ratio < 0.85);

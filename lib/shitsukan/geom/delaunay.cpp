@@ -32,10 +32,10 @@ std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y) {
 }
 
 struct BoundaryEdge {
-    int u, w;       // the edge u -> w as it runs in the cavity triangle (counter-clockwise)
-    int outside;    // triangle beyond it, -1 at the frame
+    int u, w;          // the edge u -> w as it runs in the cavity triangle (counter-clockwise)
+    int outside;       // triangle beyond it, -1 at the frame
     int outside_slot;  // index j with triangles[outside].n[j] == the cavity triangle
-    int created;    // the new triangle (p, u, w)
+    int created;       // the new triangle (p, u, w)
 };
 
 class Builder {
@@ -159,17 +159,22 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
 
 Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out, Vec2d cover_lo,
                       Vec2d cover_hi) {
-    if (out == nullptr) return Status::error(StatusCode::invalid_argument, "build_delaunay: out is null");
+    if (out == nullptr)
+        return Status::error(StatusCode::invalid_argument, "build_delaunay: out is null");
     if (count < 1 || points == nullptr)
-        return Status::error(StatusCode::invalid_argument, "build_delaunay: need at least 1 point (got %d)", count);
+        return Status::error(StatusCode::invalid_argument,
+                             "build_delaunay: need at least 1 point (got %d)", count);
     if (count > (1 << 28))
-        return Status::error(StatusCode::too_large, "build_delaunay: %d points is more than 2^28", count);
+        return Status::error(StatusCode::too_large, "build_delaunay: %d points is more than 2^28",
+                             count);
     double lo_x = points[0].x, hi_x = points[0].x, lo_y = points[0].y, hi_y = points[0].y;
     for (int i = 0; i < count; ++i) {
-        if (!is_finite(points[i]) || std::fabs(points[i].x) > 1e100 || std::fabs(points[i].y) > 1e100)
-            return Status::error(StatusCode::invalid_argument,
-                                 "build_delaunay: point %d = (%g, %g) is not finite or beyond 1e100", i,
-                                 points[i].x, points[i].y);
+        if (!is_finite(points[i]) || std::fabs(points[i].x) > 1e100 ||
+            std::fabs(points[i].y) > 1e100)
+            return Status::error(
+                StatusCode::invalid_argument,
+                "build_delaunay: point %d = (%g, %g) is not finite or beyond 1e100", i, points[i].x,
+                points[i].y);
         lo_x = std::min(lo_x, points[i].x);
         hi_x = std::max(hi_x, points[i].x);
         lo_y = std::min(lo_y, points[i].y);
@@ -225,8 +230,9 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
         int i = order[k].i;
         if (k > 0 && points[order[k - 1].i] == points[i]) {
             int first = order[k - 1].i;
-            out->duplicate_of[std::size_t(i)] =
-                out->duplicate_of[std::size_t(first)] >= 0 ? out->duplicate_of[std::size_t(first)] : first;
+            out->duplicate_of[std::size_t(i)] = out->duplicate_of[std::size_t(first)] >= 0
+                                                    ? out->duplicate_of[std::size_t(first)]
+                                                    : first;
             continue;
         }
         builder.insert(i);

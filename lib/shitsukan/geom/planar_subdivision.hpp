@@ -38,7 +38,8 @@ struct PlanarSubdivision {
 
     int face_count() const { return face_offsets.empty() ? 0 : int(face_offsets.size()) - 1; }
     int face_vertex(int face_edge) const {  // the vertex where a face edge starts
-        return face_edge >= 0 ? edges[std::size_t(face_edge)].v0 : edges[std::size_t(~face_edge)].v1;
+        return face_edge >= 0 ? edges[std::size_t(face_edge)].v0
+                              : edges[std::size_t(~face_edge)].v1;
     }
 };
 

@@ -63,22 +63,40 @@ bool inside_of(const V* v, int n, V q) {
 
 void add_label(ClipVertex& v, int k) {
     if (v.on[0] == k || v.on[1] == k) return;
-    if (v.on[0] < 0) v.on[0] = k;
-    else if (v.on[1] < 0) v.on[1] = k;
+    if (v.on[0] < 0)
+        v.on[0] = k;
+    else if (v.on[1] < 0)
+        v.on[1] = k;
 }
 
-bool has_label(const ClipVertex& v, int k) { return k >= 0 && (v.on[0] == k || v.on[1] == k); }
+bool has_label(const ClipVertex& v, int k) {
+    return k >= 0 && (v.on[0] == k || v.on[1] == k);
+}
 
-bool lex_less(Vec2d a, Vec2d b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+bool lex_less(Vec2d a, Vec2d b) {
+    return a.x < b.x || (a.x == b.x && a.y < b.y);
+}
 
 }  // namespace
 
-double polygon_area(const Vec2d* v, int n) { return area_of(v, n); }
-double polygon_area(const Vec2* v, int n) { return area_of(v, n); }
-Vec2d polygon_centroid(const Vec2d* v, int n) { return centroid_of(v, n); }
-Vec2d polygon_centroid(const Vec2* v, int n) { return centroid_of(v, n); }
-bool point_in_polygon(const Vec2d* v, int n, Vec2d q) { return inside_of<Vec2d, double>(v, n, q); }
-bool point_in_polygon(const Vec2* v, int n, Vec2 q) { return inside_of<Vec2, double>(v, n, q); }
+double polygon_area(const Vec2d* v, int n) {
+    return area_of(v, n);
+}
+double polygon_area(const Vec2* v, int n) {
+    return area_of(v, n);
+}
+Vec2d polygon_centroid(const Vec2d* v, int n) {
+    return centroid_of(v, n);
+}
+Vec2d polygon_centroid(const Vec2* v, int n) {
+    return centroid_of(v, n);
+}
+bool point_in_polygon(const Vec2d* v, int n, Vec2d q) {
+    return inside_of<Vec2d, double>(v, n, q);
+}
+bool point_in_polygon(const Vec2* v, int n, Vec2 q) {
+    return inside_of<Vec2, double>(v, n, q);
+}
 
 Status check_convex_region(const Vec2d* region, int m) {
     if (region == nullptr || m < 3)
@@ -86,18 +104,21 @@ Status check_convex_region(const Vec2d* region, int m) {
                              "region: need a convex polygon of at least 3 vertices (got %d)", m);
     for (int i = 0; i < m; ++i) {
         if (!is_finite(region[i]))
-            return Status::error(StatusCode::invalid_argument, "region: vertex %d = (%g, %g) is not finite",
-                                 i, region[i].x, region[i].y);
+            return Status::error(StatusCode::invalid_argument,
+                                 "region: vertex %d = (%g, %g) is not finite", i, region[i].x,
+                                 region[i].y);
     }
     for (int i = 0; i < m; ++i) {
         if (orient2d(region[i], region[(i + 1) % m], region[(i + 2) % m]) < 0.0)
             return Status::error(StatusCode::invalid_argument,
-                                 "region: not convex and counter-clockwise at vertex %d", (i + 1) % m);
+                                 "region: not convex and counter-clockwise at vertex %d",
+                                 (i + 1) % m);
     }
     double area = polygon_area(region, m);
     if (!(area > 0.0))
         return Status::error(StatusCode::invalid_argument,
-                             "region: empty (area %g); need a convex counter-clockwise polygon", area);
+                             "region: empty (area %g); need a convex counter-clockwise polygon",
+                             area);
     return Status::success();
 }
 
@@ -107,7 +128,8 @@ void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, i
     // (x = 7 * (1/7) ...) miss it by an ulp and would leave cells 1e-17 wide.
     double diameter = 0.0;
     for (int i = 0; i < m; ++i)
-        for (int j = i + 1; j < m; ++j) diameter = std::max(diameter, length(region[i] - region[j]));
+        for (int j = i + 1; j < m; ++j)
+            diameter = std::max(diameter, length(region[i] - region[j]));
     const double snap = kClipSnapRelative * diameter;
     std::vector<double> side;
     for (int k = 0; k < m && !poly->empty(); ++k) {
@@ -123,9 +145,13 @@ void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, i
             double s = has_label(v, k) ? 0.0 : orient2d(b0, b1, v.p);
             if (s != 0.0 && std::fabs(s) <= snap * edge_length) {  // |s| = distance * |b1 - b0|
                 s = 0.0;
-                if (b0.x == b1.x) v.p.x = b0.x;
-                else if (b0.y == b1.y) v.p.y = b0.y;
-                else v.p = v.p - (b1 - b0) * (cross(b1 - b0, v.p - b0) / (edge_length * edge_length));
+                if (b0.x == b1.x)
+                    v.p.x = b0.x;
+                else if (b0.y == b1.y)
+                    v.p.y = b0.y;
+                else
+                    v.p =
+                        v.p - (b1 - b0) * (cross(b1 - b0, v.p - b0) / (edge_length * edge_length));
             }
             if (s == 0.0) add_label(v, k);
             side[std::size_t(i)] = s;

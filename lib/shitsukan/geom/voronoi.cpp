@@ -10,7 +10,9 @@
 namespace shitsukan {
 namespace {
 
-bool lex_less(Vec2d a, Vec2d b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+bool lex_less(Vec2d a, Vec2d b) {
+    return a.x < b.x || (a.x == b.x && a.y < b.y);
+}
 
 int find_root(std::vector<int>& parent, int t) {
     while (parent[std::size_t(t)] != t) {
@@ -32,7 +34,8 @@ Vec2d circumcentre(Vec2d a, Vec2d b, Vec2d c) {
 
 Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int region_count,
                      VoronoiCells* out) {
-    if (out == nullptr) return Status::error(StatusCode::invalid_argument, "voronoi_cells: out is null");
+    if (out == nullptr)
+        return Status::error(StatusCode::invalid_argument, "voronoi_cells: out is null");
     SHITSUKAN_TRY(check_convex_region(region, region_count));
     Vec2d lo = region[0], hi = region[0];
     for (int i = 0; i < region_count; ++i) {
@@ -76,7 +79,9 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
             if (v == b[0] || v == b[1] || v == b[2]) continue;
             // insert v into the sorted top-3
             int k = 3;
-            while (k > 0 && (b[k - 1] < 0 || lex_less(pts[std::size_t(v)], pts[std::size_t(b[k - 1])]))) --k;
+            while (k > 0 &&
+                   (b[k - 1] < 0 || lex_less(pts[std::size_t(v)], pts[std::size_t(b[k - 1])])))
+                --k;
             if (k >= 3) continue;
             for (int j = 2; j > k; --j) b[j] = b[j - 1];
             b[k] = v;
@@ -86,7 +91,8 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
     for (int t = 0; t < tcount; ++t) {
         if (root[std::size_t(t)] != t) continue;
         const int* b = &best[std::size_t(t) * 3];
-        centre[std::size_t(t)] = circumcentre(pts[std::size_t(b[0])], pts[std::size_t(b[1])], pts[std::size_t(b[2])]);
+        centre[std::size_t(t)] =
+            circumcentre(pts[std::size_t(b[0])], pts[std::size_t(b[1])], pts[std::size_t(b[2])]);
     }
 
     // Walk around each site: the groups of its triangles, counter-clockwise, each once.

@@ -44,24 +44,24 @@
 namespace shitsukan {
 
 struct ScaleParams {
-    float width = 1.0f, height = 1.0f;  // the paper's square pattern region
-    float D = 0.1f;                     // chosen: seed spacing, 10 rows on the unit square
-    float d = 0.1f;                     // given (fig. 7): d = 1.0 D
-    float a = 0.25f;                    // given (fig. 7)
+    float width = 1.0f, height = 1.0f;     // the paper's square pattern region
+    float D = 0.1f;                        // chosen: seed spacing, 10 rows on the unit square
+    float d = 0.1f;                        // given (fig. 7): d = 1.0 D
+    float a = 0.25f;                       // given (fig. 7)
     float edge_ratio = kDefaultEdgeRatio;  // chosen: stage-2 spacing at the edges / D
-    PerturbationParams perturbation;    // p = 0.015 given (fig. 7); recursion chosen
+    PerturbationParams perturbation;       // p = 0.015 given (fig. 7); recursion chosen
     std::uint32_t seed = 1;
 };
 
 struct ScaleDivision {
     SeedLayout stage1_seeds;
-    PlanarSubdivision stage1;             // stage-1 polygons, before perturbation
-    std::vector<int> stage1_site;         // stage-1 polygon -> its seed index
+    PlanarSubdivision stage1;      // stage-1 polygons, before perturbation
+    std::vector<int> stage1_site;  // stage-1 polygon -> its seed index
     Stage2Columns columns;
-    SeedLayout stage2_seeds;              // every row, concatenated
-    std::vector<int> stage2_row;          // stage-2 seed -> stage-1 polygon of its row
-    PlanarSubdivision cells;              // final polygons, before perturbation
-    std::vector<int> cell_stage1;         // final polygon -> stage-1 polygon
+    SeedLayout stage2_seeds;       // every row, concatenated
+    std::vector<int> stage2_row;   // stage-2 seed -> stage-1 polygon of its row
+    PlanarSubdivision cells;       // final polygons, before perturbation
+    std::vector<int> cell_stage1;  // final polygon -> stage-1 polygon
     PerturbationReport perturbation;
 };
 

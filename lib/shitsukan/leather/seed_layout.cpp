@@ -11,16 +11,19 @@ constexpr int kMaxSeedsPerLine = 4096;
 
 Status check_common(const char* who, float width, float height, float D, float a) {
     if (!(width > 0.0f) || !(height > 0.0f) || !is_finite(width) || !is_finite(height))
-        return Status::error(StatusCode::invalid_argument, "%s: width and height must be > 0 (got %g x %g)",
-                             who, double(width), double(height));
+        return Status::error(StatusCode::invalid_argument,
+                             "%s: width and height must be > 0 (got %g x %g)", who, double(width),
+                             double(height));
     if (!(D > 0.0f) || !is_finite(D))
-        return Status::error(StatusCode::invalid_argument, "%s: seed spacing D must be > 0 (got %g)", who,
-                             double(D));
+        return Status::error(StatusCode::invalid_argument,
+                             "%s: seed spacing D must be > 0 (got %g)", who, double(D));
     if (!(a >= 0.0f && a <= 1.0f))
         return Status::error(StatusCode::invalid_argument,
-                             "%s: relative displacement a must be in [0, 1] (got %g)", who, double(a));
+                             "%s: relative displacement a must be in [0, 1] (got %g)", who,
+                             double(a));
     if (width / D > kMaxSeedsPerLine || height / D > kMaxSeedsPerLine)
-        return Status::error(StatusCode::too_large, "%s: %g x %g / D = %g gives more than %d seeds a line", who,
+        return Status::error(StatusCode::too_large,
+                             "%s: %g x %g / D = %g gives more than %d seeds a line", who,
                              double(width), double(height), double(D), kMaxSeedsPerLine);
     return Status::success();
 }
@@ -37,9 +40,9 @@ Status square_lattice_seeds(float width, float height, float D, float a, std::ui
     out->original.clear();
     out->moved.clear();
     const int nx = int(std::ceil(width / D)), ny = int(std::ceil(height / D));
-    for (int j = -1; j <= ny; ++j)
-        for (int i = -1; i <= nx; ++i) {
-            Vec2d p{(i + 0.5) * double(D), (j + 0.5) * double(D)};
+    for (int j = -1; j <= ny + 1; ++j)
+        for (int i = -1; i <= nx + 1; ++i) {
+            Vec2d p{i * double(D), j * double(D)};
             out->original.push_back(p);
             p.x += seed_displacement(D, a, hashed_rnd(seed, kStreamLatticeX, i, j));
             p.y += seed_displacement(D, a, hashed_rnd(seed, kStreamLatticeY, i, j));
@@ -71,7 +74,8 @@ Status stage1_seeds(float width, float height, float D, float d, float a, std::u
     SHITSUKAN_TRY(check_common("stage1_seeds", width, height, D, a));
     if (!(d >= 0.0f) || !is_finite(d))
         return Status::error(StatusCode::invalid_argument,
-                             "stage1_seeds: distance d from the centre line must be >= 0 (got %g)", double(d));
+                             "stage1_seeds: distance d from the centre line must be >= 0 (got %g)",
+                             double(d));
     out->original.clear();
     out->moved.clear();
     const double xc = 0.5 * double(width);
@@ -98,7 +102,8 @@ Status stage2_columns(float width, float D, float edge_ratio, Stage2Columns* out
     SHITSUKAN_TRY(check_common("stage2_columns", width, width, D, 0.0f));
     if (!(edge_ratio > 0.05f && edge_ratio <= 1.0f))
         return Status::error(StatusCode::invalid_argument,
-                             "stage2_columns: edge spacing ratio must be in (0.05, 1] (got %g)", double(edge_ratio));
+                             "stage2_columns: edge spacing ratio must be in (0.05, 1] (got %g)",
+                             double(edge_ratio));
     const double xc = 0.5 * double(width);
     // distances t_k from the centre line: t_1 = s(0) / 2, then steps of s at the step's middle
     std::vector<double> t(1, 0.5 * stage2_spacing(width, D, edge_ratio, xc));
@@ -140,7 +145,8 @@ Status stage2_row_seeds(const Stage2Columns& columns, float a, double row_y, int
                         std::uint32_t seed, SeedLayout* out, int side) {
     if (!(a >= 0.0f && a <= 1.0f))
         return Status::error(StatusCode::invalid_argument,
-                             "stage2_row_seeds: relative displacement a must be in [0, 1] (got %g)", double(a));
+                             "stage2_row_seeds: relative displacement a must be in [0, 1] (got %g)",
+                             double(a));
     if (!is_finite(row_y))
         return Status::error(StatusCode::invalid_argument, "stage2_row_seeds: row y is not finite");
     out->original.clear();

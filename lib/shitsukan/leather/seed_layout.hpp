@@ -45,7 +45,9 @@ struct SeedLayout {
 };
 
 // tokai1994 eq. (1): M = D · a · Rnd.
-inline float seed_displacement(float D, float a, float rnd) { return D * a * rnd; }
+inline float seed_displacement(float D, float a, float rnd) {
+    return D * a * rnd;
+}
 
 // Rnd in [-1, 1) from the hash of (seed, stream, i, j).
 float hashed_rnd(std::uint32_t seed, std::uint32_t stream, std::int32_t i, std::int32_t j);
@@ -61,7 +63,8 @@ enum SeedStream : std::uint32_t {
 
 constexpr float kDefaultEdgeRatio = 0.5f;  // chosen: stage-2 spacing at the edges = D / 2
 
-// Square lattice ((i + 1/2) D, (j + 1/2) D) over the rectangle plus one ring outside it,
+// Square lattice (i D, j D) over the rectangle plus one ring outside it (chosen: lattice
+// points on the border, so the border cuts cells through their middle, never to slivers),
 // each seed moved along x and along y by independent eq. (1) displacements.
 Status square_lattice_seeds(float width, float height, float D, float a, std::uint32_t seed,
                             SeedLayout* out);
