@@ -1,10 +1,14 @@
 // tokai1994 figs. 7-10: the scale pattern after both divisions (fig. 7: d = 1.0 D, a = 0.25,
 // p = 0.015) and the effect of d (fig. 8), a (fig. 9) and the perturbation p (fig. 10), each
 // varied around the fig. 7 values.
+#include <cstdint>
+#include <string>
 #include <vector>
 
 #include "driver/figure.hpp"
+#include "shitsukan/image/png16.hpp"
 #include "shitsukan/leather/scale_division.hpp"
+#include "shitsukan/leather/scale_labels.hpp"
 #include "tokai1994/scale_drawing.hpp"
 
 using namespace shitsukan;
@@ -59,10 +63,31 @@ SHITSUKAN_FIGURE(tokai_fig07, "tokai1994", "fig07",
         steps.perturbation.max_offset));
     const int size = ctx.quick() ? 256 : 512, margin = size / 32;
     const Frame f{float(margin), float(margin), float(size - 2 * margin)};
-    return save_png_and_svg(ctx, size, size, [&](Canvas& c) {
+    SHITSUKAN_TRY(save_png_and_svg(ctx, size, size, [&](Canvas& c) {
         draw_pattern(c, pattern, f, kInk, 1.3f);
         draw_border(c, f, 1, 1, kInk, 1.5f);
-    });
+    }));
+    // The same polygons as data for the relief step (fig07.csv) and as a label image
+    // (fig07_labels.png: 16-bit gray, value = polygon id, every pixel exactly one polygon).
+    std::string csv = "polygon,centroid_x,centroid_y,vertex_count,vertices (x y ...)\n";
+    for (int i = 0; i < pattern.polygon_count(); ++i) {
+        int n;
+        const Vec2* v = pattern.polygon(i, &n);
+        csv += fmt("%d,%.7g,%.7g,%d,", i, double(pattern.centroids[std::size_t(i)].x),
+                   double(pattern.centroids[std::size_t(i)].y), n);
+        for (int k = 0; k < n; ++k)
+            csv += fmt("%s%.7g %.7g", k ? " " : "", double(v[k].x), double(v[k].y));
+        csv += "\n";
+    }
+    SHITSUKAN_TRY(ctx.save_text(".csv", csv));
+    const int n = size;
+    std::vector<std::int32_t> labels(std::size_t(n) * std::size_t(n));
+    SHITSUKAN_TRY(rasterize_scale_labels(pattern, n, n, labels.data()));
+    Gray16Image ids(n, n);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+            ids.at(i, j) = std::uint16_t(labels[std::size_t(j) * std::size_t(n) + std::size_t(i)]);
+    return write_png16(ctx.path("_labels.png").c_str(), ids.view());
 }
 
 SHITSUKAN_FIGURE(tokai_fig08, "tokai1994", "fig08",
