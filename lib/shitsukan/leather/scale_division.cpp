@@ -161,18 +161,41 @@ Status divide_scales(const ScaleParams& prm, ScaleDivision* out) {
     }
 
     // ---- T junctions: both sides of a stage-1 edge get all points on it ------------------
+    // Points on an edge closer than kWeldRelative * max(W, H) are one point (the edge's own
+    // end point if it is among them): with a = 0 the columns line up across a stage-1 edge
+    // and the two sides compute the same junction with different rounding (1e-14 apart).
+    const double weld = kWeldRelative * std::max(double(prm.width), double(prm.height));
     std::vector<std::vector<double>> on_edge_t(s1.edges.size());
     for (std::size_t g = 0; g < s1.edges.size(); ++g) {
         Vec2d a = s1.vertices[std::size_t(s1.edges[g].v0)],
               b = s1.vertices[std::size_t(s1.edges[g].v1)];
         std::vector<Vec2d>& pts = on_edge[g];
         auto t_of = [&](Vec2d p) { return dot(p - a, b - a); };
-        std::sort(pts.begin(), pts.end(), [&](Vec2d p, Vec2d q) {
+        auto before = [&](Vec2d p, Vec2d q) {
             double tp = t_of(p), tq = t_of(q);
             if (tp != tq) return tp < tq;
             return p.x < q.x || (p.x == q.x && p.y < q.y);
-        });
+        };
+        std::sort(pts.begin(), pts.end(), before);
         pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+        std::vector<Vec2d> canonical(pts.size());
+        for (std::size_t i = 0; i < pts.size();) {
+            std::size_t j = i;
+            while (j + 1 < pts.size() && length(pts[j + 1] - pts[i]) <= weld) ++j;
+            Vec2d c = pts[i];
+            for (std::size_t k = i; k <= j; ++k)
+                if (pts[k] == a || pts[k] == b) c = pts[k];
+            for (std::size_t k = i; k <= j; ++k) canonical[k] = c;
+            i = j + 1;
+        }
+        for (auto& cell : cells)
+            for (TaggedVertex& t : cell) {
+                if (t.on[0] != int(g) && t.on[1] != int(g)) continue;
+                auto it = std::lower_bound(pts.begin(), pts.end(), t.p, before);
+                if (it != pts.end() && *it == t.p) t.p = canonical[std::size_t(it - pts.begin())];
+            }
+        canonical.erase(std::unique(canonical.begin(), canonical.end()), canonical.end());
+        pts = canonical;
         for (Vec2d p : pts) on_edge_t[g].push_back(t_of(p));
     }
     std::vector<Vec2d> verts;

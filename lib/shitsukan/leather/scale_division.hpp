@@ -43,6 +43,9 @@
 
 namespace shitsukan {
 
+// Stage-2 junctions on a stage-1 edge closer than this (times the region size) are welded.
+constexpr double kWeldRelative = 1e-9;
+
 struct ScaleParams {
     float width = 1.0f, height = 1.0f;     // the paper's square pattern region
     float D = 0.1f;                        // chosen: seed spacing, 10 rows on the unit square
