@@ -159,6 +159,7 @@ TEST_CASE("voronoi: a = 0 triangular lattice -> equal regular hexagons with exac
         for (int j = 0; j < k; ++j) CHECK(length(v[j] - s) == doctest::Approx(side).epsilon(1e-12));
     }
     CHECK(hexagons > 60);
+    check_nearest_site(sites, cells, 10);
     CHECK(total_area(cells) == doctest::Approx(1.0).epsilon(1e-12));
 }
 

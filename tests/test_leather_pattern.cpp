@@ -118,7 +118,7 @@ TEST_CASE("seed layouts: eq. (1) displacement bounds and the stage-2 spacing law
 }
 
 TEST_CASE("two-stage division tiles the square, before and after perturbation (fig. 7 settings)") {
-    for (std::uint32_t seed : {1u, 2u, 3u, 17u}) {
+    for (std::uint32_t seed : {1u, 2u, 3u, 17u, 99u, 12345u}) {
         ScaleParams prm = fig07();
         prm.seed = seed;
         ScaleDivision steps;
@@ -139,6 +139,34 @@ TEST_CASE("two-stage division tiles the square, before and after perturbation (f
         CHECK(steps.perturbation.max_offset > 0.0);
         CHECK(steps.perturbation.max_offset <= 2.0 * 0.015);  // sum of the level amplitudes
     }
+}
+
+TEST_CASE("single-stage lattice patterns (fig. 3) tile and stay star-shaped, even with large p") {
+    for (int tri = 0; tri < 2; ++tri)
+        for (float a : {0.0f, 0.1f, 0.5f, 1.0f})
+            for (float p : {0.015f, 0.1f}) {
+                SeedLayout s;
+                if (tri)
+                    REQUIRE(triangular_lattice_seeds(1, 1, 0.125f, a, 3, &s).ok());
+                else
+                    REQUIRE(square_lattice_seeds(1, 1, 0.125f, a, 3, &s).ok());
+                PlanarSubdivision sub;
+                REQUIRE(divide_single_stage(s.moved.data(), int(s.moved.size()), 1, 1, &sub).ok());
+                CHECK(outer_edges_on_box(sub, {0, 0}, {1, 1}));
+                PerturbationParams prm;
+                prm.p = p;
+                ScalePattern pat;
+                REQUIRE(perturb_subdivision(sub, prm, 3, 1, 1, &pat).ok());
+                CHECK(pattern_area(pat) == doctest::Approx(1.0).epsilon(1e-9));
+                for (int f = 0; f < pat.polygon_count(); ++f) {
+                    int n;
+                    const Vec2* v = pat.polygon(f, &n);
+                    CHECK(polygon_area(v, n) > 0.0);  // counter-clockwise
+                }
+                CHECK(count_not_star(pat) == 0);
+                std::vector<std::int32_t> labels(128 * 128);
+                CHECK(rasterize_scale_labels(pat, 128, 128, labels.data()).ok());
+            }
 }
 
 TEST_CASE("perturbation: large p stays a tiling, p = 0 changes nothing") {
