@@ -159,6 +159,11 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
 
 Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out, Vec2d cover_lo,
                       Vec2d cover_hi) {
+    return build_delaunay(points, count, out, cover_lo, cover_hi, false);
+}
+
+Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out, Vec2d cover_lo,
+                      Vec2d cover_hi, bool keep_hilbert_numbering) {
     if (out == nullptr)
         return Status::error(StatusCode::invalid_argument, "build_delaunay: out is null");
     if (count < 1 || points == nullptr)
@@ -224,6 +229,9 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
         return a.i < b.i;
     });
     out->duplicate_of.assign(std::size_t(count), -1);
+    // Triangulate in Hilbert numbering (point k = points[order[k].i]) so that neighbouring
+    // points are neighbours in memory, then number the vertices back to the input's indices.
+    for (std::size_t k = 0; k < order.size(); ++k) out->points[k] = points[order[k].i];
     Builder builder(out);
     builder.start_frame();
     for (std::size_t k = 0; k < order.size(); ++k) {
@@ -235,8 +243,16 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
                                                     : first;
             continue;
         }
-        builder.insert(i);
+        builder.insert(int(k));
     }
+    if (!keep_hilbert_numbering) {
+        std::copy(points, points + count, out->points.begin());
+        for (DelaunayTriangle& t : out->triangles)
+            for (int& v : t.v)
+                if (v < count) v = order[std::size_t(v)].i;
+    }
+    out->insertion_order.resize(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) out->insertion_order[k] = order[k].i;
     out->point_triangle.assign(std::size_t(count) + 4, -1);
     for (std::size_t t = 0; t < out->triangles.size(); ++t)
         for (int v : out->triangles[t].v) out->point_triangle[std::size_t(v)] = int(t);

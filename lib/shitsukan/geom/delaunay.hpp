@@ -38,8 +38,9 @@ struct DelaunayTriangulation {
     int input_count = 0;        // n; points[n .. n + 3] are the frame
     std::vector<Vec2d> points;  // the input points followed by the 4 frame points
     std::vector<DelaunayTriangle> triangles;
-    std::vector<int> point_triangle;  // size n + 4
-    std::vector<int> duplicate_of;    // size n
+    std::vector<int> point_triangle;   // size n + 4
+    std::vector<int> duplicate_of;     // size n
+    std::vector<int> insertion_order;  // input indices in Hilbert order (spatially coherent)
 };
 
 Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out);
@@ -47,5 +48,10 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
 // every point of that box is then nearer to some input point than to any frame point.
 Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out, Vec2d cover_lo,
                       Vec2d cover_hi);
+// keep_hilbert_numbering = true: `points`, `triangles` and `point_triangle` use the Hilbert
+// numbering k (point k is input point insertion_order[k]; frame points stay n .. n + 3), which
+// keeps later walks over the triangulation cache-friendly; duplicate_of keeps input indices.
+Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out, Vec2d cover_lo,
+                      Vec2d cover_hi, bool keep_hilbert_numbering);
 
 }  // namespace shitsukan

@@ -122,16 +122,26 @@ Status check_convex_region(const Vec2d* region, int m) {
     return Status::success();
 }
 
-void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, int m,
-                           std::vector<ClipVertex>* scratch) {
+double clip_snap_distance(const Vec2d* region, int m) {
     // Snap distance: rounded Voronoi vertices of a lattice that should lie ON the boundary
     // (x = 7 * (1/7) ...) miss it by an ulp and would leave cells 1e-17 wide.
     double diameter = 0.0;
     for (int i = 0; i < m; ++i)
         for (int j = i + 1; j < m; ++j)
             diameter = std::max(diameter, length(region[i] - region[j]));
-    const double snap = kClipSnapRelative * diameter;
-    std::vector<double> side;
+    return kClipSnapRelative * diameter;
+}
+
+void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, int m,
+                           std::vector<ClipVertex>* scratch) {
+    clip_to_convex_region(poly, region, m, clip_snap_distance(region, m), scratch);
+}
+
+void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, int m, double snap,
+                           std::vector<ClipVertex>* scratch) {
+    constexpr int kStackSides = 64;
+    double side_stack[kStackSides];
+    std::vector<double> side_heap;
     for (int k = 0; k < m && !poly->empty(); ++k) {
         const Vec2d b0 = region[k], b1 = region[(k + 1) % m];
         const double edge_length = length(b1 - b0);
@@ -139,7 +149,12 @@ void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, i
         std::vector<ClipVertex>& out = *scratch;
         out.clear();
         const int n = int(in.size());
-        side.resize(std::size_t(n));
+        double* side = side_stack;
+        if (n > kStackSides) {
+            side_heap.resize(std::size_t(n));
+            side = side_heap.data();
+        }
+        bool all_inside = true;
         for (int i = 0; i < n; ++i) {
             ClipVertex& v = in[std::size_t(i)];
             double s = has_label(v, k) ? 0.0 : orient2d(b0, b1, v.p);
@@ -154,13 +169,15 @@ void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, i
                         v.p - (b1 - b0) * (cross(b1 - b0, v.p - b0) / (edge_length * edge_length));
             }
             if (s == 0.0) add_label(v, k);
-            side[std::size_t(i)] = s;
+            side[i] = s;
+            all_inside = all_inside && s > 0.0;
         }
+        if (all_inside) continue;  // nothing to cut (the common case inside the region)
         for (int i = 0; i < n; ++i) {
             const ClipVertex& cur = in[std::size_t(i)];
             const ClipVertex& nxt = in[std::size_t((i + 1) % n)];
-            double sc = side[std::size_t(i)];
-            double sn = side[std::size_t((i + 1) % n)];
+            double sc = side[i];
+            double sn = side[(i + 1) % n];
             if (sc >= 0.0) out.push_back(cur);
             if ((sc > 0.0 && sn < 0.0) || (sc < 0.0 && sn > 0.0)) {
                 // canonical order of the segment's end points: the same bits from both cells

@@ -43,7 +43,7 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
         hi = {std::max(hi.x, region[i].x), std::max(hi.y, region[i].y)};
     }
     DelaunayTriangulation dt;
-    SHITSUKAN_TRY(build_delaunay(sites, count, &dt, lo, hi));
+    SHITSUKAN_TRY(build_delaunay(sites, count, &dt, lo, hi, true));  // Hilbert numbering
     const std::vector<DelaunayTriangle>& tris = dt.triangles;
     const std::vector<Vec2d>& pts = dt.points;
     const int tcount = int(tris.size());
@@ -95,13 +95,14 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
             circumcentre(pts[std::size_t(b[0])], pts[std::size_t(b[1])], pts[std::size_t(b[2])]);
     }
 
-    // Walk around each site: the groups of its triangles, counter-clockwise, each once.
-    out->vertices.clear();
-    out->on_region_edge.clear();
-    out->offsets.assign(1, 0);
-    out->duplicate_of = dt.duplicate_of;
+    // Walk around each site: the groups of its triangles, counter-clockwise, each once. Sites
+    // are visited in Hilbert order (memory stays local), then the cells are put in input order.
     std::vector<ClipVertex> poly, scratch;
-    for (int s = 0; s < count; ++s) {
+    const double snap = clip_snap_distance(region, region_count);
+    std::vector<ClipVertex> cell_data;
+    std::vector<int> cell_start(static_cast<std::size_t>(count), 0);
+    std::vector<int> cell_size(static_cast<std::size_t>(count), 0);
+    for (int s = 0; s < count; ++s) {  // s: Hilbert number of the site
         poly.clear();
         int t0 = dt.point_triangle[std::size_t(s)];
         if (t0 >= 0) {
@@ -121,20 +122,33 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
                 SHITSUKAN_ASSERT(t >= 0);
             } while (t != t0);
             if (poly.size() > 1 && last_group == first_group) poly.pop_back();
-            clip_to_convex_region(&poly, region, region_count, &scratch);
+            clip_to_convex_region(&poly, region, region_count, snap, &scratch);
             // start at the lexicographically smallest vertex
             std::size_t m = 0;
             for (std::size_t k = 1; k < poly.size(); ++k)
                 if (lex_less(poly[k].p, poly[m].p)) m = k;
             std::rotate(poly.begin(), poly.begin() + std::ptrdiff_t(m), poly.end());
         }
-        for (const ClipVertex& v : poly) {
-            out->vertices.push_back(v.p);
-            out->on_region_edge.push_back(v.on[0]);
-            out->on_region_edge.push_back(v.on[1]);
-        }
-        out->offsets.push_back(int(out->vertices.size()));
+        const std::size_t site = std::size_t(dt.insertion_order[std::size_t(s)]);
+        cell_start[site] = int(cell_data.size());
+        cell_size[site] = int(poly.size());
+        cell_data.insert(cell_data.end(), poly.begin(), poly.end());
     }
+    out->vertices.resize(cell_data.size());
+    out->on_region_edge.resize(2 * cell_data.size());
+    out->offsets.resize(std::size_t(count) + 1);
+    out->duplicate_of = dt.duplicate_of;
+    std::size_t w = 0;
+    for (int s = 0; s < count; ++s) {
+        out->offsets[std::size_t(s)] = int(w);
+        const ClipVertex* v = cell_data.data() + cell_start[std::size_t(s)];
+        for (int k = 0; k < cell_size[std::size_t(s)]; ++k, ++w) {
+            out->vertices[w] = v[k].p;
+            out->on_region_edge[2 * w] = v[k].on[0];
+            out->on_region_edge[2 * w + 1] = v[k].on[1];
+        }
+    }
+    out->offsets[std::size_t(count)] = int(w);
     return Status::success();
 }
 
