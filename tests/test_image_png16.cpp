@@ -46,7 +46,8 @@ std::uint32_t be32(const unsigned char* p) {
 
 // A deterministic test pattern covering 0, 65535 and byte-order-sensitive values.
 std::uint16_t pattern(int x, int y, int c) {
-    std::uint32_t v = std::uint32_t(x) * 2654435761u ^ std::uint32_t(y) * 40503u ^ std::uint32_t(c) * 977u;
+    std::uint32_t v = (std::uint32_t(x) * 2654435761u) ^ (std::uint32_t(y) * 40503u) ^
+                      (std::uint32_t(c) * 977u);
     if ((x + y) % 17 == 0) return 0;
     if ((x + y) % 19 == 0) return 65535;
     return std::uint16_t(v ^ (v >> 16));

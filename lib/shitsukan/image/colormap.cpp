@@ -36,9 +36,9 @@ Rgb8 colormap(ColorMap map, float t) {
             return Rgb8{v, v, v};
         }
         case ColorMap::perceptual:
-            return piecewise_linear(kPerceptual, int(sizeof kPerceptual / sizeof kPerceptual[0]), t);
+            return piecewise_linear(kPerceptual, int(sizeof kPerceptual / sizeof(Rgb8)), t);
         case ColorMap::diverging:
-            return piecewise_linear(kDiverging, int(sizeof kDiverging / sizeof kDiverging[0]), t);
+            return piecewise_linear(kDiverging, int(sizeof kDiverging / sizeof(Rgb8)), t);
     }
     return kColorMapNaN;
 }
