@@ -78,9 +78,7 @@ int count_not_star(const ScalePattern& pat) {
     return bad;
 }
 
-ScaleParams fig07() {
-    return ScaleParams{};
-}
+ScaleParams fig07() { return ScaleParams{}; }
 
 }  // namespace
 

@@ -8,8 +8,7 @@
 namespace shitsukan {
 namespace {
 
-template <class V>
-double area_of(const V* v, int n) {
+template <class V> double area_of(const V* v, int n) {
     double twice = 0.0;
     for (int i = 0; i < n; ++i) {
         const V& a = v[i];
@@ -19,8 +18,7 @@ double area_of(const V* v, int n) {
     return 0.5 * twice;
 }
 
-template <class V>
-Vec2d centroid_of(const V* v, int n) {
+template <class V> Vec2d centroid_of(const V* v, int n) {
     double twice = 0.0, cx = 0.0, cy = 0.0;
     // Relative to the first vertex: keeps the products small for polygons far from the origin.
     const double ox = double(v[0].x), oy = double(v[0].y);
@@ -43,8 +41,7 @@ Vec2d centroid_of(const V* v, int n) {
     return {ox + cx / (3.0 * twice), oy + cy / (3.0 * twice)};
 }
 
-template <class V, class S>
-bool inside_of(const V* v, int n, V q) {
+template <class V, class S> bool inside_of(const V* v, int n, V q) {
     bool inside = false;
     for (int i = 0; i < n; ++i) {
         V a = v[i], b = v[(i + 1) % n];
@@ -69,34 +66,18 @@ void add_label(ClipVertex& v, int k) {
         v.on[1] = k;
 }
 
-bool has_label(const ClipVertex& v, int k) {
-    return k >= 0 && (v.on[0] == k || v.on[1] == k);
-}
+bool has_label(const ClipVertex& v, int k) { return k >= 0 && (v.on[0] == k || v.on[1] == k); }
 
-bool lex_less(Vec2d a, Vec2d b) {
-    return a.x < b.x || (a.x == b.x && a.y < b.y);
-}
+bool lex_less(Vec2d a, Vec2d b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
 
 }  // namespace
 
-double polygon_area(const Vec2d* v, int n) {
-    return area_of(v, n);
-}
-double polygon_area(const Vec2* v, int n) {
-    return area_of(v, n);
-}
-Vec2d polygon_centroid(const Vec2d* v, int n) {
-    return centroid_of(v, n);
-}
-Vec2d polygon_centroid(const Vec2* v, int n) {
-    return centroid_of(v, n);
-}
-bool point_in_polygon(const Vec2d* v, int n, Vec2d q) {
-    return inside_of<Vec2d, double>(v, n, q);
-}
-bool point_in_polygon(const Vec2* v, int n, Vec2 q) {
-    return inside_of<Vec2, double>(v, n, q);
-}
+double polygon_area(const Vec2d* v, int n) { return area_of(v, n); }
+double polygon_area(const Vec2* v, int n) { return area_of(v, n); }
+Vec2d polygon_centroid(const Vec2d* v, int n) { return centroid_of(v, n); }
+Vec2d polygon_centroid(const Vec2* v, int n) { return centroid_of(v, n); }
+bool point_in_polygon(const Vec2d* v, int n, Vec2d q) { return inside_of<Vec2d, double>(v, n, q); }
+bool point_in_polygon(const Vec2* v, int n, Vec2 q) { return inside_of<Vec2, double>(v, n, q); }
 
 Status check_convex_region(const Vec2d* region, int m) {
     if (region == nullptr || m < 3)

@@ -42,9 +42,7 @@ inline void two_product(double a, double b, double& x, double& y) {
     y = alo * blo - err3;
 }
 
-inline void two_diff(double a, double b, double& x, double& y) {
-    two_sum(a, -b, x, y);
-}
+inline void two_diff(double a, double b, double& x, double& y) { two_sum(a, -b, x, y); }
 
 // h = e + f (h has room for elen + flen components); returns the length of h.
 int fast_expansion_sum(int elen, const double* e, int flen, const double* f, double* h) {
@@ -132,9 +130,7 @@ int multiply_expansions(int elen, const double* e, int flen, const double* f, do
     return hlen;
 }
 
-inline double expansion_sign_value(int len, const double* e) {
-    return e[len - 1];
-}
+inline double expansion_sign_value(int len, const double* e) { return e[len - 1]; }
 
 }  // namespace detail
 

@@ -10,9 +10,7 @@
 namespace shitsukan {
 namespace {
 
-bool lex_less(Vec2d a, Vec2d b) {
-    return a.x < b.x || (a.x == b.x && a.y < b.y);
-}
+bool lex_less(Vec2d a, Vec2d b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
 
 int find_root(std::vector<int>& parent, int t) {
     while (parent[std::size_t(t)] != t) {

@@ -14,9 +14,7 @@
 namespace shitsukan {
 namespace {
 
-bool lex_less(Vec2d a, Vec2d b) {
-    return a.x < b.x || (a.x == b.x && a.y < b.y);
-}
+bool lex_less(Vec2d a, Vec2d b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
 
 std::uint64_t bits_of(double v) {
     if (v == 0.0) v = 0.0;

@@ -45,9 +45,7 @@ struct SeedLayout {
 };
 
 // tokai1994 eq. (1): M = D · a · Rnd.
-inline float seed_displacement(float D, float a, float rnd) {
-    return D * a * rnd;
-}
+inline float seed_displacement(float D, float a, float rnd) { return D * a * rnd; }
 
 // Rnd in [-1, 1) from the hash of (seed, stream, i, j).
 float hashed_rnd(std::uint32_t seed, std::uint32_t stream, std::int32_t i, std::int32_t j);
