@@ -94,7 +94,10 @@ SHITSUKAN_FIGURE(tokai_fig05, "tokai1994", "fig05",
                                       prm.height, &stage1, &report));
     ctx.note(fmt(
         "%d stage-1 polygons, edges perturbed (processing 4, %d interior edges). Left and right "
-        "polygons meet along the centre line in a zig-zag: the joint pattern of §2 (2).",
+        "polygons meet along the centre line in a zig-zag: the joint pattern of §2 (2). "
+        "Stated deviation: the final pattern (fig. 7) divides the straight stage-1 polygons and "
+        "perturbs every final edge once, so a stage-1 edge is bent piece by piece between the "
+        "stage-2 junctions rather than as this one curve (scale_division.hpp).",
         stage1.polygon_count(), report.edges));
     const int size = ctx.quick() ? 256 : 512, margin = size / 32;
     const Frame f{float(margin), float(margin), float(size - 2 * margin)};
