@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "raster_test_scenes.hpp"
+#include "shitsukan/geom/mesh_builders.hpp"
 
 using namespace shitsukan;
 using namespace raster_test;
@@ -144,5 +145,31 @@ TEST_CASE("a closed mesh seen from many directions: no cracks, front layer writt
         CHECK(layered == 0);
         CHECK(shaded_not_front == 0);
         CHECK(covered > 64 * 64);  // the object is actually on screen
+    }
+}
+
+TEST_CASE("the mesh builders' closed solids have no cracks from any direction") {
+    TriangleMesh meshes[4];
+    REQUIRE(make_uv_sphere(1.0f, 24, 12, &meshes[0]).ok());
+    REQUIRE(make_torus(0.9f, 0.35f, 24, 12, &meshes[1]).ok());
+    REQUIRE(make_cylinder(0.6f, -0.8f, 0.9f, 20, true, &meshes[2]).ok());
+    REQUIRE(make_sphere_without_octant(1.0f, 8, &meshes[3]).ok());
+    const int kDirections = 8;
+    for (int m = 0; m < 4; ++m) {
+        int mismatched = 0;
+        long covered = 0;
+        for (int d = 0; d < kDirections; ++d) {
+            Vec3 eye = direction(d + 3, kDirections + 6) * 3.5f;
+            Camera cam = perspective_camera(eye, {0.03f, 0.01f, 0}, {0, 1, 0}, 45.0f, 56, 56);
+            Counts front = coverage_per_triangle(cam, meshes[m].view(), CullMode::back);
+            Counts back = coverage_per_triangle(cam, meshes[m].view(), CullMode::front);
+            for (std::size_t i = 0; i < front.n.size(); ++i) {
+                mismatched += front.n[i] != back.n[i];
+                covered += front.n[i] > 0;
+            }
+        }
+        INFO("builder mesh " << m);
+        CHECK(mismatched == 0);
+        CHECK(covered > 56 * 56);
     }
 }

@@ -64,8 +64,9 @@ Rgb8 noise_shader(const Fragment& f, void* user) {
 SHITSUKAN_BENCH(raster_frame_overhead) {
     const int W = 512, H = 512;
     TriangleMesh sphere, torus;
-    make_uv_sphere(0.75f, 96, 48, &sphere);
-    make_torus(1.25f, 0.3f, 128, 32, &torus);
+    // Tessellation as in the foundation figures (64 x 32 each): ~45 pixels per drawn triangle.
+    make_uv_sphere(0.75f, 64, 32, &sphere);
+    make_torus(1.25f, 0.3f, 64, 32, &torus);
     Camera cam = perspective_camera({0, 1.6f, 3.6f}, {0, 0, 0}, {0, 1, 0}, 45.0f, W, H);
     ShaderData data;
     data.material.specular = 0.3f;
