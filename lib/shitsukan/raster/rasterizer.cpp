@@ -1,10 +1,12 @@
 // small-device: yes (no allocation, no exceptions)
 //
 // The scanline rasterizer. Per triangle:
-//   1. fetch its three vertices, transform them (clip space, world space, normals),
-//   2. clip in homogeneous space (clip.hpp), fan-triangulate the polygon,
-//   3. per sub-triangle: divide by w, snap to 1/256 pixel, cull by the sign of the area,
-//   4. walk the scanlines of the band: per row, the span between the left and right edge
+//   1. fetch its three corners and take them to clip space; skip degenerate ones,
+//   2. clip in homogeneous space when an outcode asks for it (clip.hpp),
+//   3. divide by w and snap to 1/256 pixel,
+//   4. per triangle of the (fan-triangulated) polygon: cull by the sign of the area, then,
+//      if it touches the band, fetch the remaining vertex attributes (world position,
+//      normals, uv, colour) and walk the scanlines of the band: per row, the span between the left and right edge
 //      follows from exact integer arithmetic (top-left rule), per pixel the depth is tested
 //      before the shader is called (early z), and attributes are interpolated
 //      perspective-correctly.
@@ -190,7 +192,7 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
     // Is the middle vertex right of the long edge v0 -> v2? Then the long edge is the left.
     bool middle_right = (v1->x - v0->x) * (v2->y - v0->y) - (v2->x - v0->x) * (v1->y - v0->y) > 0;
 
-    // Screen-space barycentrics as plane equations around corner a (pixel units, float):
+    // Screen-space barycentrics as plane equations around corner a (in 1/256 pixel units):
     // lambda_b = (p - a) x (c - a) / area, lambda_c = (b - a) x (p - a) / area.
     double inv_area = 1.0 / double(area2);
     float lb_dx = float(double(c.y - a.y) * inv_area), lb_dy = float(-double(c.x - a.x) * inv_area);
