@@ -211,7 +211,7 @@ TEST_CASE("triangles behind the eye or off screen draw nothing") {
     CHECK(stats.triangles_rejected == 0);
 }
 
-TEST_CASE("shader forms: function pointer + user pointer, functor, captureless two-argument lambda") {
+TEST_CASE("shader forms: function + user pointer, functor, captureless two-argument lambda") {
     TriangleMesh m;
     m.positions = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
     m.indices = {0, 1, 2};

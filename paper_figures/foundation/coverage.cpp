@@ -49,7 +49,8 @@ TriangleMesh tiling(int cells, int pixels, std::uint64_t seed) {
         for (int i = 0; i < cells; ++i) {
             std::uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
             if ((i + 2 * j) % 3 == 0) {
-                Vec3 centre = (m.positions[a] + m.positions[b] + m.positions[c] + m.positions[d]) * 0.25f;
+                Vec3 centre =
+                    (m.positions[a] + m.positions[b] + m.positions[c] + m.positions[d]) * 0.25f;
                 std::uint32_t e = m.add_vertex({snap(centre.x), snap(centre.y), 0}, {0, 0, 1});
                 m.add_triangle(a, b, e);
                 m.add_triangle(b, c, e);
@@ -75,7 +76,8 @@ SHITSUKAN_FIGURE(foundation_coverage, "foundation", "coverage",
     const int cells = ctx.quick() ? 4 : 6;
     ctx.chosen("frame", fmt("%d x %d pixels, shown %dx enlarged", pixels, pixels, zoom),
                "small enough to see single pixels");
-    ctx.chosen("tiling", fmt("%d x %d cells, a third fans of 4 triangles, jitter 1/4 cell", cells, cells),
+    ctx.chosen("tiling",
+               fmt("%d x %d cells, a third fans of 4 triangles, jitter 1/4 cell", cells, cells),
                "shared edges, shared vertices and fans, as the coverage test");
     ctx.chosen("vertex snapping", "1/3 on pixel centres, 1/3 on pixel corners, 1/3 free",
                "edges through pixel centres are where a fill rule must decide");

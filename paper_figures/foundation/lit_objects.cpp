@@ -104,7 +104,8 @@ SHITSUKAN_FIGURE(foundation_lit_torus, "foundation", "lit_torus",
     const int size = frame_size(ctx), major = 64, minor = 32;
     TriangleMesh torus;
     SHITSUKAN_TRY(make_torus(1.0f, 0.38f, major, minor, &torus));
-    Camera cam = perspective_camera({0.0f, 2.3f, 3.4f}, {0, -0.1f, 0}, {0, 1, 0}, 40.0f, size, size);
+    Camera cam =
+        perspective_camera({0.0f, 2.3f, 3.4f}, {0, -0.1f, 0}, {0, 1, 0}, 40.0f, size, size);
     Studio studio;
     studio.record(ctx, "Gouraud (apply_gouraud: Blinn-Phong per vertex)");
     ctx.chosen("torus", fmt("R 1, r 0.38, %d x %d segments, tilted 0.3 rad about x", major, minor),

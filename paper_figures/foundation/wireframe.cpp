@@ -17,8 +17,10 @@ SHITSUKAN_FIGURE(foundation_wireframe, "foundation", "wireframe",
     TriangleMesh torus, sphere;
     SHITSUKAN_TRY(make_torus(1.0f, 0.35f, 40, 16, &torus));
     SHITSUKAN_TRY(make_uv_sphere(0.5f, 24, 12, &sphere));
-    Camera cam = perspective_camera({0.3f, 2.0f, 3.4f}, {0, -0.1f, 0}, {0, 1, 0}, 40.0f, size, size);
-    ctx.chosen("torus", "R 1, r 0.35, 40 x 16 segments, tilted 0.35 rad", "edges readable at 512 px");
+    Camera cam =
+        perspective_camera({0.3f, 2.0f, 3.4f}, {0, -0.1f, 0}, {0, 1, 0}, 40.0f, size, size);
+    ctx.chosen("torus", "R 1, r 0.35, 40 x 16 segments, tilted 0.35 rad",
+               "edges readable at 512 px");
     ctx.chosen("sphere", "radius 0.5, 24 x 12", "hides the far side of the ring");
     ctx.chosen("depth_tolerance", "0.01 (relative eye distance)",
                "the library default: lines on the surface pass, lines behind it do not");
@@ -40,7 +42,8 @@ SHITSUKAN_FIGURE(foundation_wireframe, "foundation", "wireframe",
         const TriangleMesh* mesh;
         const DrawOptions* opt;
         Rgb8 ink;
-    } parts[2] = {{&torus, &torus_opt, Rgb8{20, 40, 110}}, {&sphere, &sphere_opt, Rgb8{150, 30, 30}}};
+    } parts[2] = {{&torus, &torus_opt, Rgb8{20, 40, 110}},
+                  {&sphere, &sphere_opt, Rgb8{150, 30, 30}}};
     for (const auto& part : parts) {
         MeshView mesh = part.mesh->view();
         std::vector<WireEdge> edges(std::size_t(3 * mesh.triangle_count));

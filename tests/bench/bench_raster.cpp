@@ -29,7 +29,8 @@ float value_noise(Vec3 p) {
     ty = ty * ty * (3 - 2 * ty);
     tz = tz * tz * (3 - 2 * tz);
     float c[8];
-    for (int k = 0; k < 8; ++k) c[k] = hash_uniform(7u, 0u, ix + (k & 1), iy + ((k >> 1) & 1), iz + (k >> 2));
+    for (int k = 0; k < 8; ++k)
+        c[k] = hash_uniform(7u, 0u, ix + (k & 1), iy + ((k >> 1) & 1), iz + (k >> 2));
     float x00 = c[0] + (c[1] - c[0]) * tx, x10 = c[2] + (c[3] - c[2]) * tx;
     float x01 = c[4] + (c[5] - c[4]) * tx, x11 = c[6] + (c[7] - c[6]) * tx;
     float y0 = x00 + (x10 - x00) * ty, y1 = x01 + (x11 - x01) * ty;

@@ -6,7 +6,8 @@
 //   3. divide by w and snap to 1/256 pixel,
 //   4. per triangle of the (fan-triangulated) polygon: cull by the sign of the area, then,
 //      if it touches the band, fetch the remaining vertex attributes (world position,
-//      normals, uv, colour) and walk the scanlines of the band: per row, the span between the left and right edge
+//      normals, uv, colour) and walk the scanlines of the band: per row, the span between
+//      the left and right edge
 //      follows from exact integer arithmetic (top-left rule), per pixel the depth is tested
 //      before the shader is called (early z), and attributes are interpolated
 //      perspective-correctly.
@@ -148,7 +149,8 @@ void interpolate(const SourceTriangle& t, Vec3 b, Fragment* f) {
     const VertexData& p = t.v[0];
     const VertexData& q = t.v[1];
     const VertexData& r = t.v[2];
-    f->object_position = p.object_position * b.x + q.object_position * b.y + r.object_position * b.z;
+    f->object_position =
+        p.object_position * b.x + q.object_position * b.y + r.object_position * b.z;
     f->world_position = p.world_position * b.x + q.world_position * b.y + r.world_position * b.z;
     f->normal = normalize_or(p.normal * b.x + q.normal * b.y + r.normal * b.z, p.normal);
     f->object_normal = normalize_or(p.object_normal * b.x + q.object_normal * b.y +
@@ -291,7 +293,8 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
             finite = finite && is_finite(p);
             src.v[k].object_position = p;
             corners[k].clip = transform_homogeneous(mvp, p);
-            corners[k].bary = Vec3{k == 0 ? 1.0f : 0.0f, k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f};
+            corners[k].bary = Vec3{k == 0 ? 1.0f : 0.0f, k == 1 ? 1.0f : 0.0f,
+                                   k == 2 ? 1.0f : 0.0f};
         }
         // Zero-area and NaN/inf triangles are degenerate: skipped and counted. The plane
         // normal is computed in double so that huge but finite coordinates do not overflow.

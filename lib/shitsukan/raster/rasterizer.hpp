@@ -90,7 +90,8 @@ struct RasterStats {
 constexpr int kMaxFrameSize = 16384;
 
 FrameBand full_frame_band(const RgbView& color, const FloatView& depth);
-FrameBand make_band(const RgbView& color, const FloatView& depth, int y0, int frame_width, int frame_height);
+FrameBand make_band(const RgbView& color, const FloatView& depth, int y0, int frame_width,
+                    int frame_height);
 void clear_band(const FrameBand& band, Rgb8 background);
 
 // The checks draw_mesh() (and draw_wireframe()) run before drawing anything, for callers
