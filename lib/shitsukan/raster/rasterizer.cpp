@@ -43,6 +43,7 @@ struct SourceTriangle {
     const std::uint32_t* corner_index = nullptr;  // the three mesh indices
     Vec3d object_cross;                           // (p1 - p0) x (p2 - p0), nonzero
     int index = 0;
+    bool flat = false;  // the mesh has no normals
     bool ready = false;
 };
 
@@ -141,6 +142,7 @@ void prepare(const MeshContext& mc, SourceTriangle* t) {
             v.normal = world_n;
         }
     }
+    t->flat = mesh.normals == nullptr;
     t->ready = true;
 }
 
@@ -152,10 +154,15 @@ void interpolate(const SourceTriangle& t, Vec3 b, Fragment* f) {
     f->object_position =
         p.object_position * b.x + q.object_position * b.y + r.object_position * b.z;
     f->world_position = p.world_position * b.x + q.world_position * b.y + r.world_position * b.z;
-    f->normal = normalize_or(p.normal * b.x + q.normal * b.y + r.normal * b.z, p.normal);
-    f->object_normal = normalize_or(p.object_normal * b.x + q.object_normal * b.y +
-                                        r.object_normal * b.z,
-                                    p.object_normal);
+    if (t.flat) {  // no vertex normals: the plane's normal, the same over the triangle
+        f->normal = p.normal;
+        f->object_normal = p.object_normal;
+    } else {
+        f->normal = normalize_or(p.normal * b.x + q.normal * b.y + r.normal * b.z, p.normal);
+        f->object_normal = normalize_or(p.object_normal * b.x + q.object_normal * b.y +
+                                            r.object_normal * b.z,
+                                        p.object_normal);
+    }
     f->uv = p.uv * b.x + q.uv * b.y + r.uv * b.z;
     f->color = p.color * b.x + q.color * b.y + r.color * b.z;
 }
@@ -200,6 +207,8 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
     float lb_dx = float(double(c.y - a.y) * inv_area), lb_dy = float(-double(c.x - a.x) * inv_area);
     float lc_dx = float(-double(b.y - a.y) * inv_area), lc_dy = float(double(b.x - a.x) * inv_area);
     float dz_b = b.z - a.z, dz_c = c.z - a.z;
+    const bool unclipped = a.bary == Vec3{1, 0, 0} && b.bary == Vec3{0, 1, 0} &&
+                           c.bary == Vec3{0, 0, 1};
 
     Fragment f;
     f.triangle = src.index;
@@ -234,7 +243,10 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
             // Perspective-correct: interpolate bary / w linearly, divide by the 1 / w sum.
             float qa = la * a.inv_w, qb = lb * b.inv_w, qc = lc * c.inv_w;
             float inv_sum = 1.0f / (qa + qb + qc);
-            Vec3 bary = (a.bary * qa + b.bary * qb + c.bary * qc) * inv_sum;
+            // An unclipped triangle's corners are the original ones, bary (1,0,0), (0,1,0),
+            // (0,0,1): the general sum below then reduces exactly (same bits) to (qa, qb, qc).
+            Vec3 bary = unclipped ? Vec3{qa, qb, qc} * inv_sum
+                                  : (a.bary * qa + b.bary * qb + c.bary * qc) * inv_sum;
             interpolate(src, bary, &f);
             f.x = int(x);
             f.depth = z < 0.0f ? 0.0f : z;
