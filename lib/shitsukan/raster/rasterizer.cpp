@@ -40,6 +40,7 @@ struct VertexData {
 // in the band (prepare), since most triangles of a band render do not.
 struct SourceTriangle {
     VertexData v[3];
+    VertexData dq, dr;  // v[1] - v[0] and v[2] - v[0], attribute by attribute
     const std::uint32_t* corner_index = nullptr;  // the three mesh indices
     Vec3d object_cross;                           // (p1 - p0) x (p2 - p0), nonzero
     int index = 0;
@@ -142,29 +143,40 @@ void prepare(const MeshContext& mc, SourceTriangle* t) {
             v.normal = world_n;
         }
     }
+    for (int k = 0; k < 2; ++k) {
+        VertexData& d = k == 0 ? t->dq : t->dr;
+        const VertexData& q = t->v[k + 1];
+        const VertexData& p = t->v[0];
+        d.object_position = q.object_position - p.object_position;
+        d.world_position = q.world_position - p.world_position;
+        d.normal = q.normal - p.normal;
+        d.object_normal = q.object_normal - p.object_normal;
+        d.color = q.color - p.color;
+        d.uv = q.uv - p.uv;
+    }
     t->flat = mesh.normals == nullptr;
     t->ready = true;
 }
 
 // Fills the fragment's surface point from the perspective-correct barycentrics b.
 void interpolate(const SourceTriangle& t, Vec3 b, Fragment* f) {
+    // a = p·b0 + q·b1 + r·b2 = p + (q - p)·b1 + (r - p)·b2 (b0 + b1 + b2 = 1): one product
+    // fewer per component, with the differences made once per triangle (prepare).
     const VertexData& p = t.v[0];
-    const VertexData& q = t.v[1];
-    const VertexData& r = t.v[2];
-    f->object_position =
-        p.object_position * b.x + q.object_position * b.y + r.object_position * b.z;
-    f->world_position = p.world_position * b.x + q.world_position * b.y + r.world_position * b.z;
+    const VertexData& dq = t.dq;
+    const VertexData& dr = t.dr;
+    f->object_position = p.object_position + dq.object_position * b.y + dr.object_position * b.z;
+    f->world_position = p.world_position + dq.world_position * b.y + dr.world_position * b.z;
     if (t.flat) {  // no vertex normals: the plane's normal, the same over the triangle
         f->normal = p.normal;
         f->object_normal = p.object_normal;
     } else {
-        f->normal = normalize_or(p.normal * b.x + q.normal * b.y + r.normal * b.z, p.normal);
-        f->object_normal = normalize_or(p.object_normal * b.x + q.object_normal * b.y +
-                                            r.object_normal * b.z,
-                                        p.object_normal);
+        f->normal = normalize_or(p.normal + dq.normal * b.y + dr.normal * b.z, p.normal);
+        f->object_normal = normalize_or(
+            p.object_normal + dq.object_normal * b.y + dr.object_normal * b.z, p.object_normal);
     }
-    f->uv = p.uv * b.x + q.uv * b.y + r.uv * b.z;
-    f->color = p.color * b.x + q.color * b.y + r.color * b.z;
+    f->uv = p.uv + dq.uv * b.y + dr.uv * b.z;
+    f->color = p.color + dq.color * b.y + dr.color * b.z;
 }
 
 // Rasterizes one sub-triangle into the band. Returns true when it passed culling and
