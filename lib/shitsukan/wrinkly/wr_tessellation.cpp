@@ -23,8 +23,8 @@ std::vector<float> wr_grid_positions(const WrAxis& axis, int grid_level, int sub
     return g;
 }
 
-Status tessellate_wr_surface(const WrSurface& surface, const HierarchicalSampling* sampling,
-                             const WrTessellationOptions& o, WrMesh* out) {
+Status evaluate_wr_grid(const WrSurface& surface, const HierarchicalSampling* sampling,
+                        const WrTessellationOptions& o, WrMesh* out) {
     if (o.levels < 0 || o.levels > kMaxWrLevel || o.grid_level < 0 || o.grid_level > kMaxWrLevel)
         return Status::error(StatusCode::invalid_argument,
                              "levels K and grid level L must be in 0..%d (got %d, %d)",
@@ -105,6 +105,13 @@ Status tessellate_wr_surface(const WrSurface& surface, const HierarchicalSamplin
         }
     }
     m.mean_levels_used = double(levels_sum) / double(t.positions.size());
+    *out = std::move(m);
+    return Status::success();
+}
+
+void polygonise_wr_grid(const WrSurface& surface, WrMesh* m) {
+    TriangleMesh& t = m->mesh;
+    const int nu = m->grid_u, nv = m->grid_v;
     // Normals of the displaced surface from central differences on the grid (the wrinkles'
     // own normals, not N(u, v) of the base surface).
     auto at = [&](int i, int j) { return t.positions[std::size_t(j) * std::size_t(nu) + std::size_t(i)]; };
@@ -114,11 +121,13 @@ Status tessellate_wr_surface(const WrSurface& surface, const HierarchicalSamplin
             const Vec3 dv = at(i, j < nv - 1 ? j + 1 : j) - at(i, j > 0 ? j - 1 : j);
             Vec3 n = cross(du, dv);
             const float l = length(n);
-            n = l > 0 && is_finite(l) ? n / l : surface.base_point(gu[std::size_t(i)], gv[std::size_t(j)]).normal;
+            const Vec2 uv = t.uvs[std::size_t(j) * std::size_t(nu) + std::size_t(i)];
+            n = l > 0 && is_finite(l) ? n / l : surface.base_point(uv.x, uv.y).normal;
             t.normals[std::size_t(j) * std::size_t(nu) + std::size_t(i)] = n;
         }
     }
     // Two counter-clockwise triangles per grid cell (front = the side dP/du x dP/dv points to).
+    t.indices.clear();
     t.indices.reserve(std::size_t(nu - 1) * std::size_t(nv - 1) * 6);
     for (int j = 0; j + 1 < nv; ++j) {
         for (int i = 0; i + 1 < nu; ++i) {
@@ -128,7 +137,12 @@ Status tessellate_wr_surface(const WrSurface& surface, const HierarchicalSamplin
             t.add_triangle(a, d, c);
         }
     }
-    *out = std::move(m);
+}
+
+Status tessellate_wr_surface(const WrSurface& surface, const HierarchicalSampling* sampling,
+                             const WrTessellationOptions& options, WrMesh* out) {
+    SHITSUKAN_TRY(evaluate_wr_grid(surface, sampling, options, out));
+    polygonise_wr_grid(surface, out);
     return Status::success();
 }
 

@@ -59,8 +59,14 @@ struct WrMesh {
     double mean_levels_used = 0;     // superposed: mean over vertices
 };
 
+// Both steps below: sample the surface at the grid points, then build the polygons.
 Status tessellate_wr_surface(const WrSurface& surface, const HierarchicalSampling* sampling,
                              const WrTessellationOptions& options, WrMesh* out);
+// Step 1 (the paper's "sampling" stage of Tables 2-4): points, colours, uv, transparency.
+Status evaluate_wr_grid(const WrSurface& surface, const HierarchicalSampling* sampling,
+                        const WrTessellationOptions& options, WrMesh* out);
+// Step 2 ("polygonisation"): vertex normals of the displaced grid and two triangles per cell.
+void polygonise_wr_grid(const WrSurface& surface, WrMesh* mesh);
 
 // Grid positions along one axis (used by tessellate_wr_surface; exposed for tests).
 std::vector<float> wr_grid_positions(const WrAxis& axis, int grid_level, int subdivisions,
