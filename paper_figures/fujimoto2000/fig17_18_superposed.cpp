@@ -43,20 +43,20 @@ WrControlMesh fig17_mesh() {
     return m;
 }
 
-// fig. 18 (chosen): 8 x 8 B-spline points on [-1.5, 1.5]^2 (5 x 5 spans), flat; a winding
-// mountain range across the back (heights up to 1.1) with a hashed variation (seed 18).
+// fig. 18 (chosen): 11 x 11 B-spline points on [-1.5, 1.5]^2 (8 x 8 spans), flat; a winding
+// mountain range through the middle (heights up to 0.7) with a hashed variation (seed 18).
 WrControlMesh fig18_mesh() {
-    const int n = 8;
+    const int n = 11;
     WrControlMesh m = make_control_mesh(n, n);
     for (int r = 0; r < n; ++r)
         for (int c = 0; c < n; ++c) {
             WrControlPoint& p = m.at(c, r);
             const float x = -1.5f + 3.0f * float(c) / float(n - 1);
             const float z = 1.5f - 3.0f * float(r) / float(n - 1);
-            const float d = z + 0.3f + 0.25f * std::sin(2.0f * x);  // distance from a winding ridge
+            const float d = z + 0.1f - 0.35f * std::sin(1.6f * x);  // distance from a winding ridge
             p.position = {x, 0.0f, z};
-            p.height = 0.05f + 0.9f * std::exp(-2.5f * d * d) * (0.6f + 0.6f * hash_uniform(18, 0, c, r));
-            p.color = height_color(p.height, 1.0f);
+            p.height = 0.05f + 0.55f * std::exp(-3.0f * d * d) * (0.65f + 0.6f * hash_uniform(18, 0, c, r));
+            p.color = height_color(p.height, 0.65f);
         }
     return m;
 }
@@ -71,9 +71,9 @@ struct SuperFigure {
 };
 
 const SuperFigure kFig17{SurfaceBasis::bezier, IstKind::unit, fig17_mesh, 4, 5,
-                         Shot{{0.4f, 1.9f, 3.4f}, {0.0f, 0.25f, 0.0f}, {0, 1, 0}, 38.0f}};
+                         Shot{{0.4f, 2.7f, 3.1f}, {0.0f, 0.25f, 0.0f}, {0, 1, 0}, 40.0f}};
 const SuperFigure kFig18{SurfaceBasis::bspline, IstKind::fully_connected, fig18_mesh, 3, 4,
-                         Shot{{0.3f, 2.8f, 3.6f}, {0.0f, 0.25f, -0.1f}, {0, 1, 0}, 38.0f}};
+                         Shot{{0.3f, 3.0f, 3.6f}, {0.0f, 0.2f, 0.0f}, {0, 1, 0}, 40.0f}};
 
 Status run_panel(FigureContext& ctx, const SuperFigure& f, int panel) {
     const bool quick = ctx.quick();
@@ -84,7 +84,7 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, int panel) {
     ctx.chosen("IST", f.kind == IstKind::unit ? "unit-IST N = 3" : "fully-connected IST N = 3",
                "the ISTs of figs. 14/15");
     ctx.chosen("control mesh", f.basis == SurfaceBasis::bezier ? "4 x 4 flat, ridge of heights 0.05..1.2"
-                                                               : "8 x 8 flat (5 x 5 spans), winding range up to 1.1",
+                                                               : "11 x 11 flat (8 x 8 spans), winding range up to 0.7",
                "not printed");
     ctx.chosen("image size", fmt("%d x %d", size, size), "not given");
     WrControlMesh mesh = f.mesh();
