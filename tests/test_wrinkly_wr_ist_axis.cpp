@@ -8,7 +8,9 @@
 #include "shitsukan/wrinkly/hierarchical_sampling.hpp"
 #include "shitsukan/wrinkly/ist_formula.hpp"
 #include "shitsukan/wrinkly/wr_ist_axis.hpp"
+#include "shitsukan/wrinkly/superposition.hpp"
 #include "shitsukan/wrinkly/wr_surface.hpp"
+#include "shitsukan/wrinkly/wr_tessellation.hpp"
 
 using namespace shitsukan;
 
@@ -115,4 +117,57 @@ TEST_CASE("WR surface with the real IST: zero heights give the base surface") {
     REQUIRE(s.set_axes(a.axis(), a.axis()));
     for (float u : {0.0f, 0.21f, 0.5f, 0.83f, 1.0f})
         for (float v : {0.1f, 0.66f}) CHECK(length(s.wr_point(u, v, 4) - s.base_point(u, v).position) < 1e-6f);
+}
+
+TEST_CASE("eq. (20) equals eq. (16) where every step samples (centres of base intervals, odd N)") {
+    // For odd N the centre of a base interval is the midpoint of a small interval at every
+    // step k, so H^k there is the sample H((F^k)^{-1}(u)) itself, linear or Hermite.
+    WrControlMesh m = flat_mesh(8, 7);
+    WrSurface s;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    IstAxis iu, iv;
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_u(), IstEnds::translation, &iu));
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_v(), IstEnds::translation, &iv));
+    WrIstAxis au, av;
+    REQUIRE(make_wr_ist_axis(iu, 3, &au));
+    REQUIRE(make_wr_ist_axis(iv, 3, &av));
+    REQUIRE(s.set_axes(au.axis(), av.axis()));
+    for (SampleInterpolation mode : {SampleInterpolation::linear, SampleInterpolation::hermite}) {
+        HierarchicalOptions o;
+        o.levels = 3;
+        o.interpolation = mode;
+        HierarchicalSampling hs;
+        REQUIRE(sample_hierarchy(s, o, &hs));
+        for (int i = 0; i < s.spans_u(); ++i)
+            for (int j = 0; j < s.spans_v(); ++j) {
+                const float u = (float(i) + 0.5f) / float(s.spans_u());
+                const float v = (float(j) + 0.5f) / float(s.spans_v());
+                const SuperposedSample a = superposed_sampled(s, hs, u, v);
+                const WrAttributes b = superposed_attributes_direct(s, u, v, 3);
+                CHECK(a.attributes.height == doctest::Approx(b.height).epsilon(1e-4));
+            }
+    }
+}
+
+TEST_CASE("adaptive levels grow with the projected size and stop at the cap") {
+    WrControlMesh m = flat_mesh(8, 7);
+    for (auto& p : m.points) p.delta = 0.6f;
+    WrSurface s;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    IstAxis iu;
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_u(), IstEnds::translation, &iu));
+    WrIstAxis au, av;
+    IstAxis iv;
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_v(), IstEnds::translation, &iv));
+    REQUIRE(make_wr_ist_axis(iu, 6, &au));
+    REQUIRE(make_wr_ist_axis(iv, 6, &av));
+    REQUIRE(s.set_axes(au.axis(), av.axis()));
+    const AdaptiveLevels small = choose_adaptive_levels(s, m, 10.0f, 2.0f, 0.5f, 6);
+    const AdaptiveLevels large = choose_adaptive_levels(s, m, 1000.0f, 2.0f, 0.5f, 6);
+    CHECK(small.grid_level < large.grid_level);
+    CHECK(small.sum_levels < large.sum_levels);
+    CHECK(large.grid_level <= 6);
+    // The rest of the sum after K steps projects below the tolerance (unless capped).
+    if (small.sum_levels < 6)
+        CHECK(std::pow(0.6, small.sum_levels + 1) * s.max_abs_height() * 10.0 < 0.5);
 }

@@ -54,7 +54,7 @@ WrControlMesh terrain_mesh(float delta) {
     return m;
 }
 
-const Shot kShot{{2.4f, 3.4f, 7.0f}, {-0.3f, 0.2f, -0.3f}, {0, 1, 0}, 43.0f};
+const Shot kShot{{2.0f, 3.6f, 7.2f}, {-0.5f, 0.2f, -0.3f}, {0, 1, 0}, 44.0f};
 
 struct Panel {
     char id;
