@@ -29,7 +29,8 @@ int main() {
         for (int c = 0; c < 7; ++c) {
             WrControlPoint& p = mesh.at(c, r);
             p.position = {float(c) - 3.0f, 0.0f, 3.0f - float(r)};
-            p.height = 0.2f + 0.6f * std::exp(-0.15f * float((c - 3) * (c - 3) + (r - 3) * (r - 3)));
+            p.height =
+                0.2f + 0.6f * std::exp(-0.15f * float((c - 3) * (c - 3) + (r - 3) * (r - 3)));
             p.color = {1.0f - float(c) / 6.0f, 0.3f, float(c) / 6.0f};
         }
     WrSurface surface;
@@ -59,7 +60,8 @@ int main() {
 
     // 4. Render it (two-sided Lambert on the vertex colours) and export it.
     const int size = 400;
-    Camera camera = perspective_camera({0.0f, 5.0f, 6.0f}, {0, 0.3f, 0}, {0, 1, 0}, 40.0f, size, size);
+    Camera camera =
+        perspective_camera({0.0f, 5.0f, 6.0f}, {0, 0.3f, 0}, {0, 1, 0}, 40.0f, size, size);
     RgbImage color(size, size);
     FloatImage depth(size, size);
     FrameBand band = full_frame_band(color.view(), depth.view());

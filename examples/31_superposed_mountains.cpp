@@ -49,7 +49,8 @@ int main() {
         s = sample_hierarchy(surface, ho, &hs);
         if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
         std::printf("delta %.2f: weights", double(delta));
-        for (int k = 0; k <= 4; ++k) std::printf(" W^%d = %.3f", k, double(superposition_weight(delta, k)));
+        for (int k = 0; k <= 4; ++k)
+            std::printf(" W^%d = %.3f", k, double(superposition_weight(delta, k)));
         std::printf(" (sum %.3f = 1 - delta^5)\n", double(superposition_weight_sum(delta, 4)));
 
         // 3. Polygonise eq. (20) and render.
@@ -61,7 +62,8 @@ int main() {
         s = tessellate_wr_surface(surface, &hs, o, &wm);
         if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
         const int size = 400;
-        Camera camera = perspective_camera({0.0f, 4.5f, 7.5f}, {0, 0.4f, 0}, {0, 1, 0}, 40.0f, size, size);
+        Camera camera =
+            perspective_camera({0.0f, 4.5f, 7.5f}, {0, 0.4f, 0}, {0, 1, 0}, 40.0f, size, size);
         RgbImage color(size, size);
         FloatImage depth(size, size);
         FrameBand band = full_frame_band(color.view(), depth.view());

@@ -13,7 +13,8 @@ std::vector<float> wavy_grid(int cols, int rows) {
     std::vector<float> g;
     for (int r = 0; r < rows; ++r)
         for (int c = 0; c < cols; ++c)
-            g.insert(g.end(), {float(c), float(r), std::sin(0.9f * float(c)) * std::cos(0.7f * float(r))});
+            g.insert(g.end(),
+                     {float(c), float(r), std::sin(0.9f * float(c)) * std::cos(0.7f * float(r))});
     return g;
 }
 }  // namespace

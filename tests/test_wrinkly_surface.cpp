@@ -40,7 +40,8 @@ float reflect_inverse(const void*, float s, int k) {
 
 TEST_CASE("WR surface with zero heights equals the base surface; with K = 0 the plain surface") {
     for (SurfaceBasis basis : {SurfaceBasis::bezier, SurfaceBasis::bspline}) {
-        WrControlMesh m = test_mesh(basis == SurfaceBasis::bezier ? 4 : 7, basis == SurfaceBasis::bezier ? 4 : 6);
+        WrControlMesh m =
+            test_mesh(basis == SurfaceBasis::bezier ? 4 : 7, basis == SurfaceBasis::bezier ? 4 : 6);
         for (auto& p : m.points) p.height = 0;
         WrSurface s;
         REQUIRE(make_wr_surface(m, basis, 3, &s));
@@ -102,7 +103,8 @@ TEST_CASE("hierarchical sampling: samples take H at F^{-1}; H^k passes through t
                     const WrAttributes h = s.wr_attributes(pu[i], pv[j], k);
                     CHECK(v[0] == doctest::Approx(h.height).epsilon(1e-5));
                     // interpolated H^k passes through the sample (both modes)
-                    CHECK(hs.interpolate(k, pu[i], pv[j]).height == doctest::Approx(v[0]).epsilon(1e-4));
+                    CHECK(hs.interpolate(k, pu[i], pv[j]).height ==
+                          doctest::Approx(v[0]).epsilon(1e-4));
                 }
         }
     }
@@ -125,7 +127,8 @@ TEST_CASE("linear and Hermite interpolation agree at the samples and differ betw
             const float u = x[i] + (i < 6 ? du : 0.0f);
             float vals[2];
             int m = 0;
-            for (SampleInterpolation mode : {SampleInterpolation::linear, SampleInterpolation::hermite}) {
+            for (SampleInterpolation mode :
+                 {SampleInterpolation::linear, SampleInterpolation::hermite}) {
                 int first;
                 float w[4];
                 sample_interpolation_weights(x, 7, u, mode, &first, w);

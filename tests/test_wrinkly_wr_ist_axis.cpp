@@ -40,7 +40,8 @@ TEST_CASE("WrIstAxis: F^0 is the identity and F^k matches ist_inverse in base-in
         CHECK(w.inverse_at(s, 0) == s);
         IstAxis k3;
         REQUIRE(ist_with_iterations(ist, 3, &k3));
-        CHECK(w.inverse_at(s, 3) == doctest::Approx(6.0 * ist_inverse_double(k3, s / 6.0)).epsilon(1e-5));
+        CHECK(w.inverse_at(s, 3) ==
+              doctest::Approx(6.0 * ist_inverse_double(k3, s / 6.0)).epsilon(1e-5));
     }
     CHECK(!make_wr_ist_axis(ist, kMaxWrLevel + 1, &a));
 }
@@ -116,7 +117,8 @@ TEST_CASE("WR surface with the real IST: zero heights give the base surface") {
     REQUIRE(make_wr_ist_axis(ist, 4, &a));
     REQUIRE(s.set_axes(a.axis(), a.axis()));
     for (float u : {0.0f, 0.21f, 0.5f, 0.83f, 1.0f})
-        for (float v : {0.1f, 0.66f}) CHECK(length(s.wr_point(u, v, 4) - s.base_point(u, v).position) < 1e-6f);
+        for (float v : {0.1f, 0.66f})
+            CHECK(length(s.wr_point(u, v, 4) - s.base_point(u, v).position) < 1e-6f);
 }
 
 TEST_CASE("eq. (20) equals eq. (16) where every step samples (centres of base intervals, odd N)") {

@@ -78,9 +78,14 @@ struct SurfaceFigure {
     Shot shot;
 };
 
-const SurfaceFigure kFig14{"fig14", SurfaceBasis::bezier, IstKind::unit, 3, fig14_mesh,
-                           Shot{{0.0f, 3.3f, 2.5f}, {0.0f, 0.15f, 0.1f}, {0, 1, 0}, 40.0f}};
-const SurfaceFigure kFig15{"fig15", SurfaceBasis::bspline, IstKind::fully_connected, 3, fig15_mesh,
+const SurfaceFigure kFig14{
+    "fig14", SurfaceBasis::bezier, IstKind::unit,
+    3,       fig14_mesh,           Shot{{0.0f, 3.3f, 2.5f}, {0.0f, 0.15f, 0.1f}, {0, 1, 0}, 40.0f}};
+const SurfaceFigure kFig15{"fig15",
+                           SurfaceBasis::bspline,
+                           IstKind::fully_connected,
+                           3,
+                           fig15_mesh,
                            Shot{{0.0f, 3.6f, 2.9f}, {0.0f, 0.15f, 0.1f}, {0, 1, 0}, 42.0f}};
 
 Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
@@ -90,15 +95,18 @@ Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
     // structure can be seen and the 3x zoom at K + 1 shows it again at the same size.
     const int K = quick ? 2 : (f.basis == SurfaceBasis::bezier ? 3 : 2);
     const int subdivisions = quick ? 1 : 2;
-    ctx.given("base surface", f.basis == SurfaceBasis::bezier ? "Bezier, n = 3" : "uniform B-spline, n = 3",
+    ctx.given("base surface",
+              f.basis == SurfaceBasis::bezier ? "Bezier, n = 3" : "uniform B-spline, n = 3",
               "fig. 14/15 captions");
     ctx.given("IST", f.kind == IstKind::unit ? "unit-IST, N = 3" : "fully-connected IST, N = 3",
               "fig. 14/15 captions");
     ctx.chosen("image size", fmt("%d x %d", size, size), "the paper gives none for figs. 14-18");
-    ctx.chosen("control mesh", f.basis == SurfaceBasis::bezier ? "4 x 4, heights 0.04..0.50, dome 0.35 high"
-                                                               : "11 x 11 (8 x 8 spans), heights 0.05..0.45",
+    ctx.chosen("control mesh",
+               f.basis == SurfaceBasis::bezier ? "4 x 4, heights 0.04..0.50, dome 0.35 high"
+                                               : "11 x 11 (8 x 8 spans), heights 0.05..0.45",
                "not printed; chosen to show the caption's properties");
-    ctx.chosen("colours", "columns red -> green -> blue", "§3.2: 'red to the left, blue to the right'");
+    ctx.chosen("colours", "columns red -> green -> blue",
+               "§3.2: 'red to the left, blue to the right'");
 
     WrControlMesh mesh = f.mesh();
     WrSurface surface;
@@ -112,8 +120,9 @@ Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
     Camera camera = shot_camera(f.shot, size, size);
     if (panel == 'a') {
         draw_control_mesh(img.view(), camera, mesh, surface, true, shading.background);
-        ctx.note("Control polygon; each point in its colour c_i, with a stick of its height h_i "
-                 "along the polygon normal.");
+        ctx.note(
+            "Control polygon; each point in its colour c_i, with a stick of its height h_i "
+            "along the polygon normal.");
         return ctx.save_png(img.view());
     }
     WrTessellationOptions o;
@@ -142,8 +151,9 @@ Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
     }
     ctx.chosen("K (IST steps)", fmt("%d", o.levels),
                "chosen so the small intervals are visible at this size");
-    ctx.chosen("tessellation", fmt("vertices at the step-%d sample positions, %d per interval",
-                                   o.grid_level, subdivisions),
+    ctx.chosen("tessellation",
+               fmt("vertices at the step-%d sample positions, %d per interval", o.grid_level,
+                   subdivisions),
                "adaptive sampling reduced to one level per view");
     const auto t0 = Clock::now();
     WrMesh wm;
@@ -160,9 +170,9 @@ Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
 
 }  // namespace
 
-#define WR_PANEL(fig, p, caption)                                                     \
-    SHITSUKAN_FIGURE(fig##p##_panel, "fujimoto2000", #fig #p, caption) {              \
-        return run_panel(ctx, k##Fig_##fig, (#p)[0]);                                 \
+#define WR_PANEL(fig, p, caption)                                        \
+    SHITSUKAN_FIGURE(fig##p##_panel, "fujimoto2000", #fig #p, caption) { \
+        return run_panel(ctx, k##Fig_##fig, (#p)[0]);                    \
     }
 
 const SurfaceFigure& kFig_fig14 = kFig14;

@@ -44,7 +44,8 @@ Status run_panel(FigureContext& ctx, char panel) {
     const bool quick = ctx.quick();
     const int size = quick ? 128 : 512;
     const int K = 2;  // 5 x 25 = 125 small intervals per axis: 3-4 pixels each
-    ctx.given("base surface", "uniform B-spline, n = 3, 5 x 5 = 25 spans", "fig. 16 caption, §3.2");
+    ctx.given("base surface", "uniform B-spline, n = 3, 5 x 5 = 25 spans",
+              "fig. 16 caption, §3.2");
     ctx.given("IST", "N = 5; (d) fig. 6a fully-connected, (e) fig. 6b, (f) fig. 7b (none)",
               "fig. 16 caption");
     ctx.chosen("image size", fmt("%d x %d", size, size), "not given");
@@ -84,11 +85,28 @@ Status run_panel(FigureContext& ctx, char panel) {
 
 }  // namespace
 
-SHITSUKAN_FIGURE(fig16a_panel, "fujimoto2000", "fig16a", "IST-B-spline, different external shuffles: (a) control mesh") { return run_panel(ctx, 'a'); }
-SHITSUKAN_FIGURE(fig16b_panel, "fujimoto2000", "fig16b", "(b) conventional surface coloured per parameter interval (25 spans)") { return run_panel(ctx, 'b'); }
-SHITSUKAN_FIGURE(fig16c_panel, "fujimoto2000", "fig16c", "(c) conventional B-spline surface") { return run_panel(ctx, 'c'); }
-SHITSUKAN_FIGURE(fig16d_panel, "fujimoto2000", "fig16d", "(d) IST-B-spline, fully-connected IST (fig. 6a), N = 5") { return run_panel(ctx, 'd'); }
-SHITSUKAN_FIGURE(fig16e_panel, "fujimoto2000", "fig16e", "(e) IST-B-spline, connected IST of fig. 6b, N = 5") { return run_panel(ctx, 'e'); }
-SHITSUKAN_FIGURE(fig16f_panel, "fujimoto2000", "fig16f", "(f) IST-B-spline, no external shuffle (fig. 7b), N = 5") { return run_panel(ctx, 'f'); }
+SHITSUKAN_FIGURE(fig16a_panel, "fujimoto2000", "fig16a",
+                 "IST-B-spline, different external shuffles: (a) control mesh") {
+    return run_panel(ctx, 'a');
+}
+SHITSUKAN_FIGURE(fig16b_panel, "fujimoto2000", "fig16b",
+                 "(b) conventional surface coloured per parameter interval (25 spans)") {
+    return run_panel(ctx, 'b');
+}
+SHITSUKAN_FIGURE(fig16c_panel, "fujimoto2000", "fig16c", "(c) conventional B-spline surface") {
+    return run_panel(ctx, 'c');
+}
+SHITSUKAN_FIGURE(fig16d_panel, "fujimoto2000", "fig16d",
+                 "(d) IST-B-spline, fully-connected IST (fig. 6a), N = 5") {
+    return run_panel(ctx, 'd');
+}
+SHITSUKAN_FIGURE(fig16e_panel, "fujimoto2000", "fig16e",
+                 "(e) IST-B-spline, connected IST of fig. 6b, N = 5") {
+    return run_panel(ctx, 'e');
+}
+SHITSUKAN_FIGURE(fig16f_panel, "fujimoto2000", "fig16f",
+                 "(f) IST-B-spline, no external shuffle (fig. 7b), N = 5") {
+    return run_panel(ctx, 'f');
+}
 
 }  // namespace shitsukan::fujimoto2000

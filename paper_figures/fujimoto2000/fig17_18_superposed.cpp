@@ -55,7 +55,8 @@ WrControlMesh fig18_mesh() {
             const float z = 1.5f - 3.0f * float(r) / float(n - 1);
             const float d = z + 0.1f - 0.35f * std::sin(1.6f * x);  // distance from a winding ridge
             p.position = {x, 0.0f, z};
-            p.height = 0.05f + 0.55f * std::exp(-3.0f * d * d) * (0.65f + 0.6f * hash_uniform(18, 0, c, r));
+            p.height = 0.05f +
+                       0.55f * std::exp(-3.0f * d * d) * (0.65f + 0.6f * hash_uniform(18, 0, c, r));
             p.color = height_color(p.height, 0.65f);
         }
     return m;
@@ -65,26 +66,37 @@ struct SuperFigure {
     SurfaceBasis basis;
     IstKind kind;
     WrControlMesh (*mesh)();
-    int wr_levels;   // K of panel (3)
-    int max_level;   // cap of the adaptive choice
+    int wr_levels;  // K of panel (3)
+    int max_level;  // cap of the adaptive choice
     Shot shot;
 };
 
-const SuperFigure kFig17{SurfaceBasis::bezier, IstKind::unit, fig17_mesh, 4, 5,
+const SuperFigure kFig17{SurfaceBasis::bezier,
+                         IstKind::unit,
+                         fig17_mesh,
+                         4,
+                         5,
                          Shot{{0.4f, 2.7f, 3.1f}, {0.0f, 0.25f, 0.0f}, {0, 1, 0}, 40.0f}};
-const SuperFigure kFig18{SurfaceBasis::bspline, IstKind::fully_connected, fig18_mesh, 3, 4,
+const SuperFigure kFig18{SurfaceBasis::bspline,
+                         IstKind::fully_connected,
+                         fig18_mesh,
+                         3,
+                         4,
                          Shot{{0.3f, 3.0f, 3.6f}, {0.0f, 0.2f, 0.0f}, {0, 1, 0}, 40.0f}};
 
 Status run_panel(FigureContext& ctx, const SuperFigure& f, int panel) {
     const bool quick = ctx.quick();
     const int size = quick ? 128 : 512;
-    ctx.given("base surface", f.basis == SurfaceBasis::bezier ? "Bezier n = 3" : "uniform B-spline n = 3",
+    ctx.given("base surface",
+              f.basis == SurfaceBasis::bezier ? "Bezier n = 3" : "uniform B-spline n = 3",
               "§4.1, figs. 17-18");
     ctx.given("weights", "W^k = (1 - delta) delta^k", "eq. (19)");
     ctx.chosen("IST", f.kind == IstKind::unit ? "unit-IST N = 3" : "fully-connected IST N = 3",
                "the ISTs of figs. 14/15");
-    ctx.chosen("control mesh", f.basis == SurfaceBasis::bezier ? "4 x 4 flat, ridge of heights 0.05..1.2"
-                                                               : "11 x 11 flat (8 x 8 spans), winding range up to 0.7",
+    ctx.chosen("control mesh",
+               f.basis == SurfaceBasis::bezier
+                   ? "4 x 4 flat, ridge of heights 0.05..1.2"
+                   : "11 x 11 flat (8 x 8 spans), winding range up to 0.7",
                "not printed");
     ctx.chosen("image size", fmt("%d x %d", size, size), "not given");
     WrControlMesh mesh = f.mesh();
@@ -118,8 +130,8 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, int panel) {
         // Adaptive sampling: grid cells of <= 2 pixels, the sum stops when the rest of it is
         // below half a pixel (§4.2), both capped.
         const float ppu = shot_pixels_per_unit(f.shot, size);
-        const AdaptiveLevels a = choose_adaptive_levels(surface, mesh, ppu, 2.0f, 0.5f,
-                                                        quick ? 2 : f.max_level);
+        const AdaptiveLevels a =
+            choose_adaptive_levels(surface, mesh, ppu, 2.0f, 0.5f, quick ? 2 : f.max_level);
         HierarchicalOptions ho;
         ho.levels = std::max(a.sum_levels, 1);
         ho.interpolation = SampleInterpolation::hermite;
@@ -130,9 +142,11 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, int panel) {
         o.tail_tolerance = a.world_tolerance;
         ctx.chosen("delta", fmt("%.2f (constant)", double(delta)),
                    "one smooth and one rough value; the paper does not print them");
-        ctx.chosen("sample interpolation", "Hermite", "fig. 19(d); the paper does not say for figs. 17-18");
-        ctx.chosen("adaptive sampling", fmt("grid level %d, K = %d, tail tolerance %.4f", a.grid_level,
-                                            ho.levels, double(a.world_tolerance)),
+        ctx.chosen("sample interpolation", "Hermite",
+                   "fig. 19(d); the paper does not say for figs. 17-18");
+        ctx.chosen("adaptive sampling",
+                   fmt("grid level %d, K = %d, tail tolerance %.4f", a.grid_level, ho.levels,
+                       double(a.world_tolerance)),
                    "cells <= 2 px, omitted rest of the sum < 0.5 px");
     }
     WrMesh wm;
@@ -146,15 +160,45 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, int panel) {
 
 }  // namespace
 
-SHITSUKAN_FIGURE(fig17a1_panel, "fujimoto2000", "fig17a1", "Superposed IST-Bezier: (a-1) control mesh with heights h_i") { return run_panel(ctx, kFig17, 1); }
-SHITSUKAN_FIGURE(fig17a2_panel, "fujimoto2000", "fig17a2", "Superposed IST-Bezier: (a-2) conventional Bezier surface") { return run_panel(ctx, kFig17, 2); }
-SHITSUKAN_FIGURE(fig17a3_panel, "fujimoto2000", "fig17a3", "Superposed IST-Bezier: (a-3) WR surface, eq. (15)") { return run_panel(ctx, kFig17, 3); }
-SHITSUKAN_FIGURE(fig17a4_panel, "fujimoto2000", "fig17a4", "Superposed IST-Bezier: (a-4) superposed, small delta (smooth)") { return run_panel(ctx, kFig17, 4); }
-SHITSUKAN_FIGURE(fig17a5_panel, "fujimoto2000", "fig17a5", "Superposed IST-Bezier: (a-5) superposed, large delta (rough)") { return run_panel(ctx, kFig17, 5); }
-SHITSUKAN_FIGURE(fig18b1_panel, "fujimoto2000", "fig18b1", "Superposed IST-B-spline: (b-1) control mesh with heights h_i") { return run_panel(ctx, kFig18, 1); }
-SHITSUKAN_FIGURE(fig18b2_panel, "fujimoto2000", "fig18b2", "Superposed IST-B-spline: (b-2) conventional B-spline surface") { return run_panel(ctx, kFig18, 2); }
-SHITSUKAN_FIGURE(fig18b3_panel, "fujimoto2000", "fig18b3", "Superposed IST-B-spline: (b-3) WR surface, eq. (15)") { return run_panel(ctx, kFig18, 3); }
-SHITSUKAN_FIGURE(fig18b4_panel, "fujimoto2000", "fig18b4", "Superposed IST-B-spline: (b-4) superposed, small delta (smooth)") { return run_panel(ctx, kFig18, 4); }
-SHITSUKAN_FIGURE(fig18b5_panel, "fujimoto2000", "fig18b5", "Superposed IST-B-spline: (b-5) superposed, large delta (rough)") { return run_panel(ctx, kFig18, 5); }
+SHITSUKAN_FIGURE(fig17a1_panel, "fujimoto2000", "fig17a1",
+                 "Superposed IST-Bezier: (a-1) control mesh with heights h_i") {
+    return run_panel(ctx, kFig17, 1);
+}
+SHITSUKAN_FIGURE(fig17a2_panel, "fujimoto2000", "fig17a2",
+                 "Superposed IST-Bezier: (a-2) conventional Bezier surface") {
+    return run_panel(ctx, kFig17, 2);
+}
+SHITSUKAN_FIGURE(fig17a3_panel, "fujimoto2000", "fig17a3",
+                 "Superposed IST-Bezier: (a-3) WR surface, eq. (15)") {
+    return run_panel(ctx, kFig17, 3);
+}
+SHITSUKAN_FIGURE(fig17a4_panel, "fujimoto2000", "fig17a4",
+                 "Superposed IST-Bezier: (a-4) superposed, small delta (smooth)") {
+    return run_panel(ctx, kFig17, 4);
+}
+SHITSUKAN_FIGURE(fig17a5_panel, "fujimoto2000", "fig17a5",
+                 "Superposed IST-Bezier: (a-5) superposed, large delta (rough)") {
+    return run_panel(ctx, kFig17, 5);
+}
+SHITSUKAN_FIGURE(fig18b1_panel, "fujimoto2000", "fig18b1",
+                 "Superposed IST-B-spline: (b-1) control mesh with heights h_i") {
+    return run_panel(ctx, kFig18, 1);
+}
+SHITSUKAN_FIGURE(fig18b2_panel, "fujimoto2000", "fig18b2",
+                 "Superposed IST-B-spline: (b-2) conventional B-spline surface") {
+    return run_panel(ctx, kFig18, 2);
+}
+SHITSUKAN_FIGURE(fig18b3_panel, "fujimoto2000", "fig18b3",
+                 "Superposed IST-B-spline: (b-3) WR surface, eq. (15)") {
+    return run_panel(ctx, kFig18, 3);
+}
+SHITSUKAN_FIGURE(fig18b4_panel, "fujimoto2000", "fig18b4",
+                 "Superposed IST-B-spline: (b-4) superposed, small delta (smooth)") {
+    return run_panel(ctx, kFig18, 4);
+}
+SHITSUKAN_FIGURE(fig18b5_panel, "fujimoto2000", "fig18b5",
+                 "Superposed IST-B-spline: (b-5) superposed, large delta (rough)") {
+    return run_panel(ctx, kFig18, 5);
+}
 
 }  // namespace shitsukan::fujimoto2000

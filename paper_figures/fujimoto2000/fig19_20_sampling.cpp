@@ -42,11 +42,14 @@ struct Plot {
 
 void axes(RasterCanvas& c, const Plot& p, const char* title) {
     const Rgb8 grey{150, 150, 150}, black{0, 0, 0};
-    c.rect_outline(p.at(0, p.ymax), Vec2{float(p.w - p.left - p.right), float(p.h - p.top - p.bottom)}, black, 1.0f);
+    c.rect_outline(p.at(0, p.ymax),
+                   Vec2{float(p.w - p.left - p.right), float(p.h - p.top - p.bottom)}, black, 1.0f);
     c.line(p.at(0, 0), p.at(1, 0), grey, 1.0f);
     for (int i = 0; i <= 9; ++i) {  // the small intervals of u^2
         const float u = float(i) / 9.0f;
-        c.line(p.at(u, p.ymin), Vec2{p.at(u, p.ymin).x, p.at(u, p.ymin).y + (i % 3 == 0 ? 8.0f : 4.0f)}, black, 1.0f);
+        c.line(p.at(u, p.ymin),
+               Vec2{p.at(u, p.ymin).x, p.at(u, p.ymin).y + (i % 3 == 0 ? 8.0f : 4.0f)}, black,
+               1.0f);
     }
     c.text({float(p.left), 6.0f}, title, black, 1);
     c.text({float(p.left) - 4, float(p.h - p.bottom) + 12}, "0", black, 1);
@@ -60,8 +63,10 @@ Status run19(FigureContext& ctx, char panel) {
     const bool quick = ctx.quick();
     const int w = quick ? 240 : 560, h = quick ? 150 : 320;
     ctx.given("IST", "unit-IST N = 3, k = 2 (9 small intervals)", "fig. 19 caption");
-    ctx.chosen("H(u)", "cubic Bezier, heights 0.15, 1.25, -0.35, 0.8", "any smooth function; not printed");
-    ctx.chosen("samples", "midpoints of the 9 small intervals + the ends u = 0, 1", "fig. 19(b), fig. 20");
+    ctx.chosen("H(u)", "cubic Bezier, heights 0.15, 1.25, -0.35, 0.8",
+               "any smooth function; not printed");
+    ctx.chosen("samples", "midpoints of the 9 small intervals + the ends u = 0, 1",
+               "fig. 19(b), fig. 20");
     RgbImage img(w, h, Rgb8{255, 255, 255});
     RasterCanvas c(img.view());
     Plot p{w, h};
@@ -101,22 +106,26 @@ Status run19(FigureContext& ctx, char panel) {
     } else {
         staircase(panel == 'b' ? blue : light, panel == 'b' ? 2.0f : 1.5f);
         if (panel >= 'c') {
-            const SampleInterpolation mode = panel == 'c' ? SampleInterpolation::linear : SampleInterpolation::hermite;
-            curve([&](float u) {
-                int first;
-                float wts[4];
-                sample_interpolation_weights(x.data(), int(x.size()), u, mode, &first, wts);
-                float s = 0;
-                for (int a = 0; a < 4; ++a)
-                    if (wts[a] != 0) s += wts[a] * y[std::size_t(first + a)];
-                return s;
-            }, red, 2.0f);
+            const SampleInterpolation mode =
+                panel == 'c' ? SampleInterpolation::linear : SampleInterpolation::hermite;
+            curve(
+                [&](float u) {
+                    int first;
+                    float wts[4];
+                    sample_interpolation_weights(x.data(), int(x.size()), u, mode, &first, wts);
+                    float s = 0;
+                    for (int a = 0; a < 4; ++a)
+                        if (wts[a] != 0) s += wts[a] * y[std::size_t(first + a)];
+                    return s;
+                },
+                red, 2.0f);
         }
         const float ds = quick ? 3.0f : 7.0f;
         for (std::size_t i = 0; i < x.size(); ++i) {
             const bool boundary = i == 0 || i + 1 == x.size();
             if (boundary && panel == 'b') continue;
-            c.marker(p.at(x[i], y[i]), boundary ? MarkerShape::circle : MarkerShape::dot, ds, Rgb8{0, 0, 0});
+            c.marker(p.at(x[i], y[i]), boundary ? MarkerShape::circle : MarkerShape::dot, ds,
+                     Rgb8{0, 0, 0});
         }
     }
     return ctx.save_png(img.view());
@@ -128,7 +137,8 @@ Status run20(FigureContext& ctx) {
     RgbImage img(2 * cell + 3 * pad, cell + 2 * pad, Rgb8{255, 255, 255});
     RasterCanvas c(img.view());
     ctx.given("IST", "unit-IST N = 3, k = 1 and 2", "fig. 20 caption");
-    ctx.given("sampling", "one point per small region ((3^k)^2), plus the boundary of the open surface",
+    ctx.given("sampling",
+              "one point per small region ((3^k)^2), plus the boundary of the open surface",
               "fig. 20 caption");
     for (int k = 1; k <= 2; ++k) {
         const float x0 = float(pad + (k - 1) * (cell + pad)), y0 = float(pad);
@@ -143,24 +153,43 @@ Status run20(FigureContext& ctx) {
         const float ds = quick ? (k == 1 ? 5.0f : 3.0f) : (k == 1 ? 10.0f : 6.0f);
         for (std::size_t j = 0; j < pos.size(); ++j)
             for (std::size_t i = 0; i < pos.size(); ++i) {
-                const bool boundary = i == 0 || j == 0 || i + 1 == pos.size() || j + 1 == pos.size();
+                const bool boundary =
+                    i == 0 || j == 0 || i + 1 == pos.size() || j + 1 == pos.size();
                 const Vec2 at{x0 + pos[i] * float(cell), y0 + (1.0f - pos[j]) * float(cell)};
                 c.marker(at, boundary ? MarkerShape::circle : MarkerShape::dot, ds,
                          boundary ? Rgb8{200, 40, 30} : Rgb8{0, 0, 0});
             }
-        if (!quick) c.text({x0, y0 + float(cell) + 10}, fmt("k = %d: %d regions", k, m * m), Rgb8{0, 0, 0}, 2);
+        if (!quick)
+            c.text({x0, y0 + float(cell) + 10}, fmt("k = %d: %d regions", k, m * m), Rgb8{0, 0, 0},
+                   2);
     }
-    ctx.note("Black dots: one sample per small region; red rings: samples on the boundary of the "
-             "open surface.");
+    ctx.note(
+        "Black dots: one sample per small region; red rings: samples on the boundary of the "
+        "open surface.");
     return ctx.save_png(img.view());
 }
 
 }  // namespace
 
-SHITSUKAN_FIGURE(fig19a_panel, "fujimoto2000", "fig19a", "Height function on the u axis: (a) H(u)") { return run19(ctx, 'a'); }
-SHITSUKAN_FIGURE(fig19b_panel, "fujimoto2000", "fig19b", "(b) H((F^k)^-1(u)), unit-IST N = 3, k = 2, with the 9 midpoint values") { return run19(ctx, 'b'); }
-SHITSUKAN_FIGURE(fig19c_panel, "fujimoto2000", "fig19c", "(c) linear interpolation of the samples: H^2(u)") { return run19(ctx, 'c'); }
-SHITSUKAN_FIGURE(fig19d_panel, "fujimoto2000", "fig19d", "(d) higher-order (Hermite) interpolation of the samples") { return run19(ctx, 'd'); }
-SHITSUKAN_FIGURE(fig20_sampling, "fujimoto2000", "fig20", "Hierarchical sampling points, unit-IST N = 3, k = 1 and 2") { return run20(ctx); }
+SHITSUKAN_FIGURE(fig19a_panel, "fujimoto2000", "fig19a",
+                 "Height function on the u axis: (a) H(u)") {
+    return run19(ctx, 'a');
+}
+SHITSUKAN_FIGURE(fig19b_panel, "fujimoto2000", "fig19b",
+                 "(b) H((F^k)^-1(u)), unit-IST N = 3, k = 2, with the 9 midpoint values") {
+    return run19(ctx, 'b');
+}
+SHITSUKAN_FIGURE(fig19c_panel, "fujimoto2000", "fig19c",
+                 "(c) linear interpolation of the samples: H^2(u)") {
+    return run19(ctx, 'c');
+}
+SHITSUKAN_FIGURE(fig19d_panel, "fujimoto2000", "fig19d",
+                 "(d) higher-order (Hermite) interpolation of the samples") {
+    return run19(ctx, 'd');
+}
+SHITSUKAN_FIGURE(fig20_sampling, "fujimoto2000", "fig20",
+                 "Hierarchical sampling points, unit-IST N = 3, k = 1 and 2") {
+    return run20(ctx);
+}
 
 }  // namespace shitsukan::fujimoto2000

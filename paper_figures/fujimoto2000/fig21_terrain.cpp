@@ -40,14 +40,19 @@ WrControlMesh terrain_mesh(float delta) {
             const float x = -3.0f + 6.0f * float(c) / float(n - 1);
             const float z = 3.0f - 6.0f * float(r) / float(n - 1);
             const float g = green_mask(x, z);
-            float h = 1.9f * std::exp(-((x + 1.0f) * (x + 1.0f) / 2.2f + (z + 1.1f) * (z + 1.1f) / 1.3f)) +
-                      1.1f * std::exp(-((x - 1.7f) * (x - 1.7f) / 1.0f + (z + 1.9f) * (z + 1.9f) / 0.7f)) +
-                      0.25f * hash_uniform(21, 0, c, r);
+            float h =
+                1.9f *
+                    std::exp(-((x + 1.0f) * (x + 1.0f) / 2.2f + (z + 1.1f) * (z + 1.1f) / 1.3f)) +
+                1.1f *
+                    std::exp(-((x - 1.7f) * (x - 1.7f) / 1.0f + (z + 1.9f) * (z + 1.9f) / 0.7f)) +
+                0.25f * hash_uniform(21, 0, c, r);
             h = (1.0f - g) * h + g * (0.06f + 0.08f * hash_uniform(21, 1, c, r));
             p.position = {x, 0.0f, z};
             p.height = h;
-            const Vec3 grass{0.36f, 0.52f, 0.24f}, rock{0.52f, 0.45f, 0.38f}, snow{0.96f, 0.96f, 0.98f};
-            Vec3 col = h < 0.7f ? lerp(grass, rock, h / 0.7f) : lerp(rock, snow, clamp((h - 0.9f) / 0.6f, 0.0f, 1.0f));
+            const Vec3 grass{0.36f, 0.52f, 0.24f}, rock{0.52f, 0.45f, 0.38f},
+                snow{0.96f, 0.96f, 0.98f};
+            Vec3 col = h < 0.7f ? lerp(grass, rock, h / 0.7f)
+                                : lerp(rock, snow, clamp((h - 0.9f) / 0.6f, 0.0f, 1.0f));
             p.color = lerp(col, Vec3{0.30f, 0.62f, 0.22f}, g);
             p.delta = (1.0f - g) * delta + g * kDeltaGreen;
         }
@@ -105,7 +110,8 @@ Status render_panel(bool quick, char panel, RgbImage* img, StageTimes* times, Wr
         times->levels = ho.levels;
     }
     WrMesh wm;
-    SHITSUKAN_TRY(evaluate_wr_grid(surface, o.form == WrSurfaceForm::superposed ? &hs : nullptr, o, &wm));
+    SHITSUKAN_TRY(
+        evaluate_wr_grid(surface, o.form == WrSurfaceForm::superposed ? &hs : nullptr, o, &wm));
     times->sampling = seconds_since(t0);
     t0 = Clock::now();
     polygonise_wr_grid(surface, &wm);
@@ -119,7 +125,8 @@ Status render_panel(bool quick, char panel, RgbImage* img, StageTimes* times, Wr
     times->triangles = wm.mesh.triangle_count();
     *params = fmt("grid level %d (%d x %d vertices), %s", a.grid_level, wm.grid_u, wm.grid_v,
                   panel >= 'e' ? fmt("K = %d, delta = %.2f, linear sampling, mean steps used %.2f",
-                                     times->levels, double(delta), wm.mean_levels_used).c_str()
+                                     times->levels, double(delta), wm.mean_levels_used)
+                                     .c_str()
                                : (panel == 'd' ? fmt("K = %d", o.levels).c_str() : "no IST"));
     if (keep) *keep = std::move(wm);
     return Status::success();
@@ -129,8 +136,10 @@ Status run_panel(FigureContext& ctx, char panel) {
     ctx.given("image size", "800 x 800", "Table 2");
     ctx.given("surface", "superposed IST-B-spline, n = 3", "§5");
     ctx.chosen("IST", "fully-connected, N = 3", "the paper does not name it for fig. 21");
-    ctx.chosen("control mesh", "10 x 10 (7 x 7 spans), massif back left, range back right, "
-                               "green field front right (delta 0.02)", "not printed");
+    ctx.chosen("control mesh",
+               "10 x 10 (7 x 7 spans), massif back left, range back right, "
+               "green field front right (delta 0.02)",
+               "not printed");
     ctx.chosen("deltas (e)(f)(g)", "0.35, 0.55, 0.75", "not printed; small to large roughness");
     ctx.chosen("adaptive sampling", "grid cells <= 1.5 px, rest of the sum < 0.5 px, level cap 4",
                "keeps a full panel within seconds");
@@ -140,22 +149,38 @@ Status run_panel(FigureContext& ctx, char panel) {
     std::string params;
     SHITSUKAN_TRY(render_panel(ctx.quick(), panel, &img, &t, &wm, &params));
     record_stage_times(fmt("fig21%c", panel), t);
-    ctx.note(params + fmt("; %ld triangles; sampling %.2f s, polygonisation %.2f s, rendering %.2f s.",
-                          t.triangles, t.sampling, t.polygonisation, t.rendering));
+    ctx.note(params +
+             fmt("; %ld triangles; sampling %.2f s, polygonisation %.2f s, rendering %.2f s.",
+                 t.triangles, t.sampling, t.polygonisation, t.rendering));
     if (panel == 'f' && !ctx.quick()) SHITSUKAN_TRY(write_obj(ctx.path(".obj").c_str(), wm.mesh));
     return ctx.save_png(img.view());
 }
 
 }  // namespace
 
-SHITSUKAN_FIGURE(fig21c_panel, "fujimoto2000", "fig21c", "Terrain (800 x 800): (c) conventional B-spline surface") { return run_panel(ctx, 'c'); }
-SHITSUKAN_FIGURE(fig21d_panel, "fujimoto2000", "fig21d", "Terrain: (d) WR surface (spiky)") { return run_panel(ctx, 'd'); }
-SHITSUKAN_FIGURE(fig21e_panel, "fujimoto2000", "fig21e", "Terrain: (e) superposed WR surface, delta = 0.35") { return run_panel(ctx, 'e'); }
-SHITSUKAN_FIGURE(fig21f_panel, "fujimoto2000", "fig21f", "Terrain: (f) superposed WR surface, delta = 0.55") { return run_panel(ctx, 'f'); }
-SHITSUKAN_FIGURE(fig21g_panel, "fujimoto2000", "fig21g", "Terrain: (g) superposed WR surface, delta = 0.75") { return run_panel(ctx, 'g'); }
+SHITSUKAN_FIGURE(fig21c_panel, "fujimoto2000", "fig21c",
+                 "Terrain (800 x 800): (c) conventional B-spline surface") {
+    return run_panel(ctx, 'c');
+}
+SHITSUKAN_FIGURE(fig21d_panel, "fujimoto2000", "fig21d", "Terrain: (d) WR surface (spiky)") {
+    return run_panel(ctx, 'd');
+}
+SHITSUKAN_FIGURE(fig21e_panel, "fujimoto2000", "fig21e",
+                 "Terrain: (e) superposed WR surface, delta = 0.35") {
+    return run_panel(ctx, 'e');
+}
+SHITSUKAN_FIGURE(fig21f_panel, "fujimoto2000", "fig21f",
+                 "Terrain: (f) superposed WR surface, delta = 0.55") {
+    return run_panel(ctx, 'f');
+}
+SHITSUKAN_FIGURE(fig21g_panel, "fujimoto2000", "fig21g",
+                 "Terrain: (g) superposed WR surface, delta = 0.75") {
+    return run_panel(ctx, 'g');
+}
 
-SHITSUKAN_FIGURE(table02_times, "fujimoto2000", "table02",
-                 "Execution times of fig. 21 (800 x 800): paper (Origin2000, min:sec) vs. this library") {
+SHITSUKAN_FIGURE(
+    table02_times, "fujimoto2000", "table02",
+    "Execution times of fig. 21 (800 x 800): paper (Origin2000, min:sec) vs. this library") {
     std::vector<std::string> names;
     std::vector<StageTimes> ours;
     std::vector<std::array<const char*, 4>> paper;
@@ -171,8 +196,9 @@ SHITSUKAN_FIGURE(table02_times, "fujimoto2000", "table02",
         paper.push_back({p.paper_sam, p.paper_pol, p.paper_ren, p.paper_total});
     }
     ctx.given("paper times", "Table 2 (Origin2000, R10000 250 MHz)", "Table 2");
-    ctx.chosen("stage mapping", "sam. = hierarchical sampling + surface points, pol. = normals + "
-                                "triangles, ren. = Z-buffer rasterisation",
+    ctx.chosen("stage mapping",
+               "sam. = hierarchical sampling + surface points, pol. = normals + "
+               "triangles, ren. = Z-buffer rasterisation",
                "the paper's stages; ours are seconds on one shared core");
     std::string md = "# Table 2: execution times of fig. 21 (800 x 800)\n\n" +
                      stage_table(names, ours, paper) +

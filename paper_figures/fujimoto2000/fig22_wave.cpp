@@ -20,7 +20,7 @@ namespace {
 using figures::FigureContext;
 using figures::fmt;
 
-constexpr int kLevels = 3;                       // K, given
+constexpr int kLevels = 3;                           // K, given
 constexpr float kDeltas[3] = {0.25f, 0.50f, 0.75f};  // given
 
 // Chosen: 10 x 8 control points (7 x 5 spans) on [-3.5, 3.5] x [-2, 2]; a swell along x, the
@@ -39,7 +39,8 @@ WrControlMesh wave_mesh(float delta) {
             p.position = {x, 0.3f * std::sin(0.9f * x + 0.5f * z), z};
             p.height = 0.1f + 0.9f * crest + 0.05f * hash_uniform(22, 0, c, r);
             p.direction = normalize(Vec3{0.0f, 1.0f, crest});
-            p.color = lerp(Vec3{0.05f, 0.22f, 0.42f}, Vec3{0.95f, 0.97f, 1.0f}, clamp(1.5f * crest, 0.0f, 1.0f));
+            p.color = lerp(Vec3{0.05f, 0.22f, 0.42f}, Vec3{0.95f, 0.97f, 1.0f},
+                           clamp(1.5f * crest, 0.0f, 1.0f));
             p.delta = delta;
         }
     return m;
@@ -95,7 +96,8 @@ Status draw_panel(bool quick, char row, int col, RgbView view, StageTimes* t) {
         o.form = WrSurfaceForm::superposed;
     }
     WrMesh wm;
-    SHITSUKAN_TRY(evaluate_wr_grid(surface, o.form == WrSurfaceForm::superposed ? &hs : nullptr, o, &wm));
+    SHITSUKAN_TRY(
+        evaluate_wr_grid(surface, o.form == WrSurfaceForm::superposed ? &hs : nullptr, o, &wm));
     t->sampling = seconds_since(t0);
     t0 = Clock::now();
     polygonise_wr_grid(surface, &wm);
@@ -114,8 +116,13 @@ Status draw_panel(bool quick, char row, int col, RgbView view, StageTimes* t) {
 Status build_fig22(bool quick, RgbImage* img, std::map<std::string, StageTimes>* times) {
     const int pw = quick ? kPanelW / 3 : kPanelW, ph = quick ? kPanelH / 3 : kPanelH;
     *img = RgbImage(4 * pw, 3 * ph, Rgb8{255, 255, 255});
-    struct P { char row; int col; int gx, gy; const char* label; };
-    const P panels[] = {{'x', 0, 0, 0, "(x)"}, {'y', 0, 1, 0, "(y)"}, {'z', 0, 2, 0, "(z)"},
+    struct P {
+        char row;
+        int col;
+        int gx, gy;
+        const char* label;
+    };
+    const P panels[] = {{'x', 0, 0, 0, "(x)"},   {'y', 0, 1, 0, "(y)"},   {'z', 0, 2, 0, "(z)"},
                         {'a', 1, 0, 1, "(a-1)"}, {'a', 2, 1, 1, "(a-2)"}, {'a', 3, 2, 1, "(a-3)"},
                         {'a', 4, 3, 1, "(a-4)"}, {'b', 1, 0, 2, "(b-1)"}, {'b', 2, 1, 2, "(b-2)"},
                         {'b', 3, 2, 2, "(b-3)"}, {'b', 4, 3, 2, "(b-4)"}};
@@ -141,19 +148,23 @@ Status build_fig22(bool quick, RgbImage* img, std::map<std::string, StageTimes>*
 
 }  // namespace
 
-SHITSUKAN_FIGURE(fig22_wave, "fujimoto2000", "fig22",
-                 "Wave (1200 x 600): mesh, spans, plain; (a) fully-connected N = 5, (b) fig. 6b IST; "
-                 "1 WR, 2-4 superposed delta 0.25/0.50/0.75") {
+SHITSUKAN_FIGURE(
+    fig22_wave, "fujimoto2000", "fig22",
+    "Wave (1200 x 600): mesh, spans, plain; (a) fully-connected N = 5, (b) fig. 6b IST; "
+    "1 WR, 2-4 superposed delta 0.25/0.50/0.75") {
     ctx.given("image size", "1200 x 600 (11 panels of 300 x 200)", "Table 3");
     ctx.given("K", "3", "fig. 22 caption");
     ctx.given("sample interpolation", "Hermite", "fig. 22 caption");
     ctx.given("deltas", "0.25, 0.50, 0.75", "fig. 22 caption");
     ctx.given("ISTs", "(a) fully-connected N = 5 (fig. 6a), (b) fig. 6b", "fig. 22 caption");
-    ctx.chosen("control mesh", "10 x 8 (7 x 5 spans), swell along x, crest rows pushed up and "
-                               "forward, heights 0.1..1.05", "not printed");
+    ctx.chosen("control mesh",
+               "10 x 8 (7 x 5 spans), swell along x, crest rows pushed up and "
+               "forward, heights 0.1..1.05",
+               "not printed");
     ctx.chosen("jitter", "height x(1 + 0.15 g), colour + 0.04 g", "§5 gives no deviation");
-    ctx.chosen("transparency", "0 (opaque water)", "the paper gives the wave a transparency but "
-                                                   "does not show through; kept opaque");
+    ctx.chosen("transparency", "0 (opaque water)",
+               "the paper gives the wave a transparency but "
+               "does not show through; kept opaque");
     ctx.chosen("adaptive sampling", "grid cells <= 2 px (level <= 3), 2 vertices per interval",
                "panel resolution");
     RgbImage img;
@@ -163,9 +174,13 @@ SHITSUKAN_FIGURE(fig22_wave, "fujimoto2000", "fig22",
     return ctx.save_png(img.view());
 }
 
-SHITSUKAN_FIGURE(table03_times, "fujimoto2000", "table03",
-                 "Execution times of fig. 22 (1200 x 600): paper (Origin2000, min:sec) vs. this library") {
-    struct Row { const char* label; std::array<const char*, 4> paper; };
+SHITSUKAN_FIGURE(
+    table03_times, "fujimoto2000", "table03",
+    "Execution times of fig. 22 (1200 x 600): paper (Origin2000, min:sec) vs. this library") {
+    struct Row {
+        const char* label;
+        std::array<const char*, 4> paper;
+    };
     const Row rows[] = {{"(z)", {"4:23", "0:52", "1:27", "6:42"}},
                         {"(a-1)", {"4:50", "0:52", "161:24", "167:06"}},
                         {"(a-2)", {"10:43", "0:53", "1:32", "13:08"}},
@@ -192,13 +207,17 @@ SHITSUKAN_FIGURE(table03_times, "fujimoto2000", "table03",
         paper.push_back(r.paper);
     }
     ctx.given("paper times", "Table 3 (Origin2000, R10000 250 MHz)", "Table 3");
-    ctx.chosen("stage mapping", "sam. = hierarchical sampling + surface points, pol. = normals + "
-                                "triangles, ren. = Z-buffer", "the paper's stages");
-    return ctx.save_markdown("# Table 3: execution times of fig. 22 (panels of 300 x 200 in a "
-                             "1200 x 600 image)\n\n" + stage_table(names, ours, paper) +
-                             (ctx.quick() ? "\n(quick run: small images, not comparable)\n" : "") +
-                             "\nPaper: Origin2000, min:sec, each panel rendered on its own. Ours: "
-                             "seconds for a 300 x 200 panel.\n");
+    ctx.chosen("stage mapping",
+               "sam. = hierarchical sampling + surface points, pol. = normals + "
+               "triangles, ren. = Z-buffer",
+               "the paper's stages");
+    return ctx.save_markdown(
+        "# Table 3: execution times of fig. 22 (panels of 300 x 200 in a "
+        "1200 x 600 image)\n\n" +
+        stage_table(names, ours, paper) +
+        (ctx.quick() ? "\n(quick run: small images, not comparable)\n" : "") +
+        "\nPaper: Origin2000, min:sec, each panel rendered on its own. Ours: "
+        "seconds for a 300 x 200 panel.\n");
 }
 
 }  // namespace shitsukan::fujimoto2000

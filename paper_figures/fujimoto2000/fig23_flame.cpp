@@ -24,8 +24,8 @@ namespace {
 using figures::FigureContext;
 using figures::fmt;
 
-constexpr int kLevels = 3;        // K, given
-constexpr float kDelta = 0.60f;   // given
+constexpr int kLevels = 3;       // K, given
+constexpr float kDelta = 0.60f;  // given
 
 // The three settings a, b, c (chosen): lean of the flame tongues (radians, + = to the right),
 // height scale towards the tip, and the phase of the tongue pattern around the flame.
@@ -120,15 +120,22 @@ Status draw_panel(bool quick, char kind, int setting, RgbView view, StageTimes* 
     return Status::success();
 }
 
-Status build_fig23(bool quick, RgbImage* img, std::map<std::string, StageTimes>* times, WrMesh* keep) {
+Status build_fig23(bool quick, RgbImage* img, std::map<std::string, StageTimes>* times,
+                   WrMesh* keep) {
     const int s = quick ? 4 : 1;  // quick: a quarter of the size
     *img = RgbImage(1200 / s, 1200 / s, Rgb8{255, 255, 255});
-    struct P { char kind; int setting; int x, y, w, h; const char* label; };
-    const P panels[] = {{'x', 0, 0, 0, 300, 300, "(x)"},       {'1', 0, 300, 0, 300, 300, "(a-1)"},
-                        {'1', 1, 600, 0, 300, 300, "(b-1)"},   {'1', 2, 900, 0, 300, 300, "(c-1)"},
-                        {'2', 0, 0, 300, 400, 450, "(a-2)"},   {'2', 1, 400, 300, 400, 450, "(b-2)"},
-                        {'2', 2, 800, 300, 400, 450, "(c-2)"}, {'3', 0, 0, 750, 400, 450, "(a-3)"},
-                        {'3', 1, 400, 750, 400, 450, "(b-3)"}, {'3', 2, 800, 750, 400, 450, "(c-3)"}};
+    struct P {
+        char kind;
+        int setting;
+        int x, y, w, h;
+        const char* label;
+    };
+    const P panels[] = {
+        {'x', 0, 0, 0, 300, 300, "(x)"},       {'1', 0, 300, 0, 300, 300, "(a-1)"},
+        {'1', 1, 600, 0, 300, 300, "(b-1)"},   {'1', 2, 900, 0, 300, 300, "(c-1)"},
+        {'2', 0, 0, 300, 400, 450, "(a-2)"},   {'2', 1, 400, 300, 400, 450, "(b-2)"},
+        {'2', 2, 800, 300, 400, 450, "(c-2)"}, {'3', 0, 0, 750, 400, 450, "(a-3)"},
+        {'3', 1, 400, 750, 400, 450, "(b-3)"}, {'3', 2, 800, 750, 400, 450, "(c-3)"}};
     for (const P& p : panels) {
         RgbView v = img->view().subview(p.x / s, p.y / s, p.w / s, p.h / s);
         StageTimes t;
@@ -142,24 +149,31 @@ Status build_fig23(bool quick, RgbImage* img, std::map<std::string, StageTimes>*
 
 }  // namespace
 
-SHITSUKAN_FIGURE(fig23_flame, "fujimoto2000", "fig23",
-                 "Flame (1200 x 1200): (x) spans, (a,b,c-1) meshes, -2 conventional B-spline, -3 superposed "
-                 "IST-B-spline; avalanche deformation a -> b -> c") {
+SHITSUKAN_FIGURE(
+    fig23_flame, "fujimoto2000", "fig23",
+    "Flame (1200 x 1200): (x) spans, (a,b,c-1) meshes, -2 conventional B-spline, -3 superposed "
+    "IST-B-spline; avalanche deformation a -> b -> c") {
     ctx.given("image size", "1200 x 1200", "Table 4");
     ctx.given("IST", "fully-connected, N = 3", "fig. 23 caption");
     ctx.given("K", "3", "fig. 23 caption");
     ctx.given("delta", "0.60", "fig. 23 caption");
     ctx.given("sample interpolation", "linear", "fig. 23 caption");
-    ctx.chosen("control mesh", "7 x 9 (4 x 6 spans) on a half cone, heights 0.1..~2.2 growing to the "
-                               "top, directions up and outwards with a lean", "not printed");
-    ctx.chosen("settings a, b, c", "lean 0 / -0.35 / +0.30 rad, tip height x1.0 / 1.35 / 1.7, tongue "
-                                   "phase 0 / 0.9 / 1.8", "three changes of heights and directions");
+    ctx.chosen("control mesh",
+               "7 x 9 (4 x 6 spans) on a half cone, heights 0.1..~2.2 growing to the "
+               "top, directions up and outwards with a lean",
+               "not printed");
+    ctx.chosen("settings a, b, c",
+               "lean 0 / -0.35 / +0.30 rad, tip height x1.0 / 1.35 / 1.7, tongue "
+               "phase 0 / 0.9 / 1.8",
+               "three changes of heights and directions");
     ctx.chosen("colours, transparency", "white-yellow -> orange -> red; 0.05 -> 0.75 bottom to top",
                "a flame; the paper gives per-point values but does not print them");
     ctx.chosen("jitter", "height x(1 + 0.3 g), colour + 0.06 g, transparency + 0.08 g",
                "§5 gives no deviation");
-    ctx.chosen("layout", "row 1: (x), (a,b,c-1) 300 x 300; rows 2, 3: 400 x 450 panels", "one 1200 x 1200 image");
-    ctx.chosen("transparency rendering", "back-to-front sort of triangles + Z-buffer + blend", "see the file header");
+    ctx.chosen("layout", "row 1: (x), (a,b,c-1) 300 x 300; rows 2, 3: 400 x 450 panels",
+               "one 1200 x 1200 image");
+    ctx.chosen("transparency rendering", "back-to-front sort of triangles + Z-buffer + blend",
+               "see the file header");
     RgbImage img;
     std::map<std::string, StageTimes> times;
     WrMesh keep;
@@ -167,18 +181,24 @@ SHITSUKAN_FIGURE(fig23_flame, "fujimoto2000", "fig23",
     for (const auto& kv : times) record_stage_times("fig23" + kv.first, kv.second);
     if (!ctx.quick()) {
         SHITSUKAN_TRY(write_obj(ctx.path("_c3.obj").c_str(), keep.mesh));
-        ctx.note("The (c-3) surface is written as fig23_c3.obj with vertex colours (transparency is "
-                 "not part of OBJ).");
+        ctx.note(
+            "The (c-3) surface is written as fig23_c3.obj with vertex colours (transparency is "
+            "not part of OBJ).");
     }
     return ctx.save_png(img.view());
 }
 
-SHITSUKAN_FIGURE(table04_times, "fujimoto2000", "table04",
-                 "Execution times of fig. 23 (1200 x 1200): paper (Origin2000, min:sec) vs. this library") {
-    struct Row { const char* label; std::array<const char*, 4> paper; };
-    const Row rows[] = {{"(a-2)", {"0:11", "0:02", "0:29", "0:42"}}, {"(a-3)", {"0:32", "0:02", "0:51", "1:25"}},
-                        {"(b-2)", {"0:11", "0:02", "0:34", "0:47"}}, {"(b-3)", {"0:32", "0:02", "1:10", "1:44"}},
-                        {"(c-2)", {"0:11", "0:02", "0:38", "0:51"}}, {"(c-3)", {"0:32", "0:02", "1:07", "1:41"}}};
+SHITSUKAN_FIGURE(
+    table04_times, "fujimoto2000", "table04",
+    "Execution times of fig. 23 (1200 x 1200): paper (Origin2000, min:sec) vs. this library") {
+    struct Row {
+        const char* label;
+        std::array<const char*, 4> paper;
+    };
+    const Row rows[] = {
+        {"(a-2)", {"0:11", "0:02", "0:29", "0:42"}}, {"(a-3)", {"0:32", "0:02", "0:51", "1:25"}},
+        {"(b-2)", {"0:11", "0:02", "0:34", "0:47"}}, {"(b-3)", {"0:32", "0:02", "1:10", "1:44"}},
+        {"(c-2)", {"0:11", "0:02", "0:38", "0:51"}}, {"(c-3)", {"0:32", "0:02", "1:07", "1:41"}}};
     std::map<std::string, StageTimes> times;
     StageTimes probe;
     if (!find_stage_times("fig23(a-2)", &probe) || probe.quick != ctx.quick()) {
@@ -196,12 +216,16 @@ SHITSUKAN_FIGURE(table04_times, "fujimoto2000", "table04",
         paper.push_back(r.paper);
     }
     ctx.given("paper times", "Table 4 (Origin2000, R10000 250 MHz)", "Table 4");
-    ctx.chosen("stage mapping", "sam. = hierarchical sampling + surface points, pol. = normals + "
-                                "triangles, ren. = sort + Z-buffer + blending", "the paper's stages");
-    return ctx.save_markdown("# Table 4: execution times of fig. 23 (panels of 400 x 450 in a "
-                             "1200 x 1200 image)\n\n" + stage_table(names, ours, paper) +
-                             (ctx.quick() ? "\n(quick run: small images, not comparable)\n" : "") +
-                             "\nPaper: Origin2000, min:sec. Ours: seconds per 400 x 450 panel.\n");
+    ctx.chosen("stage mapping",
+               "sam. = hierarchical sampling + surface points, pol. = normals + "
+               "triangles, ren. = sort + Z-buffer + blending",
+               "the paper's stages");
+    return ctx.save_markdown(
+        "# Table 4: execution times of fig. 23 (panels of 400 x 450 in a "
+        "1200 x 1200 image)\n\n" +
+        stage_table(names, ours, paper) +
+        (ctx.quick() ? "\n(quick run: small images, not comparable)\n" : "") +
+        "\nPaper: Origin2000, min:sec. Ours: seconds per 400 x 450 panel.\n");
 }
 
 }  // namespace shitsukan::fujimoto2000

@@ -39,7 +39,9 @@ Rgb8 to_rgb8(Vec3 c) {
     return Rgb8{q(c.x), q(c.y), q(c.z)};
 }
 
-Vec3 from_rgb8(Rgb8 c) { return Vec3{c.r / 255.0f, c.g / 255.0f, c.b / 255.0f}; }
+Vec3 from_rgb8(Rgb8 c) {
+    return Vec3{c.r / 255.0f, c.g / 255.0f, c.b / 255.0f};
+}
 
 }  // namespace
 
@@ -84,7 +86,8 @@ Status render_transparent(const Camera& camera, const WrMesh& wm, RgbView target
     for (std::size_t i = 0; i < sorted.uvs.size(); ++i) sorted.uvs[i] = {wm.transparency[i], 0};
     sorted.indices.reserve(m.indices.size());
     for (const auto& o : order)
-        for (int e = 0; e < 3; ++e) sorted.indices.push_back(m.indices[std::size_t(3 * o.second + e)]);
+        for (int e = 0; e < 3; ++e)
+            sorted.indices.push_back(m.indices[std::size_t(3 * o.second + e)]);
     const Vec3 light = normalize(shading.light);
     auto shader = [&](const Fragment& f) {
         const float lambert = std::fabs(dot(f.normal, light));
@@ -110,8 +113,10 @@ void draw_control_mesh(RgbView target, const Camera& camera, const WrControlMesh
     for (int r = 0; r < mesh.rows; ++r)
         for (int c = 0; c < mesh.cols; ++c) {
             const Vec3 p = mesh.at(c, r).position;
-            if (c + 1 < mesh.cols) canvas.line(screen(p), screen(mesh.at(c + 1, r).position), grid, 1.2f);
-            if (r + 1 < mesh.rows) canvas.line(screen(p), screen(mesh.at(c, r + 1).position), grid, 1.2f);
+            if (c + 1 < mesh.cols)
+                canvas.line(screen(p), screen(mesh.at(c + 1, r).position), grid, 1.2f);
+            if (r + 1 < mesh.rows)
+                canvas.line(screen(p), screen(mesh.at(c, r + 1).position), grid, 1.2f);
         }
     const float dot_size = std::max(3.0f, float(target.width) / 64.0f);
     for (int r = 0; r < mesh.rows; ++r)
@@ -124,27 +129,35 @@ void draw_control_mesh(RgbView target, const Camera& camera, const WrControlMesh
                 if (surface.displacement() == DisplacementMode::normal || length_squared(d) == 0) {
                     // The base surface normal where the point acts most: u = c/n (Bezier),
                     // the centre of its cubic basis s = c - (n-1)/2 (uniform B-spline).
-                    const float half = surface.basis() == SurfaceBasis::bezier ? 0.0f : 0.5f * float(surface.degree() - 1);
-                    const float du = surface.basis() == SurfaceBasis::bezier ? float(surface.degree()) : float(surface.spans_u());
-                    const float dv = surface.basis() == SurfaceBasis::bezier ? float(surface.degree()) : float(surface.spans_v());
-                    d = surface.base_point(clamp((float(c) - half) / du, 0.0f, 1.0f),
-                                           clamp((float(r) - half) / dv, 0.0f, 1.0f)).normal;
+                    const float half = surface.basis() == SurfaceBasis::bezier
+                                           ? 0.0f
+                                           : 0.5f * float(surface.degree() - 1);
+                    const float du = surface.basis() == SurfaceBasis::bezier
+                                         ? float(surface.degree())
+                                         : float(surface.spans_u());
+                    const float dv = surface.basis() == SurfaceBasis::bezier
+                                         ? float(surface.degree())
+                                         : float(surface.spans_v());
+                    d = surface
+                            .base_point(clamp((float(c) - half) / du, 0.0f, 1.0f),
+                                        clamp((float(r) - half) / dv, 0.0f, 1.0f))
+                            .normal;
                 }
                 const Vec3 tip = p.position + d * p.height;
                 canvas.line(screen(p.position), screen(tip), Rgb8{30, 30, 30}, 1.5f);
                 canvas.marker(screen(tip), MarkerShape::dot, dot_size, Rgb8{20, 20, 20});
             }
             canvas.marker(screen(p.position), MarkerShape::dot, dot_size * 1.2f, col);
-            canvas.marker(screen(p.position), MarkerShape::circle, dot_size * 1.2f, Rgb8{40, 40, 40});
+            canvas.marker(screen(p.position), MarkerShape::circle, dot_size * 1.2f,
+                          Rgb8{40, 40, 40});
         }
 }
 
 Vec3 span_color(int i, int j) {
     // A fixed, well-separated palette; neighbours always differ.
-    static const float pal[][3] = {{0.90f, 0.25f, 0.20f}, {0.95f, 0.75f, 0.15f},
-                                   {0.30f, 0.70f, 0.30f}, {0.20f, 0.55f, 0.90f},
-                                   {0.65f, 0.35f, 0.85f}, {0.95f, 0.55f, 0.70f},
-                                   {0.35f, 0.85f, 0.85f}};
+    static const float pal[][3] = {
+        {0.90f, 0.25f, 0.20f}, {0.95f, 0.75f, 0.15f}, {0.30f, 0.70f, 0.30f}, {0.20f, 0.55f, 0.90f},
+        {0.65f, 0.35f, 0.85f}, {0.95f, 0.55f, 0.70f}, {0.35f, 0.85f, 0.85f}};
     const int k = ((i % 7) + 7 + 3 * ((j % 7) + 7)) % 7;
     return {pal[k][0], pal[k][1], pal[k][2]};
 }
@@ -187,7 +200,9 @@ std::map<std::string, StageTimes>& stage_store() {
 }
 }  // namespace
 
-void record_stage_times(const std::string& key, const StageTimes& t) { stage_store()[key] = t; }
+void record_stage_times(const std::string& key, const StageTimes& t) {
+    stage_store()[key] = t;
+}
 
 bool find_stage_times(const std::string& key, StageTimes* t) {
     auto it = stage_store().find(key);
@@ -198,7 +213,7 @@ bool find_stage_times(const std::string& key, StageTimes* t) {
 
 std::string stage_table(const std::vector<std::string>& names, const std::vector<StageTimes>& ours,
                         const std::vector<std::array<const char*, 4>>& paper) {
-    std::string md = "| | " ;
+    std::string md = "| | ";
     for (const std::string& n : names) md += n + " paper | " + n + " ours | ";
     md += "\n|---|";
     for (std::size_t i = 0; i < names.size(); ++i) md += "---|---|";
@@ -208,14 +223,17 @@ std::string stage_table(const std::vector<std::string>& names, const std::vector
         md += std::string("| ") + rows[r] + " | ";
         for (std::size_t i = 0; i < names.size(); ++i) {
             const StageTimes& t = ours[i];
-            const double v = r == 0 ? t.sampling : r == 1 ? t.polygonisation : r == 2 ? t.rendering
-                                                                             : t.sampling + t.polygonisation + t.rendering;
+            const double v = r == 0   ? t.sampling
+                             : r == 1 ? t.polygonisation
+                             : r == 2 ? t.rendering
+                                      : t.sampling + t.polygonisation + t.rendering;
             md += std::string(paper[i][std::size_t(r)]) + " | " + fmt("%.2f s", v) + " | ";
         }
         md += "\n";
     }
     md += "| triangles |";
-    for (std::size_t i = 0; i < names.size(); ++i) md += " | " + fmt("%ld", ours[i].triangles) + " |";
+    for (std::size_t i = 0; i < names.size(); ++i)
+        md += " | " + fmt("%ld", ours[i].triangles) + " |";
     md += "\n";
     return md;
 }

@@ -26,10 +26,14 @@ WrControlMesh terrain() {
             WrControlPoint& p = m.at(c, r);
             const float x = -3.0f + 6.0f * float(c) / float(n - 1);
             const float z = 3.0f - 6.0f * float(r) / float(n - 1);
-            const float g = clamp((x - 0.3f) * 1.2f, 0.0f, 1.0f) * clamp((z - 0.2f) * 1.2f, 0.0f, 1.0f);
-            const float h = 1.9f * std::exp(-((x + 1.0f) * (x + 1.0f) / 2.2f + (z + 1.1f) * (z + 1.1f) / 1.3f)) +
-                            1.1f * std::exp(-((x - 1.7f) * (x - 1.7f) / 1.0f + (z + 1.9f) * (z + 1.9f) / 0.7f)) +
-                            0.25f * hash_uniform(21, 0, c, r);
+            const float g =
+                clamp((x - 0.3f) * 1.2f, 0.0f, 1.0f) * clamp((z - 0.2f) * 1.2f, 0.0f, 1.0f);
+            const float h =
+                1.9f *
+                    std::exp(-((x + 1.0f) * (x + 1.0f) / 2.2f + (z + 1.1f) * (z + 1.1f) / 1.3f)) +
+                1.1f *
+                    std::exp(-((x - 1.7f) * (x - 1.7f) / 1.0f + (z + 1.9f) * (z + 1.9f) / 0.7f)) +
+                0.25f * hash_uniform(21, 0, c, r);
             p.position = {x, 0.0f, z};
             p.height = (1.0f - g) * h + g * 0.1f;
             p.color = {0.5f, 0.5f, 0.45f};
@@ -94,13 +98,15 @@ SHITSUKAN_BENCH(wrinkly_terrain) {
     const double ours = bench::ns_per_op([&] { run(WrSurfaceForm::superposed, nullptr); });
     const double peer = bench::ns_per_op([&] { run(WrSurfaceForm::plain, nullptr); });
     bench::report("fig21 superposed terrain, tessellate + render 800x800 (" +
-                      std::to_string(triangles) + " triangles, K = " + std::to_string(ho.levels) + ")",
+                      std::to_string(triangles) + " triangles, K = " + std::to_string(ho.levels) +
+                      ")",
                   ours, "plain B-spline, same tessellation", peer);
     double st[3];
     run(WrSurfaceForm::superposed, st);
     char text[200];
-    std::snprintf(text, sizeof text,
-                  "sam. %.2f s, pol. %.2f s, ren. %.2f s (paper Origin2000: 1:49, 0:12, 2:11 = 4:12)",
-                  st[0], st[1], st[2]);
+    std::snprintf(
+        text, sizeof text,
+        "sam. %.2f s, pol. %.2f s, ren. %.2f s (paper Origin2000: 1:49, 0:12, 2:11 = 4:12)", st[0],
+        st[1], st[2]);
     bench::info("fig21 (f) stages vs. Table 2", text);
 }

@@ -24,13 +24,15 @@ Status validate_tensor_grid(SurfaceBasis basis, int degree, const TensorGrid& gr
                              kMaxTensorChannels, grid.channels);
     if (basis == SurfaceBasis::bezier) {
         if (grid.cols != degree + 1 || grid.rows != degree + 1)
-            return Status::error(StatusCode::invalid_argument,
-                                 "a degree-%d Bezier patch needs %d x %d control points (got %d x %d)",
-                                 degree, degree + 1, degree + 1, grid.cols, grid.rows);
+            return Status::error(
+                StatusCode::invalid_argument,
+                "a degree-%d Bezier patch needs %d x %d control points (got %d x %d)", degree,
+                degree + 1, degree + 1, grid.cols, grid.rows);
     } else if (grid.cols < degree + 1 || grid.rows < degree + 1) {
-        return Status::error(StatusCode::invalid_argument,
-                             "a degree-%d B-spline needs at least %d x %d control points (got %d x %d)",
-                             degree, degree + 1, degree + 1, grid.cols, grid.rows);
+        return Status::error(
+            StatusCode::invalid_argument,
+            "a degree-%d B-spline needs at least %d x %d control points (got %d x %d)", degree,
+            degree + 1, degree + 1, grid.cols, grid.rows);
     }
     if (!grid.values) return Status::error(StatusCode::invalid_argument, "control values are null");
     const int n = grid.cols * grid.rows * grid.channels;

@@ -20,12 +20,13 @@ Status validate_control_mesh(const WrControlMesh& mesh, SurfaceBasis basis, int 
     if (mesh.cols < 1 || mesh.rows < 1 ||
         mesh.points.size() != std::size_t(mesh.cols) * std::size_t(mesh.rows))
         return Status::error(StatusCode::invalid_argument,
-                             "control mesh is not a square grid: %d x %d but %zu points",
-                             mesh.cols, mesh.rows, mesh.points.size());
+                             "control mesh is not a square grid: %d x %d but %zu points", mesh.cols,
+                             mesh.rows, mesh.points.size());
     if (basis == SurfaceBasis::bezier && (mesh.cols != degree + 1 || mesh.rows != degree + 1))
-        return Status::error(StatusCode::invalid_argument,
-                             "a degree-%d Bezier WR mesh needs %d x %d control points (got %d x %d)",
-                             degree, degree + 1, degree + 1, mesh.cols, mesh.rows);
+        return Status::error(
+            StatusCode::invalid_argument,
+            "a degree-%d Bezier WR mesh needs %d x %d control points (got %d x %d)", degree,
+            degree + 1, degree + 1, mesh.cols, mesh.rows);
     if (basis == SurfaceBasis::bspline && (mesh.cols < degree + 1 || mesh.rows < degree + 1))
         return Status::error(StatusCode::invalid_argument,
                              "a degree-%d B-spline WR mesh needs at least %d x %d control points "
@@ -41,9 +42,10 @@ Status validate_control_mesh(const WrControlMesh& mesh, SurfaceBasis basis, int 
                                      "colour or direction",
                                      c, r);
             if (!(p.transparency >= 0.0f && p.transparency <= 1.0f))
-                return Status::error(StatusCode::invalid_argument,
-                                     "control point (%d, %d): transparency must be in [0, 1] (got %g)",
-                                     c, r, double(p.transparency));
+                return Status::error(
+                    StatusCode::invalid_argument,
+                    "control point (%d, %d): transparency must be in [0, 1] (got %g)", c, r,
+                    double(p.transparency));
             if (!(p.delta > 0.0f && p.delta < 1.0f))
                 return Status::error(StatusCode::invalid_argument,
                                      "control point (%d, %d): delta must be in (0, 1) (got %g; "

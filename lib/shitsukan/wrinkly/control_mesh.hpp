@@ -33,12 +33,14 @@ struct WrControlPoint {
 };
 
 struct WrControlMesh {
-    int cols = 0;  // along u
-    int rows = 0;  // along v
+    int cols = 0;                        // along u
+    int rows = 0;                        // along v
     std::vector<WrControlPoint> points;  // row-major: points[row·cols + col]
 
     WrControlPoint& at(int col, int row) { return points[std::size_t(row * cols + col)]; }
-    const WrControlPoint& at(int col, int row) const { return points[std::size_t(row * cols + col)]; }
+    const WrControlPoint& at(int col, int row) const {
+        return points[std::size_t(row * cols + col)];
+    }
 };
 
 WrControlMesh make_control_mesh(int cols, int rows);

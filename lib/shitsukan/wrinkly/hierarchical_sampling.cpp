@@ -39,7 +39,10 @@ void sample_interpolation_weights(const float* x, int n, float u, SampleInterpol
     u = clamp(u, x[0], x[n - 1]);
     while (hi - lo > 1) {
         const int mid = (lo + hi) / 2;
-        if (x[mid] <= u) lo = mid; else hi = mid;
+        if (x[mid] <= u)
+            lo = mid;
+        else
+            hi = mid;
     }
     const int i = lo;
     const float d = x[i + 1] - x[i];
@@ -79,7 +82,8 @@ const HierarchicalSampling::Level& HierarchicalSampling::level(int k) const {
 const float* HierarchicalSampling::sample(int k, int i, int j) const {
     const Level& l = level(k);
     SHITSUKAN_ASSERT(i >= 0 && i < int(l.pos_u.size()) && j >= 0 && j < int(l.pos_v.size()));
-    return l.values.data() + (std::size_t(j) * l.pos_u.size() + std::size_t(i)) * kWrAttributeChannels;
+    return l.values.data() +
+           (std::size_t(j) * l.pos_u.size() + std::size_t(i)) * kWrAttributeChannels;
 }
 
 long HierarchicalSampling::sample_count() const {
@@ -102,8 +106,9 @@ WrAttributes HierarchicalSampling::interpolate(int k, float u, float v) const {
         for (int a = 0; a < 4; ++a) {
             if (wu[a] == 0.0f) continue;
             const float w = wu[a] * wv[b];
-            const float* s = l.values.data() +
-                             (std::size_t(j) * std::size_t(nu) + std::size_t(fu + a)) * kWrAttributeChannels;
+            const float* s =
+                l.values.data() +
+                (std::size_t(j) * std::size_t(nu) + std::size_t(fu + a)) * kWrAttributeChannels;
             for (int c = 0; c < kWrAttributeChannels; ++c) acc[c] += w * s[c];
         }
     }
@@ -134,8 +139,8 @@ Status sample_hierarchy(const WrSurface& surface, const HierarchicalOptions& o,
                          double(small_intervals(av.base_intervals, av.division, k) + 2);
         if (n > double(kMaxHierarchicalSamples))
             return Status::error(StatusCode::too_large,
-                                 "step k = %d needs %.0f samples (%.0f MB); the limit is %ld",
-                                 k, n, n * kWrAttributeChannels * 4 / 1e6, kMaxHierarchicalSamples);
+                                 "step k = %d needs %.0f samples (%.0f MB); the limit is %ld", k, n,
+                                 n * kWrAttributeChannels * 4 / 1e6, kMaxHierarchicalSamples);
     }
     HierarchicalSampling hs;
     hs.levels_ = o.levels;
@@ -156,25 +161,27 @@ Status sample_hierarchy(const WrSurface& surface, const HierarchicalOptions& o,
                 WrAttributes a = surface.attributes(src_u[i], src_v[j]);
                 const int ii = int(i), jj = int(j);
                 if (o.jitter_height > 0) {
-                    const float g = 1.0f + o.jitter_height *
-                                               hash_gaussian(o.seed, kStreamHeight, ii, jj, k);
+                    const float g =
+                        1.0f + o.jitter_height * hash_gaussian(o.seed, kStreamHeight, ii, jj, k);
                     a.height *= g;
                     a.vector *= g;
                 }
                 if (o.jitter_color > 0) {
                     for (int c = 0; c < 3; ++c)
-                        a.color[c] = clamp(a.color[c] + o.jitter_color *
-                                               hash_gaussian(o.seed, kStreamColor + std::uint32_t(c),
-                                                             ii, jj, k),
-                                           0.0f, 1.0f);
+                        a.color[c] = clamp(
+                            a.color[c] + o.jitter_color *
+                                             hash_gaussian(o.seed, kStreamColor + std::uint32_t(c),
+                                                           ii, jj, k),
+                            0.0f, 1.0f);
                 }
                 if (o.jitter_transparency > 0)
-                    a.transparency = clamp(a.transparency + o.jitter_transparency *
-                                               hash_gaussian(o.seed, kStreamTransparency, ii, jj, k),
-                                           0.0f, 1.0f);
+                    a.transparency = clamp(
+                        a.transparency + o.jitter_transparency *
+                                             hash_gaussian(o.seed, kStreamTransparency, ii, jj, k),
+                        0.0f, 1.0f);
                 float* dst = l.values.data() + (j * src_u.size() + i) * kWrAttributeChannels;
-                const float vals[kWrAttributeChannels] = {a.height, a.color.x, a.color.y,
-                                                          a.color.z, a.transparency, a.vector.x,
+                const float vals[kWrAttributeChannels] = {a.height,   a.color.x,      a.color.y,
+                                                          a.color.z,  a.transparency, a.vector.x,
                                                           a.vector.y, a.vector.z};
                 for (int c = 0; c < kWrAttributeChannels; ++c) dst[c] = vals[c];
             }

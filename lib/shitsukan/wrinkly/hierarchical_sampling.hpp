@@ -60,10 +60,10 @@ void sample_interpolation_weights(const float* x, int n, float u, SampleInterpol
                                   int* first, float weights[4]);
 
 struct SuperposedSample {
-    Vec3 position;             // R_D^inf(u, v)
-    BasePoint base;            // P, N, delta at (u, v)
-    WrAttributes attributes;   // summed height / vector; averaged colour and transparency
-    int levels_used = 0;       // highest k added
+    Vec3 position;            // R_D^inf(u, v)
+    BasePoint base;           // P, N, delta at (u, v)
+    WrAttributes attributes;  // summed height / vector; averaged colour and transparency
+    int levels_used = 0;      // highest k added
 };
 
 class HierarchicalSampling {

@@ -7,10 +7,10 @@
 
 namespace shitsukan {
 
-std::vector<float> wr_grid_positions(const WrAxis& axis, int grid_level, int subdivisions,
-                                     float lo, float hi) {
-    const std::vector<float> x = hierarchical_sample_positions(axis.base_intervals, axis.division,
-                                                               grid_level);
+std::vector<float> wr_grid_positions(const WrAxis& axis, int grid_level, int subdivisions, float lo,
+                                     float hi) {
+    const std::vector<float> x =
+        hierarchical_sample_positions(axis.base_intervals, axis.division, grid_level);
     std::vector<float> g;
     g.push_back(lo);
     for (std::size_t i = 0; i + 1 < x.size(); ++i) {
@@ -27,8 +27,8 @@ Status evaluate_wr_grid(const WrSurface& surface, const HierarchicalSampling* sa
                         const WrTessellationOptions& o, WrMesh* out) {
     if (o.levels < 0 || o.levels > kMaxWrLevel || o.grid_level < 0 || o.grid_level > kMaxWrLevel)
         return Status::error(StatusCode::invalid_argument,
-                             "levels K and grid level L must be in 0..%d (got %d, %d)",
-                             kMaxWrLevel, o.levels, o.grid_level);
+                             "levels K and grid level L must be in 0..%d (got %d, %d)", kMaxWrLevel,
+                             o.levels, o.grid_level);
     if (o.subdivisions < 1 || o.subdivisions > 64)
         return Status::error(StatusCode::invalid_argument, "subdivisions must be in 1..64 (got %d)",
                              o.subdivisions);
@@ -43,17 +43,21 @@ Status evaluate_wr_grid(const WrSurface& surface, const HierarchicalSampling* sa
     if (o.form == WrSurfaceForm::superposed && sampling == nullptr)
         return Status::error(StatusCode::invalid_argument,
                              "the superposed form (eq. 20) needs a HierarchicalSampling");
-    const double est =
-        double(surface.axis_u().base_intervals) * std::pow(double(surface.axis_u().division), o.grid_level) *
-        double(surface.axis_v().base_intervals) * std::pow(double(surface.axis_v().division), o.grid_level) *
-        double(o.subdivisions) * double(o.subdivisions);
+    const double est = double(surface.axis_u().base_intervals) *
+                       std::pow(double(surface.axis_u().division), o.grid_level) *
+                       double(surface.axis_v().base_intervals) *
+                       std::pow(double(surface.axis_v().division), o.grid_level) *
+                       double(o.subdivisions) * double(o.subdivisions);
     if (est > double(kMaxWrVertices))
-        return Status::error(StatusCode::too_large,
-                             "grid level %d x %d subdivisions gives about %.0f vertices (limit %ld)",
-                             o.grid_level, o.subdivisions, est, kMaxWrVertices);
+        return Status::error(
+            StatusCode::too_large,
+            "grid level %d x %d subdivisions gives about %.0f vertices (limit %ld)", o.grid_level,
+            o.subdivisions, est, kMaxWrVertices);
 
-    const std::vector<float> gu = wr_grid_positions(surface.axis_u(), o.grid_level, o.subdivisions, o.u0, o.u1);
-    const std::vector<float> gv = wr_grid_positions(surface.axis_v(), o.grid_level, o.subdivisions, o.v0, o.v1);
+    const std::vector<float> gu =
+        wr_grid_positions(surface.axis_u(), o.grid_level, o.subdivisions, o.u0, o.u1);
+    const std::vector<float> gv =
+        wr_grid_positions(surface.axis_v(), o.grid_level, o.subdivisions, o.v0, o.v1);
     const int nu = int(gu.size()), nv = int(gv.size());
     WrMesh m;
     m.grid_u = nu;
@@ -89,7 +93,8 @@ Status evaluate_wr_grid(const WrSurface& surface, const HierarchicalSampling* sa
                     p = surface.displace(surface.base_point(u, v), a);
                     break;
                 case WrSurfaceForm::superposed: {
-                    const SuperposedSample s = superposed_sampled(surface, *sampling, u, v, o.tail_tolerance);
+                    const SuperposedSample s =
+                        superposed_sampled(surface, *sampling, u, v, o.tail_tolerance);
                     p = s.position;
                     a = s.attributes;
                     levels_sum += s.levels_used;
@@ -114,7 +119,9 @@ void polygonise_wr_grid(const WrSurface& surface, WrMesh* m) {
     const int nu = m->grid_u, nv = m->grid_v;
     // Normals of the displaced surface from central differences on the grid (the wrinkles'
     // own normals, not N(u, v) of the base surface).
-    auto at = [&](int i, int j) { return t.positions[std::size_t(j) * std::size_t(nu) + std::size_t(i)]; };
+    auto at = [&](int i, int j) {
+        return t.positions[std::size_t(j) * std::size_t(nu) + std::size_t(i)];
+    };
     for (int j = 0; j < nv; ++j) {
         for (int i = 0; i < nu; ++i) {
             const Vec3 du = at(i < nu - 1 ? i + 1 : i, j) - at(i > 0 ? i - 1 : i, j);
@@ -164,7 +171,7 @@ AdaptiveLevels choose_adaptive_levels(const WrSurface& surface, const WrControlM
     len_v /= double(mesh.cols) * double(surface.spans_v());
     const double span = len_u > len_v ? len_u : len_v;
     const int n = surface.axis_u().division > surface.axis_v().division ? surface.axis_u().division
-                                                                       : surface.axis_v().division;
+                                                                        : surface.axis_v().division;
     double cell = span * pixels_per_unit;
     r.grid_level = 0;
     while (cell > cell_pixels && r.grid_level < max_level && n > 1) {

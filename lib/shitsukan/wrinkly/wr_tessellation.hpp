@@ -44,19 +44,19 @@ constexpr long kMaxWrVertices = 6L * 1000 * 1000;
 
 struct WrTessellationOptions {
     WrSurfaceForm form = WrSurfaceForm::superposed;
-    int levels = 3;          // K for wr / superposed_direct (superposed: the sampling's levels)
-    int grid_level = 3;      // L
-    int subdivisions = 1;    // vertices per sample interval
+    int levels = 3;        // K for wr / superposed_direct (superposed: the sampling's levels)
+    int grid_level = 3;    // L
+    int subdivisions = 1;  // vertices per sample interval
     float u0 = 0, u1 = 1, v0 = 0, v1 = 1;
     float tail_tolerance = 0;  // superposed: world-unit bound on the omitted rest of the sum
 };
 
 struct WrMesh {
-    TriangleMesh mesh;               // uv = surface parameter (u, v); colours per vertex
-    std::vector<float> transparency; // per vertex
-    int grid_u = 0, grid_v = 0;      // vertices along u and v
-    int max_levels_used = 0;         // superposed: deepest step added anywhere
-    double mean_levels_used = 0;     // superposed: mean over vertices
+    TriangleMesh mesh;                // uv = surface parameter (u, v); colours per vertex
+    std::vector<float> transparency;  // per vertex
+    int grid_u = 0, grid_v = 0;       // vertices along u and v
+    int max_levels_used = 0;          // superposed: deepest step added anywhere
+    double mean_levels_used = 0;      // superposed: mean over vertices
 };
 
 // Both steps below: sample the surface at the grid points, then build the polygons.
@@ -69,12 +69,12 @@ Status evaluate_wr_grid(const WrSurface& surface, const HierarchicalSampling* sa
 void polygonise_wr_grid(const WrSurface& surface, WrMesh* mesh);
 
 // Grid positions along one axis (used by tessellate_wr_surface; exposed for tests).
-std::vector<float> wr_grid_positions(const WrAxis& axis, int grid_level, int subdivisions,
-                                     float lo, float hi);
+std::vector<float> wr_grid_positions(const WrAxis& axis, int grid_level, int subdivisions, float lo,
+                                     float hi);
 
 struct AdaptiveLevels {
-    int grid_level = 0;   // L: cells project to <= cell_pixels
-    int sum_levels = 0;   // K: delta_max^(K+1)·max|h| projects below tolerance_pixels
+    int grid_level = 0;         // L: cells project to <= cell_pixels
+    int sum_levels = 0;         // K: delta_max^(K+1)·max|h| projects below tolerance_pixels
     float world_tolerance = 0;  // tolerance_pixels / pixels_per_unit
 };
 
