@@ -148,6 +148,16 @@ Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
         camera = shot_camera(zoom_shot(f.shot, centre, 3.0f), size, size);
         ctx.chosen("zoom", fmt("3x around u = %.3f, v = 0.5; K + 1 = %d", double(uc), K + 1),
                    "caption: 3x magnification of the left end, centre, right end");
+        ctx.note(f.basis == SurfaceBasis::bezier
+                     ? "Look for: the same structure as (b) one IST step finer (self-similarity). "
+                       "The unit-IST reverses the digits of u (eq. 7), so the colour of every "
+                       "column reaches every part of the surface: red, green and blue appear in "
+                       "all three zooms (the global influence of the Bezier/unit-IST pair, "
+                       "§2.2.1(3), §3.2), unlike fig. 15."
+                     : "Look for: the same structure as (b) one IST step finer (self-similarity), "
+                       "red at the left end, green in the centre, blue at the right end: the "
+                       "fully-connected IST moves a height or colour at most K base intervals "
+                       "(eq. 12), so the colours stay local (§2.2.2(2), §3.2).");
     }
     ctx.chosen("K (IST steps)", fmt("%d", o.levels),
                "chosen so the small intervals are visible at this size");
