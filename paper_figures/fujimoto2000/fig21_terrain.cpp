@@ -209,7 +209,8 @@ SHITSUKAN_FIGURE(
                      "thin polygons); here (d) takes " +
                      fmt("%.1fx", ratio) +
                      " the rendering time of (c) at the same triangle count (a Z-buffer scanline "
-                     "rasterizer pays per covered pixel, and the spikes cover more pixels).\n";
+                     "rasterizer pays per covered pixel, and the overlapping spikes are drawn over each "
+                     "other many times).\n";
     return ctx.save_markdown(md);
 }
 
