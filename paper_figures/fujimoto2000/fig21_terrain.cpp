@@ -201,16 +201,16 @@ SHITSUKAN_FIGURE(
                "triangles, ren. = Z-buffer rasterisation",
                "the paper's stages; ours are seconds on one shared core");
     const double ratio = ours[0].rendering > 0 ? ours[1].rendering / ours[0].rendering : 0.0;
-    std::string md = "# Table 2: execution times of fig. 21 (800 x 800)\n\n" +
-                     stage_table(names, ours, paper) +
-                     (ctx.quick() ? "\n(quick run: small images, not comparable)\n" : "") +
-                     "\nPaper: Origin2000, min:sec. Ours: seconds. (d), the spiky WR surface, was "
-                     "the slowest to render in the paper (16:44 against 0:35 for (c), 29x: long "
-                     "thin polygons); here (d) takes " +
-                     fmt("%.1fx", ratio) +
-                     " the rendering time of (c) at the same triangle count (a Z-buffer scanline "
-                     "rasterizer pays per covered pixel, and the overlapping spikes are drawn over each "
-                     "other many times).\n";
+    std::string md =
+        "# Table 2: execution times of fig. 21 (800 x 800)\n\n" + stage_table(names, ours, paper) +
+        (ctx.quick() ? "\n(quick run: small images, not comparable)\n" : "") +
+        "\nPaper: Origin2000, min:sec. Ours: seconds. (d), the spiky WR surface, was "
+        "the slowest to render in the paper (16:44 against 0:35 for (c), 29x: long "
+        "thin polygons); here (d) takes " +
+        fmt("%.1fx", ratio) +
+        " the rendering time of (c) at the same triangle count (a Z-buffer scanline "
+        "rasterizer pays per covered pixel, and the overlapping spikes are drawn over each "
+        "other many times).\n";
     return ctx.save_markdown(md);
 }
 
