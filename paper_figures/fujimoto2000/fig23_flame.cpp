@@ -75,7 +75,10 @@ Status draw_panel(bool quick, char kind, int setting, RgbView view, StageTimes* 
     shading.background = Rgb8{0, 0, 0};
     const Camera camera = shot_camera(kShot, view.width, view.height);
     if (kind == '1') {
-        draw_control_mesh(view, camera, mesh, surface, true, Rgb8{255, 255, 255});
+        // Wider than the surface panels: the height sticks reach above the flame.
+        const Camera wide = shot_camera(zoom_shot(kShot, kShot.target + Vec3{0, 0.8f, 0}, 0.75f),
+                                        view.width, view.height);
+        draw_control_mesh(view, wide, mesh, surface, true, Rgb8{255, 255, 255});
         return Status::success();
     }
     const float ppu = shot_pixels_per_unit(kShot, view.height);
