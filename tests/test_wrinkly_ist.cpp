@@ -425,3 +425,89 @@ TEST_CASE("IST bad input: clear status, no crash") {
     d.base = 0;
     CHECK(ist_digits_forward_checked(axis, d, &e).ok());
 }
+
+TEST_CASE("connected IST with an exchange table is an involution, on both kinds of axis") {
+    // Noticed here, not stated in the paper: an exchange (slot an involution, offsets opposite
+    // in each pair) makes D(D(alpha)) = alpha as eqs. (8) and (13), even with the skipped moves
+    // at the ends of a translation axis.
+    for (const char* name : {"fully", "none", "fig6b", "fig7a", "fig7c"}) {
+        for (IstEnds ends : {IstEnds::cyclic, IstEnds::translation}) {
+            for (int k = 1; k <= 4; ++k) {
+                IstShuffle s;
+                REQUIRE(ist_shuffle_named(name, 5, &s).ok());
+                IstAxis axis;
+                REQUIRE(ist_connected_axis(s, k, 6, ends, &axis).ok());
+                CAPTURE(describe(axis));
+                const std::uint64_t count = ist_sub_interval_count(axis);
+                for (int b = 0; b < 6; ++b)
+                    for (std::uint64_t i = 0; i < count; ++i) {
+                        IstDigits a, f, ff;
+                        ist_digits_from_index(axis, b, i, &a);
+                        ist_digits_forward(axis, a, &f);
+                        ist_digits_forward(axis, f, &ff);
+                        REQUIRE(ff.base == b);
+                        REQUIRE(ist_digits_index(axis, ff) == i);
+                    }
+            }
+        }
+    }
+}
+
+TEST_CASE("on a cyclic axis any table has a closed scale reverse form like eq. (12)") {
+    // alpha^K_0 = alpha^0_0 + sum_k offset[alpha^0_k] (mod B), alpha^K_i = slot[alpha^0_{K-i+1}]:
+    // the in-shf never touches the digits behind the k-th, so each digit meets the external
+    // shuffle exactly once, as the first digit. The step algorithm must agree.
+    IstShuffle shift;
+    const int offsets[5] = {2, -1, 0, 1, 3}, slots[5] = {1, 3, 0, 4, 2};  // not an exchange
+    REQUIRE(ist_shuffle_from_table(5, offsets, slots, &shift).ok());
+    for (int k = 1; k <= 4; ++k) {
+        IstAxis axis;
+        REQUIRE(ist_connected_axis(shift, k, 7, IstEnds::cyclic, &axis).ok());
+        const std::uint64_t count = ist_sub_interval_count(axis);
+        for (int b = 0; b < 7; ++b)
+            for (std::uint64_t i = 0; i < count; ++i) {
+                IstDigits a, f;
+                ist_digits_from_index(axis, b, i, &a);
+                ist_digits_forward(axis, a, &f);
+                int base = b;
+                for (int j = 1; j <= k; ++j) base += offsets[a.digit[j]];
+                base = ((base % 7) + 7) % 7;
+                REQUIRE(f.base == base);
+                for (int j = 1; j <= k; ++j) REQUIRE(f.digit[j] == slots[a.digit[k - j + 1]]);
+            }
+    }
+}
+
+TEST_CASE("procedure steps == digit steps at every u^k and u^{k.5} (eqs. 25, 26)") {
+    for (int n : {3, 5}) {
+        for (const char* name : {"fully", "none", "fig6b"}) {
+            if (n != 5 && std::string(name) == "fig6b") continue;
+            for (IstEnds ends : {IstEnds::cyclic, IstEnds::translation}) {
+                IstShuffle s;
+                REQUIRE(ist_shuffle_named(name, n, &s).ok());
+                IstAxis axis;
+                REQUIRE(ist_connected_axis(s, 3, 5, ends, &axis).ok());
+                CAPTURE(describe(axis));
+                const std::uint64_t count = ist_sub_interval_count(axis);
+                for (int b = 0; b < 5; ++b)
+                    for (std::uint64_t i = 0; i < count; ++i) {
+                        IstDigits alpha;
+                        ist_digits_from_index(axis, b, i, &alpha);
+                        IstPoint p;
+                        ist_procedure_start(axis, nullptr, midpoint(axis, b, i), &p);
+                        for (int k = 1; k <= 3; ++k) {
+                            ist_internal_shuffle(axis, k, &alpha);  // -> u^{(k-1).5}
+                            ist_divide_and_shuffle_internally(axis, nullptr, &p);
+                            REQUIRE(p.u == doctest::Approx(midpoint(axis, alpha.base,
+                                                                    ist_digits_index(axis, alpha))));
+                            ist_external_shuffle(axis, &alpha);  // -> u^k
+                            ist_shuffle_externally(axis, nullptr, &p);
+                            REQUIRE(p.u == doctest::Approx(midpoint(axis, alpha.base,
+                                                                    ist_digits_index(axis, alpha))));
+                            REQUIRE(p.base == alpha.base);
+                        }
+                    }
+            }
+        }
+    }
+}

@@ -13,3 +13,4 @@
 #include "shitsukan/wrinkly/ist_digits.hpp"
 #include "shitsukan/wrinkly/ist_formula.hpp"
 #include "shitsukan/wrinkly/ist_procedure.hpp"
+#include "shitsukan/wrinkly/ist_original.hpp"
