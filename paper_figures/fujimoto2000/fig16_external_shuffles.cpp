@@ -44,8 +44,7 @@ Status run_panel(FigureContext& ctx, char panel) {
     const bool quick = ctx.quick();
     const int size = quick ? 128 : 512;
     const int K = 2;  // 5 x 25 = 125 small intervals per axis: 3-4 pixels each
-    ctx.given("base surface", "uniform B-spline, n = 3, 5 x 5 = 25 spans",
-              "fig. 16 caption, §3.2");
+    ctx.given("base surface", "uniform B-spline, n = 3, 5 x 5 = 25 spans", "fig. 16 caption, §3.2");
     ctx.given("IST", "N = 5; (d) fig. 6a fully-connected, (e) fig. 6b, (f) fig. 7b (none)",
               "fig. 16 caption");
     ctx.chosen("image size", fmt("%d x %d", size, size), "not given");

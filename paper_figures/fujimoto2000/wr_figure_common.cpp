@@ -39,9 +39,7 @@ Rgb8 to_rgb8(Vec3 c) {
     return Rgb8{q(c.x), q(c.y), q(c.z)};
 }
 
-Vec3 from_rgb8(Rgb8 c) {
-    return Vec3{c.r / 255.0f, c.g / 255.0f, c.b / 255.0f};
-}
+Vec3 from_rgb8(Rgb8 c) { return Vec3{c.r / 255.0f, c.g / 255.0f, c.b / 255.0f}; }
 
 }  // namespace
 
@@ -200,9 +198,7 @@ std::map<std::string, StageTimes>& stage_store() {
 }
 }  // namespace
 
-void record_stage_times(const std::string& key, const StageTimes& t) {
-    stage_store()[key] = t;
-}
+void record_stage_times(const std::string& key, const StageTimes& t) { stage_store()[key] = t; }
 
 bool find_stage_times(const std::string& key, StageTimes* t) {
     auto it = stage_store().find(key);
