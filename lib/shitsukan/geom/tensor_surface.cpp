@@ -1,0 +1,99 @@
+// small-device: yes (no allocation, no exceptions)
+#include "shitsukan/geom/tensor_surface.hpp"
+
+#include "shitsukan/core/assert.hpp"
+#include "shitsukan/core/scalar.hpp"
+#include "shitsukan/geom/basis.hpp"
+
+namespace shitsukan {
+
+const char* surface_basis_name(SurfaceBasis basis) {
+    return basis == SurfaceBasis::bezier ? "Bezier" : "uniform B-spline";
+}
+
+int tensor_span_count(SurfaceBasis basis, int degree, int points) {
+    return basis == SurfaceBasis::bezier ? 1 : points - degree;
+}
+
+Status validate_tensor_grid(SurfaceBasis basis, int degree, const TensorGrid& grid) {
+    if (degree < 1 || degree > kMaxBasisDegree)
+        return Status::error(StatusCode::invalid_argument, "degree must be in 1..%d (got %d)",
+                             kMaxBasisDegree, degree);
+    if (grid.channels < 1 || grid.channels > kMaxTensorChannels)
+        return Status::error(StatusCode::invalid_argument, "channels must be in 1..%d (got %d)",
+                             kMaxTensorChannels, grid.channels);
+    if (basis == SurfaceBasis::bezier) {
+        if (grid.cols != degree + 1 || grid.rows != degree + 1)
+            return Status::error(
+                StatusCode::invalid_argument,
+                "a degree-%d Bezier patch needs %d x %d control points (got %d x %d)", degree,
+                degree + 1, degree + 1, grid.cols, grid.rows);
+    } else if (grid.cols < degree + 1 || grid.rows < degree + 1) {
+        return Status::error(
+            StatusCode::invalid_argument,
+            "a degree-%d B-spline needs at least %d x %d control points (got %d x %d)", degree,
+            degree + 1, degree + 1, grid.cols, grid.rows);
+    }
+    if (!grid.values) return Status::error(StatusCode::invalid_argument, "control values are null");
+    const int n = grid.cols * grid.rows * grid.channels;
+    for (int i = 0; i < n; ++i)
+        if (!is_finite(grid.values[i]))
+            return Status::error(StatusCode::invalid_argument,
+                                 "control value %d (point %d, channel %d) is not finite", i,
+                                 i / grid.channels, i % grid.channels);
+    return Status::success();
+}
+
+void tensor_locate(int spans, float u, int* span, float* t) {
+    float s = clamp(u, 0.0f, 1.0f) * float(spans);
+    int i = int(s);
+    if (i > spans - 1) i = spans - 1;  // u = 1 belongs to the last span
+    *span = i;
+    *t = s - float(i);
+}
+
+void evaluate_tensor_surface(SurfaceBasis basis, int degree, const TensorGrid& grid, float u,
+                             float v, float* out, float* du, float* dv) {
+    SHITSUKAN_ASSERT(degree >= 1 && degree <= kMaxBasisDegree);
+    SHITSUKAN_ASSERT(grid.channels >= 1 && grid.channels <= kMaxTensorChannels);
+    float bu[kMaxBasisDegree + 1], dbu[kMaxBasisDegree + 1];
+    float bv[kMaxBasisDegree + 1], dbv[kMaxBasisDegree + 1];
+    int su = 0, sv = 0;
+    float scale_u = 1.0f, scale_v = 1.0f;  // d(local t)/d(global u)
+    if (basis == SurfaceBasis::bezier) {
+        bernstein_basis(degree, clamp(u, 0.0f, 1.0f), bu, dbu);
+        bernstein_basis(degree, clamp(v, 0.0f, 1.0f), bv, dbv);
+    } else {
+        const int spans_u = grid.cols - degree, spans_v = grid.rows - degree;
+        float tu = 0, tv = 0;
+        tensor_locate(spans_u, u, &su, &tu);
+        tensor_locate(spans_v, v, &sv, &tv);
+        bspline_basis(degree, tu, bu, dbu);  // span s is influenced by points s .. s + degree
+        bspline_basis(degree, tv, bv, dbv);
+        scale_u = float(spans_u);
+        scale_v = float(spans_v);
+    }
+    const int ch = grid.channels;
+    for (int c = 0; c < ch; ++c) {
+        out[c] = 0;
+        if (du) du[c] = 0;
+        if (dv) dv[c] = 0;
+    }
+    for (int j = 0; j <= degree; ++j) {
+        for (int i = 0; i <= degree; ++i) {
+            const float* p = grid.values + ((sv + j) * grid.cols + (su + i)) * ch;
+            const float w = bu[i] * bv[j];
+            for (int c = 0; c < ch; ++c) out[c] += w * p[c];
+            if (du) {
+                const float wu = dbu[i] * bv[j] * scale_u;
+                for (int c = 0; c < ch; ++c) du[c] += wu * p[c];
+            }
+            if (dv) {
+                const float wv = bu[i] * dbv[j] * scale_v;
+                for (int c = 0; c < ch; ++c) dv[c] += wv * p[c];
+            }
+        }
+    }
+}
+
+}  // namespace shitsukan

@@ -1,0 +1,54 @@
+// shitsukan/geom/tensor_surface.hpp — degree-n Bezier and uniform B-spline tensor-product
+// surfaces over a grid of control values with any number of channels.
+//
+// Manual
+//   // 4 x 4 control points, 3 channels (x, y, z), row-major: values[(row·cols + col)·3 + c]
+//   TensorGrid g{values, 4, 4, 3};
+//   if (Status s = validate_tensor_grid(SurfaceBasis::bezier, 3, g); !s) ...
+//   float p[3], pu[3], pv[3];
+//   evaluate_tensor_surface(SurfaceBasis::bezier, 3, g, u, v, p, pu, pv);  // u, v in [0, 1]
+//
+// The same call interpolates positions (3 channels), heights (1), colours (3), transparency
+// (1) or any other per-control-point attribute: fujimoto2000 §3.1 step 1) ("continuous
+// interpolation") applies one interpolation to all of them.
+//   bezier:  cols = rows = degree + 1; one patch, S(u,v) = sum_ij B_i,n(u) B_j,n(v) P_ij.
+//   bspline: cols, rows >= degree + 1; uniform knots, span_count = cols - degree spans along u
+//            (rows - degree along v). The global parameter u in [0, 1] is mapped to
+//            s = u·span_count; span = floor(s) (the last span owns s = span_count), t = s - span.
+// Derivatives pu, pv (optional, nullptr to skip) are with respect to the global u and v.
+// Degrees 1..kMaxBasisDegree. Parameters outside [0, 1] are clamped.
+#pragma once
+
+#include <cstdint>
+
+#include "shitsukan/core/status.hpp"
+
+namespace shitsukan {
+
+enum class SurfaceBasis : std::uint8_t { bezier, bspline };
+
+const char* surface_basis_name(SurfaceBasis basis);
+
+struct TensorGrid {
+    const float* values = nullptr;  // (row·cols + col)·channels + channel
+    int cols = 0;                   // control points along u
+    int rows = 0;                   // control points along v
+    int channels = 0;
+};
+
+constexpr int kMaxTensorChannels = 16;
+
+// Number of parameter spans (knot spans) along an axis with `points` control points.
+int tensor_span_count(SurfaceBasis basis, int degree, int points);
+
+// Degree in 1..kMaxBasisDegree, grid sizes fitting the basis, 1..kMaxTensorChannels channels,
+// finite values.
+Status validate_tensor_grid(SurfaceBasis basis, int degree, const TensorGrid& grid);
+
+// Which span an axis parameter falls in and the local parameter there (s = u·spans).
+void tensor_locate(int spans, float u, int* span, float* t);
+
+void evaluate_tensor_surface(SurfaceBasis basis, int degree, const TensorGrid& grid, float u,
+                             float v, float* out, float* du = nullptr, float* dv = nullptr);
+
+}  // namespace shitsukan

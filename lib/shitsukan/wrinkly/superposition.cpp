@@ -1,0 +1,47 @@
+#include "shitsukan/wrinkly/superposition.hpp"
+
+namespace shitsukan {
+
+float superposition_weight(float delta, int k) {
+    // eq. (19): W^k = (1 - delta) delta^k
+    float p = 1.0f;
+    for (int i = 0; i < k; ++i) p *= delta;
+    return (1.0f - delta) * p;
+}
+
+float superposition_weight_sum(float delta, int levels_k) {
+    float p = delta;
+    for (int i = 0; i < levels_k; ++i) p *= delta;
+    return 1.0f - p;
+}
+
+WrAttributes superposed_attributes_direct(const WrSurface& s, float u, float v, int levels_k) {
+    const float delta = s.base_point(u, v).delta;
+    WrAttributes sum;
+    sum.height = 0;
+    sum.color = {0, 0, 0};
+    sum.transparency = 0;
+    sum.vector = {0, 0, 0};
+    float wsum = 0;
+    for (int k = 0; k <= levels_k; ++k) {
+        const float w = superposition_weight(delta, k);
+        const WrAttributes a = s.wr_attributes(u, v, k);
+        sum.height += w * a.height;
+        sum.vector += a.vector * w;
+        sum.color += a.color * w;
+        sum.transparency += w * a.transparency;
+        wsum += w;
+    }
+    // Colour and transparency are averages, not displacements: normalise by the weights used
+    // so a truncated sum keeps them in [0, 1] (chosen here; §4.1 only says "the same").
+    sum.color = sum.color / wsum;
+    sum.transparency /= wsum;
+    return sum;
+}
+
+Vec3 superposed_point_direct(const WrSurface& s, float u, float v, int levels_k) {
+    // eq. (16): P + {sum_k W^k H((F_U^k)^{-1}(u), (F_V^k)^{-1}(v))} N
+    return s.displace(s.base_point(u, v), superposed_attributes_direct(s, u, v, levels_k));
+}
+
+}  // namespace shitsukan

@@ -1,0 +1,204 @@
+// fujimoto2000 figs. 14 and 15: the IST-Bezier surface (n = 3, unit-IST N = 3) and the
+// IST-B-spline surface (n = 3, fully-connected IST N = 3), each with (a) the control mesh with
+// heights and colours, (b) the WR surface of eq. (15), (c) the conventional surface (H and the
+// colour function mapped without IST), (d)(e)(f) the left end, the centre and the right end
+// of (b) magnified 3 times.
+//
+// The control meshes are not printed in the paper; the ones here are chosen so the captions
+// and §3.2 can be checked: colours run red (left column) -> green -> blue (right column), the
+// heights vary over the mesh. What to look for: (d)(e)(f) repeat the structure of (b) one
+// IST step deeper (self-similarity). With the fully-connected IST (fig. 15) the zooms stay
+// red at the left and blue at the right (locality, §2.2.2(2)); with the unit-IST (fig. 14) a
+// colour reaches every part of the surface, since eq. (7) reverses the digits and sends the
+// finest digit of u to the coarsest digit of F^{-1}(u) (the global influence of §2.2.1(3)).
+#include <cmath>
+
+#include "driver/figure.hpp"
+#include "fujimoto2000/wr_figure_common.hpp"
+#include "shitsukan/core/hash.hpp"
+#include "shitsukan/core/scalar.hpp"
+#include "shitsukan/geom/obj.hpp"
+
+namespace shitsukan::fujimoto2000 {
+namespace {
+
+using figures::FigureContext;
+using figures::fmt;
+
+// Red -> green -> blue across the columns (chosen: makes colour locality visible).
+Vec3 column_color(float t) {
+    const Vec3 red{0.92f, 0.16f, 0.12f}, green{0.25f, 0.78f, 0.22f}, blue{0.15f, 0.32f, 0.92f};
+    return t < 0.5f ? lerp(red, green, t * 2.0f) : lerp(green, blue, t * 2.0f - 1.0f);
+}
+
+// fig. 14 (chosen): 4 x 4 Bezier control points on [-1.2, 1.2]^2, a low dome, heights
+// 0.04..0.50 in a fixed pattern, colour by column.
+WrControlMesh fig14_mesh() {
+    static const float h[4][4] = {{0.10f, 0.34f, 0.22f, 0.04f},
+                                  {0.30f, 0.48f, 0.40f, 0.18f},
+                                  {0.18f, 0.44f, 0.50f, 0.30f},
+                                  {0.04f, 0.22f, 0.34f, 0.16f}};
+    WrControlMesh m = make_control_mesh(4, 4);
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) {
+            WrControlPoint& p = m.at(c, r);
+            const bool inner = c > 0 && c < 3 && r > 0 && r < 3;
+            p.position = {-1.2f + 0.8f * float(c), inner ? 0.35f : 0.0f, 1.2f - 0.8f * float(r)};
+            p.height = h[r][c];
+            p.color = column_color(float(c) / 3.0f);
+        }
+    return m;
+}
+
+// fig. 15 (chosen): 11 x 11 B-spline control points (8 x 8 knot spans = base intervals) on
+// [-1.5, 1.5]^2, a low dome, heights 0.05..0.45 from a smooth pattern plus a hashed variation
+// (seed 15), colour by column.
+WrControlMesh fig15_mesh() {
+    const int n = 11;
+    WrControlMesh m = make_control_mesh(n, n);
+    for (int r = 0; r < n; ++r)
+        for (int c = 0; c < n; ++c) {
+            WrControlPoint& p = m.at(c, r);
+            const float x = -1.5f + 3.0f * float(c) / float(n - 1);
+            const float z = 1.5f - 3.0f * float(r) / float(n - 1);
+            p.position = {x, 0.35f * (1.0f - (x * x + z * z) / 4.5f), z};
+            p.height = 0.25f + 0.12f * std::sin(1.7f * float(c) + 0.9f * float(r)) +
+                       0.16f * (hash_uniform(15, 0, c, r) - 0.5f);
+            p.color = column_color(float(c) / float(n - 1));
+        }
+    return m;
+}
+
+struct SurfaceFigure {
+    const char* key;
+    SurfaceBasis basis;
+    IstKind kind;
+    int n;
+    WrControlMesh (*mesh)();
+    Shot shot;
+};
+
+const SurfaceFigure kFig14{
+    "fig14", SurfaceBasis::bezier, IstKind::unit,
+    3,       fig14_mesh,           Shot{{0.0f, 3.3f, 2.5f}, {0.0f, 0.15f, 0.1f}, {0, 1, 0}, 40.0f}};
+const SurfaceFigure kFig15{"fig15",
+                           SurfaceBasis::bspline,
+                           IstKind::fully_connected,
+                           3,
+                           fig15_mesh,
+                           Shot{{0.0f, 3.6f, 2.9f}, {0.0f, 0.15f, 0.1f}, {0, 1, 0}, 42.0f}};
+
+Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
+    const bool quick = ctx.quick();
+    const int size = quick ? 128 : 512;
+    // IST steps of (b): small intervals of about 15 (Bezier) / 6 (B-spline) pixels, so the
+    // structure can be seen and the 3x zoom at K + 1 shows it again at the same size.
+    const int K = quick ? 2 : (f.basis == SurfaceBasis::bezier ? 3 : 2);
+    const int subdivisions = quick ? 1 : 2;
+    ctx.given("base surface",
+              f.basis == SurfaceBasis::bezier ? "Bezier, n = 3" : "uniform B-spline, n = 3",
+              "fig. 14/15 captions");
+    ctx.given("IST", f.kind == IstKind::unit ? "unit-IST, N = 3" : "fully-connected IST, N = 3",
+              "fig. 14/15 captions");
+    ctx.chosen("image size", fmt("%d x %d", size, size), "the paper gives none for figs. 14-18");
+    ctx.chosen("control mesh",
+               f.basis == SurfaceBasis::bezier ? "4 x 4, heights 0.04..0.50, dome 0.35 high"
+                                               : "11 x 11 (8 x 8 spans), heights 0.05..0.45",
+               "not printed; chosen to show the caption's properties");
+    ctx.chosen("colours", "columns red -> green -> blue",
+               "§3.2: 'red to the left, blue to the right'");
+
+    WrControlMesh mesh = f.mesh();
+    WrSurface surface;
+    SHITSUKAN_TRY(make_wr_surface(mesh, f.basis, 3, &surface));
+    AxisPair axes;
+    SHITSUKAN_TRY(make_axes(surface, f.kind, "fully", f.n, K + 1, &axes));
+    SHITSUKAN_TRY(surface.set_axes(axes.u.axis(), axes.v.axis()));
+
+    RgbImage img(size, size);
+    Shading shading;
+    Camera camera = shot_camera(f.shot, size, size);
+    if (panel == 'a') {
+        draw_control_mesh(img.view(), camera, mesh, surface, true, shading.background);
+        ctx.note(
+            "Control polygon; each point in its colour c_i, with a stick of its height h_i "
+            "along the polygon normal.");
+        return ctx.save_png(img.view());
+    }
+    WrTessellationOptions o;
+    o.subdivisions = subdivisions;
+    o.levels = K;
+    o.grid_level = K;
+    o.form = panel == 'c' ? WrSurfaceForm::plain : WrSurfaceForm::wr;
+    if (panel == 'c') o.grid_level = K + 1;  // smooth: fine enough for the shading
+    if (panel >= 'd') {
+        // The zoom: a third of the parameter range around the left end / centre / right end,
+        // magnified 3x, one IST step deeper (the adaptive sampling of §3.1 refines with the
+        // screen detail, so the zoom shows one more level of the same structure).
+        const float uc = panel == 'd' ? 1.0f / 6.0f : (panel == 'e' ? 0.5f : 5.0f / 6.0f);
+        const float margin = 0.25f;
+        o.u0 = clamp(uc - 1.0f / 6.0f - margin / 3.0f, 0.0f, 1.0f);
+        o.u1 = clamp(uc + 1.0f / 6.0f + margin / 3.0f, 0.0f, 1.0f);
+        o.v0 = 1.0f / 3.0f - margin / 3.0f;
+        o.v1 = 2.0f / 3.0f + margin / 3.0f;
+        o.levels = K + 1;
+        o.grid_level = K + 1;
+        const BasePoint b = surface.base_point(uc, 0.5f);
+        const Vec3 centre = b.position + b.normal * surface.attributes(uc, 0.5f).height;
+        camera = shot_camera(zoom_shot(f.shot, centre, 3.0f), size, size);
+        ctx.chosen("zoom", fmt("3x around u = %.3f, v = 0.5; K + 1 = %d", double(uc), K + 1),
+                   "caption: 3x magnification of the left end, centre, right end");
+        ctx.note(f.basis == SurfaceBasis::bezier
+                     ? "Look for: the same structure as (b) one IST step finer (self-similarity). "
+                       "The unit-IST reverses the digits of u (eq. 7), so the colour of every "
+                       "column reaches every part of the surface: red, green and blue appear in "
+                       "all three zooms (the global influence of the Bezier/unit-IST pair, "
+                       "§2.2.1(3), §3.2), unlike fig. 15."
+                     : "Look for: the same structure as (b) one IST step finer (self-similarity), "
+                       "red at the left end, green in the centre, blue at the right end: the "
+                       "fully-connected IST moves a height or colour at most K base intervals "
+                       "(eq. 12), so the colours stay local (§2.2.2(2), §3.2).");
+    }
+    ctx.chosen("K (IST steps)", fmt("%d", o.levels),
+               "chosen so the small intervals are visible at this size");
+    ctx.chosen("tessellation",
+               fmt("vertices at the step-%d sample positions, %d per interval", o.grid_level,
+                   subdivisions),
+               "adaptive sampling reduced to one level per view");
+    const auto t0 = Clock::now();
+    WrMesh wm;
+    SHITSUKAN_TRY(tessellate_wr_surface(surface, nullptr, o, &wm));
+    const double t_tess = seconds_since(t0);
+    const auto t1 = Clock::now();
+    RasterStats stats;
+    SHITSUKAN_TRY(render_opaque(camera, wm.mesh, img.view(), shading, &stats));
+    ctx.note(fmt("%d triangles; tessellation %.2f s, rendering %.2f s.", wm.mesh.triangle_count(),
+                 t_tess, seconds_since(t1)));
+    if (panel == 'b' && !quick) SHITSUKAN_TRY(write_obj(ctx.path(".obj").c_str(), wm.mesh));
+    return ctx.save_png(img.view());
+}
+
+}  // namespace
+
+#define WR_PANEL(fig, p, caption)                                        \
+    SHITSUKAN_FIGURE(fig##p##_panel, "fujimoto2000", #fig #p, caption) { \
+        return run_panel(ctx, k##Fig_##fig, (#p)[0]);                    \
+    }
+
+const SurfaceFigure& kFig_fig14 = kFig14;
+const SurfaceFigure& kFig_fig15 = kFig15;
+
+WR_PANEL(fig14, a, "IST-Bezier surface n = 3: (a) control mesh with heights and colours")
+WR_PANEL(fig14, b, "IST-Bezier surface n = 3: (b) WR surface, unit-IST N = 3 (eq. 15)")
+WR_PANEL(fig14, c, "IST-Bezier surface n = 3: (c) conventional Bezier surface")
+WR_PANEL(fig14, d, "IST-Bezier surface n = 3: (d) left end of (b), 3x")
+WR_PANEL(fig14, e, "IST-Bezier surface n = 3: (e) centre of (b), 3x")
+WR_PANEL(fig14, f, "IST-Bezier surface n = 3: (f) right end of (b), 3x")
+WR_PANEL(fig15, a, "IST-B-spline surface n = 3: (a) control mesh with heights and colours")
+WR_PANEL(fig15, b, "IST-B-spline surface n = 3: (b) WR surface, fully-connected IST N = 3")
+WR_PANEL(fig15, c, "IST-B-spline surface n = 3: (c) conventional B-spline surface")
+WR_PANEL(fig15, d, "IST-B-spline surface n = 3: (d) left end of (b), 3x")
+WR_PANEL(fig15, e, "IST-B-spline surface n = 3: (e) centre of (b), 3x")
+WR_PANEL(fig15, f, "IST-B-spline surface n = 3: (f) right end of (b), 3x")
+
+}  // namespace shitsukan::fujimoto2000

@@ -1,0 +1,223 @@
+// fujimoto2000 fig. 22 and Table 3: wave, 1200 x 600. (x) control mesh, (y) the conventional
+// surface coloured per parameter interval, (z) conventional B-spline surface; (a-1..4) with
+// the fully-connected IST N = 5 (fig. 6a), (b-1..4) with the connected IST of fig. 6b:
+// 1 = WR surface (spiky), 2/3/4 = superposed with delta 0.25 / 0.50 / 0.75. K = 3, Hermite
+// interpolation of the samples, displacement along per-point directions and Gaussian jitter
+// of the samples (§5). The two ISTs distribute the heights differently (§5).
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "driver/figure.hpp"
+#include "fujimoto2000/wr_figure_common.hpp"
+#include "shitsukan/core/hash.hpp"
+#include "shitsukan/core/scalar.hpp"
+#include "shitsukan/image/raster_canvas.hpp"
+
+namespace shitsukan::fujimoto2000 {
+namespace {
+
+using figures::FigureContext;
+using figures::fmt;
+
+constexpr int kLevels = 3;                           // K, given
+constexpr float kDeltas[3] = {0.25f, 0.50f, 0.75f};  // given
+
+// Chosen: 10 x 8 control points (7 x 5 spans) on [-3.5, 3.5] x [-2, 2]; a swell along x, the
+// crest (rows 3-4) pushed up and forward (direction (0, 1, crest) normalised, up elsewhere);
+// heights 0.1..1.05; deep blue troughs, white crests; opaque water (transparency 0).
+WrControlMesh wave_mesh(float delta) {
+    const int cols = 10, rows = 8;
+    WrControlMesh m = make_control_mesh(cols, rows);
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < cols; ++c) {
+            WrControlPoint& p = m.at(c, r);
+            const float x = -3.5f + 7.0f * float(c) / float(cols - 1);
+            const float z = 2.0f - 4.0f * float(r) / float(rows - 1);
+            const float crest = std::exp(-(float(r) - 3.5f) * (float(r) - 3.5f) / 0.8f) *
+                                (0.7f + 0.3f * std::sin(1.3f * float(c)));
+            p.position = {x, 0.3f * std::sin(0.9f * x + 0.5f * z), z};
+            p.height = 0.1f + 0.9f * crest + 0.05f * hash_uniform(22, 0, c, r);
+            p.direction = normalize(Vec3{0.0f, 1.0f, crest});
+            p.color = lerp(Vec3{0.05f, 0.22f, 0.42f}, Vec3{0.95f, 0.97f, 1.0f},
+                           clamp(1.5f * crest, 0.0f, 1.0f));
+            p.delta = delta;
+        }
+    return m;
+}
+
+const Shot kShot{{0.0f, 2.2f, 6.6f}, {0.0f, 0.25f, 0.0f}, {0, 1, 0}, 40.0f};
+constexpr int kPanelW = 300, kPanelH = 200;
+
+struct PanelTimes {
+    std::map<std::string, StageTimes> times;
+};
+
+// One panel: kind 'x' mesh, 'y' spans, 'z' plain, or IST row ('a' fully, 'b' fig6b) with
+// column 1 (WR) .. 4 (delta 0.75).
+Status draw_panel(bool quick, char row, int col, RgbView view, StageTimes* t) {
+    const int w = view.width, h = view.height;
+    const float delta = col >= 2 ? kDeltas[col - 2] : 0.5f;
+    WrControlMesh mesh = wave_mesh(delta);
+    WrSurface surface;
+    SHITSUKAN_TRY(make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface));
+    const int levels = quick ? 2 : kLevels;  // quick: 5^2 instead of 5^3 small intervals
+    AxisPair axes;
+    SHITSUKAN_TRY(make_axes(surface, row == 'b' ? IstKind::connected : IstKind::fully_connected,
+                            "fig6b", 5, levels, &axes));
+    SHITSUKAN_TRY(surface.set_axes(axes.u.axis(), axes.v.axis()));
+    Shading shading;
+    shading.background = Rgb8{232, 236, 240};
+    const Camera camera = shot_camera(kShot, w, h);
+    if (row == 'x') {
+        draw_control_mesh(view, camera, mesh, surface, true, shading.background);
+        return Status::success();
+    }
+    const float ppu = shot_pixels_per_unit(kShot, h);
+    const AdaptiveLevels a = choose_adaptive_levels(surface, mesh, ppu, 2.0f, 0.5f, levels);
+    WrTessellationOptions o;
+    o.grid_level = quick ? 1 : a.grid_level;
+    o.subdivisions = quick ? 1 : 2;
+    o.levels = levels;
+    HierarchicalSampling hs;
+    auto t0 = Clock::now();
+    if (row == 'y' || row == 'z') {
+        o.form = WrSurfaceForm::plain;
+    } else if (col == 1) {
+        o.form = WrSurfaceForm::wr;
+    } else {
+        HierarchicalOptions ho;
+        ho.levels = levels;
+        ho.interpolation = SampleInterpolation::hermite;
+        ho.jitter_height = 0.15f;
+        ho.jitter_color = 0.04f;
+        ho.seed = 22;
+        SHITSUKAN_TRY(sample_hierarchy(surface, ho, &hs));
+        o.form = WrSurfaceForm::superposed;
+    }
+    WrMesh wm;
+    SHITSUKAN_TRY(
+        evaluate_wr_grid(surface, o.form == WrSurfaceForm::superposed ? &hs : nullptr, o, &wm));
+    t->sampling = seconds_since(t0);
+    t0 = Clock::now();
+    polygonise_wr_grid(surface, &wm);
+    t->polygonisation = seconds_since(t0);
+    if (row == 'y') color_by_source_span(&wm, surface, 0);
+    t0 = Clock::now();
+    SHITSUKAN_TRY(render_opaque(camera, wm.mesh, view, shading));
+    t->rendering = seconds_since(t0);
+    t->triangles = wm.mesh.triangle_count();
+    t->grid_level = o.grid_level;
+    t->levels = levels;
+    t->quick = quick;
+    return Status::success();
+}
+
+Status build_fig22(bool quick, RgbImage* img, std::map<std::string, StageTimes>* times) {
+    const int pw = quick ? kPanelW / 3 : kPanelW, ph = quick ? kPanelH / 3 : kPanelH;
+    *img = RgbImage(4 * pw, 3 * ph, Rgb8{255, 255, 255});
+    struct P {
+        char row;
+        int col;
+        int gx, gy;
+        const char* label;
+    };
+    const P panels[] = {{'x', 0, 0, 0, "(x)"},   {'y', 0, 1, 0, "(y)"},   {'z', 0, 2, 0, "(z)"},
+                        {'a', 1, 0, 1, "(a-1)"}, {'a', 2, 1, 1, "(a-2)"}, {'a', 3, 2, 1, "(a-3)"},
+                        {'a', 4, 3, 1, "(a-4)"}, {'b', 1, 0, 2, "(b-1)"}, {'b', 2, 1, 2, "(b-2)"},
+                        {'b', 3, 2, 2, "(b-3)"}, {'b', 4, 3, 2, "(b-4)"}};
+    for (const P& p : panels) {
+        RgbView v = img->view().subview(p.gx * pw, p.gy * ph, pw, ph);
+        StageTimes t;
+        SHITSUKAN_TRY(draw_panel(quick, p.row, p.col, v, &t));
+        if (!quick) label_panel(v, p.label, Rgb8{20, 20, 20});
+        (*times)[p.label] = t;
+    }
+    // The free cell: what the rows are.
+    RgbView legend = img->view().subview(3 * pw, 0, pw, ph);
+    if (!quick) {
+        RasterCanvas c(legend);
+        c.text({12, 20}, "fig. 22 wave", Rgb8{0, 0, 0}, 2);
+        c.text({12, 60}, "(a) fully-connected N=5", Rgb8{0, 0, 0}, 1);
+        c.text({12, 80}, "(b) connected IST fig. 6b", Rgb8{0, 0, 0}, 1);
+        c.text({12, 100}, "1 WR, 2/3/4 delta .25/.50/.75", Rgb8{0, 0, 0}, 1);
+        c.text({12, 120}, "K = 3, Hermite, jitter", Rgb8{0, 0, 0}, 1);
+    }
+    return Status::success();
+}
+
+}  // namespace
+
+SHITSUKAN_FIGURE(
+    fig22_wave, "fujimoto2000", "fig22",
+    "Wave (1200 x 600): mesh, spans, plain; (a) fully-connected N = 5, (b) fig. 6b IST; "
+    "1 WR, 2-4 superposed delta 0.25/0.50/0.75") {
+    ctx.given("image size", "1200 x 600 (11 panels of 300 x 200)", "Table 3");
+    ctx.given("K", "3", "fig. 22 caption");
+    ctx.given("sample interpolation", "Hermite", "fig. 22 caption");
+    ctx.given("deltas", "0.25, 0.50, 0.75", "fig. 22 caption");
+    ctx.given("ISTs", "(a) fully-connected N = 5 (fig. 6a), (b) fig. 6b", "fig. 22 caption");
+    ctx.chosen("control mesh",
+               "10 x 8 (7 x 5 spans), swell along x, crest rows pushed up and "
+               "forward, heights 0.1..1.05",
+               "not printed");
+    ctx.chosen("jitter", "height x(1 + 0.15 g), colour + 0.04 g", "§5 gives no deviation");
+    ctx.chosen("transparency", "0 (opaque water)",
+               "the paper gives the wave a transparency but "
+               "does not show through; kept opaque");
+    ctx.chosen("adaptive sampling", "grid cells <= 2 px (level <= 3), 2 vertices per interval",
+               "panel resolution");
+    RgbImage img;
+    std::map<std::string, StageTimes> times;
+    SHITSUKAN_TRY(build_fig22(ctx.quick(), &img, &times));
+    for (const auto& kv : times) record_stage_times("fig22" + kv.first, kv.second);
+    return ctx.save_png(img.view());
+}
+
+SHITSUKAN_FIGURE(
+    table03_times, "fujimoto2000", "table03",
+    "Execution times of fig. 22 (1200 x 600): paper (Origin2000, min:sec) vs. this library") {
+    struct Row {
+        const char* label;
+        std::array<const char*, 4> paper;
+    };
+    const Row rows[] = {{"(z)", {"4:23", "0:52", "1:27", "6:42"}},
+                        {"(a-1)", {"4:50", "0:52", "161:24", "167:06"}},
+                        {"(a-2)", {"10:43", "0:53", "1:32", "13:08"}},
+                        {"(a-3)", {"10:42", "0:52", "2:46", "14:20"}},
+                        {"(a-4)", {"10:43", "0:52", "6:46", "18:21"}},
+                        {"(b-1)", {"4:53", "0:52", "74:53", "80:38"}},
+                        {"(b-2)", {"10:47", "0:52", "1:28", "13:07"}},
+                        {"(b-3)", {"10:48", "0:52", "2:07", "13:47"}},
+                        {"(b-4)", {"10:47", "0:52", "4:09", "15:48"}}};
+    std::map<std::string, StageTimes> times;
+    StageTimes probe;
+    if (!find_stage_times("fig22(z)", &probe) || probe.quick != ctx.quick()) {
+        RgbImage img;
+        SHITSUKAN_TRY(build_fig22(ctx.quick(), &img, &times));
+    } else {
+        for (const Row& r : rows) find_stage_times(std::string("fig22") + r.label, &times[r.label]);
+    }
+    std::vector<std::string> names;
+    std::vector<StageTimes> ours;
+    std::vector<std::array<const char*, 4>> paper;
+    for (const Row& r : rows) {
+        names.push_back(r.label);
+        ours.push_back(times[r.label]);
+        paper.push_back(r.paper);
+    }
+    ctx.given("paper times", "Table 3 (Origin2000, R10000 250 MHz)", "Table 3");
+    ctx.chosen("stage mapping",
+               "sam. = hierarchical sampling + surface points, pol. = normals + "
+               "triangles, ren. = Z-buffer",
+               "the paper's stages");
+    return ctx.save_markdown(
+        "# Table 3: execution times of fig. 22 (panels of 300 x 200 in a "
+        "1200 x 600 image)\n\n" +
+        stage_table(names, ours, paper) +
+        (ctx.quick() ? "\n(quick run: small images, not comparable)\n" : "") +
+        "\nPaper: Origin2000, min:sec, each panel rendered on its own. Ours: "
+        "seconds for a 300 x 200 panel.\n");
+}
+
+}  // namespace shitsukan::fujimoto2000

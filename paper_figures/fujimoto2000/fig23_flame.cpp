@@ -1,0 +1,234 @@
+// fujimoto2000 fig. 23 and Table 4: flame, 1200 x 1200. (x) the conventional surface (a-2)
+// coloured per parameter interval; (a,b,c-1) control meshes; (a,b,c-2) conventional B-spline
+// surfaces; (a,b,c-3) superposed IST-B-spline surfaces, fully-connected IST N = 3, K = 3,
+// delta = 0.60, linear interpolation of the samples. Heights and displacement directions of the
+// control points change a -> b -> c; the superposed surface follows with the "avalanche"
+// deformation (雪崩式変形, §4.1, §5) while keeping its local resemblance. Colour and
+// transparency per control point, Gaussian jitter on the samples (§5).
+//
+// Transparency (chosen method): the triangles are sorted back to front by the view depth of
+// their centroids and drawn with the Z-buffer; each fragment is blended over the colour
+// already in the frame, out = (1 - t)·c + t·dst, t = the interpolated transparency.
+#include <cmath>
+#include <map>
+
+#include "driver/figure.hpp"
+#include "fujimoto2000/wr_figure_common.hpp"
+#include "shitsukan/core/hash.hpp"
+#include "shitsukan/core/scalar.hpp"
+#include "shitsukan/geom/obj.hpp"
+
+namespace shitsukan::fujimoto2000 {
+namespace {
+
+using figures::FigureContext;
+using figures::fmt;
+
+constexpr int kLevels = 3;       // K, given
+constexpr float kDelta = 0.60f;  // given
+
+// The three settings a, b, c (chosen): lean of the flame tongues (radians, + = to the right),
+// height scale towards the tip, and the phase of the tongue pattern around the flame.
+struct Setting {
+    float lean, tip_scale, phase;
+};
+constexpr Setting kSettings[3] = {{0.0f, 1.0f, 0.0f}, {-0.35f, 1.35f, 0.9f}, {0.30f, 1.7f, 1.8f}};
+
+// Chosen: 7 x 9 B-spline points (4 x 6 spans) on a half cone facing the camera (radius 0.9 at
+// the bottom to 0.22 at the top, 3.2 high). Heights grow towards the top, directions point up,
+// leaning sideways by the setting; colours white-yellow (bottom) -> orange -> red (top),
+// transparency 0.05 (bottom) -> 0.75 (top).
+WrControlMesh flame_mesh(const Setting& s) {
+    const int cols = 7, rows = 9;
+    WrControlMesh m = make_control_mesh(cols, rows);
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < cols; ++c) {
+            WrControlPoint& p = m.at(c, r);
+            const float t = float(r) / float(rows - 1);  // 0 bottom .. 1 top
+            const float theta = (-75.0f + 150.0f * float(c) / float(cols - 1)) * kPi / 180.0f;
+            const float radius = 0.9f * (1.0f - 0.75f * t);
+            p.position = {radius * std::sin(theta), 3.2f * t, radius * std::cos(theta)};
+            const float tongue = 0.45f + 0.55f * std::cos(2.2f * float(c) + s.phase);
+            p.height = 0.1f + 1.3f * std::pow(t, 1.5f) * tongue * (1.0f + (s.tip_scale - 1.0f) * t);
+            const float lean = s.lean * (0.3f + t);
+            p.direction = normalize(Vec3{std::sin(lean) + 0.3f * std::sin(theta), std::cos(lean),
+                                         0.3f * std::cos(theta)});
+            const Vec3 base{1.0f, 0.95f, 0.62f}, mid{1.0f, 0.55f, 0.10f}, tip{0.85f, 0.12f, 0.03f};
+            p.color = t < 0.5f ? lerp(base, mid, 2.0f * t) : lerp(mid, tip, 2.0f * t - 1.0f);
+            p.transparency = 0.05f + 0.7f * t;
+            p.delta = kDelta;
+        }
+    return m;
+}
+
+const Shot kShot{{0.0f, 2.6f, 7.2f}, {0.0f, 2.3f, 0.0f}, {0, 1, 0}, 42.0f};
+
+// kind: 'x' span colours, '1' mesh, '2' plain, '3' superposed; setting 0..2 = a..c.
+Status draw_panel(bool quick, char kind, int setting, RgbView view, StageTimes* t, WrMesh* keep) {
+    WrControlMesh mesh = flame_mesh(kSettings[setting]);
+    WrSurface surface;
+    SHITSUKAN_TRY(make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface));
+    AxisPair axes;
+    SHITSUKAN_TRY(make_axes(surface, IstKind::fully_connected, "fully", 3, kLevels, &axes));
+    SHITSUKAN_TRY(surface.set_axes(axes.u.axis(), axes.v.axis()));
+    Shading shading;
+    shading.background = Rgb8{0, 0, 0};
+    const Camera camera = shot_camera(kShot, view.width, view.height);
+    if (kind == '1') {
+        // Wider than the surface panels: the height sticks reach above the flame.
+        const Camera wide = shot_camera(zoom_shot(kShot, kShot.target + Vec3{0, 0.8f, 0}, 0.75f),
+                                        view.width, view.height);
+        draw_control_mesh(view, wide, mesh, surface, true, Rgb8{255, 255, 255});
+        return Status::success();
+    }
+    const float ppu = shot_pixels_per_unit(kShot, view.height);
+    const AdaptiveLevels a = choose_adaptive_levels(surface, mesh, ppu, 2.0f, 0.5f, kLevels);
+    WrTessellationOptions o;
+    o.grid_level = quick ? 1 : a.grid_level;
+    o.subdivisions = quick ? 1 : 2;
+    HierarchicalSampling hs;
+    auto t0 = Clock::now();
+    if (kind == '3') {
+        HierarchicalOptions ho;
+        ho.levels = kLevels;
+        ho.interpolation = SampleInterpolation::linear;
+        ho.jitter_height = 0.3f;
+        ho.jitter_color = 0.06f;
+        ho.jitter_transparency = 0.08f;
+        ho.seed = 23;
+        SHITSUKAN_TRY(sample_hierarchy(surface, ho, &hs));
+        o.form = WrSurfaceForm::superposed;
+    } else {
+        o.form = WrSurfaceForm::plain;
+    }
+    WrMesh wm;
+    SHITSUKAN_TRY(evaluate_wr_grid(surface, kind == '3' ? &hs : nullptr, o, &wm));
+    t->sampling = seconds_since(t0);
+    t0 = Clock::now();
+    polygonise_wr_grid(surface, &wm);
+    t->polygonisation = seconds_since(t0);
+    t0 = Clock::now();
+    if (kind == 'x') {
+        color_by_source_span(&wm, surface, 0);
+        SHITSUKAN_TRY(render_opaque(camera, wm.mesh, view, shading));
+    } else {
+        SHITSUKAN_TRY(render_transparent(camera, wm, view, shading));
+    }
+    t->rendering = seconds_since(t0);
+    t->triangles = wm.mesh.triangle_count();
+    t->grid_level = o.grid_level;
+    t->levels = kLevels;
+    t->quick = quick;
+    if (keep) *keep = std::move(wm);
+    return Status::success();
+}
+
+Status build_fig23(bool quick, RgbImage* img, std::map<std::string, StageTimes>* times,
+                   WrMesh* keep) {
+    const int s = quick ? 4 : 1;  // quick: a quarter of the size
+    *img = RgbImage(1200 / s, 1200 / s, Rgb8{255, 255, 255});
+    struct P {
+        char kind;
+        int setting;
+        int x, y, w, h;
+        const char* label;
+    };
+    const P panels[] = {
+        {'x', 0, 0, 0, 300, 300, "(x)"},       {'1', 0, 300, 0, 300, 300, "(a-1)"},
+        {'1', 1, 600, 0, 300, 300, "(b-1)"},   {'1', 2, 900, 0, 300, 300, "(c-1)"},
+        {'2', 0, 0, 300, 400, 450, "(a-2)"},   {'2', 1, 400, 300, 400, 450, "(b-2)"},
+        {'2', 2, 800, 300, 400, 450, "(c-2)"}, {'3', 0, 0, 750, 400, 450, "(a-3)"},
+        {'3', 1, 400, 750, 400, 450, "(b-3)"}, {'3', 2, 800, 750, 400, 450, "(c-3)"}};
+    for (const P& p : panels) {
+        RgbView v = img->view().subview(p.x / s, p.y / s, p.w / s, p.h / s);
+        StageTimes t;
+        SHITSUKAN_TRY(draw_panel(quick, p.kind, p.setting, v, &t,
+                                 (keep && p.kind == '3' && p.setting == 2) ? keep : nullptr));
+        if (!quick) label_panel(v, p.label, p.kind == '1' ? Rgb8{20, 20, 20} : Rgb8{230, 230, 230});
+        (*times)[p.label] = t;
+    }
+    return Status::success();
+}
+
+}  // namespace
+
+SHITSUKAN_FIGURE(
+    fig23_flame, "fujimoto2000", "fig23",
+    "Flame (1200 x 1200): (x) spans, (a,b,c-1) meshes, -2 conventional B-spline, -3 superposed "
+    "IST-B-spline; avalanche deformation a -> b -> c") {
+    ctx.given("image size", "1200 x 1200", "Table 4");
+    ctx.given("IST", "fully-connected, N = 3", "fig. 23 caption");
+    ctx.given("K", "3", "fig. 23 caption");
+    ctx.given("delta", "0.60", "fig. 23 caption");
+    ctx.given("sample interpolation", "linear", "fig. 23 caption");
+    ctx.chosen("control mesh",
+               "7 x 9 (4 x 6 spans) on a half cone, heights 0.1..~2.2 growing to the "
+               "top, directions up and outwards with a lean",
+               "not printed");
+    ctx.chosen("settings a, b, c",
+               "lean 0 / -0.35 / +0.30 rad, tip height x1.0 / 1.35 / 1.7, tongue "
+               "phase 0 / 0.9 / 1.8",
+               "three changes of heights and directions");
+    ctx.chosen("colours, transparency", "white-yellow -> orange -> red; 0.05 -> 0.75 bottom to top",
+               "a flame; the paper gives per-point values but does not print them");
+    ctx.chosen("jitter", "height x(1 + 0.3 g), colour + 0.06 g, transparency + 0.08 g",
+               "§5 gives no deviation");
+    ctx.chosen("layout", "row 1: (x), (a,b,c-1) 300 x 300; rows 2, 3: 400 x 450 panels",
+               "one 1200 x 1200 image");
+    ctx.chosen("transparency rendering", "back-to-front sort of triangles + Z-buffer + blend",
+               "see the file header");
+    RgbImage img;
+    std::map<std::string, StageTimes> times;
+    WrMesh keep;
+    SHITSUKAN_TRY(build_fig23(ctx.quick(), &img, &times, &keep));
+    for (const auto& kv : times) record_stage_times("fig23" + kv.first, kv.second);
+    if (!ctx.quick()) {
+        SHITSUKAN_TRY(write_obj(ctx.path("_c3.obj").c_str(), keep.mesh));
+        ctx.note(
+            "The (c-3) surface is written as fig23_c3.obj with vertex colours (transparency is "
+            "not part of OBJ).");
+    }
+    return ctx.save_png(img.view());
+}
+
+SHITSUKAN_FIGURE(
+    table04_times, "fujimoto2000", "table04",
+    "Execution times of fig. 23 (1200 x 1200): paper (Origin2000, min:sec) vs. this library") {
+    struct Row {
+        const char* label;
+        std::array<const char*, 4> paper;
+    };
+    const Row rows[] = {
+        {"(a-2)", {"0:11", "0:02", "0:29", "0:42"}}, {"(a-3)", {"0:32", "0:02", "0:51", "1:25"}},
+        {"(b-2)", {"0:11", "0:02", "0:34", "0:47"}}, {"(b-3)", {"0:32", "0:02", "1:10", "1:44"}},
+        {"(c-2)", {"0:11", "0:02", "0:38", "0:51"}}, {"(c-3)", {"0:32", "0:02", "1:07", "1:41"}}};
+    std::map<std::string, StageTimes> times;
+    StageTimes probe;
+    if (!find_stage_times("fig23(a-2)", &probe) || probe.quick != ctx.quick()) {
+        RgbImage img;
+        SHITSUKAN_TRY(build_fig23(ctx.quick(), &img, &times, nullptr));
+    } else {
+        for (const Row& r : rows) find_stage_times(std::string("fig23") + r.label, &times[r.label]);
+    }
+    std::vector<std::string> names;
+    std::vector<StageTimes> ours;
+    std::vector<std::array<const char*, 4>> paper;
+    for (const Row& r : rows) {
+        names.push_back(r.label);
+        ours.push_back(times[r.label]);
+        paper.push_back(r.paper);
+    }
+    ctx.given("paper times", "Table 4 (Origin2000, R10000 250 MHz)", "Table 4");
+    ctx.chosen("stage mapping",
+               "sam. = hierarchical sampling + surface points, pol. = normals + "
+               "triangles, ren. = sort + Z-buffer + blending",
+               "the paper's stages");
+    return ctx.save_markdown(
+        "# Table 4: execution times of fig. 23 (panels of 400 x 450 in a "
+        "1200 x 1200 image)\n\n" +
+        stage_table(names, ours, paper) +
+        (ctx.quick() ? "\n(quick run: small images, not comparable)\n" : "") +
+        "\nPaper: Origin2000, min:sec. Ours: seconds per 400 x 450 panel.\n");
+}
+
+}  // namespace shitsukan::fujimoto2000

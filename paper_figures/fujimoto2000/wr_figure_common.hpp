@@ -1,0 +1,95 @@
+// paper_figures/fujimoto2000/wr_figure_common.hpp — what figs. 14-23 and Tables 2-4 share:
+// cameras and zooms, Lambert shading of vertex-coloured WR meshes, the transparent (flame)
+// renderer, the control-mesh drawing of the "(a)" panels, span colours, stage timings.
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "shitsukan/core/status.hpp"
+#include "shitsukan/geom/mesh.hpp"
+#include "shitsukan/image/image.hpp"
+#include "shitsukan/raster/camera.hpp"
+#include "shitsukan/raster/rasterizer.hpp"
+#include "shitsukan/wrinkly/control_mesh.hpp"
+#include "shitsukan/wrinkly/hierarchical_sampling.hpp"
+#include "shitsukan/wrinkly/wr_ist_axis.hpp"
+#include "shitsukan/wrinkly/wr_surface.hpp"
+#include "shitsukan/wrinkly/wr_tessellation.hpp"
+
+namespace shitsukan::fujimoto2000 {
+
+struct Shot {
+    Vec3 eye{0, 2, 4};
+    Vec3 target{0, 0, 0};
+    Vec3 up{0, 1, 0};
+    float fov_degrees = 30.0f;
+};
+
+Camera shot_camera(const Shot& shot, int width, int height);
+// Pixels covered by one world unit at the target distance (for adaptive sampling).
+float shot_pixels_per_unit(const Shot& shot, int height);
+// The same viewing direction and distance aimed at `target`, magnified `factor` times.
+Shot zoom_shot(const Shot& shot, Vec3 target, float factor);
+
+struct Shading {
+    Vec3 light{-0.6f, 0.55f, 0.35f};  // towards the light (normalised inside)
+    float ambient = 0.28f;
+    Rgb8 background{255, 255, 255};
+};
+
+// Opaque: Z-buffer, two-sided Lambert on the vertex colours.
+Status render_opaque(const Camera& camera, const TriangleMesh& mesh, RgbView target,
+                     const Shading& shading, RasterStats* stats = nullptr);
+// Transparent (fig. 23): triangles sorted back to front by their centroid depth, drawn with the
+// Z-buffer, each fragment blended over what is there: out = (1 - t)·c + t·dst with the
+// interpolated transparency t. Shading is mostly emissive (flames give light): colour x (0.85 +
+// 0.25 Lambert). The background is not cleared when `clear` is false (panels drawn on a composite).
+Status render_transparent(const Camera& camera, const WrMesh& mesh, RgbView target,
+                          const Shading& shading, RasterStats* stats = nullptr);
+
+// The "(a)" panels: the control polygon, points in their colours, and for each point a stick
+// of its height h_i along the displacement direction with a dot at the tip (fig. 17 caption).
+void draw_control_mesh(RgbView target, const Camera& camera, const WrControlMesh& mesh,
+                       const WrSurface& surface, bool sticks, Rgb8 background);
+
+// Distinct colours for base interval (i, j) (figs. 16b, 22y, 23x).
+Vec3 span_color(int i, int j);
+// Colours every vertex by the base interval its parameter comes from at step k:
+// span_color(floor(B_u·(F_U^k)^{-1}(u)), floor(B_v·(F_V^k)^{-1}(v))), times `mix` of the
+// original colour. k = 0: the span the vertex lies in (fig. 16b).
+void color_by_source_span(WrMesh* mesh, const WrSurface& surface, int k);
+
+// Axis helpers: an IST-carrying WrAxis that stays alive with the figure.
+struct AxisPair {
+    WrIstAxis u, v;
+};
+Status make_axes(const WrSurface& surface, IstKind kind, const char* shuffle_name, int n,
+                 int max_level, AxisPair* out);
+
+// Stage timings (Tables 2-4: sampling, polygonisation, rendering) shared between figures.
+struct StageTimes {
+    double sampling = 0, polygonisation = 0, rendering = 0;
+    long triangles = 0;
+    int grid_level = 0, levels = 0;
+    bool quick = false;
+};
+void record_stage_times(const std::string& key, const StageTimes& t);
+bool find_stage_times(const std::string& key, StageTimes* t);
+
+using Clock = std::chrono::steady_clock;
+inline double seconds_since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// Tables 2-4: one row per stage (sam., pol., ren., total) and the triangle count, the paper's
+// min:sec beside our seconds, one column pair per panel.
+std::string stage_table(const std::vector<std::string>& names, const std::vector<StageTimes>& ours,
+                        const std::vector<std::array<const char*, 4>>& paper);
+
+// Blit a panel label ("(a-1)") in the top-left corner.
+void label_panel(RgbView target, const std::string& text, Rgb8 color);
+
+}  // namespace shitsukan::fujimoto2000

@@ -1,0 +1,243 @@
+// Tests for lib/shitsukan/wrinkly/{control_mesh, wr_surface, superposition, hierarchical_sampling,
+// wr_tessellation}: fujimoto2000 eqs. (15)-(20) and the control-mesh validation.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+
+#include "shitsukan/wrinkly/hierarchical_sampling.hpp"
+#include "shitsukan/wrinkly/superposition.hpp"
+#include "shitsukan/wrinkly/wr_surface.hpp"
+#include "shitsukan/wrinkly/wr_tessellation.hpp"
+
+using namespace shitsukan;
+
+namespace {
+
+WrControlMesh test_mesh(int cols, int rows) {
+    WrControlMesh m = make_control_mesh(cols, rows);
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < cols; ++c) {
+            WrControlPoint& p = m.at(c, r);
+            p.position = {float(c), float(r), 0.3f * std::sin(float(c + 2 * r))};
+            p.height = 0.2f + 0.1f * float((c * 7 + r * 3) % 5);
+            p.color = {float(c) / float(cols - 1), 0.5f, 1.0f - float(r) / float(rows - 1)};
+            p.delta = 0.4f;
+        }
+    return m;
+}
+
+// A simple non-identity axis map for the tests that need "some" transformation: reflect the
+// coordinate inside every small interval of step k (an involution, like the ISTs, eqs. 8, 13).
+float reflect_inverse(const void*, float s, int k) {
+    float w = 1.0f;
+    for (int i = 0; i < k; ++i) w /= 3.0f;
+    float cell = std::floor(s / w);
+    return (cell + 1.0f) * w - (s - cell * w);
+}
+
+}  // namespace
+
+TEST_CASE("WR surface with zero heights equals the base surface; with K = 0 the plain surface") {
+    for (SurfaceBasis basis : {SurfaceBasis::bezier, SurfaceBasis::bspline}) {
+        WrControlMesh m =
+            test_mesh(basis == SurfaceBasis::bezier ? 4 : 7, basis == SurfaceBasis::bezier ? 4 : 6);
+        for (auto& p : m.points) p.height = 0;
+        WrSurface s;
+        REQUIRE(make_wr_surface(m, basis, 3, &s));
+        WrAxis au = identity_axis(s.spans_u(), 3), av = identity_axis(s.spans_v(), 3);
+        au.inverse = reflect_inverse;
+        av.inverse = reflect_inverse;
+        REQUIRE(s.set_axes(au, av));
+        for (float u : {0.05f, 0.31f, 0.5f, 0.93f})
+            for (float v : {0.0f, 0.27f, 0.71f}) {
+                const Vec3 r = s.wr_point(u, v, 4);
+                const Vec3 p = s.base_point(u, v).position;
+                CHECK(length(r - p) < 1e-6f);
+            }
+        WrControlMesh m2 = test_mesh(m.cols, m.rows);
+        REQUIRE(make_wr_surface(m2, basis, 3, &s));
+        REQUIRE(s.set_axes(au, av));
+        // K = 0: F^0 is the identity, R = P + H N exactly.
+        const BasePoint b = s.base_point(0.37f, 0.61f);
+        const Vec3 expect = b.position + b.normal * s.attributes(0.37f, 0.61f).height;
+        CHECK(length(s.wr_point(0.37f, 0.61f, 0) - expect) < 1e-6f);
+        // With the transformation on, R differs from the plain surface somewhere.
+        CHECK(length(s.wr_point(0.37f, 0.61f, 3) - expect) > 1e-3f);
+    }
+}
+
+TEST_CASE("superposition weights: eq. (19) and the truncated eq. (18)") {
+    for (float d : {0.25f, 0.5f, 0.6f, 0.75f}) {
+        for (int K = 0; K <= 8; ++K) {
+            float sum = 0;
+            for (int k = 0; k <= K; ++k) sum += superposition_weight(d, k);
+            CHECK(sum == doctest::Approx(1.0 - std::pow(double(d), K + 1)).epsilon(1e-5));
+            CHECK(superposition_weight_sum(d, K) == doctest::Approx(sum).epsilon(1e-5));
+        }
+        CHECK(superposition_weight(d, 3) == doctest::Approx((1 - d) * d * d * d).epsilon(1e-6));
+    }
+}
+
+TEST_CASE("hierarchical sampling: samples take H at F^{-1}; H^k passes through them") {
+    WrControlMesh m = test_mesh(7, 6);
+    WrSurface s;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    WrAxis au = identity_axis(s.spans_u(), 3), av = identity_axis(s.spans_v(), 3);
+    au.inverse = reflect_inverse;
+    av.inverse = reflect_inverse;
+    REQUIRE(s.set_axes(au, av));
+    for (SampleInterpolation mode : {SampleInterpolation::linear, SampleInterpolation::hermite}) {
+        HierarchicalOptions o;
+        o.levels = 2;
+        o.interpolation = mode;
+        HierarchicalSampling hs;
+        REQUIRE(sample_hierarchy(s, o, &hs));
+        for (int k = 1; k <= 2; ++k) {
+            const auto& pu = hs.positions_u(k);
+            const auto& pv = hs.positions_v(k);
+            CHECK(int(pu.size()) == s.spans_u() * (k == 1 ? 3 : 9) + 2);  // N^k per span + 2 ends
+            for (std::size_t i = 0; i < pu.size(); i += 5)
+                for (std::size_t j = 0; j < pv.size(); j += 3) {
+                    const float* v = hs.sample(k, int(i), int(j));
+                    const WrAttributes h = s.wr_attributes(pu[i], pv[j], k);
+                    CHECK(v[0] == doctest::Approx(h.height).epsilon(1e-5));
+                    // interpolated H^k passes through the sample (both modes)
+                    CHECK(hs.interpolate(k, pu[i], pv[j]).height ==
+                          doctest::Approx(v[0]).epsilon(1e-4));
+                }
+        }
+    }
+    // k = 0: H^0 is H itself, so with K = 0 the sum is W^0 H = (1 - delta) H.
+    HierarchicalOptions o0;
+    o0.levels = 0;
+    HierarchicalSampling hs0;
+    REQUIRE(sample_hierarchy(s, o0, &hs0));
+    const SuperposedSample p = superposed_sampled(s, hs0, 0.3f, 0.8f);
+    CHECK(p.attributes.height ==
+          doctest::Approx((1 - p.base.delta) * s.attributes(0.3f, 0.8f).height).epsilon(1e-5));
+}
+
+TEST_CASE("linear and Hermite interpolation agree at the samples and differ between them") {
+    const float x[] = {0.0f, 0.1f, 0.3f, 0.5f, 0.7f, 0.9f, 1.0f};
+    const float y[] = {0.0f, 1.0f, -1.0f, 2.0f, 0.5f, 0.0f, 1.0f};
+    bool differ = false;
+    for (int i = 0; i < 7; ++i) {
+        for (float du : {0.0f, 0.037f}) {
+            const float u = x[i] + (i < 6 ? du : 0.0f);
+            float vals[2];
+            int m = 0;
+            for (SampleInterpolation mode :
+                 {SampleInterpolation::linear, SampleInterpolation::hermite}) {
+                int first;
+                float w[4];
+                sample_interpolation_weights(x, 7, u, mode, &first, w);
+                float s = 0, wsum = 0;
+                for (int a = 0; a < 4; ++a) {
+                    if (w[a] != 0) {
+                        REQUIRE(first + a >= 0);
+                        REQUIRE(first + a < 7);
+                        s += w[a] * y[first + a];
+                    }
+                    wsum += w[a];
+                }
+                CHECK(wsum == doctest::Approx(1.0f).epsilon(1e-5));  // constants are reproduced
+                vals[m++] = s;
+            }
+            if (du == 0.0f) {
+                CHECK(vals[0] == doctest::Approx(y[i]).epsilon(1e-5));
+                CHECK(vals[1] == doctest::Approx(y[i]).epsilon(1e-5));
+            } else if (std::fabs(vals[0] - vals[1]) > 1e-3f) {
+                differ = true;
+            }
+        }
+    }
+    CHECK(differ);
+}
+
+TEST_CASE("adaptive end of the superposition: a tolerance drops the small steps") {
+    WrControlMesh m = test_mesh(7, 6);
+    WrSurface s;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    REQUIRE(s.set_axes(identity_axis(s.spans_u(), 3), identity_axis(s.spans_v(), 3)));
+    HierarchicalOptions o;
+    o.levels = 4;
+    HierarchicalSampling hs;
+    REQUIRE(sample_hierarchy(s, o, &hs));
+    const SuperposedSample all = superposed_sampled(s, hs, 0.42f, 0.58f, 0.0f);
+    CHECK(all.levels_used == 4);
+    const float tol = 0.05f;
+    const SuperposedSample cut = superposed_sampled(s, hs, 0.42f, 0.58f, tol);
+    CHECK(cut.levels_used < 4);
+    // What was dropped is bounded by the tolerance (delta^k max|h| < tol).
+    CHECK(std::fabs(cut.attributes.height - all.attributes.height) < tol);
+}
+
+TEST_CASE("tessellation: grid, triangle count, superposed vs plain") {
+    WrControlMesh m = test_mesh(7, 6);
+    WrSurface s;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    REQUIRE(s.set_axes(identity_axis(s.spans_u(), 3), identity_axis(s.spans_v(), 3)));
+    HierarchicalOptions ho;
+    ho.levels = 2;
+    HierarchicalSampling hs;
+    REQUIRE(sample_hierarchy(s, ho, &hs));
+    WrTessellationOptions o;
+    o.grid_level = 2;
+    WrMesh wm;
+    REQUIRE(tessellate_wr_surface(s, &hs, o, &wm));
+    CHECK(wm.grid_u == 4 * 9 + 2);
+    CHECK(wm.grid_v == 3 * 9 + 2);
+    CHECK(wm.mesh.triangle_count() == 2 * (wm.grid_u - 1) * (wm.grid_v - 1));
+    CHECK(wm.mesh.colors.size() == wm.mesh.positions.size());
+    CHECK(wm.transparency.size() == wm.mesh.positions.size());
+    for (const Vec3& n : wm.mesh.normals) CHECK(std::fabs(length(n) - 1.0f) < 1e-4f);
+    // zoom window: only parameters inside it
+    o.u0 = 0.25f;
+    o.u1 = 0.5f;
+    REQUIRE(tessellate_wr_surface(s, &hs, o, &wm));
+    for (const Vec2& uv : wm.mesh.uvs) CHECK((uv.x >= 0.25f && uv.x <= 0.5f));
+}
+
+TEST_CASE("bad input gives a clear status, never a crash") {
+    WrSurface s;
+    WrControlMesh m = test_mesh(7, 6);
+    m.points.pop_back();  // not a square grid any more
+    Status st = make_wr_surface(m, SurfaceBasis::bspline, 3, &s);
+    CHECK(!st);
+    CHECK(std::string(st.message()).find("square grid") != std::string::npos);
+    CHECK(!make_wr_surface(test_mesh(3, 6), SurfaceBasis::bspline, 3, &s));  // too small
+    CHECK(!make_wr_surface(test_mesh(5, 5), SurfaceBasis::bezier, 3, &s));   // Bezier needs 4x4
+    m = test_mesh(7, 6);
+    m.at(2, 3).delta = 1.0f;
+    st = make_wr_surface(m, SurfaceBasis::bspline, 3, &s);
+    CHECK(!st);
+    CHECK(std::string(st.message()).find("delta") != std::string::npos);
+    m.at(2, 3).delta = 0.0f;
+    CHECK(!make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    m = test_mesh(7, 6);
+    m.at(1, 1).position.y = std::nanf("");
+    CHECK(!make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    m = test_mesh(7, 6);
+    m.at(1, 1).transparency = 1.5f;
+    CHECK(!make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    REQUIRE(make_wr_surface(test_mesh(7, 6), SurfaceBasis::bspline, 3, &s));
+    CHECK(!s.set_axes(identity_axis(3), identity_axis(3)));  // base intervals != spans
+    HierarchicalOptions o;
+    o.levels = 99;
+    HierarchicalSampling hs;
+    CHECK(!sample_hierarchy(s, o, &hs));
+    o.levels = -1;
+    CHECK(!sample_hierarchy(s, o, &hs));
+    o.levels = 2;
+    o.jitter_height = -1;
+    CHECK(!sample_hierarchy(s, o, &hs));
+    WrTessellationOptions to;
+    to.form = WrSurfaceForm::superposed;
+    WrMesh wm;
+    CHECK(!tessellate_wr_surface(s, nullptr, to, &wm));  // eq. (20) needs the sampling
+    to.form = WrSurfaceForm::wr;
+    to.u0 = 0.6f;
+    to.u1 = 0.4f;
+    CHECK(!tessellate_wr_surface(s, nullptr, to, &wm));
+}

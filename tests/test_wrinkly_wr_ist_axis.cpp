@@ -1,0 +1,175 @@
+// Tests for lib/shitsukan/wrinkly/wr_ist_axis with the WR surface: the IST plugged into
+// eq. (15), and the locality contrast of fujimoto2000 §3.2 (IST-Bezier global, IST-B-spline
+// local).
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "shitsukan/wrinkly/hierarchical_sampling.hpp"
+#include "shitsukan/wrinkly/ist_formula.hpp"
+#include "shitsukan/wrinkly/wr_ist_axis.hpp"
+#include "shitsukan/wrinkly/superposition.hpp"
+#include "shitsukan/wrinkly/wr_surface.hpp"
+#include "shitsukan/wrinkly/wr_tessellation.hpp"
+
+using namespace shitsukan;
+
+namespace {
+
+WrControlMesh flat_mesh(int cols, int rows) {
+    WrControlMesh m = make_control_mesh(cols, rows);
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < cols; ++c) {
+            m.at(c, r).position = {float(c), 0.0f, -float(r)};
+            m.at(c, r).height = 0.1f + 0.05f * float((c * 5 + r * 3) % 7);
+        }
+    return m;
+}
+
+}  // namespace
+
+TEST_CASE("WrIstAxis: F^0 is the identity and F^k matches ist_inverse in base-interval units") {
+    IstAxis ist;
+    REQUIRE(ist_fully_connected_axis(3, 1, 6, IstEnds::translation, &ist));
+    WrIstAxis a;
+    REQUIRE(make_wr_ist_axis(ist, 4, &a));
+    const WrAxis w = a.axis();
+    CHECK(w.base_intervals == 6);
+    CHECK(w.division == 3);
+    for (float s : {0.0f, 0.7f, 2.31f, 5.99f}) {
+        CHECK(w.inverse_at(s, 0) == s);
+        IstAxis k3;
+        REQUIRE(ist_with_iterations(ist, 3, &k3));
+        CHECK(w.inverse_at(s, 3) ==
+              doctest::Approx(6.0 * ist_inverse_double(k3, s / 6.0)).epsilon(1e-5));
+    }
+    CHECK(!make_wr_ist_axis(ist, kMaxWrLevel + 1, &a));
+}
+
+TEST_CASE("IST-B-spline: one control point changes the surface only where the IST can carry it") {
+    // 16 x 9 points -> 13 x 6 spans. Fully-connected N = 3 (M = 1), K = 2: a parameter in base
+    // interval b takes its height from base intervals b - K·M .. b + K·M (eq. 12), and the
+    // cubic B-spline point (c, r) acts on spans c-3..c (r-3..r).
+    WrControlMesh m = flat_mesh(16, 9);
+    const int K = 2, c0 = 8, r0 = 4;
+    WrSurface s0, s1;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s0));
+    m.at(c0, r0).height += 0.5f;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s1));
+    IstAxis iu, iv;
+    REQUIRE(ist_fully_connected_axis(3, 1, s0.spans_u(), IstEnds::translation, &iu));
+    REQUIRE(ist_fully_connected_axis(3, 1, s0.spans_v(), IstEnds::translation, &iv));
+    WrIstAxis au, av;
+    REQUIRE(make_wr_ist_axis(iu, K, &au));
+    REQUIRE(make_wr_ist_axis(iv, K, &av));
+    REQUIRE(s0.set_axes(au.axis(), av.axis()));
+    REQUIRE(s1.set_axes(au.axis(), av.axis()));
+    int changed_inside = 0, changed_outside = 0, inside = 0;
+    const int steps = 260;
+    for (int j = 0; j < steps; ++j)
+        for (int i = 0; i < steps; ++i) {
+            const float u = (float(i) + 0.5f) / float(steps), v = (float(j) + 0.5f) / float(steps);
+            const int bu = int(u * float(s0.spans_u())), bv = int(v * float(s0.spans_v()));
+            const bool in = bu >= c0 - 3 - K && bu <= c0 + K && bv >= r0 - 3 - K && bv <= r0 + K;
+            const bool diff = s0.wr_attributes(u, v, K).height != s1.wr_attributes(u, v, K).height;
+            if (in) {
+                ++inside;
+                changed_inside += diff;
+            } else {
+                changed_outside += diff;
+            }
+        }
+    CHECK(changed_outside == 0);
+    CHECK(changed_inside > inside / 4);  // and it does reach into the support
+}
+
+TEST_CASE("IST-Bezier: one control point changes the surface almost everywhere") {
+    WrControlMesh m = flat_mesh(4, 4);
+    WrSurface s0, s1;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bezier, 3, &s0));
+    m.at(1, 2).height += 0.5f;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bezier, 3, &s1));
+    IstAxis ist;
+    REQUIRE(ist_unit_axis(3, 1, &ist));
+    WrIstAxis au, av;
+    REQUIRE(make_wr_ist_axis(ist, 3, &au));
+    REQUIRE(make_wr_ist_axis(ist, 3, &av));
+    REQUIRE(s0.set_axes(au.axis(), av.axis()));
+    REQUIRE(s1.set_axes(au.axis(), av.axis()));
+    int changed = 0, total = 0;
+    for (int j = 0; j < 100; ++j)
+        for (int i = 0; i < 100; ++i) {
+            const float u = (float(i) + 0.5f) / 100.0f, v = (float(j) + 0.5f) / 100.0f;
+            changed += s0.wr_attributes(u, v, 3).height != s1.wr_attributes(u, v, 3).height;
+            ++total;
+        }
+    CHECK(changed > total * 95 / 100);
+}
+
+TEST_CASE("WR surface with the real IST: zero heights give the base surface") {
+    WrControlMesh m = flat_mesh(7, 7);
+    for (auto& p : m.points) p.height = 0;
+    WrSurface s;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    IstAxis ist;
+    REQUIRE(ist_fully_connected_axis(3, 1, 4, IstEnds::translation, &ist));
+    WrIstAxis a;
+    REQUIRE(make_wr_ist_axis(ist, 4, &a));
+    REQUIRE(s.set_axes(a.axis(), a.axis()));
+    for (float u : {0.0f, 0.21f, 0.5f, 0.83f, 1.0f})
+        for (float v : {0.1f, 0.66f})
+            CHECK(length(s.wr_point(u, v, 4) - s.base_point(u, v).position) < 1e-6f);
+}
+
+TEST_CASE("eq. (20) equals eq. (16) where every step samples (centres of base intervals, odd N)") {
+    // For odd N the centre of a base interval is the midpoint of a small interval at every
+    // step k, so H^k there is the sample H((F^k)^{-1}(u)) itself, linear or Hermite.
+    WrControlMesh m = flat_mesh(8, 7);
+    WrSurface s;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    IstAxis iu, iv;
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_u(), IstEnds::translation, &iu));
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_v(), IstEnds::translation, &iv));
+    WrIstAxis au, av;
+    REQUIRE(make_wr_ist_axis(iu, 3, &au));
+    REQUIRE(make_wr_ist_axis(iv, 3, &av));
+    REQUIRE(s.set_axes(au.axis(), av.axis()));
+    for (SampleInterpolation mode : {SampleInterpolation::linear, SampleInterpolation::hermite}) {
+        HierarchicalOptions o;
+        o.levels = 3;
+        o.interpolation = mode;
+        HierarchicalSampling hs;
+        REQUIRE(sample_hierarchy(s, o, &hs));
+        for (int i = 0; i < s.spans_u(); ++i)
+            for (int j = 0; j < s.spans_v(); ++j) {
+                const float u = (float(i) + 0.5f) / float(s.spans_u());
+                const float v = (float(j) + 0.5f) / float(s.spans_v());
+                const SuperposedSample a = superposed_sampled(s, hs, u, v);
+                const WrAttributes b = superposed_attributes_direct(s, u, v, 3);
+                CHECK(a.attributes.height == doctest::Approx(b.height).epsilon(1e-4));
+            }
+    }
+}
+
+TEST_CASE("adaptive levels grow with the projected size and stop at the cap") {
+    WrControlMesh m = flat_mesh(8, 7);
+    for (auto& p : m.points) p.delta = 0.6f;
+    WrSurface s;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    IstAxis iu;
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_u(), IstEnds::translation, &iu));
+    WrIstAxis au, av;
+    IstAxis iv;
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_v(), IstEnds::translation, &iv));
+    REQUIRE(make_wr_ist_axis(iu, 6, &au));
+    REQUIRE(make_wr_ist_axis(iv, 6, &av));
+    REQUIRE(s.set_axes(au.axis(), av.axis()));
+    const AdaptiveLevels small = choose_adaptive_levels(s, m, 10.0f, 2.0f, 0.5f, 6);
+    const AdaptiveLevels large = choose_adaptive_levels(s, m, 1000.0f, 2.0f, 0.5f, 6);
+    CHECK(small.grid_level < large.grid_level);
+    CHECK(small.sum_levels < large.sum_levels);
+    CHECK(large.grid_level <= 6);
+    // The rest of the sum after K steps projects below the tolerance (unless capped).
+    if (small.sum_levels < 6)
+        CHECK(std::pow(0.6, small.sum_levels + 1) * s.max_abs_height() * 10.0 < 0.5);
+}
