@@ -11,7 +11,7 @@
 //   sample_spline(ctrl, n, 16, &points);             // Catmull-Rom through ctrl, in double
 //   make_extrusion(outline, -0.1f, 0.1f, &m);        // outline[0] outer (any orientation),
 //                                                    // outline[1..] holes; extruded along z
-//   make_block_text("NAGOYA", 1.0f, 0.3f, &m);       // block capitals A-Z, baseline y = 0,
+//   make_block_text("NAGOYA", 1.0f, 0.3f, &m);       // block capitals (block_letters.hpp), y = 0 baseline,
 //                                                    // letter height 1, depth along z
 //   make_sphere_without_octant(1.0f, 24, &m);        // closed: the x,y,z > 0 octant removed,
 //                                                    // three quarter-disc cut faces

@@ -1,0 +1,393 @@
+#include "shitsukan/geom/mesh_builders.hpp"
+
+#include <cmath>
+
+#include "shitsukan/core/assert.hpp"
+#include "shitsukan/geom/block_letters.hpp"
+#include "shitsukan/geom/triangulate.hpp"
+
+namespace shitsukan {
+
+namespace {
+
+constexpr int kMinSegments = 3, kMaxSegments = 4096;
+
+Status check_segments(const char* what, const char* name, int n, int lo = kMinSegments) {
+    if (n < lo || n > kMaxSegments)
+        return Status::error(StatusCode::invalid_argument, "%s: %s must be in [%d, %d] (got %d)",
+                             what, name, lo, kMaxSegments, n);
+    return Status::success();
+}
+
+Status check_positive(const char* what, const char* name, float v) {
+    if (!(v > 0.0f) || !std::isfinite(v))
+        return Status::error(StatusCode::invalid_argument, "%s: %s must be finite and > 0 (got %g)",
+                             what, name, double(v));
+    return Status::success();
+}
+
+// Adds triangle a b c, flipped if needed so that its winding is counter-clockwise seen from
+// the side `outward` points to. Zero-area triangles are dropped (poles, axis points).
+void add_oriented(TriangleMesh* m, std::uint32_t a, std::uint32_t b, std::uint32_t c, Vec3 outward) {
+    Vec3 n = cross(m->positions[b] - m->positions[a], m->positions[c] - m->positions[a]);
+    if (length_squared(n) == 0.0f) return;
+    if (dot(n, outward) < 0.0f) std::swap(b, c);
+    m->add_triangle(a, b, c);
+}
+
+}  // namespace
+
+Status make_box(Vec3 lo, Vec3 hi, TriangleMesh* out) {
+    if (!out) return Status::error(StatusCode::invalid_argument, "make_box: null output");
+    if (!is_finite(lo) || !is_finite(hi) || !(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
+        return Status::error(StatusCode::invalid_argument,
+                             "make_box: need finite corners with min < max on every axis "
+                             "(got (%g,%g,%g) .. (%g,%g,%g))",
+                             double(lo.x), double(lo.y), double(lo.z), double(hi.x), double(hi.y), double(hi.z));
+    *out = TriangleMesh();
+    // Each face: normal axis, sign; its four corners get their own vertices (flat normals).
+    for (int axis = 0; axis < 3; ++axis) {
+        for (int sign = -1; sign <= 1; sign += 2) {
+            Vec3 n{};
+            n[axis] = float(sign);
+            int u_axis = (axis + 1) % 3, v_axis = (axis + 2) % 3;
+            std::uint32_t base = std::uint32_t(out->positions.size());
+            for (int k = 0; k < 4; ++k) {
+                int du = (k == 1 || k == 2), dv = (k >= 2);
+                Vec3 p;
+                p[axis] = sign > 0 ? hi[axis] : lo[axis];
+                p[u_axis] = du ? hi[u_axis] : lo[u_axis];
+                p[v_axis] = dv ? hi[v_axis] : lo[v_axis];
+                out->add_vertex(p, n, Vec2{float(du), float(dv)});
+            }
+            add_oriented(out, base, base + 1, base + 2, n);
+            add_oriented(out, base, base + 2, base + 3, n);
+        }
+    }
+    return Status::success();
+}
+
+Status make_uv_sphere(float radius, int slices, int stacks, TriangleMesh* out) {
+    if (!out) return Status::error(StatusCode::invalid_argument, "make_uv_sphere: null output");
+    SHITSUKAN_TRY(check_positive("make_uv_sphere", "radius", radius));
+    SHITSUKAN_TRY(check_segments("make_uv_sphere", "slices", slices));
+    SHITSUKAN_TRY(check_segments("make_uv_sphere", "stacks", stacks, 2));
+    *out = TriangleMesh();
+    // Rings from the north pole (theta = 0, +y) to the south pole; the seam column is
+    // duplicated so u runs 0..1, with identical positions (no crack).
+    for (int i = 0; i <= stacks; ++i) {
+        double theta = kPiD * i / stacks;
+        for (int j = 0; j <= slices; ++j) {
+            double phi = 2.0 * kPiD * (j == slices ? 0 : j) / slices;
+            Vec3 n{float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)),
+                   float(-std::sin(theta) * std::sin(phi))};
+            if (i == 0 || i == stacks) n = Vec3{0.0f, i == 0 ? 1.0f : -1.0f, 0.0f};
+            out->add_vertex(n * radius, n, Vec2{float(j) / slices, float(i) / stacks});
+        }
+    }
+    for (int i = 0; i < stacks; ++i)
+        for (int j = 0; j < slices; ++j) {
+            std::uint32_t a = std::uint32_t(i * (slices + 1) + j), b = a + 1;
+            std::uint32_t c = a + std::uint32_t(slices + 1), d = c + 1;
+            Vec3 mid = normalize(out->positions[a] + out->positions[b] + out->positions[c] + out->positions[d]);
+            add_oriented(out, a, c, d, mid);
+            add_oriented(out, a, d, b, mid);
+        }
+    return Status::success();
+}
+
+Status make_cylinder(float radius, float y0, float y1, int slices, bool caps, TriangleMesh* out) {
+    if (!out) return Status::error(StatusCode::invalid_argument, "make_cylinder: null output");
+    SHITSUKAN_TRY(check_positive("make_cylinder", "radius", radius));
+    SHITSUKAN_TRY(check_segments("make_cylinder", "slices", slices));
+    if (!std::isfinite(y0) || !std::isfinite(y1) || !(y0 < y1))
+        return Status::error(StatusCode::invalid_argument, "make_cylinder: need finite y0 < y1 (got %g, %g)",
+                             double(y0), double(y1));
+    Vec2d profile[4] = {{0, y0}, {radius, y0}, {radius, y1}, {0, y1}};
+    if (caps) return make_revolution(profile, 4, slices, out);
+    return make_revolution(profile + 1, 2, slices, out);
+}
+
+Status make_torus(float major_radius, float minor_radius, int major_segments, int minor_segments,
+                  TriangleMesh* out) {
+    if (!out) return Status::error(StatusCode::invalid_argument, "make_torus: null output");
+    SHITSUKAN_TRY(check_positive("make_torus", "major_radius", major_radius));
+    SHITSUKAN_TRY(check_positive("make_torus", "minor_radius", minor_radius));
+    if (!(minor_radius < major_radius))
+        return Status::error(StatusCode::invalid_argument,
+                             "make_torus: minor_radius %g must be < major_radius %g (no self-intersection)",
+                             double(minor_radius), double(major_radius));
+    SHITSUKAN_TRY(check_segments("make_torus", "major_segments", major_segments));
+    SHITSUKAN_TRY(check_segments("make_torus", "minor_segments", minor_segments));
+    // The torus is the revolution of a circle (r, y) = (R + r cos v, r sin v) about y.
+    std::vector<Vec2d> circle;
+    for (int k = 0; k <= minor_segments; ++k) {
+        double v = 2.0 * kPiD * (k == minor_segments ? 0 : k) / minor_segments;
+        circle.push_back({major_radius + minor_radius * std::cos(v), minor_radius * std::sin(v)});
+    }
+    return make_revolution(circle.data(), int(circle.size()), major_segments, out);
+}
+
+// Revolve the profile (r_k, y_k) about the y axis. Normals come from the profile's tangent:
+// the outward side is the one to the right of the direction of travel in the (r, y) half
+// plane, i.e. a profile that climbs the outside of a solid and descends the inside (a cup)
+// gets outward normals on both walls. Corners sharper than 40 degrees keep two vertices
+// (one per side) so that rims stay crisp; elsewhere normals are averaged.
+Status make_revolution(const Vec2d* profile, int count, int segments, TriangleMesh* out) {
+    if (!out) return Status::error(StatusCode::invalid_argument, "make_revolution: null output");
+    if (!profile || count < 2)
+        return Status::error(StatusCode::invalid_argument, "make_revolution: need >= 2 profile points (got %d)", count);
+    SHITSUKAN_TRY(check_segments("make_revolution", "segments", segments));
+    for (int k = 0; k < count; ++k)
+        if (!std::isfinite(profile[k].x) || !std::isfinite(profile[k].y) || profile[k].x < 0.0)
+            return Status::error(StatusCode::invalid_argument,
+                                 "make_revolution: profile point %d must be finite with r >= 0 (got r = %g, y = %g)",
+                                 k, profile[k].x, profile[k].y);
+    bool closed = count > 2 && profile[0].x == profile[count - 1].x && profile[0].y == profile[count - 1].y;
+    int n = closed ? count - 1 : count;  // distinct points
+    auto seg_normal = [&](int k) {       // normal of segment k -> k+1 (in the r, y plane)
+        Vec2d a = profile[k % n], b = profile[(k + 1) % n];
+        Vec2d d{b.x - a.x, b.y - a.y};
+        double l = std::sqrt(d.x * d.x + d.y * d.y);
+        return l > 0 ? Vec2d{d.y / l, -d.x / l} : Vec2d{0, 0};
+    };
+    int nseg = closed ? n : n - 1;
+    // Rings of vertices along the profile. A sharp corner gets two rings at the same place
+    // (one with the incoming, one with the outgoing normal) that are not joined by triangles.
+    struct Ring {
+        double r, y;
+        Vec2d normal;
+        double v;           // arc-length parameter in [0, 1]
+        bool joined_to_prev;
+    };
+    std::vector<double> arclen(std::size_t(nseg) + 1, 0.0);
+    for (int k = 0; k < nseg; ++k) {
+        Vec2d a = profile[k], b = profile[(k + 1) % n];
+        arclen[std::size_t(k) + 1] = arclen[std::size_t(k)] + std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
+    }
+    double total = arclen[std::size_t(nseg)];
+    if (total == 0) return Status::error(StatusCode::degenerate, "make_revolution: profile has zero length");
+    std::vector<Ring> rings;
+    for (int k = 0; k <= nseg; ++k) {
+        const Vec2d& p = profile[k % n];
+        double v = arclen[std::size_t(k)] / total;
+        bool has_in = closed || k > 0, has_out = closed || k < nseg;
+        Vec2d nin = seg_normal(has_in ? (k + nseg - 1) % nseg : 0);
+        Vec2d nout = seg_normal(has_out ? k % nseg : nseg - 1);
+        Vec2d avg{nin.x + nout.x, nin.y + nout.y};
+        double l = std::sqrt(avg.x * avg.x + avg.y * avg.y);
+        bool sharp = has_in && has_out && (nin.x * nout.x + nin.y * nout.y) < 0.766;  // > ~40 deg
+        if (!sharp) {
+            Vec2d nn = !has_in ? nout : !has_out ? nin : (l > 0 ? Vec2d{avg.x / l, avg.y / l} : nout);
+            rings.push_back({p.x, p.y, nn, v, k > 0});
+        } else {
+            if (k > 0) rings.push_back({p.x, p.y, nin, v, true});
+            if (k < nseg) rings.push_back({p.x, p.y, nout, v, false});
+        }
+    }
+    *out = TriangleMesh();
+    for (const Ring& ring : rings)
+        for (int j = 0; j <= segments; ++j) {
+            double phi = 2.0 * kPiD * (j == segments ? 0 : j) / segments;
+            double c = std::cos(phi), s = -std::sin(phi);
+            Vec3 p{float(ring.r * c), float(ring.y), float(ring.r * s)};
+            Vec3 nn{float(ring.normal.x * c), float(ring.normal.y), float(ring.normal.x * s)};
+            out->add_vertex(p, nn, Vec2{float(j) / segments, float(ring.v)});
+        }
+    for (std::size_t i = 0; i + 1 < rings.size(); ++i) {
+        if (!rings[i + 1].joined_to_prev) continue;
+        for (int j = 0; j < segments; ++j) {
+            std::uint32_t a = std::uint32_t(i * std::size_t(segments + 1) + std::size_t(j)), b = a + 1;
+            std::uint32_t c = a + std::uint32_t(segments + 1), d = c + 1;
+            Vec3 outward = out->normals[a] + out->normals[b] + out->normals[c] + out->normals[d];
+            add_oriented(out, a, c, d, outward);
+            add_oriented(out, a, d, b, outward);
+        }
+    }
+    return Status::success();
+}
+
+// Uniform Catmull-Rom spline through the control points, in double (okada1987: "the spline
+// in 8-byte reals"). The end tangents use a doubled end point. Returns every control point
+// exactly, with samples_per_segment - 1 points in between.
+Status sample_spline(const Vec2d* control, int count, int samples_per_segment, std::vector<Vec2d>* out) {
+    if (!out) return Status::error(StatusCode::invalid_argument, "sample_spline: null output");
+    if (!control || count < 2)
+        return Status::error(StatusCode::invalid_argument, "sample_spline: need >= 2 control points (got %d)", count);
+    if (samples_per_segment < 1 || samples_per_segment > kMaxSegments)
+        return Status::error(StatusCode::invalid_argument, "sample_spline: samples_per_segment must be in [1, %d] (got %d)",
+                             kMaxSegments, samples_per_segment);
+    for (int k = 0; k < count; ++k)
+        if (!std::isfinite(control[k].x) || !std::isfinite(control[k].y))
+            return Status::error(StatusCode::invalid_argument, "sample_spline: control point %d is not finite", k);
+    out->clear();
+    for (int k = 0; k + 1 < count; ++k) {
+        Vec2d p0 = control[k > 0 ? k - 1 : 0], p1 = control[k], p2 = control[k + 1];
+        Vec2d p3 = control[k + 2 < count ? k + 2 : count - 1];
+        for (int s = 0; s < samples_per_segment; ++s) {
+            double t = double(s) / samples_per_segment, t2 = t * t, t3 = t2 * t;
+            // C(t) = 0.5·[2P1 + (-P0 + P2)t + (2P0 - 5P1 + 4P2 - P3)t^2 + (-P0 + 3P1 - 3P2 + P3)t^3]
+            auto eval = [&](double a, double b, double c, double d) {
+                return 0.5 * (2 * b + (-a + c) * t + (2 * a - 5 * b + 4 * c - d) * t2 + (-a + 3 * b - 3 * c + d) * t3);
+            };
+            out->push_back(s == 0 ? p1 : Vec2d{eval(p0.x, p1.x, p2.x, p3.x), eval(p0.y, p1.y, p2.y, p3.y)});
+        }
+    }
+    out->push_back(control[count - 1]);
+    return Status::success();
+}
+
+Status make_extrusion(const std::vector<std::vector<Vec2>>& outline, float z0, float z1, TriangleMesh* out) {
+    if (!out) return Status::error(StatusCode::invalid_argument, "make_extrusion: null output");
+    if (!std::isfinite(z0) || !std::isfinite(z1) || !(z0 < z1))
+        return Status::error(StatusCode::invalid_argument, "make_extrusion: need finite z0 < z1 (got %g, %g)",
+                             double(z0), double(z1));
+    std::vector<Vec2> pts;
+    std::vector<std::uint32_t> tris;
+    SHITSUKAN_TRY(triangulate_polygon(outline, &pts, &tris));
+    *out = TriangleMesh();
+    // Front (z1, +z) and back (z0, -z) faces share the triangulation.
+    for (int side = 0; side < 2; ++side) {
+        float z = side == 0 ? z1 : z0;
+        Vec3 n{0, 0, side == 0 ? 1.0f : -1.0f};
+        std::uint32_t base = std::uint32_t(out->positions.size());
+        for (const Vec2& p : pts) out->add_vertex({p.x, p.y, z}, n, p);
+        for (std::size_t t = 0; t < tris.size(); t += 3)
+            add_oriented(out, base + tris[t], base + tris[t + 1], base + tris[t + 2], n);
+    }
+    // Side walls: one quad per ring edge, flat normals pointing away from the solid.
+    for (std::size_t r = 0; r < outline.size(); ++r) {
+        const std::vector<Vec2>& ring = outline[r];
+        bool ccw = signed_area2(ring) > 0;
+        bool outward_left = (r == 0) ? !ccw : ccw;  // material on the left of travel otherwise
+        for (std::size_t k = 0; k < ring.size(); ++k) {
+            Vec2 a = ring[k], b = ring[(k + 1) % ring.size()];
+            Vec2 d = b - a;
+            if (length_squared(d) == 0.0f) continue;
+            Vec2 right{d.y, -d.x};
+            Vec2 nn2 = normalize(outward_left ? -right : right);
+            Vec3 n{nn2.x, nn2.y, 0};
+            std::uint32_t base = std::uint32_t(out->positions.size());
+            float la = 0, lb = length(d);
+            out->add_vertex({a.x, a.y, z0}, n, {la, 0});
+            out->add_vertex({b.x, b.y, z0}, n, {lb, 0});
+            out->add_vertex({b.x, b.y, z1}, n, {lb, 1});
+            out->add_vertex({a.x, a.y, z1}, n, {la, 1});
+            add_oriented(out, base, base + 1, base + 2, n);
+            add_oriented(out, base, base + 2, base + 3, n);
+        }
+    }
+    return Status::success();
+}
+
+Status make_block_text(const char* text, float letter_height, float depth, TriangleMesh* out) {
+    if (!out || !text) return Status::error(StatusCode::invalid_argument, "make_block_text: null argument");
+    SHITSUKAN_TRY(check_positive("make_block_text", "letter_height", letter_height));
+    SHITSUKAN_TRY(check_positive("make_block_text", "depth", depth));
+    *out = TriangleMesh();
+    float pen = 0.0f;
+    for (const char* c = text; *c; ++c) {
+        if (*c == ' ') {
+            pen += kBlockLetterAdvance * letter_height;
+            continue;
+        }
+        std::vector<std::vector<Vec2>> rings;
+        SHITSUKAN_TRY(block_letter_outline(*c, &rings));
+        for (auto& ring : rings)
+            for (Vec2& p : ring) p = Vec2{pen + p.x * letter_height, p.y * letter_height};
+        TriangleMesh letter;
+        SHITSUKAN_TRY(make_extrusion(rings, -0.5f * depth, 0.5f * depth, &letter));
+        append(out, letter, Mat4::identity());
+        pen += kBlockLetterAdvance * letter_height;
+    }
+    return Status::success();
+}
+
+// The sphere as eight octant patches: each octant face of the octahedron subdivided into
+// n^2 triangles whose vertices are the integer points (a, b, c), |a| + |b| + |c| = n,
+// projected to the sphere. Computing every point from its integer coordinates makes the
+// points shared by two patches (or by a patch and a cut face) bit-identical: no cracks.
+Status make_sphere_without_octant(float radius, int n, TriangleMesh* out) {
+    if (!out) return Status::error(StatusCode::invalid_argument, "make_sphere_without_octant: null output");
+    SHITSUKAN_TRY(check_positive("make_sphere_without_octant", "radius", radius));
+    SHITSUKAN_TRY(check_segments("make_sphere_without_octant", "subdivisions", n, 1));
+    *out = TriangleMesh();
+    auto sphere_point = [&](int a, int b, int c) {
+        Vec3d d{double(a), double(b), double(c)};
+        double l = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+        return Vec3{float(d.x / l * radius), float(d.y / l * radius), float(d.z / l * radius)};
+    };
+    for (int oct = 0; oct < 8; ++oct) {
+        int sx = (oct & 1) ? -1 : 1, sy = (oct & 2) ? -1 : 1, sz = (oct & 4) ? -1 : 1;
+        if (sx > 0 && sy > 0 && sz > 0) continue;  // the removed octant
+        // Vertex (i, j) of the patch: i along x, j along y, k = n - i - j along z.
+        std::vector<std::uint32_t> idx(std::size_t((n + 1) * (n + 1)), 0);
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; i + j <= n; ++j) {
+                Vec3 p = sphere_point(sx * i, sy * j, sz * (n - i - j));
+                Vec3 nn = normalize(p);
+                float u = 0.5f + std::atan2(-nn.z, nn.x) / kTwoPi, v = std::acos(clamp(nn.y, -1.0f, 1.0f)) / kPi;
+                idx[std::size_t(i * (n + 1) + j)] = out->add_vertex(p, nn, {u, v});
+            }
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; i + j < n; ++j) {
+                std::uint32_t a = idx[std::size_t(i * (n + 1) + j)], b = idx[std::size_t((i + 1) * (n + 1) + j)];
+                std::uint32_t c = idx[std::size_t(i * (n + 1) + j + 1)];
+                add_oriented(out, a, b, c, out->positions[a] + out->positions[b] + out->positions[c]);
+                if (i + j + 1 < n) {
+                    std::uint32_t d = idx[std::size_t((i + 1) * (n + 1) + j + 1)];
+                    add_oriented(out, b, d, c, out->positions[b] + out->positions[d] + out->positions[c]);
+                }
+            }
+    }
+    // Three quarter-disc cut faces in the planes x = 0, y = 0, z = 0, bounding the removed
+    // octant; each is a fan from the centre through the arc points the patches use.
+    for (int axis = 0; axis < 3; ++axis) {
+        Vec3 nrm{};
+        nrm[axis] = 1.0f;  // the removed octant is on the + side: that is outside the solid
+        std::uint32_t centre = out->add_vertex({0, 0, 0}, nrm, {0.5f, 0.5f});
+        std::uint32_t prev = 0;
+        for (int k = 0; k <= n; ++k) {
+            int c[3] = {0, 0, 0};
+            c[(axis + 1) % 3] = n - k;
+            c[(axis + 2) % 3] = k;
+            Vec3 p = sphere_point(c[0], c[1], c[2]);
+            std::uint32_t cur = out->add_vertex(p, nrm, {0.5f + 0.5f * p[(axis + 1) % 3] / radius,
+                                                         0.5f + 0.5f * p[(axis + 2) % 3] / radius});
+            if (k > 0) add_oriented(out, centre, prev, cur, nrm);
+            prev = cur;
+        }
+    }
+    return Status::success();
+}
+
+void append(TriangleMesh* dst, const TriangleMesh& src, const Mat4& transform) {
+    SHITSUKAN_ASSERT(dst != nullptr);
+    bool ok = true;
+    Mat4 normal_matrix = transpose(inverse(transform, &ok));  // normals: inverse transpose
+    std::uint32_t base = std::uint32_t(dst->positions.size());
+    bool had_colors = !dst->colors.empty() || (dst->positions.empty() && !src.colors.empty());
+    for (std::size_t i = 0; i < src.positions.size(); ++i) {
+        Vec3 n = i < src.normals.size() ? normalize(transform_vector(normal_matrix, src.normals[i])) : Vec3{};
+        Vec2 uv = i < src.uvs.size() ? src.uvs[i] : Vec2{};
+        dst->add_vertex(transform_point(transform, src.positions[i]), n, uv);
+        if (had_colors) dst->colors.push_back(i < src.colors.size() ? src.colors[i] : Vec3{1, 1, 1});
+    }
+    for (std::uint32_t k : src.indices) dst->indices.push_back(base + k);
+}
+
+void compute_vertex_normals(TriangleMesh* mesh) {
+    SHITSUKAN_ASSERT(mesh != nullptr);
+    mesh->normals.assign(mesh->positions.size(), Vec3{});
+    for (std::size_t t = 0; t + 2 < mesh->indices.size(); t += 3) {
+        std::uint32_t a = mesh->indices[t], b = mesh->indices[t + 1], c = mesh->indices[t + 2];
+        // The cross product's length is twice the area: an area-weighted sum.
+        Vec3 n = cross(mesh->positions[b] - mesh->positions[a], mesh->positions[c] - mesh->positions[a]);
+        mesh->normals[a] += n;
+        mesh->normals[b] += n;
+        mesh->normals[c] += n;
+    }
+    for (Vec3& n : mesh->normals) n = normalize(n);
+}
+
+}  // namespace shitsukan

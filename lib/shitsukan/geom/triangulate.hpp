@@ -1,0 +1,31 @@
+// shitsukan/geom/triangulate.hpp — triangulating a planar polygon with holes (ear clipping).
+//
+// Manual
+//   std::vector<std::vector<Vec2>> rings = {outer, hole1, hole2};   // any orientation
+//   std::vector<Vec2> points; std::vector<uint32_t> tris;
+//   Status s = triangulate_polygon(rings, &points, &tris);
+//   // points: every ring vertex once (outer first, then holes in the given order)
+//   // tris: counter-clockwise triangles (3 indices each) covering outer minus holes
+// Algorithm: orient the outer ring counter-clockwise and holes clockwise; join each hole to
+// the polygon by a bridge to its nearest visible vertex (holes taken right to left, as in
+// D. Eberly, "Triangulation by Ear Clipping"), then clip ears. O(n^2) for n vertices: meant
+// for letters and profiles (tens to hundreds of vertices), not for big meshes.
+// Errors: fewer than 3 vertices in a ring, non-finite coordinates, zero-area outer ring, or a
+// polygon the ear clipper cannot finish (self-intersecting input).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "shitsukan/core/status.hpp"
+#include "shitsukan/core/vec.hpp"
+
+namespace shitsukan {
+
+Status triangulate_polygon(const std::vector<std::vector<Vec2>>& rings, std::vector<Vec2>* points,
+                           std::vector<std::uint32_t>* triangles);
+
+// Twice the signed area (positive = counter-clockwise), shoelace formula, in double.
+double signed_area2(const std::vector<Vec2>& ring);
+
+}  // namespace shitsukan
