@@ -1,0 +1,240 @@
+#include "shitsukan/geom/delaunay.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "shitsukan/core/assert.hpp"
+#include "shitsukan/geom/predicates.hpp"
+
+namespace shitsukan {
+namespace {
+
+// Index of (x, y) on a Hilbert curve over a 2^16 x 2^16 grid (the classic xy -> d loop).
+std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y) {
+    const std::uint32_t n = 1u << 16;
+    std::uint64_t d = 0;
+    for (std::uint32_t s = n / 2; s > 0; s /= 2) {
+        std::uint32_t rx = (x & s) ? 1u : 0u;
+        std::uint32_t ry = (y & s) ? 1u : 0u;
+        d += std::uint64_t(s) * s * ((3u * rx) ^ ry);
+        if (ry == 0) {  // rotate the quadrant
+            if (rx == 1) {
+                x = n - 1 - x;
+                y = n - 1 - y;
+            }
+            std::uint32_t t = x;
+            x = y;
+            y = t;
+        }
+    }
+    return d;
+}
+
+struct BoundaryEdge {
+    int u, w;       // the edge u -> w as it runs in the cavity triangle (counter-clockwise)
+    int outside;    // triangle beyond it, -1 at the frame
+    int outside_slot;  // index j with triangles[outside].n[j] == the cavity triangle
+    int created;    // the new triangle (p, u, w)
+};
+
+class Builder {
+public:
+    explicit Builder(DelaunayTriangulation* dt) : dt_(*dt) {}
+
+    void start_frame() {
+        const int n = dt_.input_count;
+        dt_.triangles.clear();
+        // frame points n..n+3 counter-clockwise: (-,-) (+,-) (+,+) (-,+)
+        dt_.triangles.push_back({{n, n + 1, n + 2}, {-1, 1, -1}});
+        dt_.triangles.push_back({{n, n + 2, n + 3}, {-1, -1, 0}});
+        mark_.assign(2, -1);
+        out_mark_.assign(2, -1);
+        last_ = 0;
+    }
+
+    int locate(int p) {
+        const Vec2d q = dt_.points[std::size_t(p)];
+        int t = last_;
+        unsigned step = 0;
+        for (;;) {
+            const DelaunayTriangle& tri = dt_.triangles[std::size_t(t)];
+            int moved = -1;
+            for (int k = 0; k < 3; ++k) {
+                int i = int((k + step) % 3u);  // rotate the first edge tried: no cycling
+                Vec2d a = dt_.points[std::size_t(tri.v[(i + 1) % 3])];
+                Vec2d b = dt_.points[std::size_t(tri.v[(i + 2) % 3])];
+                if (orient2d(a, b, q) < 0.0) {
+                    moved = tri.n[i];
+                    break;
+                }
+            }
+            if (moved < 0) return t;
+            t = moved;
+            ++step;
+        }
+    }
+
+    bool circle_contains(int t, int p) const {
+        const DelaunayTriangle& tri = dt_.triangles[std::size_t(t)];
+        return incircle(dt_.points[std::size_t(tri.v[0])], dt_.points[std::size_t(tri.v[1])],
+                        dt_.points[std::size_t(tri.v[2])], dt_.points[std::size_t(p)]) > 0.0;
+    }
+
+    void insert(int p) {
+        const int start = locate(p);
+        SHITSUKAN_ASSERT(circle_contains(start, p));
+        // Collect the cavity: the connected triangles whose circumcircle strictly holds p.
+        cavity_.clear();
+        boundary_.clear();
+        cavity_.push_back(start);
+        mark_[std::size_t(start)] = p;
+        for (std::size_t k = 0; k < cavity_.size(); ++k) {
+            int t = cavity_[k];
+            for (int i = 0; i < 3; ++i) {
+                int nb = dt_.triangles[std::size_t(t)].n[i];
+                if (nb >= 0 && mark_[std::size_t(nb)] == p) continue;
+                if (nb >= 0 && out_mark_[std::size_t(nb)] != p && circle_contains(nb, p)) {
+                    mark_[std::size_t(nb)] = p;
+                    cavity_.push_back(nb);
+                    continue;
+                }
+                if (nb >= 0) out_mark_[std::size_t(nb)] = p;
+                BoundaryEdge e;
+                e.u = dt_.triangles[std::size_t(t)].v[(i + 1) % 3];
+                e.w = dt_.triangles[std::size_t(t)].v[(i + 2) % 3];
+                e.outside = nb;
+                e.outside_slot = -1;
+                if (nb >= 0)
+                    for (int j = 0; j < 3; ++j)
+                        if (dt_.triangles[std::size_t(nb)].n[j] == t) e.outside_slot = j;
+                e.created = -1;
+                boundary_.push_back(e);
+            }
+        }
+        // Re-triangulate: one triangle (p, u, w) per boundary edge, reusing the cavity slots.
+        for (std::size_t k = 0; k < boundary_.size(); ++k) {
+            int slot;
+            if (k < cavity_.size()) {
+                slot = cavity_[k];
+            } else {
+                slot = int(dt_.triangles.size());
+                dt_.triangles.push_back({{0, 0, 0}, {-1, -1, -1}});
+                mark_.push_back(-1);
+                out_mark_.push_back(-1);
+            }
+            boundary_[k].created = slot;
+        }
+        for (const BoundaryEdge& e : boundary_) {
+            DelaunayTriangle& tri = dt_.triangles[std::size_t(e.created)];
+            tri.v[0] = p;
+            tri.v[1] = e.u;
+            tri.v[2] = e.w;
+            tri.n[0] = e.outside;
+            if (e.outside >= 0) dt_.triangles[std::size_t(e.outside)].n[e.outside_slot] = e.created;
+            tri.n[1] = -1;
+            tri.n[2] = -1;
+            for (const BoundaryEdge& f : boundary_) {
+                if (f.u == e.w) tri.n[1] = f.created;  // across w -> p
+                if (f.w == e.u) tri.n[2] = f.created;  // across p -> u
+            }
+            SHITSUKAN_ASSERT(tri.n[1] >= 0 && tri.n[2] >= 0);
+            mark_[std::size_t(e.created)] = -1;
+        }
+        last_ = boundary_[0].created;
+    }
+
+private:
+    DelaunayTriangulation& dt_;
+    std::vector<int> mark_, out_mark_, cavity_;
+    std::vector<BoundaryEdge> boundary_;
+    int last_ = 0;
+};
+
+}  // namespace
+
+Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out) {
+    return build_delaunay(points, count, out, Vec2d{0, 0}, Vec2d{-1, -1});
+}
+
+Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out, Vec2d cover_lo,
+                      Vec2d cover_hi) {
+    if (out == nullptr) return Status::error(StatusCode::invalid_argument, "build_delaunay: out is null");
+    if (count < 1 || points == nullptr)
+        return Status::error(StatusCode::invalid_argument, "build_delaunay: need at least 1 point (got %d)", count);
+    if (count > (1 << 28))
+        return Status::error(StatusCode::too_large, "build_delaunay: %d points is more than 2^28", count);
+    double lo_x = points[0].x, hi_x = points[0].x, lo_y = points[0].y, hi_y = points[0].y;
+    for (int i = 0; i < count; ++i) {
+        if (!is_finite(points[i]) || std::fabs(points[i].x) > 1e100 || std::fabs(points[i].y) > 1e100)
+            return Status::error(StatusCode::invalid_argument,
+                                 "build_delaunay: point %d = (%g, %g) is not finite or beyond 1e100", i,
+                                 points[i].x, points[i].y);
+        lo_x = std::min(lo_x, points[i].x);
+        hi_x = std::max(hi_x, points[i].x);
+        lo_y = std::min(lo_y, points[i].y);
+        hi_y = std::max(hi_y, points[i].y);
+    }
+    double data_lo_x = lo_x, data_hi_x = hi_x, data_lo_y = lo_y, data_hi_y = hi_y;
+    if (cover_lo.x <= cover_hi.x && cover_lo.y <= cover_hi.y) {
+        lo_x = std::min(lo_x, cover_lo.x);
+        hi_x = std::max(hi_x, cover_hi.x);
+        lo_y = std::min(lo_y, cover_lo.y);
+        hi_y = std::max(hi_y, cover_hi.y);
+    }
+    out->input_count = count;
+    out->points.assign(points, points + count);
+    // The frame: a square 10 half-extents out, so frame points never fall near the data.
+    double cx = 0.5 * (lo_x + hi_x), cy = 0.5 * (lo_y + hi_y);
+    double half = std::max(hi_x - lo_x, hi_y - lo_y) * 0.5;
+    if (!(half > 0.0)) half = std::max(1.0, std::fabs(cx) + std::fabs(cy));
+    double m = 10.0 * half;
+    out->points.push_back({cx - m, cy - m});
+    out->points.push_back({cx + m, cy - m});
+    out->points.push_back({cx + m, cy + m});
+    out->points.push_back({cx - m, cy + m});
+
+    // Insertion order: Hilbert index, then coordinates, then index (duplicates end adjacent,
+    // the smallest index first).
+    struct Key {
+        std::uint64_t h;
+        int i;
+    };
+    std::vector<Key> order(static_cast<std::size_t>(count));
+    lo_x = data_lo_x;
+    lo_y = data_lo_y;
+    double sx = data_hi_x > lo_x ? 65535.0 / (data_hi_x - lo_x) : 0.0;
+    double sy = data_hi_y > lo_y ? 65535.0 / (data_hi_y - lo_y) : 0.0;
+    for (int i = 0; i < count; ++i) {
+        auto gx = std::uint32_t((points[i].x - lo_x) * sx);
+        auto gy = std::uint32_t((points[i].y - lo_y) * sy);
+        order[std::size_t(i)] = {hilbert_index(std::min(gx, 65535u), std::min(gy, 65535u)), i};
+    }
+    std::sort(order.begin(), order.end(), [&](const Key& a, const Key& b) {
+        if (a.h != b.h) return a.h < b.h;
+        const Vec2d& pa = points[a.i];
+        const Vec2d& pb = points[b.i];
+        if (pa.x != pb.x) return pa.x < pb.x;
+        if (pa.y != pb.y) return pa.y < pb.y;
+        return a.i < b.i;
+    });
+    out->duplicate_of.assign(std::size_t(count), -1);
+    Builder builder(out);
+    builder.start_frame();
+    for (std::size_t k = 0; k < order.size(); ++k) {
+        int i = order[k].i;
+        if (k > 0 && points[order[k - 1].i] == points[i]) {
+            int first = order[k - 1].i;
+            out->duplicate_of[std::size_t(i)] =
+                out->duplicate_of[std::size_t(first)] >= 0 ? out->duplicate_of[std::size_t(first)] : first;
+            continue;
+        }
+        builder.insert(i);
+    }
+    out->point_triangle.assign(std::size_t(count) + 4, -1);
+    for (std::size_t t = 0; t < out->triangles.size(); ++t)
+        for (int v : out->triangles[t].v) out->point_triangle[std::size_t(v)] = int(t);
+    return Status::success();
+}
+
+}  // namespace shitsukan

@@ -1,0 +1,50 @@
+// shitsukan/geom/delaunay.hpp — Delaunay triangulation of points in the plane (exact predicates).
+//
+// Manual
+//   DelaunayTriangulation dt;
+//   Status s = build_delaunay(points, n, &dt);   // points: n finite Vec2d, n >= 1
+//   dt.triangles[t].v[0..2]  counter-clockwise point indices (indices >= n are the 4 frame
+//                            points added far outside, see below)
+//   dt.triangles[t].n[i]     the triangle across the edge opposite v[i] (-1 outside the frame)
+//   dt.point_triangle[i]     one triangle incident to point i (-1 for a duplicate point)
+//   dt.duplicate_of[i]       -1, or the smallest index of an identical earlier point
+//
+// Algorithm (Bowyer 1981 / Watson 1981, incremental): points are inserted in Hilbert-curve
+// order into a frame of 4 points placed 10 bounding-box half-extents from the data's centre, so every
+// input point is interior. Each insertion walks from the last new triangle to the triangle
+// containing the point (visibility walk, exact orient2d), collects the cavity of triangles
+// whose circumcircle contains the point STRICTLY (exact incircle > 0), and re-triangulates
+// it as a fan from the point. Tie-break: a point exactly on a circumcircle (incircle == 0)
+// does not enter the cavity, so cocircular points (lattices) give some valid triangulation of
+// their convex polygon; the Voronoi diagram built on top merges such triangles (voronoi.hpp).
+// Expected O(n log n) for the sort, O(n) expected for the insertions on spread-out data
+// (O(1) walk and cavity per point in Hilbert order); worst case O(n^2).
+#pragma once
+
+#include <vector>
+
+#include "shitsukan/core/status.hpp"
+#include "shitsukan/core/vec.hpp"
+
+namespace shitsukan {
+
+struct DelaunayTriangle {
+    int v[3];  // counter-clockwise
+    int n[3];  // neighbour across the edge opposite v[i], -1 beyond the frame
+};
+
+struct DelaunayTriangulation {
+    int input_count = 0;                 // n; points[n .. n + 3] are the frame
+    std::vector<Vec2d> points;           // the input points followed by the 4 frame points
+    std::vector<DelaunayTriangle> triangles;
+    std::vector<int> point_triangle;     // size n + 4
+    std::vector<int> duplicate_of;       // size n
+};
+
+Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out);
+// The same, with the frame also enclosing the box [cover_lo, cover_hi] (e.g. a clip region):
+// every point of that box is then nearer to some input point than to any frame point.
+Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out, Vec2d cover_lo,
+                      Vec2d cover_hi);
+
+}  // namespace shitsukan

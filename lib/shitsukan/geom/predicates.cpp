@@ -1,0 +1,212 @@
+// small-device: yes (no allocation; the exact in-circle path uses ~40 KB of stack)
+#include "shitsukan/geom/predicates.hpp"
+
+#include <cmath>
+
+namespace shitsukan {
+namespace detail {
+
+// An expansion is an array of doubles, increasing magnitude, non-overlapping; its value is
+// the exact sum. Shewchuk 1997 §2: TWO-SUM, TWO-PRODUCT (Dekker split), and the linear-time
+// merge FAST-EXPANSION-SUM and SCALE-EXPANSION, both eliminating zero components.
+
+constexpr double kEpsilon = 1.1102230246251565e-16;  // 2^-53
+constexpr double kSplitter = 134217729.0;            // 2^27 + 1
+
+inline void two_sum(double a, double b, double& x, double& y) {
+    x = a + b;
+    double bv = x - a;
+    double av = x - bv;
+    y = (a - av) + (b - bv);
+}
+
+inline void fast_two_sum(double a, double b, double& x, double& y) {  // |a| >= |b|
+    x = a + b;
+    y = b - (x - a);
+}
+
+inline void split(double a, double& hi, double& lo) {
+    double c = kSplitter * a;
+    hi = c - (c - a);
+    lo = a - hi;
+}
+
+inline void two_product(double a, double b, double& x, double& y) {
+    x = a * b;
+    double ahi, alo, bhi, blo;
+    split(a, ahi, alo);
+    split(b, bhi, blo);
+    double err1 = x - ahi * bhi;
+    double err2 = err1 - alo * bhi;
+    double err3 = err2 - ahi * blo;
+    y = alo * blo - err3;
+}
+
+inline void two_diff(double a, double b, double& x, double& y) { two_sum(a, -b, x, y); }
+
+// h = e + f (h has room for elen + flen components); returns the length of h.
+int fast_expansion_sum(int elen, const double* e, int flen, const double* f, double* h) {
+    int ei = 0, fi = 0, hi = 0;
+    double q, qnew, hh;
+    double enow = e[0], fnow = f[0];
+    auto take_e = [&](double& out) { out = enow; ++ei; if (ei < elen) enow = e[ei]; };
+    auto take_f = [&](double& out) { out = fnow; ++fi; if (fi < flen) fnow = f[fi]; };
+    if ((fnow > enow) == (fnow > -enow)) take_e(q); else take_f(q);
+    if (ei < elen && fi < flen) {
+        double next;
+        if ((fnow > enow) == (fnow > -enow)) take_e(next); else take_f(next);
+        fast_two_sum(next, q, qnew, hh);
+        q = qnew;
+        if (hh != 0.0) h[hi++] = hh;
+        while (ei < elen && fi < flen) {
+            if ((fnow > enow) == (fnow > -enow)) take_e(next); else take_f(next);
+            two_sum(q, next, qnew, hh);
+            q = qnew;
+            if (hh != 0.0) h[hi++] = hh;
+        }
+    }
+    while (ei < elen) {
+        double next;
+        take_e(next);
+        two_sum(q, next, qnew, hh);
+        q = qnew;
+        if (hh != 0.0) h[hi++] = hh;
+    }
+    while (fi < flen) {
+        double next;
+        take_f(next);
+        two_sum(q, next, qnew, hh);
+        q = qnew;
+        if (hh != 0.0) h[hi++] = hh;
+    }
+    if (q != 0.0 || hi == 0) h[hi++] = q;
+    return hi;
+}
+
+// h = e * b (room for 2 * elen components).
+int scale_expansion(int elen, const double* e, double b, double* h) {
+    double q, hh, p1, p0, sum;
+    int hi = 0;
+    two_product(e[0], b, q, hh);
+    if (hh != 0.0) h[hi++] = hh;
+    for (int i = 1; i < elen; ++i) {
+        two_product(e[i], b, p1, p0);
+        two_sum(q, p0, sum, hh);
+        if (hh != 0.0) h[hi++] = hh;
+        fast_two_sum(p1, sum, q, hh);
+        if (hh != 0.0) h[hi++] = hh;
+    }
+    if (q != 0.0 || hi == 0) h[hi++] = q;
+    return hi;
+}
+
+// h = e * f for short expansions (room for 2 * elen * flen); tmp needs 2 * elen, acc as h.
+int multiply_expansions(int elen, const double* e, int flen, const double* f, double* h,
+                        double* tmp, double* acc) {
+    int hlen = scale_expansion(elen, e, f[0], h);
+    for (int j = 1; j < flen; ++j) {
+        int tlen = scale_expansion(elen, e, f[j], tmp);
+        int alen = fast_expansion_sum(hlen, h, tlen, tmp, acc);
+        for (int i = 0; i < alen; ++i) h[i] = acc[i];
+        hlen = alen;
+    }
+    return hlen;
+}
+
+inline double expansion_sign_value(int len, const double* e) { return e[len - 1]; }
+
+}  // namespace detail
+
+using namespace detail;
+
+double orient2d_exact(Vec2d a, Vec2d b, Vec2d c) {
+    // det = (ax - cx)(by - cy) - (ay - cy)(bx - cx), with the differences kept exact.
+    double acx[2], acy[2], bcx[2], bcy[2];
+    two_diff(a.x, c.x, acx[1], acx[0]);
+    two_diff(a.y, c.y, acy[1], acy[0]);
+    two_diff(b.x, c.x, bcx[1], bcx[0]);
+    two_diff(b.y, c.y, bcy[1], bcy[0]);
+    double left[8], right[8], tmp[4], acc[8], det[16];
+    int llen = multiply_expansions(2, acx, 2, bcy, left, tmp, acc);
+    int rlen = multiply_expansions(2, acy, 2, bcx, right, tmp, acc);
+    for (int i = 0; i < rlen; ++i) right[i] = -right[i];
+    int dlen = fast_expansion_sum(llen, left, rlen, right, det);
+    return expansion_sign_value(dlen, det);
+}
+
+double orient2d(Vec2d a, Vec2d b, Vec2d c) {
+    double detleft = (a.x - c.x) * (b.y - c.y);
+    double detright = (a.y - c.y) * (b.x - c.x);
+    double det = detleft - detright;
+    double detsum = std::fabs(detleft) + std::fabs(detright);
+    const double errbound = (3.0 + 16.0 * kEpsilon) * kEpsilon;  // Shewchuk's ccwerrboundA
+    if (std::fabs(det) >= errbound * detsum && det != 0.0) return det;
+    if (detsum == 0.0) return 0.0;  // both products exactly 0 in floating point -> collinear
+    return orient2d_exact(a, b, c);
+}
+
+namespace {
+
+// lift = dx^2 + dy^2 for exact 2-component differences dx, dy (at most 16 components).
+int lift(const double* dx, const double* dy, double* out) {
+    double xx[8], yy[8], tmp[4], acc[8];
+    int xl = multiply_expansions(2, dx, 2, dx, xx, tmp, acc);
+    int yl = multiply_expansions(2, dy, 2, dy, yy, tmp, acc);
+    return fast_expansion_sum(xl, xx, yl, yy, out);
+}
+
+// cross = px * qy - qx * py (at most 16 components).
+int cross2(const double* px, const double* py, const double* qx, const double* qy, double* out) {
+    double l[8], r[8], tmp[4], acc[8];
+    int ll = multiply_expansions(2, px, 2, qy, l, tmp, acc);
+    int rl = multiply_expansions(2, qx, 2, py, r, tmp, acc);
+    for (int i = 0; i < rl; ++i) r[i] = -r[i];
+    return fast_expansion_sum(ll, l, rl, r, out);
+}
+
+}  // namespace
+
+double incircle_exact(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
+    double adx[2], ady[2], bdx[2], bdy[2], cdx[2], cdy[2];
+    two_diff(a.x, d.x, adx[1], adx[0]);
+    two_diff(a.y, d.y, ady[1], ady[0]);
+    two_diff(b.x, d.x, bdx[1], bdx[0]);
+    two_diff(b.y, d.y, bdy[1], bdy[0]);
+    two_diff(c.x, d.x, cdx[1], cdx[0]);
+    two_diff(c.y, d.y, cdy[1], cdy[0]);
+    // det = alift (bdx cdy - cdx bdy) + blift (cdx ady - adx cdy) + clift (adx bdy - bdx ady)
+    double lift_e[16], cross_e[16], term[3][512], tmp[32], acc[512];
+    int term_len[3];
+    const double* lx[3] = {adx, bdx, cdx};
+    const double* ly[3] = {ady, bdy, cdy};
+    for (int k = 0; k < 3; ++k) {
+        int i = (k + 1) % 3, j = (k + 2) % 3;
+        int ll = lift(lx[k], ly[k], lift_e);
+        int cl = cross2(lx[i], ly[i], lx[j], ly[j], cross_e);
+        term_len[k] = multiply_expansions(ll, lift_e, cl, cross_e, term[k], tmp, acc);
+    }
+    double sum01[1024], total[1536];
+    int s01 = fast_expansion_sum(term_len[0], term[0], term_len[1], term[1], sum01);
+    int tl = fast_expansion_sum(s01, sum01, term_len[2], term[2], total);
+    return expansion_sign_value(tl, total);
+}
+
+double incircle(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
+    double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
+    double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
+    double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+    double alift = adx * adx + ady * ady;
+    double cdxady = cdx * ady, adxcdy = adx * cdy;
+    double blift = bdx * bdx + bdy * bdy;
+    double adxbdy = adx * bdy, bdxady = bdx * ady;
+    double clift = cdx * cdx + cdy * cdy;
+    double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+    double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
+                       (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
+                       (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
+    const double errbound = (10.0 + 96.0 * kEpsilon) * kEpsilon;  // Shewchuk's iccerrboundA
+    if (std::fabs(det) > errbound * permanent) return det;
+    return incircle_exact(a, b, c, d);
+}
+
+}  // namespace shitsukan

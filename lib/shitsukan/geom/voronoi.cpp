@@ -1,0 +1,135 @@
+#include "shitsukan/geom/voronoi.hpp"
+
+#include <algorithm>
+
+#include "shitsukan/core/assert.hpp"
+#include "shitsukan/geom/delaunay.hpp"
+#include "shitsukan/geom/polygon.hpp"
+#include "shitsukan/geom/predicates.hpp"
+
+namespace shitsukan {
+namespace {
+
+bool lex_less(Vec2d a, Vec2d b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+
+int find_root(std::vector<int>& parent, int t) {
+    while (parent[std::size_t(t)] != t) {
+        parent[std::size_t(t)] = parent[std::size_t(parent[std::size_t(t)])];  // path halving
+        t = parent[std::size_t(t)];
+    }
+    return t;
+}
+
+// Circumcentre of a, b, c, computed relative to a (the lexicographically smallest).
+Vec2d circumcentre(Vec2d a, Vec2d b, Vec2d c) {
+    double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
+    double d = 2.0 * (bx * cy - by * cx);
+    double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+    return {a.x + (cy * b2 - by * c2) / d, a.y + (bx * c2 - cx * b2) / d};
+}
+
+}  // namespace
+
+Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int region_count,
+                     VoronoiCells* out) {
+    if (out == nullptr) return Status::error(StatusCode::invalid_argument, "voronoi_cells: out is null");
+    SHITSUKAN_TRY(check_convex_region(region, region_count));
+    Vec2d lo = region[0], hi = region[0];
+    for (int i = 0; i < region_count; ++i) {
+        lo = {std::min(lo.x, region[i].x), std::min(lo.y, region[i].y)};
+        hi = {std::max(hi.x, region[i].x), std::max(hi.y, region[i].y)};
+    }
+    DelaunayTriangulation dt;
+    SHITSUKAN_TRY(build_delaunay(sites, count, &dt, lo, hi));
+    const std::vector<DelaunayTriangle>& tris = dt.triangles;
+    const std::vector<Vec2d>& pts = dt.points;
+    const int tcount = int(tris.size());
+
+    // Merge triangles that share a circumcircle (exact incircle == 0 across their edge): one
+    // Voronoi vertex per group of cocircular sites.
+    std::vector<int> parent(static_cast<std::size_t>(tcount));
+    for (int t = 0; t < tcount; ++t) parent[std::size_t(t)] = t;
+    for (int t = 0; t < tcount; ++t) {
+        const DelaunayTriangle& tri = tris[std::size_t(t)];
+        for (int i = 0; i < 3; ++i) {
+            int nb = tri.n[i];
+            if (nb <= t) continue;  // each edge once (nb == -1: the frame)
+            const DelaunayTriangle& other = tris[std::size_t(nb)];
+            int d = -1;
+            for (int j = 0; j < 3; ++j)
+                if (other.n[j] == t) d = other.v[j];
+            if (incircle(pts[std::size_t(tri.v[0])], pts[std::size_t(tri.v[1])],
+                         pts[std::size_t(tri.v[2])], pts[std::size_t(d)]) == 0.0) {
+                int ra = find_root(parent, t), rb = find_root(parent, nb);
+                if (ra != rb) parent[std::size_t(std::max(ra, rb))] = std::min(ra, rb);
+            }
+        }
+    }
+    // Canonical circumcentre of each group: from its 3 lexicographically smallest sites.
+    std::vector<int> best(std::size_t(tcount) * 3, -1);
+    std::vector<int> root(static_cast<std::size_t>(tcount));
+    for (int t = 0; t < tcount; ++t) {
+        int r = find_root(parent, t);
+        root[std::size_t(t)] = r;
+        int* b = &best[std::size_t(r) * 3];
+        for (int v : tris[std::size_t(t)].v) {
+            if (v == b[0] || v == b[1] || v == b[2]) continue;
+            // insert v into the sorted top-3
+            int k = 3;
+            while (k > 0 && (b[k - 1] < 0 || lex_less(pts[std::size_t(v)], pts[std::size_t(b[k - 1])]))) --k;
+            if (k >= 3) continue;
+            for (int j = 2; j > k; --j) b[j] = b[j - 1];
+            b[k] = v;
+        }
+    }
+    std::vector<Vec2d> centre(static_cast<std::size_t>(tcount));
+    for (int t = 0; t < tcount; ++t) {
+        if (root[std::size_t(t)] != t) continue;
+        const int* b = &best[std::size_t(t) * 3];
+        centre[std::size_t(t)] = circumcentre(pts[std::size_t(b[0])], pts[std::size_t(b[1])], pts[std::size_t(b[2])]);
+    }
+
+    // Walk around each site: the groups of its triangles, counter-clockwise, each once.
+    out->vertices.clear();
+    out->on_region_edge.clear();
+    out->offsets.assign(1, 0);
+    out->duplicate_of = dt.duplicate_of;
+    std::vector<ClipVertex> poly, scratch;
+    for (int s = 0; s < count; ++s) {
+        poly.clear();
+        int t0 = dt.point_triangle[std::size_t(s)];
+        if (t0 >= 0) {
+            int t = t0, last_group = -1, first_group = -1;
+            do {
+                const DelaunayTriangle& tri = tris[std::size_t(t)];
+                int i = tri.v[0] == s ? 0 : (tri.v[1] == s ? 1 : 2);
+                int g = root[std::size_t(t)];
+                if (g != last_group) {
+                    ClipVertex cv;
+                    cv.p = centre[std::size_t(g)];
+                    poly.push_back(cv);
+                    if (first_group < 0) first_group = g;
+                    last_group = g;
+                }
+                t = tri.n[(i + 1) % 3];  // across the edge (s, v[i + 2]): next triangle CCW
+                SHITSUKAN_ASSERT(t >= 0);
+            } while (t != t0);
+            if (poly.size() > 1 && last_group == first_group) poly.pop_back();
+            clip_to_convex_region(&poly, region, region_count, &scratch);
+            // start at the lexicographically smallest vertex
+            std::size_t m = 0;
+            for (std::size_t k = 1; k < poly.size(); ++k)
+                if (lex_less(poly[k].p, poly[m].p)) m = k;
+            std::rotate(poly.begin(), poly.begin() + std::ptrdiff_t(m), poly.end());
+        }
+        for (const ClipVertex& v : poly) {
+            out->vertices.push_back(v.p);
+            out->on_region_edge.push_back(v.on[0]);
+            out->on_region_edge.push_back(v.on[1]);
+        }
+        out->offsets.push_back(int(out->vertices.size()));
+    }
+    return Status::success();
+}
+
+}  // namespace shitsukan

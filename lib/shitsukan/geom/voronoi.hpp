@@ -1,0 +1,58 @@
+// shitsukan/geom/voronoi.hpp — Voronoi division of the plane, clipped to a convex region
+// (tokai1994 §3.1 processing 3: "division in the continuous plane").
+//
+// Manual
+//   const Vec2d square[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};   // convex, counter-clockwise
+//   VoronoiCells cells;
+//   Status s = voronoi_cells(sites, n, square, 4, &cells);
+//   for (int i = 0; i < n; ++i) {                  // cell i belongs to sites[i]
+//       int k; const Vec2d* v = cells.cell(i, &k);   // k == 0: empty (see below)
+//   }
+//   cells.on_region_edge[2 * j + 0/1]: the region edges vertex j lies on (-1: none)
+//
+// Exactness. The combinatorial structure is exact for any finite double input: it is decided
+// only by the signs of orient2d and incircle (predicates.hpp). Four or more cocircular sites
+// (every square of a square lattice, every hexagon corner of a triangular lattice) make ONE
+// Voronoi vertex: adjacent Delaunay triangles whose fourth point is exactly on the circle
+// (incircle == 0) are merged, so a lattice cell has exactly 4 or 6 vertices, never a
+// zero-length edge. Each Voronoi vertex is computed once, as the circumcentre of the three
+// lexicographically smallest sites on its circle, so every cell around it gets the same bits,
+// whatever the order of the input or of insertion. Vertices are rounded doubles.
+//
+// Stated cases: a duplicate site (same bits as an earlier one) gets an EMPTY cell; the first
+// occurrence owns the region. Collinear sites give parallel strips. A single site owns the
+// whole region. A site outside the region, or whose cell misses it, gets an empty cell.
+// Sites on the region boundary are ordinary sites. Cells are counter-clockwise and start at
+// their lexicographically smallest vertex.
+//
+// Algorithm: Delaunay triangulation (delaunay.hpp), union of cocircular triangles, the dual
+// walk around each site, then Sutherland-Hodgman clipping of each cell (polygon.hpp) with
+// canonical intersections (shared cell edges stay bit-identical). Expected O(n log n) time,
+// O(n) memory, on spread-out sites.
+#pragma once
+
+#include <vector>
+
+#include "shitsukan/core/status.hpp"
+#include "shitsukan/core/vec.hpp"
+
+namespace shitsukan {
+
+struct VoronoiCells {
+    std::vector<Vec2d> vertices;       // all cells' vertices, concatenated
+    std::vector<int> offsets;          // cell i = vertices[offsets[i] .. offsets[i + 1])
+    std::vector<int> on_region_edge;   // 2 per vertex: region edge indices through it, or -1
+    std::vector<int> duplicate_of;     // per site: -1, or the earlier identical site
+
+    int cell_count() const { return offsets.empty() ? 0 : int(offsets.size()) - 1; }
+    const Vec2d* cell(int i, int* count) const {
+        *count = offsets[std::size_t(i) + 1] - offsets[std::size_t(i)];
+        return vertices.data() + offsets[std::size_t(i)];
+    }
+};
+
+// sites: count >= 1 finite points. region: a convex counter-clockwise polygon, area > 0.
+Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int region_count,
+                     VoronoiCells* out);
+
+}  // namespace shitsukan

@@ -1,0 +1,213 @@
+#include "shitsukan/leather/scale_division.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "shitsukan/geom/polygon.hpp"
+#include "shitsukan/geom/predicates.hpp"
+#include "shitsukan/geom/voronoi.hpp"
+
+namespace shitsukan {
+namespace {
+
+// A stage-2 vertex and the stage-1 edges (global ids) it lies on.
+struct TaggedVertex {
+    Vec2d p;
+    int on[2];
+};
+
+int common_edge(const TaggedVertex& a, const TaggedVertex& b) {
+    for (int i = 0; i < 2; ++i)
+        if (a.on[i] >= 0 && (a.on[i] == b.on[0] || a.on[i] == b.on[1])) return a.on[i];
+    return -1;
+}
+
+// Non-empty cells of a Voronoi division, as polygons with area.
+void collect_cells(const VoronoiCells& cells, std::vector<Vec2d>* verts, std::vector<int>* offsets,
+                   std::vector<int>* site) {
+    for (int i = 0; i < cells.cell_count(); ++i) {
+        int k;
+        const Vec2d* v = cells.cell(i, &k);
+        if (k < 3 || !(polygon_area(v, k) > 0.0)) continue;
+        verts->insert(verts->end(), v, v + k);
+        offsets->push_back(int(verts->size()));
+        if (site) site->push_back(i);
+    }
+}
+
+}  // namespace
+
+Status check_scale_params(const ScaleParams& prm) {
+    if (!(prm.width > 0.0f && prm.height > 0.0f) || !is_finite(prm.width) || !is_finite(prm.height))
+        return Status::error(StatusCode::invalid_argument, "scale pattern: width and height must be > 0 (got %g x %g)",
+                             double(prm.width), double(prm.height));
+    if (!(prm.D > 0.0f) || !is_finite(prm.D))
+        return Status::error(StatusCode::invalid_argument, "scale pattern: seed spacing D must be > 0 (got %g)",
+                             double(prm.D));
+    if (!(prm.d >= 0.0f) || !is_finite(prm.d))
+        return Status::error(StatusCode::invalid_argument,
+                             "scale pattern: distance d from the centre line must be >= 0 (got %g)", double(prm.d));
+    if (!(prm.a >= 0.0f && prm.a <= 1.0f))
+        return Status::error(StatusCode::invalid_argument,
+                             "scale pattern: relative displacement a must be in [0, 1] (got %g)", double(prm.a));
+    if (!(prm.perturbation.p >= 0.0f) || !is_finite(prm.perturbation.p))
+        return Status::error(StatusCode::invalid_argument, "scale pattern: perturbation p must be >= 0 (got %g)",
+                             double(prm.perturbation.p));
+    return Status::success();
+}
+
+Status divide_single_stage(const Vec2d* seeds, int count, float width, float height,
+                           PlanarSubdivision* out, std::vector<int>* face_site) {
+    if (!(width > 0.0f && height > 0.0f) || !is_finite(width) || !is_finite(height))
+        return Status::error(StatusCode::invalid_argument, "divide_single_stage: empty region %g x %g",
+                             double(width), double(height));
+    const Vec2d region[4] = {{0, 0}, {double(width), 0}, {double(width), double(height)}, {0, double(height)}};
+    VoronoiCells cells;
+    SHITSUKAN_TRY(voronoi_cells(seeds, count, region, 4, &cells));
+    std::vector<Vec2d> verts;
+    std::vector<int> offsets(1, 0);
+    if (face_site) face_site->clear();
+    collect_cells(cells, &verts, &offsets, face_site);
+    return build_planar_subdivision(verts.data(), offsets.data(), int(offsets.size()) - 1, out);
+}
+
+Status divide_scales(const ScaleParams& prm, ScaleDivision* out) {
+    if (out == nullptr) return Status::error(StatusCode::invalid_argument, "divide_scales: out is null");
+    SHITSUKAN_TRY(check_scale_params(prm));
+
+    // ---- Stage 1 (§3.1 (1)): vertical division --------------------------------------------
+    SHITSUKAN_TRY(stage1_seeds(prm.width, prm.height, prm.D, prm.d, prm.a, prm.seed, &out->stage1_seeds));
+    SHITSUKAN_TRY(divide_single_stage(out->stage1_seeds.moved.data(), int(out->stage1_seeds.moved.size()),
+                                      prm.width, prm.height, &out->stage1, &out->stage1_site));
+    const PlanarSubdivision& s1 = out->stage1;
+
+    // ---- Stage 2 (§3.1 (2)): horizontal division inside each stage-1 polygon -------------
+    SHITSUKAN_TRY(stage2_columns(prm.width, prm.D, prm.edge_ratio, &out->columns));
+    out->stage2_seeds.original.clear();
+    out->stage2_seeds.moved.clear();
+    out->stage2_row.clear();
+    std::vector<std::vector<TaggedVertex>> cells;  // every stage-2 cell, tagged
+    out->cell_stage1.clear();
+    std::vector<std::vector<Vec2d>> on_edge(s1.edges.size());  // points on each stage-1 edge
+    SeedLayout row;
+    VoronoiCells vc;
+    std::vector<Vec2d> region;
+    for (int f = 0; f < s1.face_count(); ++f) {
+        const int e0 = s1.face_offsets[std::size_t(f)], m = s1.face_offsets[std::size_t(f) + 1] - e0;
+        region.clear();
+        for (int k = 0; k < m; ++k) region.push_back(s1.vertices[std::size_t(s1.face_vertex(s1.face_edges[std::size_t(e0 + k)]))]);
+        // processings 1-2: a row parallel to x through this polygon's own seed, moved along x
+        const int site = out->stage1_site[std::size_t(f)];
+        SHITSUKAN_TRY(stage2_row_seeds(out->columns, prm.a, out->stage1_seeds.moved[std::size_t(site)].y, site,
+                                       prm.seed, &row));
+        out->stage2_seeds.original.insert(out->stage2_seeds.original.end(), row.original.begin(), row.original.end());
+        out->stage2_seeds.moved.insert(out->stage2_seeds.moved.end(), row.moved.begin(), row.moved.end());
+        out->stage2_row.insert(out->stage2_row.end(), row.moved.size(), f);
+        // processing 3: Voronoi division clipped to the stage-1 polygon
+        SHITSUKAN_TRY(voronoi_cells(row.moved.data(), int(row.moved.size()), region.data(), m, &vc));
+        for (int c = 0; c < vc.cell_count(); ++c) {
+            int k;
+            const Vec2d* v = vc.cell(c, &k);
+            if (k < 3 || !(polygon_area(v, k) > 0.0)) continue;
+            std::vector<TaggedVertex> cell;
+            const int base = vc.offsets[std::size_t(c)];
+            for (int i = 0; i < k; ++i) {
+                TaggedVertex t{v[i], {-1, -1}};
+                int r0 = vc.on_region_edge[std::size_t(2 * (base + i))];
+                int r1 = vc.on_region_edge[std::size_t(2 * (base + i) + 1)];
+                // a corner of the stage-1 polygon: take its exact bits, shared by all sides
+                if (r0 >= 0 && r1 >= 0) {
+                    int lo = std::min(r0, r1), hi = std::max(r0, r1);
+                    int corner = (hi == lo + 1) ? hi : ((lo == 0 && hi == m - 1) ? 0 : -1);
+                    if (corner >= 0 &&
+                        orient2d(region[std::size_t((corner + m - 1) % m)], region[std::size_t(corner)],
+                                 region[std::size_t((corner + 1) % m)]) > 0.0)
+                        t.p = region[std::size_t(corner)];
+                }
+                for (int j = 0; j < 2; ++j) {
+                    int r = j == 0 ? r0 : r1;
+                    if (r < 0) continue;
+                    int fe = s1.face_edges[std::size_t(e0 + r)];
+                    t.on[j] = fe >= 0 ? fe : ~fe;
+                }
+                cell.push_back(t);
+            }
+            for (const TaggedVertex& t : cell)
+                for (int g : t.on)
+                    if (g >= 0) on_edge[std::size_t(g)].push_back(t.p);
+            cells.push_back(std::move(cell));
+            out->cell_stage1.push_back(f);
+        }
+    }
+
+    // ---- T junctions: both sides of a stage-1 edge get all points on it ------------------
+    std::vector<std::vector<double>> on_edge_t(s1.edges.size());
+    for (std::size_t g = 0; g < s1.edges.size(); ++g) {
+        Vec2d a = s1.vertices[std::size_t(s1.edges[g].v0)], b = s1.vertices[std::size_t(s1.edges[g].v1)];
+        std::vector<Vec2d>& pts = on_edge[g];
+        auto t_of = [&](Vec2d p) { return dot(p - a, b - a); };
+        std::sort(pts.begin(), pts.end(), [&](Vec2d p, Vec2d q) {
+            double tp = t_of(p), tq = t_of(q);
+            if (tp != tq) return tp < tq;
+            return p.x < q.x || (p.x == q.x && p.y < q.y);
+        });
+        pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+        for (Vec2d p : pts) on_edge_t[g].push_back(t_of(p));
+    }
+    std::vector<Vec2d> verts;
+    std::vector<int> offsets(1, 0);
+    std::vector<int> kept_stage1;
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+        const std::vector<TaggedVertex>& cell = cells[c];
+        const std::size_t n = cell.size();
+        const std::size_t first = verts.size();
+        for (std::size_t i = 0; i < n; ++i) {
+            const TaggedVertex& a = cell[i];
+            const TaggedVertex& b = cell[(i + 1) % n];
+            verts.push_back(a.p);
+            int g = common_edge(a, b);
+            if (g < 0) continue;
+            const std::vector<Vec2d>& pts = on_edge[std::size_t(g)];
+            const std::vector<double>& ts = on_edge_t[std::size_t(g)];
+            Vec2d e0 = s1.vertices[std::size_t(s1.edges[std::size_t(g)].v0)];
+            Vec2d e1 = s1.vertices[std::size_t(s1.edges[std::size_t(g)].v1)];
+            double ta = dot(a.p - e0, e1 - e0), tb = dot(b.p - e0, e1 - e0);
+            if (ta < tb) {
+                for (std::size_t j = 0; j < pts.size(); ++j)
+                    if (ts[j] > ta && ts[j] < tb && pts[j] != a.p && pts[j] != b.p) verts.push_back(pts[j]);
+            } else {
+                for (std::size_t j = pts.size(); j-- > 0;)
+                    if (ts[j] < ta && ts[j] > tb && pts[j] != a.p && pts[j] != b.p) verts.push_back(pts[j]);
+            }
+        }
+        // drop repeats (a corner snapped onto its neighbour)
+        std::size_t w = first;
+        for (std::size_t i = first; i < verts.size(); ++i)
+            if (w == first || verts[i] != verts[w - 1]) verts[w++] = verts[i];
+        verts.resize(w);
+        while (verts.size() - first > 1 && verts[first] == verts.back()) verts.pop_back();
+        if (verts.size() - first < 3 || !(polygon_area(verts.data() + first, int(verts.size() - first)) > 0.0)) {
+            verts.resize(first);
+            continue;
+        }
+        offsets.push_back(int(verts.size()));
+        kept_stage1.push_back(out->cell_stage1[c]);
+    }
+    out->cell_stage1 = kept_stage1;
+    Status s = build_planar_subdivision(verts.data(), offsets.data(), int(offsets.size()) - 1, &out->cells);
+    if (!s) return Status::error(StatusCode::degenerate, "divide_scales: stage-2 cells do not fit: %s", s.message());
+    return Status::success();
+}
+
+Status generate_scale_pattern(const ScaleParams& prm, ScalePattern* pattern, ScaleDivision* steps) {
+    if (pattern == nullptr)
+        return Status::error(StatusCode::invalid_argument, "generate_scale_pattern: pattern is null");
+    ScaleDivision local;
+    ScaleDivision* div = steps ? steps : &local;
+    SHITSUKAN_TRY(divide_scales(prm, div));
+    // processing 4 on the final polygons
+    return perturb_subdivision(div->cells, prm.perturbation, prm.seed, prm.width, prm.height, pattern,
+                               &div->perturbation);
+}
+
+}  // namespace shitsukan

@@ -1,0 +1,80 @@
+// shitsukan/leather/scale_division.hpp — the crocodile-belly scale pattern of tokai1994 §3.1:
+// the two-stage Voronoi division (stage 1 vertical, stage 2 horizontal inside each stage-1
+// polygon) followed by the edge perturbation, delivered as a ScalePattern.
+//
+// Manual
+//   ScaleParams prm;                        // fig. 7: d = 1.0 D, a = 0.25, p = 0.015
+//   ScalePattern pattern;
+//   Status s = generate_scale_pattern(prm, &pattern);   // polygons tiling [0,W] x [0,H]
+//   ScaleDivision steps;                    // optional: every intermediate (figs. 4-6)
+//   generate_scale_pattern(prm, &pattern, &steps);
+//
+//   Single stage (fig. 2, fig. 3): divide_single_stage(seeds, n, W, H, &sub) then
+//   perturb_subdivision(sub, prm.perturbation, seed, W, H, &pattern).
+//
+// Steps (§3.1 (1), (2), each with processings 1-4):
+//   stage 1: two seed rows parallel to y at distance d from the centre line, spacing D,
+//            moved along y (seed_layout.hpp), Voronoi division of the rectangle;
+//   stage 2: for each stage-1 polygon, one seed row parallel to x through its (moved) seed,
+//            columns narrowing toward the left and right edges, moved along x; Voronoi
+//            division clipped to that polygon. The pieces of a stage-1 edge seen from its two
+//            sides are split at each other's end points (T junctions become vertices), so the
+//            final polygons share every edge and form one planar subdivision;
+//   processing 4 once on the final subdivision (edge_perturbation.hpp).
+// Deviation (stated): the paper perturbs stage-1 edges before dividing stage 2. Here stage 2
+// divides the straight (convex) stage-1 polygons and every final edge, including the pieces
+// of stage-1 edges, is perturbed once at the end: each final polygon is then convex before
+// perturbation, which the tiling bound of edge_perturbation.hpp needs.
+//
+// Parameters (validated, Status on error): width, height > 0; D > 0 (chosen default 0.1: ten
+// rows on the unit square); d >= 0 (default 1.0 D); a in [0, 1]; edge_ratio in (0.05, 1];
+// perturbation.p >= 0. NaN anywhere is refused.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "shitsukan/core/status.hpp"
+#include "shitsukan/geom/planar_subdivision.hpp"
+#include "shitsukan/leather/edge_perturbation.hpp"
+#include "shitsukan/leather/scale_pattern.hpp"
+#include "shitsukan/leather/seed_layout.hpp"
+
+namespace shitsukan {
+
+struct ScaleParams {
+    float width = 1.0f, height = 1.0f;  // the paper's square pattern region
+    float D = 0.1f;                     // chosen: seed spacing, 10 rows on the unit square
+    float d = 0.1f;                     // given (fig. 7): d = 1.0 D
+    float a = 0.25f;                    // given (fig. 7)
+    float edge_ratio = kDefaultEdgeRatio;  // chosen: stage-2 spacing at the edges / D
+    PerturbationParams perturbation;    // p = 0.015 given (fig. 7); recursion chosen
+    std::uint32_t seed = 1;
+};
+
+struct ScaleDivision {
+    SeedLayout stage1_seeds;
+    PlanarSubdivision stage1;             // stage-1 polygons, before perturbation
+    std::vector<int> stage1_site;         // stage-1 polygon -> its seed index
+    Stage2Columns columns;
+    SeedLayout stage2_seeds;              // every row, concatenated
+    std::vector<int> stage2_row;          // stage-2 seed -> stage-1 polygon of its row
+    PlanarSubdivision cells;              // final polygons, before perturbation
+    std::vector<int> cell_stage1;         // final polygon -> stage-1 polygon
+    PerturbationReport perturbation;
+};
+
+Status check_scale_params(const ScaleParams& prm);
+
+// Processings 1-3 of both stages (no perturbation).
+Status divide_scales(const ScaleParams& prm, ScaleDivision* out);
+
+// Everything: both stages, then processing 4; `steps` (optional) keeps the intermediates.
+Status generate_scale_pattern(const ScaleParams& prm, ScalePattern* pattern,
+                              ScaleDivision* steps = nullptr);
+
+// One Voronoi division of [0, W] x [0, H] (fig. 2, fig. 3): polygons with area.
+Status divide_single_stage(const Vec2d* seeds, int count, float width, float height,
+                           PlanarSubdivision* out, std::vector<int>* face_site = nullptr);
+
+}  // namespace shitsukan

@@ -1,0 +1,26 @@
+// shitsukan/leather/scale_labels.hpp — the label image of a scale pattern: pixel -> polygon id.
+//
+// Manual
+//   std::vector<int32_t> labels(size_t(w) * h);
+//   Status s = rasterize_scale_labels(pattern, w, h, labels.data());  // row-major, w per row
+//   int id = labels[size_t(j) * w + i];   // the polygon holding pixel (i, j)'s centre
+//
+// Pixel (i, j) is the point ((i + 1/2) W / w, (j + 1/2) H / h) of the pattern (row 0 at y = 0,
+// no flip). Each polygon is scan-converted with the half-open crossing rule: an edge covers
+// scanlines y in [ymin, ymax), its crossing x is computed from its lower end point, and a
+// pixel centre at x belongs to the span [x_in, x_out). Two polygons sharing an edge share its
+// end points bit for bit (ScalePattern guarantees it), hence the same crossing x, so every
+// pixel gets exactly one label. A pattern that does not tile (a gap or an overlap at some pixel
+// centre) returns a Status naming the first such pixel.
+#pragma once
+
+#include <cstdint>
+
+#include "shitsukan/core/status.hpp"
+#include "shitsukan/leather/scale_pattern.hpp"
+
+namespace shitsukan {
+
+Status rasterize_scale_labels(const ScalePattern& pattern, int width, int height, std::int32_t* labels);
+
+}  // namespace shitsukan

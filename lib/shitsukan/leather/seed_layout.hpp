@@ -1,0 +1,87 @@
+// shitsukan/leather/seed_layout.hpp — where the Voronoi seeds go (tokai1994 §3.1 processing 1)
+// and how they move (processing 2, eq. (1): M = D·a·Rnd, Rnd uniform in [-1, 1]).
+//
+// Manual
+//   SeedLayout s;
+//   square_lattice_seeds(1, 1, 0.1f, 0.2f, 7, &s);      // fig. 3 (e)-(h): moved along x and y
+//   triangular_lattice_seeds(1, 1, 0.1f, 0.2f, 7, &s);  // fig. 3 (a)-(d)
+//   stage1_seeds(1, 1, 0.1f, 0.1f, 0.25f, 7, &s);       // fig. 4: W, H, D, d, a, seed
+//   Stage2Columns c; stage2_columns(1, 0.1f, 0.5f, &c); // fig. 6: x positions and spacings
+//   stage2_row_seeds(c, 1, row_y, row_id, 0.25f, 7, &s); // one row, moved along x
+//   s.original[i] = the lattice point, s.moved[i] = after eq. (1)
+//
+// Parameters: width, height > 0 (the pattern rectangle [0, W] x [0, H]); D > 0 the seed
+// spacing, at most 4096 seeds per row or column; a in [0, 1] the relative displacement
+// (a > 0.5 lets neighbours pass each other: allowed, the Voronoi division copes); d >= 0 the
+// distance of the two stage-1 seed rows from the centre line x = W / 2.
+//
+// Rnd is drawn from the coordinate hash of (seed, stream, lattice indices), so a seed's move
+// does not depend on how many seeds were generated before it (DESIGN.md: determinism).
+//
+// Stage-2 spacing law (chosen here; the paper only says the spacing narrows toward the left
+// and right edges): with u = |x - W/2| / (W/2) in [0, 1],
+//   s(u) = D · (1 - (1 - r) · u^2),   r = edge ratio (default 0.5: edge scales half as wide).
+// Columns start at the centre line (x = W/2) and step outward by s evaluated at the middle
+// of each step, until one column lies beyond each edge. In stage 2 eq. (1) uses the local
+// spacing s_k as "D", so a narrow column moves proportionally less.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "shitsukan/core/status.hpp"
+#include "shitsukan/core/vec.hpp"
+
+namespace shitsukan {
+
+struct SeedLayout {
+    std::vector<Vec2d> original;  // lattice points (processing 1)
+    std::vector<Vec2d> moved;     // after the displacement of eq. (1) (processing 2)
+};
+
+// tokai1994 eq. (1): M = D · a · Rnd.
+inline float seed_displacement(float D, float a, float rnd) { return D * a * rnd; }
+
+// Rnd in [-1, 1) from the hash of (seed, stream, i, j).
+float hashed_rnd(std::uint32_t seed, std::uint32_t stream, std::int32_t i, std::int32_t j);
+
+// Streams of hashed_rnd, one per use.
+enum SeedStream : std::uint32_t {
+    kStreamLatticeX = 1,
+    kStreamLatticeY = 2,
+    kStreamStage1 = 3,
+    kStreamStage2 = 4,
+    kStreamPerturbation = 5,
+};
+
+constexpr float kDefaultEdgeRatio = 0.5f;  // chosen: stage-2 spacing at the edges = D / 2
+
+// Square lattice ((i + 1/2) D, (j + 1/2) D) over the rectangle plus one ring outside it,
+// each seed moved along x and along y by independent eq. (1) displacements.
+Status square_lattice_seeds(float width, float height, float D, float a, std::uint32_t seed,
+                            SeedLayout* out);
+// Triangular lattice: rows D·sqrt(3)/2 apart, odd rows shifted by D/2; moved along x and y.
+Status triangular_lattice_seeds(float width, float height, float D, float a, std::uint32_t seed,
+                                SeedLayout* out);
+
+// Stage 1 (fig. 4): two rows parallel to y at x = W/2 - d (left, j-th seed index 2j) and
+// x = W/2 + d (right, index 2j + 1), y = (j + 1/2) D, one seed beyond each end; moved along y.
+Status stage1_seeds(float width, float height, float D, float d, float a, std::uint32_t seed,
+                    SeedLayout* out);
+
+struct Stage2Columns {
+    std::vector<double> x;        // column positions, increasing
+    std::vector<double> spacing;  // the local spacing s_k used in eq. (1)
+    std::vector<int> index;       // signed column number: 0 on the centre line
+};
+
+// Stage 2 (fig. 6): column positions from the spacing law above.
+Status stage2_columns(float width, float D, float edge_ratio, Stage2Columns* out);
+float stage2_spacing(float width, float D, float edge_ratio, double x);  // s(u(x))
+
+// One stage-2 row at height row_y: a seed on every column, moved along x by s_k · a · Rnd;
+// row_id selects the random numbers (the tokai pipeline uses the stage-1 seed index).
+Status stage2_row_seeds(const Stage2Columns& columns, float a, double row_y, int row_id,
+                        std::uint32_t seed, SeedLayout* out);
+
+}  // namespace shitsukan

@@ -1,0 +1,232 @@
+// Tests for lib/shitsukan/geom/{predicates,delaunay,voronoi,polygon}: exact predicates, the
+// nearest-site property, exact lattice cells, the stated degenerate cases, bad input.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "shitsukan/core/prng.hpp"
+#include "shitsukan/geom/delaunay.hpp"
+#include "shitsukan/geom/polygon.hpp"
+#include "shitsukan/geom/predicates.hpp"
+#include "shitsukan/geom/voronoi.hpp"
+
+using namespace shitsukan;
+
+namespace {
+
+const Vec2d kSquare[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+
+std::vector<Vec2d> random_sites(int n, std::uint64_t seed) {
+    Pcg32 rng(seed, 7);
+    std::vector<Vec2d> s(static_cast<std::size_t>(n));
+    for (auto& p : s) p = {rng.uniform_double(), rng.uniform_double()};
+    return s;
+}
+
+// Every sample of cell i is at least as near to site i as to any other site (1e-12 slack).
+void check_nearest_site(const std::vector<Vec2d>& sites, const VoronoiCells& cells, int samples_per_cell) {
+    Pcg32 rng(99, 3);
+    for (int i = 0; i < cells.cell_count(); ++i) {
+        int k;
+        const Vec2d* v = cells.cell(i, &k);
+        if (k == 0) continue;
+        Vec2d lo = v[0], hi = v[0];
+        for (int j = 0; j < k; ++j) {
+            lo = {std::min(lo.x, v[j].x), std::min(lo.y, v[j].y)};
+            hi = {std::max(hi.x, v[j].x), std::max(hi.y, v[j].y)};
+        }
+        int tested = 0;
+        for (int tries = 0; tested < samples_per_cell && tries < 50 * samples_per_cell; ++tries) {
+            Vec2d q{lo.x + (hi.x - lo.x) * rng.uniform_double(), lo.y + (hi.y - lo.y) * rng.uniform_double()};
+            if (!point_in_polygon(v, k, q)) continue;
+            ++tested;
+            double own = length_squared(q - sites[std::size_t(i)]);
+            for (const Vec2d& s : sites) REQUIRE(own <= length_squared(q - s) + 1e-12);
+        }
+    }
+}
+
+double total_area(const VoronoiCells& cells) {
+    double a = 0;
+    for (int i = 0; i < cells.cell_count(); ++i) {
+        int k;
+        const Vec2d* v = cells.cell(i, &k);
+        if (k) a += polygon_area(v, k);
+    }
+    return a;
+}
+
+}  // namespace
+
+TEST_CASE("predicates: exact signs where the floating-point value is wrong") {
+    // Shewchuk's classic: points nearly on the line y = x, perturbed by one ulp.
+    Vec2d a{0.5, 0.5}, b{12, 12}, c{24, 24};
+    CHECK(orient2d(a, b, c) == 0.0);
+    Vec2d d{0.5 + std::ldexp(1.0, -53), 0.5};
+    CHECK(orient2d(d, b, c) < 0.0);  // d is one ulp below the line: d, b, c turn clockwise
+    CHECK(orient2d(d, b, c) == orient2d_exact(d, b, c));
+    // four cocircular lattice points and a point one ulp off the circle
+    Vec2d p{0.1, 0.1}, q{0.2, 0.1}, r{0.2, 0.2}, s{0.1, 0.2};
+    CHECK(incircle(p, q, r, s) == 0.0);
+    CHECK(incircle_exact(p, q, r, s) == 0.0);
+    CHECK(incircle(p, q, r, Vec2d{0.1, std::nextafter(0.2, 0.0)}) > 0.0);
+    CHECK(incircle(p, q, r, Vec2d{0.1, std::nextafter(0.2, 1.0)}) < 0.0);
+    // random agreement of filter and exact path
+    Pcg32 rng(5, 5);
+    for (int i = 0; i < 2000; ++i) {
+        Vec2d v[4];
+        for (auto& x : v) x = {rng.uniform_double(), rng.uniform_double()};
+        CHECK((orient2d(v[0], v[1], v[2]) > 0) == (orient2d_exact(v[0], v[1], v[2]) > 0));
+        double f = incircle(v[0], v[1], v[2], v[3]), e = incircle_exact(v[0], v[1], v[2], v[3]);
+        CHECK((f > 0) == (e > 0));
+        CHECK((f < 0) == (e < 0));
+    }
+}
+
+TEST_CASE("delaunay: empty circumcircles on random points") {
+    auto sites = random_sites(300, 1);
+    DelaunayTriangulation dt;
+    REQUIRE(build_delaunay(sites.data(), int(sites.size()), &dt).ok());
+    for (const auto& t : dt.triangles) {
+        CHECK(orient2d(dt.points[std::size_t(t.v[0])], dt.points[std::size_t(t.v[1])], dt.points[std::size_t(t.v[2])]) > 0);
+        for (std::size_t p = 0; p < sites.size(); ++p)
+            REQUIRE(incircle(dt.points[std::size_t(t.v[0])], dt.points[std::size_t(t.v[1])],
+                             dt.points[std::size_t(t.v[2])], sites[p]) <= 0.0);
+    }
+    CHECK(dt.triangles.size() == 2 * (sites.size() + 4) - 2 - 4);  // Euler, 4 hull points
+}
+
+TEST_CASE("voronoi: every sample is nearest to its own site, cells tile the region") {
+    for (int n : {1, 2, 10, 200}) {
+        auto sites = random_sites(n, std::uint64_t(n));
+        VoronoiCells cells;
+        REQUIRE(voronoi_cells(sites.data(), n, kSquare, 4, &cells).ok());
+        CHECK(total_area(cells) == doctest::Approx(1.0).epsilon(1e-12));
+        check_nearest_site(sites, cells, 40);
+    }
+}
+
+TEST_CASE("voronoi: a = 0 square lattice -> equal squares with exactly 4 vertices") {
+    std::vector<Vec2d> sites;
+    const double D = 1.0 / 7.0;
+    for (int j = -1; j <= 7; ++j)
+        for (int i = -1; i <= 7; ++i) sites.push_back({(i + 0.5) * D, (j + 0.5) * D});
+    VoronoiCells cells;
+    REQUIRE(voronoi_cells(sites.data(), int(sites.size()), kSquare, 4, &cells).ok());
+    int interior = 0;
+    for (int c = 0; c < cells.cell_count(); ++c) {
+        int k;
+        const Vec2d* v = cells.cell(c, &k);
+        Vec2d s = sites[std::size_t(c)];
+        if (s.x < 0 || s.x > 1 || s.y < 0 || s.y > 1) {
+            CHECK(k == 0);
+            continue;
+        }
+        ++interior;
+        REQUIRE(k == 4);
+        CHECK(polygon_area(v, k) == doctest::Approx(D * D).epsilon(1e-12));
+        for (int j = 0; j < k; ++j) CHECK(std::fabs(std::fabs(v[j].x - s.x) - D / 2) < 1e-12);
+    }
+    CHECK(interior == 49);
+    check_nearest_site(sites, cells, 20);
+}
+
+TEST_CASE("voronoi: a = 0 triangular lattice -> equal regular hexagons with exactly 6 vertices") {
+    std::vector<Vec2d> sites;
+    const double D = 0.1, h = D * std::sqrt(3.0) / 2.0;
+    for (int j = -2; j <= 14; ++j)
+        for (int i = -2; i <= 12; ++i) sites.push_back({(i + 0.5 * (j & 1)) * D, j * h});
+    VoronoiCells cells;
+    REQUIRE(voronoi_cells(sites.data(), int(sites.size()), kSquare, 4, &cells).ok());
+    int hexagons = 0;
+    const double side = D / std::sqrt(3.0);
+    for (int c = 0; c < cells.cell_count(); ++c) {
+        int k;
+        const Vec2d* v = cells.cell(c, &k);
+        Vec2d s = sites[std::size_t(c)];
+        if (s.x < side || s.x > 1 - side || s.y < side || s.y > 1 - side) continue;  // may be clipped
+        ++hexagons;
+        REQUIRE(k == 6);
+        CHECK(polygon_area(v, k) == doctest::Approx(1.5 * std::sqrt(3.0) * side * side).epsilon(1e-12));
+        for (int j = 0; j < k; ++j) CHECK(length(v[j] - s) == doctest::Approx(side).epsilon(1e-12));
+    }
+    CHECK(hexagons > 60);
+    CHECK(total_area(cells) == doctest::Approx(1.0).epsilon(1e-12));
+}
+
+TEST_CASE("voronoi: stated degenerate cases") {
+    VoronoiCells cells;
+    SUBCASE("single site owns the region") {
+        Vec2d s{0.3, 0.9};
+        REQUIRE(voronoi_cells(&s, 1, kSquare, 4, &cells).ok());
+        int k;
+        const Vec2d* v = cells.cell(0, &k);
+        CHECK(k == 4);
+        CHECK(polygon_area(v, k) == 1.0);
+    }
+    SUBCASE("duplicates: the first occurrence owns the cell, the copy is empty") {
+        std::vector<Vec2d> s = {{0.2, 0.2}, {0.7, 0.6}, {0.2, 0.2}, {0.4, 0.9}};
+        REQUIRE(voronoi_cells(s.data(), 4, kSquare, 4, &cells).ok());
+        int k;
+        cells.cell(2, &k);
+        CHECK(k == 0);
+        CHECK(cells.duplicate_of[2] == 0);
+        cells.cell(0, &k);
+        CHECK(k >= 3);
+        CHECK(total_area(cells) == doctest::Approx(1.0).epsilon(1e-12));
+    }
+    SUBCASE("collinear sites: parallel strips") {
+        std::vector<Vec2d> s;
+        for (int i = 0; i < 5; ++i) s.push_back({0.1 + 0.2 * i, 0.5});
+        REQUIRE(voronoi_cells(s.data(), 5, kSquare, 4, &cells).ok());
+        for (int i = 0; i < 5; ++i) {
+            int k;
+            const Vec2d* v = cells.cell(i, &k);
+            CHECK(k == 4);
+            CHECK(polygon_area(v, k) == doctest::Approx(0.2).epsilon(1e-12));
+        }
+    }
+    SUBCASE("sites on the region boundary and corners") {
+        std::vector<Vec2d> s = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0}, {0.5, 0.5}};
+        REQUIRE(voronoi_cells(s.data(), int(s.size()), kSquare, 4, &cells).ok());
+        CHECK(total_area(cells) == doctest::Approx(1.0).epsilon(1e-12));
+        check_nearest_site(s, cells, 50);
+    }
+}
+
+TEST_CASE("voronoi: the same cells, bit for bit, whatever the input order") {
+    std::vector<Vec2d> sites;
+    for (int j = 0; j < 6; ++j)
+        for (int i = 0; i < 6; ++i) sites.push_back({(i + 0.5) / 6.0, (j + 0.5) / 6.0});
+    auto extra = random_sites(30, 4);
+    sites.insert(sites.end(), extra.begin(), extra.end());
+    VoronoiCells a, b;
+    REQUIRE(voronoi_cells(sites.data(), int(sites.size()), kSquare, 4, &a).ok());
+    std::vector<int> perm(sites.size());
+    for (std::size_t i = 0; i < perm.size(); ++i) perm[i] = int((i * 37 + 11) % perm.size());
+    std::vector<Vec2d> shuffled(sites.size());
+    for (std::size_t i = 0; i < perm.size(); ++i) shuffled[i] = sites[std::size_t(perm[i])];
+    REQUIRE(voronoi_cells(shuffled.data(), int(shuffled.size()), kSquare, 4, &b).ok());
+    for (std::size_t i = 0; i < perm.size(); ++i) {
+        int ka, kb;
+        const Vec2d* va = a.cell(perm[i], &ka);
+        const Vec2d* vb = b.cell(int(i), &kb);
+        REQUIRE(ka == kb);
+        for (int j = 0; j < ka; ++j) CHECK(va[j] == vb[j]);
+    }
+}
+
+TEST_CASE("voronoi: bad input gives a status, not a crash") {
+    VoronoiCells cells;
+    Vec2d s{0.5, 0.5};
+    CHECK(voronoi_cells(&s, 0, kSquare, 4, &cells).code() == StatusCode::invalid_argument);
+    Vec2d nan_site{std::nan(""), 0.5};
+    CHECK(!voronoi_cells(&nan_site, 1, kSquare, 4, &cells).ok());
+    const Vec2d flat[4] = {{0, 0}, {1, 0}, {2, 0}, {3, 0}};
+    CHECK(!voronoi_cells(&s, 1, flat, 4, &cells).ok());
+    const Vec2d clockwise[4] = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};
+    CHECK(!voronoi_cells(&s, 1, clockwise, 4, &cells).ok());
+    CHECK(!voronoi_cells(&s, 1, kSquare, 2, &cells).ok());
+}

@@ -1,0 +1,282 @@
+// Tests for lib/shitsukan/leather/{seed_layout,scale_division,edge_perturbation,scale_labels}:
+// tokai1994 §3.1 — the two-stage division tiles the square before and after perturbation,
+// shared edges stay shared, the pattern statistics the figures claim, bad input.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "shitsukan/core/prng.hpp"
+#include "shitsukan/geom/polygon.hpp"
+#include "shitsukan/leather/scale_division.hpp"
+#include "shitsukan/leather/scale_labels.hpp"
+
+using namespace shitsukan;
+
+namespace {
+
+double pattern_area(const ScalePattern& pat) {
+    double a = 0;
+    for (int f = 0; f < pat.polygon_count(); ++f) {
+        int n;
+        const Vec2* v = pat.polygon(f, &n);
+        a += polygon_area(v, n);
+    }
+    return a;
+}
+
+// Every random sample point lies in exactly one polygon.
+void check_exactly_one(const ScalePattern& pat, int samples, std::uint64_t seed) {
+    std::vector<Vec2> lo, hi;
+    for (int f = 0; f < pat.polygon_count(); ++f) {
+        int n;
+        const Vec2* v = pat.polygon(f, &n);
+        Vec2 l = v[0], h = v[0];
+        for (int k = 0; k < n; ++k) {
+            l = {std::min(l.x, v[k].x), std::min(l.y, v[k].y)};
+            h = {std::max(h.x, v[k].x), std::max(h.y, v[k].y)};
+        }
+        lo.push_back(l);
+        hi.push_back(h);
+    }
+    Pcg32 rng(seed, 1);
+    int bad = 0;
+    for (int s = 0; s < samples; ++s) {
+        Vec2 q{rng.uniform() * pat.width, rng.uniform() * pat.height};
+        int count = 0;
+        for (int f = 0; f < pat.polygon_count(); ++f) {
+            if (q.x < lo[std::size_t(f)].x || q.x > hi[std::size_t(f)].x || q.y < lo[std::size_t(f)].y ||
+                q.y > hi[std::size_t(f)].y)
+                continue;
+            int n;
+            const Vec2* v = pat.polygon(f, &n);
+            if (point_in_polygon(v, n, q)) ++count;
+        }
+        if (count != 1) ++bad;
+    }
+    CHECK(bad == 0);
+}
+
+// Star-shaped from the centroid: every edge turns counter-clockwise seen from it.
+int count_not_star(const ScalePattern& pat) {
+    int bad = 0;
+    for (int f = 0; f < pat.polygon_count(); ++f) {
+        int n;
+        const Vec2* v = pat.polygon(f, &n);
+        Vec2d c{pat.centroids[std::size_t(f)].x, pat.centroids[std::size_t(f)].y};
+        for (int k = 0; k < n; ++k) {
+            Vec2d a{v[k].x, v[k].y}, b{v[(k + 1) % n].x, v[(k + 1) % n].y};
+            if (!(cross(a - c, b - c) > 0.0)) {
+                ++bad;
+                break;
+            }
+        }
+    }
+    return bad;
+}
+
+ScaleParams fig07() { return ScaleParams{}; }
+
+}  // namespace
+
+TEST_CASE("seed layouts: eq. (1) displacement bounds and the stage-2 spacing law") {
+    SeedLayout s;
+    REQUIRE(stage1_seeds(1, 1, 0.1f, 0.1f, 0.25f, 3, &s).ok());
+    for (std::size_t i = 0; i < s.moved.size(); ++i) {
+        CHECK(s.moved[i].x == s.original[i].x);  // moved along y only
+        CHECK(std::fabs(s.moved[i].y - s.original[i].y) <= 0.1 * 0.25 + 1e-9);
+        CHECK(std::fabs(std::fabs(s.original[i].x - 0.5) - 0.1) < 1e-7);
+    }
+    Stage2Columns c;
+    REQUIRE(stage2_columns(1, 0.1f, 0.5f, &c).ok());
+    CHECK(c.x.front() < 0.0);
+    CHECK(c.x.back() > 1.0);
+    for (std::size_t k = 1; k < c.x.size(); ++k) {
+        double gap = c.x[k] - c.x[k - 1];
+        CHECK(gap > 0.049);  // never narrower than D * edge ratio
+        CHECK(gap <= 0.1 + 1e-9);
+    }
+    CHECK(stage2_spacing(1, 0.1f, 0.5f, 0.0) == doctest::Approx(0.05));
+    CHECK(stage2_spacing(1, 0.1f, 0.5f, 0.5) == doctest::Approx(0.1));
+    REQUIRE(stage2_row_seeds(c, 0.25f, 0.3, 4, 3, &s).ok());
+    for (std::size_t i = 0; i < s.moved.size(); ++i) {
+        CHECK(s.moved[i].y == 0.3);  // moved along x only
+        CHECK(std::fabs(s.moved[i].x - s.original[i].x) <= 0.25 * c.spacing[i] + 1e-9);
+    }
+}
+
+TEST_CASE("two-stage division tiles the square, before and after perturbation (fig. 7 settings)") {
+    for (std::uint32_t seed : {1u, 2u, 3u, 17u}) {
+        ScaleParams prm = fig07();
+        prm.seed = seed;
+        ScaleDivision steps;
+        ScalePattern pat, straight;
+        REQUIRE(generate_scale_pattern(prm, &pat, &steps).ok());
+        CHECK(outer_edges_on_box(steps.stage1, {0, 0}, {1, 1}));
+        CHECK(outer_edges_on_box(steps.cells, {0, 0}, {1, 1}));
+        REQUIRE(subdivision_to_pattern(steps.cells, 1, 1, &straight).ok());
+        CHECK(pattern_area(straight) == doctest::Approx(1.0).epsilon(1e-9));
+        CHECK(pattern_area(pat) == doctest::Approx(1.0).epsilon(1e-9));
+        check_exactly_one(straight, 3000, seed);
+        check_exactly_one(pat, 3000, seed + 100);
+        CHECK(count_not_star(pat) == 0);
+        // every pixel centre labelled exactly once (the function refuses gaps and overlaps)
+        std::vector<std::int32_t> labels(256 * 256);
+        REQUIRE(rasterize_scale_labels(pat, 256, 256, labels.data()).ok());
+        CHECK(steps.perturbation.edges > 0);
+        CHECK(steps.perturbation.max_offset > 0.0);
+        CHECK(steps.perturbation.max_offset <= 2.0 * 0.015);  // sum of the level amplitudes
+    }
+}
+
+TEST_CASE("perturbation: large p stays a tiling, p = 0 changes nothing") {
+    ScaleParams prm = fig07();
+    prm.perturbation.p = 0.2f;  // far beyond the bound: every curve is scaled down to it
+    ScaleDivision steps;
+    ScalePattern pat;
+    REQUIRE(generate_scale_pattern(prm, &pat, &steps).ok());
+    CHECK(pattern_area(pat) == doctest::Approx(1.0).epsilon(1e-9));
+    check_exactly_one(pat, 3000, 5);
+    CHECK(count_not_star(pat) == 0);
+    std::vector<std::int32_t> labels(200 * 300);
+    CHECK(rasterize_scale_labels(pat, 200, 300, labels.data()).ok());
+    prm.perturbation.p = 0.0f;
+    ScalePattern flat, straight;
+    REQUIRE(generate_scale_pattern(prm, &flat, &steps).ok());
+    REQUIRE(subdivision_to_pattern(steps.cells, 1, 1, &straight).ok());
+    CHECK(flat.vertices.size() == straight.vertices.size());
+}
+
+TEST_CASE("determinism: same seed, same polygons bit for bit; edge curves independent of order") {
+    ScalePattern a, b;
+    REQUIRE(generate_scale_pattern(fig07(), &a).ok());
+    REQUIRE(generate_scale_pattern(fig07(), &b).ok());
+    REQUIRE(a.vertices.size() == b.vertices.size());
+    CHECK(std::equal(a.vertices.begin(), a.vertices.end(), b.vertices.begin()));
+    CHECK(a.polygon_offsets == b.polygon_offsets);
+    // single stage with the seeds in reverse order: the same polygon for each seed
+    SeedLayout s;
+    REQUIRE(square_lattice_seeds(1, 1, 0.125f, 0.3f, 9, &s).ok());
+    std::vector<Vec2d> rev(s.moved.rbegin(), s.moved.rend());
+    PlanarSubdivision s1, s2;
+    std::vector<int> site1, site2;
+    REQUIRE(divide_single_stage(s.moved.data(), int(s.moved.size()), 1, 1, &s1, &site1).ok());
+    REQUIRE(divide_single_stage(rev.data(), int(rev.size()), 1, 1, &s2, &site2).ok());
+    ScalePattern p1, p2;
+    REQUIRE(perturb_subdivision(s1, PerturbationParams{}, 4, 1, 1, &p1).ok());
+    REQUIRE(perturb_subdivision(s2, PerturbationParams{}, 4, 1, 1, &p2).ok());
+    REQUIRE(p1.polygon_count() == p2.polygon_count());
+    const int n = int(s.moved.size());
+    int matched = 0;
+    for (int f = 0; f < p1.polygon_count(); ++f) {
+        int g = -1;
+        for (int h = 0; h < p2.polygon_count(); ++h)
+            if (n - 1 - site2[std::size_t(h)] == site1[std::size_t(f)]) g = h;
+        REQUIRE(g >= 0);
+        int k1, k2;
+        const Vec2* v1 = p1.polygon(f, &k1);
+        const Vec2* v2 = p2.polygon(g, &k2);
+        REQUIRE(k1 == k2);
+        // same cyclic sequence (the start vertex may differ)
+        int start = -1;
+        for (int k = 0; k < k2; ++k)
+            if (v2[k] == v1[0]) start = k;
+        REQUIRE(start >= 0);
+        bool same = true;
+        for (int k = 0; k < k1; ++k) same = same && v1[k] == v2[(start + k) % k2];
+        matched += same;
+    }
+    CHECK(matched == p1.polygon_count());
+}
+
+TEST_CASE("pattern statistics claimed by fig. 7: near-quadrilateral scales, narrower at the edges") {
+    double corners = 0, cells = 0, centre_w = 0, edge_w = 0;
+    int centre_n = 0, edge_n = 0;
+    for (std::uint32_t seed = 1; seed <= 8; ++seed) {
+        ScaleParams prm = fig07();
+        prm.seed = seed;
+        ScaleDivision steps;
+        REQUIRE(divide_scales(prm, &steps).ok());
+        const PlanarSubdivision& sub = steps.cells;
+        for (int f = 0; f < sub.face_count(); ++f) {
+            std::vector<Vec2d> v;
+            for (int k = sub.face_offsets[std::size_t(f)]; k < sub.face_offsets[std::size_t(f) + 1]; ++k)
+                v.push_back(sub.vertices[std::size_t(sub.face_vertex(sub.face_edges[std::size_t(k)]))]);
+            const int n = int(v.size());
+            // corners: vertices where the boundary turns (T junctions of the other side do not)
+            int c = 0;
+            double lo = v[0].x, hi = v[0].x, ylo = v[0].y, yhi = v[0].y;
+            for (int k = 0; k < n; ++k) {
+                Vec2d a = v[std::size_t((k + n - 1) % n)], b = v[std::size_t(k)], d = v[std::size_t((k + 1) % n)];
+                if (std::fabs(cross(b - a, d - b)) > 1e-9 * length(b - a) * length(d - b)) ++c;
+                lo = std::min(lo, b.x);
+                hi = std::max(hi, b.x);
+                ylo = std::min(ylo, b.y);
+                yhi = std::max(yhi, b.y);
+            }
+            if (ylo <= 0.0 || yhi >= 1.0) continue;  // cut by the square's top or bottom
+            corners += c;
+            cells += 1;
+            double mid = 0.5 * (lo + hi);
+            if (lo > 0.0 && hi < 1.0 && std::fabs(mid - 0.5) > 0.3 && std::fabs(mid - 0.5) < 0.45) {
+                edge_w += hi - lo;
+                ++edge_n;
+            }
+            if (std::fabs(mid - 0.5) > 0.1 && std::fabs(mid - 0.5) < 0.2) {
+                centre_w += hi - lo;
+                ++centre_n;
+            }
+        }
+    }
+    const double mean_corners = corners / cells;
+    const double ratio = (edge_w / edge_n) / (centre_w / centre_n);
+    MESSAGE("stage-2 cells: mean corner count " << mean_corners << ", edge / centre width " << ratio);
+    CHECK(mean_corners > 3.8);
+    CHECK(mean_corners < 4.6);
+    CHECK(ratio < 0.85);
+    CHECK(ratio > 0.4);
+}
+
+TEST_CASE("bad input: a clear status, no crash") {
+    ScalePattern pat;
+    ScaleParams prm;
+    prm.a = 1.5f;
+    CHECK(generate_scale_pattern(prm, &pat).code() == StatusCode::invalid_argument);
+    prm = ScaleParams{};
+    prm.a = -0.1f;
+    CHECK(!generate_scale_pattern(prm, &pat).ok());
+    prm = ScaleParams{};
+    prm.a = std::nanf("");
+    CHECK(!generate_scale_pattern(prm, &pat).ok());
+    prm = ScaleParams{};
+    prm.D = 0.0f;
+    CHECK(!generate_scale_pattern(prm, &pat).ok());
+    prm.D = -0.1f;
+    CHECK(!generate_scale_pattern(prm, &pat).ok());
+    prm = ScaleParams{};
+    prm.perturbation.p = -0.01f;
+    CHECK(!generate_scale_pattern(prm, &pat).ok());
+    prm.perturbation.p = std::nanf("");
+    CHECK(!generate_scale_pattern(prm, &pat).ok());
+    prm = ScaleParams{};
+    prm.width = 0.0f;
+    CHECK(!generate_scale_pattern(prm, &pat).ok());
+    prm = ScaleParams{};
+    prm.D = 1e-6f;
+    CHECK(generate_scale_pattern(prm, &pat).code() == StatusCode::too_large);
+    SeedLayout s;
+    CHECK(!square_lattice_seeds(1, 1, 0.1f, 2.0f, 1, &s).ok());
+    PlanarSubdivision sub;
+    Vec2d one{0.5, 0.5};
+    CHECK(!divide_single_stage(&one, 1, 0.0f, 1.0f, &sub).ok());
+    std::vector<std::int32_t> labels(4);
+    CHECK(!rasterize_scale_labels(pat, 0, 4, labels.data()).ok());
+    // a pattern with a hole is refused by the labeller
+    ScalePattern holey;
+    holey.vertices = {{0, 0}, {0.5f, 0}, {0.5f, 1}, {0, 1}};
+    holey.polygon_offsets = {0, 4};
+    holey.centroids = {{0.25f, 0.5f}};
+    CHECK(rasterize_scale_labels(holey, 2, 2, labels.data()).code() == StatusCode::degenerate);
+}
