@@ -134,3 +134,19 @@ TEST_CASE("patch strip: the arc-length mapping gives near-uniform texel density 
     // The shared edge is one column of vertices: same texture point on both sides.
     CHECK(corrected.vertex_count() == columns * 25);
 }
+
+TEST_CASE("patch strip: anchor measures each row from a chosen column") {
+    BezierPatch a = wavy_patch(0.0f, 1.0f), b = wavy_patch(1.0f, 1.0f);
+    for (int j = 0; j < 4; ++j) b.p[0][j] = a.p[3][j];
+    BezierPatch strip[2] = {a, b};
+    PatchStripOptions opt;
+    opt.segments_u = opt.segments_v = 8;
+    opt.anchor = 1.5f;  // the middle of the second patch: column 12
+    opt.texture_origin = {0.25f, 0.0f};
+    TriangleMesh m;
+    REQUIRE(tessellate_patch_strip(strip, 2, opt, &m).ok());
+    for (int j = 0; j <= 8; ++j) CHECK(m.uvs[std::size_t(j * 17 + 12)].x == doctest::Approx(0.25f));
+    CHECK(m.uvs[0].x < 0.0f);
+    opt.anchor = 2.5f;
+    CHECK(!tessellate_patch_strip(strip, 2, opt, &m).ok());
+}

@@ -36,6 +36,10 @@ Status tessellate_patch_strip(const BezierPatch* patches, int count,
     if (options.chords < 1 || options.chords > 1024)
         return Status::error(StatusCode::invalid_argument,
                              "patch strip: chords must be 1..1024 (got %d)", options.chords);
+    if (!(options.anchor >= 0.0f && options.anchor <= float(count)))
+        return Status::error(StatusCode::invalid_argument,
+                             "patch strip: anchor must be in [0, %d] (got %g)", count,
+                             double(options.anchor));
     if (!(options.texture_scale > 0.0f) || !is_finite(options.texture_scale) ||
         !is_finite(options.texture_origin))
         return Status::error(StatusCode::invalid_argument,
@@ -93,6 +97,11 @@ Status tessellate_patch_strip(const BezierPatch* patches, int count,
                 x += chord_length(patches[k], {u0, v}, {u1, v}, options.chords);
                 texture[std::size_t(j) * std::size_t(columns) + std::size_t(c)].x = x;
             }
+            // Measure the row from the anchor column.
+            int anchor = int(std::lround(options.anchor * float(nu)));
+            float x_anchor = texture[std::size_t(j) * std::size_t(columns) + std::size_t(anchor)].x;
+            for (int c = 0; c < columns; ++c)
+                texture[std::size_t(j) * std::size_t(columns) + std::size_t(c)].x -= x_anchor;
         }
         for (int c = 0; c < columns; ++c) {
             float u;

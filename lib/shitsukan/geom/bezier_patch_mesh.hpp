@@ -22,8 +22,12 @@
 // the plain parameter stretched to the same overall size: x = origin.x + scale · (sum of the
 // previous patches' mean row lengths + u · this patch's mean row length), y likewise: this
 // is the distorted mapping §4 corrects.
+// anchor (strip parameter in [0, count], default 0): each row's x is measured from the
+// point of the row at that position (rounded to a vertex column; arc_length mode), e.g.
+// 0.5 = the middle of the first patch, so the texture's centre line follows a panel's middle.
 // Options (defaults): segments_u = segments_v = 16 per patch (1..1024), arc_length = true,
-// texture_scale = 1, texture_origin = (0, 0), chords = 8 per segment for the arc lengths.
+// texture_scale = 1, texture_origin = (0, 0), chords = 8 per segment for the arc lengths,
+// anchor = 0.
 // Normals: du x dv of eq. (5), averaged across a shared edge. Triangles counter-clockwise
 // seen from the normal side.
 #pragma once
@@ -41,6 +45,7 @@ struct PatchStripOptions {
     float texture_scale = 1.0f;
     Vec2 texture_origin{0, 0};
     int chords = 8;
+    float anchor = 0.0f;
 };
 
 // invalid_argument for count < 1, sizes outside range, a non-finite or non-positive scale,

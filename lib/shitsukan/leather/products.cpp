@@ -11,10 +11,10 @@ struct BodyRow {
     float y, w, d, k;
 };
 constexpr BodyRow kBodyRows[4] = {
-    {0.00f, 0.56f, 0.20f, 0.08f},
-    {0.34f, 0.60f, 0.24f, 0.09f},
-    {0.70f, 0.63f, 0.16f, 0.06f},
-    {0.92f, 0.64f, 0.03f, 0.012f},
+    {0.00f, 0.56f, 0.21f, 0.10f},
+    {0.34f, 0.60f, 0.26f, 0.13f},
+    {0.70f, 0.63f, 0.17f, 0.08f},
+    {0.92f, 0.64f, 0.03f, 0.015f},
 };
 
 // The four control points of side `side` (0 front, 1 right, 2 back, 3 left) of a rounded
@@ -95,8 +95,8 @@ Handbag make_handbag() {
             }
     }
     // The clasp: two kiss-lock knobs on the frame.
-    bag.clasp[0] = {{-0.05f, 0.97f, 0.012f}, 0.045f, -0.6f};
-    bag.clasp[1] = {{0.05f, 0.97f, -0.012f}, 0.045f, -0.6f};
+    bag.clasp[0] = {{-0.05f, 0.95f, 0.012f}, 0.045f, -0.6f};
+    bag.clasp[1] = {{0.05f, 0.95f, -0.012f}, 0.045f, -0.6f};
     return bag;
 }
 

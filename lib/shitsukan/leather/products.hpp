@@ -18,10 +18,10 @@
 //     of half-width W, half-depth D and corner cut k (the patches meet at the 45-degree
 //     points of the rounded corners, with collinear control points there: G1, no crease):
 //        control row  y      W      D      k
-//        0 (bottom)   0.00   0.56   0.20   0.08
-//        1            0.34   0.60   0.24   0.09
-//        2            0.70   0.63   0.16   0.06
-//        3 (frame)    0.92   0.64   0.03   0.012
+//        0 (bottom)   0.00   0.56   0.21   0.10
+//        1            0.34   0.60   0.26   0.13
+//        2            0.70   0.63   0.17   0.08
+//        3 (frame)    0.92   0.64   0.03   0.015
 //     The bag bulges at row 1 and closes to a thin lens at the frame on top.
 //   patch 4, the bottom: one patch whose four edges are the four bottom rows of the body, so
 //     it closes the tube exactly; its inner control points lie in y = 0.
@@ -31,7 +31,7 @@
 //     strap of radius 0.045 (the cubic half-circle (R,0) (R,4R/3) (-R,4R/3) (-R,0) laid
 //     across z and along the arch's outward normal).
 //   clasp: two spherical segments (the kiss-lock knobs), radius 0.045, centred at
-//     (-0.05, 0.97, +0.012) and (+0.05, 0.97, -0.012), cut off below -0.6·radius (where
+//     (-0.05, 0.95, +0.012) and (+0.05, 0.95, -0.012), cut off below -0.6·radius (where
 //     they sit on the frame).
 // Tessellating 0-3 as one strip and 5-6 as one strip gives a texture that runs around the
 // bag and along the handle without a break (geom/bezier_patch_mesh.hpp).
