@@ -99,7 +99,7 @@ TEST_CASE("belt: a G1 chain of quarter turns; bad designs are refused") {
     std::vector<BezierPatch> belt;
     BeltDesign d;
     REQUIRE(make_belt(d, &belt).ok());
-    CHECK(belt.size() == 7);  // 1.75 turns
+    CHECK(belt.size() == 6);  // 1.5 turns
     for (std::size_t k = 0; k + 1 < belt.size(); ++k)
         for (int s = 0; s <= 4; ++s) {
             float v = float(s) / 4.0f;

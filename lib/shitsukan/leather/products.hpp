@@ -69,10 +69,10 @@ struct Handbag {
 Handbag make_handbag();
 
 struct BeltDesign {
-    float width = 0.35f;   // across the belt (y)
-    float r0 = 0.55f;      // inner radius of the coil
-    float r1 = 1.35f;      // outer radius
-    float turns = 1.75f;   // coil turns (quarter turns are rounded up)
+    float width = 0.40f;   // across the belt (y)
+    float r0 = 0.70f;      // inner radius of the coil
+    float r1 = 1.25f;      // outer radius
+    float turns = 1.5f;    // coil turns (quarter turns are rounded up)
 };
 
 // invalid_argument for non-finite or non-positive sizes, r1 <= r0, or turns outside 0.25..8.
