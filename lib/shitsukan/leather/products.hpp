@@ -18,9 +18,9 @@
 //     of half-width W, half-depth D and corner cut k (the patches meet at the 45-degree
 //     points of the rounded corners, with collinear control points there: G1, no crease):
 //        control row  y      W      D      k
-//        0 (bottom)   0.00   0.56   0.21   0.10
-//        1            0.34   0.60   0.26   0.13
-//        2            0.70   0.63   0.17   0.08
+//        0 (bottom)   0.00   0.56   0.28   0.12
+//        1            0.34   0.60   0.33   0.14
+//        2            0.70   0.63   0.21   0.09
 //        3 (frame)    0.92   0.64   0.03   0.015
 //     The bag bulges at row 1 and closes to a thin lens at the frame on top.
 //   patch 4, the bottom: one patch whose four edges are the four bottom rows of the body, so
