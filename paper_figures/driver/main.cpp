@@ -150,6 +150,7 @@ int main(int argc, char** argv) {
         std::fflush(stdout);
         results.push_back({s, st.ok(), st.message(), secs, ctx.parameters(), ctx.notes(), ctx.outputs()});
     }
+    make_dir(out);
     write_index(out, results, quick);
     double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_all).count();
     std::printf("paper_figures: %zu figures, %d failed, %.1f s; index: %s/index.md\n", figures.size(),

@@ -16,6 +16,23 @@
 //   Axes: see image/plot.hpp (data -> pixel mapping, ticks, labels, drawn on any Canvas).
 // Coordinates are pixels, x right, y down, (0, 0) the top-left corner of the image.
 // Pixel (i, j) covers [i, i+1) x [j, j+1): the centre of pixel (i, j) is (i + 0.5, j + 0.5).
+//
+// Conventions shared by every canvas (RasterCanvas: raster_canvas.hpp, SvgCanvas:
+// svg_canvas.hpp; this header includes both):
+// - Strokes are centred on the geometry, `width` pixels wide, with round caps and round
+//   joins (a line is the capsule of radius width/2 around the segment). A 1-pixel line
+//   lands exactly on pixel row j when drawn at y = j + 0.5.
+// - Fills use the even-odd rule; fill_contours() takes several contours at once (holes).
+// - Rectangles: corner + size; a negative size extends to the left / upwards. rect_outline
+//   strokes the rectangle's edges with square corners.
+// - Markers: `size` is the full extent in pixels. dot = filled disc, circle / square /
+//   triangle = outlines, cross = x, plus = +; their stroke is max(1, size/8) wide.
+// - Text: the built-in font (font.hpp), 6·scale pixels per character, 9·scale per line,
+//   top-left anchored, '\n' starts a new line, UTF-8 for the Greek letters; text_width()
+//   and text_height() in font.hpp measure it (both canvases use the same metrics).
+//   scale < 1 counts as 1.
+// - Non-finite coordinates (NaN, inf) draw nothing; shapes partly or fully outside the
+//   canvas are clipped, never written outside the image.
 #pragma once
 
 #include <string>
@@ -41,6 +58,18 @@ public:
     virtual void rect_outline(Vec2 corner, Vec2 size, Rgb8 color, float width = 1.0f) = 0;
     virtual void marker(Vec2 center, MarkerShape shape, float size, Rgb8 color) = 0;
     virtual void text(Vec2 top_left, const std::string& text, Rgb8 color, int scale = 1) = 0;
+
+    // Added with the implementations (defaults built on the calls above):
+    // fill several closed contours as one shape, even-odd rule (a contour inside another is
+    // a hole). contour_sizes[i] points are taken in turn from `points`.
+    virtual void fill_contours(const Vec2* points, const int* contour_sizes, int contours,
+                               Rgb8 color);
+    // Paint the whole canvas.
+    virtual void clear(Rgb8 color);
 };
 
 }  // namespace shitsukan
+
+// The two implementations, so that including the contract is enough to draw.
+#include "shitsukan/image/raster_canvas.hpp"
+#include "shitsukan/image/svg_canvas.hpp"

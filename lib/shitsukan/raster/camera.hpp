@@ -7,6 +7,10 @@
 //   cam.view (world -> eye, right-handed, looking down -z), cam.projection (eye -> clip,
 //   OpenGL convention: NDC z in [-1, 1]), cam.width / cam.height (the full frame in pixels).
 //   project(cam, p) -> screen (x right, y down, pixels; z = depth in [0, 1]).
+//   clip_to_screen(cam, clip) -> the same mapping from homogeneous clip coordinates (w > 0);
+//   the rasterizer maps its vertices with the same operations.
+//   Ranges: fov_y_degrees in (0, 180), 0 < near_plane < far_plane, half_height > 0,
+//   width, height >= 1. These are not validated here; draw_mesh() checks the camera.
 #pragma once
 
 #include "shitsukan/core/vec.hpp"
@@ -27,5 +31,6 @@ Camera perspective_camera(Vec3 eye, Vec3 target, Vec3 up, float fov_y_degrees, i
 Camera orthographic_camera(Vec3 eye, Vec3 target, Vec3 up, float half_height, int width,
                            int height, float near_plane = 0.05f, float far_plane = 100.0f);
 Vec3 project(const Camera& camera, Vec3 world_point);
+Vec3 clip_to_screen(const Camera& camera, Vec4 clip);
 
 }  // namespace shitsukan

@@ -26,6 +26,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/core/vec.hpp"
@@ -66,6 +67,8 @@ struct FrameBand {
     int frame_width = 0, frame_height = 0;
 };
 
+// Counters of one or more draw calls: draw_mesh() ADDS to them, so one RasterStats can sum
+// a whole frame (note that a mesh drawn band by band is counted once per band).
 struct RasterStats {
     long triangles_in = 0;       // triangles submitted
     long triangles_drawn = 0;    // after culling and clipping, touching this band
@@ -74,9 +77,21 @@ struct RasterStats {
     long fragments_shaded = 0;   // shader calls that passed the depth test
 };
 
+// Largest frame side accepted (chosen here: keeps the 8-bit sub-pixel fixed-point screen
+// coordinates, guard band included, far inside 64-bit products).
+constexpr int kMaxFrameSize = 16384;
+
 FrameBand full_frame_band(const RgbView& color, const FloatView& depth);
 FrameBand make_band(const RgbView& color, const FloatView& depth, int y0, int frame_width, int frame_height);
 void clear_band(const FrameBand& band, Rgb8 background);
+
+// The checks draw_mesh() (and draw_wireframe()) run before drawing anything, for callers
+// that want them up front: buffer sizes and the band's place in the camera's frame; counts,
+// pointers and every index of the mesh; a finite, invertible model matrix (and its normal
+// matrix, the inverse transpose).
+Status validate_band(const Camera& camera, const FrameBand& band);
+Status validate_mesh(const MeshView& mesh);
+Status validate_model(const Mat4& model, Mat4* normal_matrix);
 
 // Draws the mesh into the band. Shades only fragments that pass the depth test
 // (early-z: each pixel's front layer is shaded exactly once for a closed mesh when drawn
@@ -87,8 +102,10 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
                  const DrawOptions& options, FragmentShader shader, void* user,
                  RasterStats* stats = nullptr);
 
-// Convenience for lambdas and functors (no allocation: passes &f as the user pointer).
-template <class F>
+// Convenience for lambdas and functors taking (const Fragment&) (no allocation: passes &f as
+// the user pointer). A captureless lambda taking (const Fragment&, void*) goes to the
+// function-pointer overload above.
+template <class F, class = decltype(std::declval<F&>()(std::declval<const Fragment&>()))>
 Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
                  const DrawOptions& options, F& shader, RasterStats* stats = nullptr) {
     return draw_mesh(

@@ -1,0 +1,233 @@
+#include "shitsukan/image/png16.hpp"
+
+#include <cstdio>
+#include <vector>
+
+namespace shitsukan {
+
+namespace detail {
+
+namespace {
+
+// CRC-32 with the reflected polynomial 0xEDB88320 (PNG spec. annex D), one table entry
+// per byte value.
+struct CrcTable {
+    std::uint32_t entry[256];
+    CrcTable() {
+        for (std::uint32_t n = 0; n < 256; ++n) {
+            std::uint32_t c = n;
+            for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+            entry[n] = c;
+        }
+    }
+};
+
+const CrcTable& crc_table() {
+    static const CrcTable table;
+    return table;
+}
+
+}  // namespace
+
+// `crc` is the running value before the final inversion (start with 0xFFFFFFFF).
+std::uint32_t crc32_update(std::uint32_t crc, const std::uint8_t* data, std::size_t size) {
+    const CrcTable& t = crc_table();
+    for (std::size_t i = 0; i < size; ++i)
+        crc = t.entry[(crc ^ data[i]) & 0xFFu] ^ (crc >> 8);
+    return crc;
+}
+
+std::uint32_t crc32(const std::uint8_t* data, std::size_t size) {
+    return crc32_update(0xFFFFFFFFu, data, size) ^ 0xFFFFFFFFu;
+}
+
+// RFC 1950 §8.2: s1 = 1 + sum of bytes, s2 = sum of the s1 values, both modulo 65521 (the
+// largest prime below 2^16); the value is s2·65536 + s1. Start with 1.
+std::uint32_t adler32_update(std::uint32_t adler, const std::uint8_t* data, std::size_t size) {
+    std::uint32_t s1 = adler & 0xFFFFu, s2 = adler >> 16;
+    for (std::size_t i = 0; i < size; ++i) {
+        s1 = (s1 + data[i]) % 65521u;
+        s2 = (s2 + s1) % 65521u;
+    }
+    return (s2 << 16) | s1;
+}
+
+std::uint32_t adler32(const std::uint8_t* data, std::size_t size) {
+    return adler32_update(1u, data, size);
+}
+
+}  // namespace detail
+
+namespace {
+
+constexpr std::size_t kStoredBlockMax = 65535;  // RFC 1951: LEN is 16 bits
+
+// Writes one PNG file; remembers the first failure so the calls can be chained.
+class PngWriter {
+public:
+    explicit PngWriter(std::FILE* f) : f_(f) {}
+    bool ok() const { return ok_; }
+
+    void raw(const std::uint8_t* data, std::size_t size) {
+        if (ok_ && size > 0 && std::fwrite(data, 1, size, f_) != size) ok_ = false;
+    }
+    void begin_chunk(std::uint32_t length, const char type[4]) {
+        std::uint8_t head[8];
+        put_u32(head, length);
+        for (int i = 0; i < 4; ++i) head[4 + i] = std::uint8_t(type[i]);
+        raw(head, 8);
+        crc_ = detail::crc32_update(0xFFFFFFFFu, head + 4, 4);  // the CRC covers type + data
+    }
+    void chunk_data(const std::uint8_t* data, std::size_t size) {
+        crc_ = detail::crc32_update(crc_, data, size);
+        raw(data, size);
+    }
+    void end_chunk() {
+        std::uint8_t c[4];
+        put_u32(c, crc_ ^ 0xFFFFFFFFu);
+        raw(c, 4);
+    }
+
+    static void put_u32(std::uint8_t* p, std::uint32_t v) {  // PNG integers are big-endian
+        p[0] = std::uint8_t(v >> 24);
+        p[1] = std::uint8_t(v >> 16);
+        p[2] = std::uint8_t(v >> 8);
+        p[3] = std::uint8_t(v);
+    }
+
+private:
+    std::FILE* f_;
+    bool ok_ = true;
+    std::uint32_t crc_ = 0;
+};
+
+// The zlib stream inside IDAT: raw bytes cut into stored deflate blocks, Adler-32 at the end.
+class StoredDeflate {
+public:
+    StoredDeflate(PngWriter& out, std::size_t total) : out_(out), left_(total) {}
+
+    void header() {
+        // CMF 0x78: deflate with a 32K window; FLG 0x01: no dictionary, 0x7801 % 31 == 0.
+        const std::uint8_t h[2] = {0x78, 0x01};
+        out_.chunk_data(h, 2);
+    }
+    void write(const std::uint8_t* data, std::size_t size) {
+        while (size > 0) {
+            if (in_block_ == 0) start_block();
+            std::size_t n = size < in_block_ ? size : in_block_;
+            out_.chunk_data(data, n);
+            adler_ = detail::adler32_update(adler_, data, n);
+            data += n;
+            size -= n;
+            in_block_ -= n;
+            left_ -= n;
+        }
+    }
+    void finish() {
+        std::uint8_t a[4];
+        PngWriter::put_u32(a, adler_);
+        out_.chunk_data(a, 4);
+    }
+
+    // Bytes the stream takes for `total` raw bytes.
+    static std::uint64_t stream_size(std::uint64_t total) {
+        std::uint64_t blocks = total == 0 ? 1 : (total + kStoredBlockMax - 1) / kStoredBlockMax;
+        return 2 + total + 5 * blocks + 4;
+    }
+
+private:
+    void start_block() {
+        std::size_t len = left_ < kStoredBlockMax ? left_ : kStoredBlockMax;
+        bool last = len == left_;
+        // BFINAL bit, BTYPE = 00 (stored), padding to the byte; LEN, NLEN little-endian.
+        std::uint8_t h[5] = {std::uint8_t(last ? 1 : 0), std::uint8_t(len & 0xFF),
+                             std::uint8_t(len >> 8), std::uint8_t(~len & 0xFF),
+                             std::uint8_t((~len >> 8) & 0xFF)};
+        out_.chunk_data(h, 5);
+        in_block_ = len;
+    }
+    PngWriter& out_;
+    std::size_t left_;
+    std::size_t in_block_ = 0;
+    std::uint32_t adler_ = 1;
+};
+
+// Encode rows of `channels` 16-bit samples; sample(x, y, c) gives each value.
+template <class SampleFn>
+Status encode_png16(const char* path, int width, int height, int channels, bool empty,
+                    SampleFn sample) {
+    if (path == nullptr || path[0] == '\0')
+        return Status::error(StatusCode::invalid_argument, "PNG path is empty");
+    if (empty)
+        return Status::error(StatusCode::invalid_argument,
+                             "cannot write %s: image is empty (%d x %d)", path, width, height);
+    const std::uint64_t row_bytes = 1 + std::uint64_t(width) * std::uint64_t(channels) * 2;
+    const std::uint64_t raw_bytes = row_bytes * std::uint64_t(height);
+    const std::uint64_t idat_bytes = StoredDeflate::stream_size(raw_bytes);
+    if (idat_bytes > 0x7FFFFFFFull)
+        return Status::error(StatusCode::too_large,
+                             "cannot write %s: %d x %d x %d samples need %llu bytes, more than "
+                             "one PNG chunk holds (2147483647)",
+                             path, width, height, channels, (unsigned long long)idat_bytes);
+    std::FILE* f = std::fopen(path, "wb");
+    if (!f) return Status::error(StatusCode::io_error, "cannot open %s for writing", path);
+
+    PngWriter png(f);
+    const std::uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    png.raw(signature, 8);
+
+    std::uint8_t ihdr[13];
+    PngWriter::put_u32(ihdr, std::uint32_t(width));
+    PngWriter::put_u32(ihdr + 4, std::uint32_t(height));
+    ihdr[8] = 16;                                  // bit depth
+    ihdr[9] = std::uint8_t(channels == 1 ? 0 : 2);  // colour type: gray or RGB
+    ihdr[10] = 0;                                  // compression: deflate
+    ihdr[11] = 0;                                  // filter method 0 (per-row filter byte)
+    ihdr[12] = 0;                                  // no interlace
+    png.begin_chunk(13, "IHDR");
+    png.chunk_data(ihdr, 13);
+    png.end_chunk();
+
+    png.begin_chunk(std::uint32_t(idat_bytes), "IDAT");
+    StoredDeflate z(png, std::size_t(raw_bytes));
+    z.header();
+    std::vector<std::uint8_t> row(static_cast<std::size_t>(row_bytes));
+    for (int y = 0; y < height && png.ok(); ++y) {
+        row[0] = 0;  // filter type None
+        std::uint8_t* p = row.data() + 1;
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < channels; ++c) {
+                std::uint16_t v = sample(x, y, c);
+                *p++ = std::uint8_t(v >> 8);  // big-endian samples
+                *p++ = std::uint8_t(v & 0xFF);
+            }
+        z.write(row.data(), row.size());
+    }
+    z.finish();
+    png.end_chunk();
+
+    png.begin_chunk(0, "IEND");
+    png.end_chunk();
+
+    bool ok = png.ok();
+    ok = (std::fclose(f) == 0) && ok;
+    if (!ok) return Status::error(StatusCode::io_error, "writing %s failed", path);
+    return Status::success();
+}
+
+}  // namespace
+
+Status write_png16(const char* path, const Gray16View& image) {
+    return encode_png16(path, image.width, image.height, 1, image.empty(),
+                        [&](int x, int y, int) { return image.row(y)[x]; });
+}
+
+Status write_png16(const char* path, const Rgb16View& image) {
+    return encode_png16(path, image.width, image.height, 3, image.empty(),
+                        [&](int x, int y, int c) {
+                            const Rgb16& p = image.row(y)[x];
+                            return c == 0 ? p.r : (c == 1 ? p.g : p.b);
+                        });
+}
+
+}  // namespace shitsukan

@@ -1,0 +1,50 @@
+// shitsukan/image/png16.hpp — 16-bit PNG output (height maps, high-precision gray/RGB).
+//
+// Manual
+//   Gray16Image height(512, 512);                  // 0 .. 65535 per sample
+//   Status s = write_png16("height.png", height.view());
+//   Rgb16Image rgb(256, 256, Rgb16{65535, 0, 0});
+//   Status s = write_png16("normals.png", rgb.view());
+// stb_image_write only writes 8-bit PNGs, so this is a small encoder of its own, following
+// the PNG specification (ISO/IEC 15948): the 8-byte signature, then chunks
+// (length, type, data, CRC-32 of type + data): IHDR (size, bit depth 16, colour type 0 =
+// gray or 2 = RGB, no interlace), one IDAT holding a zlib stream (RFC 1950: header 78 01,
+// the deflate data, the Adler-32 of the raw bytes) and IEND. The deflate data (RFC 1951)
+// is made of stored, uncompressed blocks of at most 65535 bytes: the file is about as big
+// as the raw samples (2 bytes each, big-endian, one filter byte 0 per row), which is the
+// price of a few dozen lines any reader can check. Rows are streamed through a one-row
+// buffer; views with a stride are handled.
+// Errors: empty image or path -> invalid_argument; an image whose data would not fit one
+// PNG chunk (2^31 - 1 bytes) -> too_large; open or write failures -> io_error (the path
+// is in the message). Host side (stdio).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "shitsukan/core/status.hpp"
+#include "shitsukan/image/image.hpp"
+
+namespace shitsukan {
+
+struct Rgb16 {
+    std::uint16_t r = 0, g = 0, b = 0;
+};
+inline bool operator==(Rgb16 a, Rgb16 b) { return a.r == b.r && a.g == b.g && a.b == b.b; }
+inline bool operator!=(Rgb16 a, Rgb16 b) { return !(a == b); }
+
+using Rgb16View = ImageView<Rgb16>;
+using Rgb16Image = Image<Rgb16>;
+
+Status write_png16(const char* path, const Gray16View& image);
+Status write_png16(const char* path, const Rgb16View& image);
+
+namespace detail {
+// The two checksums, exposed for the tests (known vectors).
+std::uint32_t crc32_update(std::uint32_t crc, const std::uint8_t* data, std::size_t size);
+std::uint32_t crc32(const std::uint8_t* data, std::size_t size);     // PNG / zlib CRC-32
+std::uint32_t adler32_update(std::uint32_t adler, const std::uint8_t* data, std::size_t size);
+std::uint32_t adler32(const std::uint8_t* data, std::size_t size);   // zlib Adler-32
+}  // namespace detail
+
+}  // namespace shitsukan

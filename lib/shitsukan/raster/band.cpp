@@ -1,0 +1,106 @@
+// small-device: yes (no allocation, no exceptions)
+#include <limits>
+
+#include "shitsukan/raster/rasterizer.hpp"
+
+namespace shitsukan {
+
+FrameBand full_frame_band(const RgbView& color, const FloatView& depth) {
+    return make_band(color, depth, 0, color.width, color.height);
+}
+
+FrameBand make_band(const RgbView& color, const FloatView& depth, int y0, int frame_width,
+                    int frame_height) {
+    FrameBand band;
+    band.color = color;
+    band.depth = depth;
+    band.y0 = y0;
+    band.frame_width = frame_width;
+    band.frame_height = frame_height;
+    return band;
+}
+
+// Depth +inf: any finite fragment depth is nearer than an empty pixel.
+void clear_band(const FrameBand& band, Rgb8 background) {
+    if (!band.color.empty()) fill(band.color, background);
+    if (!band.depth.empty()) fill(band.depth, std::numeric_limits<float>::infinity());
+}
+
+}  // namespace shitsukan
+
+namespace shitsukan {
+
+namespace {
+bool finite_matrix(const Mat4& m) {
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            if (!is_finite(m.m[i][j])) return false;
+    return true;
+}
+}  // namespace
+
+Status validate_band(const Camera& camera, const FrameBand& band) {
+    if (camera.width < 1 || camera.height < 1 || camera.width > kMaxFrameSize ||
+        camera.height > kMaxFrameSize)
+        return Status::error(StatusCode::invalid_argument,
+                             "camera frame is %d x %d pixels; each side must be in [1, %d]",
+                             camera.width, camera.height, kMaxFrameSize);
+    if (!finite_matrix(camera.view) || !finite_matrix(camera.projection))
+        return Status::error(StatusCode::invalid_argument,
+                             "camera view or projection matrix has a NaN/inf entry");
+    if (band.color.empty() || band.depth.empty())
+        return Status::error(StatusCode::invalid_argument,
+                             "band is empty (colour %d x %d, depth %d x %d): nothing to draw into",
+                             band.color.width, band.color.height, band.depth.width,
+                             band.depth.height);
+    if (band.color.width != band.depth.width || band.color.height != band.depth.height)
+        return Status::error(StatusCode::invalid_argument,
+                             "band colour buffer is %d x %d but its depth buffer is %d x %d",
+                             band.color.width, band.color.height, band.depth.width,
+                             band.depth.height);
+    if (band.frame_width != camera.width || band.frame_height != camera.height)
+        return Status::error(StatusCode::invalid_argument,
+                             "band belongs to a %d x %d frame but the camera's frame is %d x %d",
+                             band.frame_width, band.frame_height, camera.width, camera.height);
+    if (band.color.width != band.frame_width)
+        return Status::error(StatusCode::invalid_argument,
+                             "band is %d pixels wide; a band spans the whole frame width %d",
+                             band.color.width, band.frame_width);
+    if (band.y0 < 0 || band.y0 + band.color.height > band.frame_height)
+        return Status::error(StatusCode::invalid_argument,
+                             "band rows [%d, %d) are outside the frame rows [0, %d)", band.y0,
+                             band.y0 + band.color.height, band.frame_height);
+    return Status::success();
+}
+
+Status validate_mesh(const MeshView& mesh) {
+    if (mesh.triangle_count < 0 || mesh.vertex_count < 0)
+        return Status::error(StatusCode::invalid_argument,
+                             "mesh has %d triangles and %d vertices; counts must be >= 0",
+                             mesh.triangle_count, mesh.vertex_count);
+    if (mesh.triangle_count == 0) return Status::success();
+    if (mesh.indices == nullptr || mesh.positions == nullptr || mesh.vertex_count == 0)
+        return Status::error(StatusCode::invalid_argument,
+                             "mesh has %d triangles but %s", mesh.triangle_count,
+                             mesh.indices == nullptr ? "no index array" : "no vertices");
+    long n = long(mesh.triangle_count) * 3;
+    for (long i = 0; i < n; ++i)
+        if (mesh.indices[i] >= std::uint32_t(mesh.vertex_count))
+            return Status::error(StatusCode::invalid_argument,
+                                 "triangle %ld corner %ld has index %u, out of range for %d "
+                                 "vertices",
+                                 i / 3, i % 3, unsigned(mesh.indices[i]), mesh.vertex_count);
+    return Status::success();
+}
+
+Status validate_model(const Mat4& model, Mat4* normal_matrix) {
+    bool ok = finite_matrix(model);
+    Mat4 inv = ok ? inverse(model, &ok) : Mat4::identity();
+    if (!ok)
+        return Status::error(StatusCode::invalid_argument,
+                             "model matrix is singular or has a NaN/inf entry");
+    *normal_matrix = transpose(inv);  // normals transform by the inverse transpose
+    return Status::success();
+}
+
+}  // namespace shitsukan

@@ -1,0 +1,357 @@
+// small-device: yes (no allocation, no exceptions)
+//
+// The scanline rasterizer. Per triangle:
+//   1. fetch its three vertices, transform them (clip space, world space, normals),
+//   2. clip in homogeneous space (clip.hpp), fan-triangulate the polygon,
+//   3. per sub-triangle: divide by w, snap to 1/256 pixel, cull by the sign of the area,
+//   4. walk the scanlines of the band: per row, the span between the left and right edge
+//      follows from exact integer arithmetic (top-left rule), per pixel the depth is tested
+//      before the shader is called (early z), and attributes are interpolated
+//      perspective-correctly.
+// Every per-pixel value is a function of the pixel and the triangle only (nothing is
+// stepped incrementally from the top of the triangle or of the band), so any band of rows
+// gives the same bits as the full frame.
+#include <cstdint>
+
+#include "shitsukan/raster/clip.hpp"
+#include "shitsukan/raster/rasterizer.hpp"
+
+namespace shitsukan {
+
+namespace {
+
+using i64 = std::int64_t;
+
+constexpr int kSubpixelBits = 8;             // chosen here: 1/256 pixel vertex positions
+constexpr i64 kSubpixel = i64(1) << kSubpixelBits;
+constexpr i64 kHalfPixel = kSubpixel / 2;    // pixel centres are at integer + 1/2
+
+// The attributes of one original mesh vertex, in the form the fragment needs them.
+struct VertexData {
+    Vec3 object_position, world_position, normal, object_normal, color;
+    Vec2 uv;
+};
+
+// The original triangle. Its clip-space corners are computed for every triangle; the rest
+// (world positions, normals, uv, colours) only when a part of it survives culling and lies
+// in the band (prepare), since most triangles of a band render do not.
+struct SourceTriangle {
+    VertexData v[3];
+    const std::uint32_t* corner_index = nullptr;  // the three mesh indices
+    Vec3d object_cross;                           // (p1 - p0) x (p2 - p0), nonzero
+    int index = 0;
+    bool ready = false;
+};
+
+struct MeshContext {
+    const MeshView* mesh;
+    const Mat4* model;
+    const Mat4* normal_matrix;
+};
+
+// A sub-triangle corner after the divide: fixed-point screen position, depth, 1/w and the
+// barycentric coordinates in the original triangle.
+struct ScreenVertex {  // no default member values: arrays of these are not zeroed
+    i64 x, y;     // pixels · 256
+    float z;      // depth in [0, 1]
+    float inv_w;  // 1 / w_clip, for perspective-correct interpolation
+    Vec3 bary;
+};
+
+struct DrawContext {
+    MeshContext mesh;
+    const FrameBand* band;
+    CullMode cull;
+    FragmentShader shader;
+    void* user;
+    long fragments = 0;
+};
+
+// ceil(a / b) for b > 0, exact for negative a too.
+inline i64 ceil_div(i64 a, i64 b) { return a >= 0 ? (a + b - 1) / b : -((-a) / b); }
+
+// The first pixel column whose centre lies at or right of the edge e0 -> e1 on the scanline
+// through the fixed-point height yc (e0.y <= yc < e1.y). Exact: x_edge = e0.x + dx·(yc -
+// e0.y)/dy is compared as a fraction, so a centre exactly on an edge is decided the same way
+// by both triangles sharing it. Used as the start of a span (left edge: centre on the edge is
+// inside) and as its exclusive end (right edge: centre on the edge is outside): that is the
+// top-left rule for non-horizontal edges.
+inline i64 first_column_at_or_right_of(const ScreenVertex& e0, const ScreenVertex& e1, i64 yc) {
+    i64 dy = e1.y - e0.y;
+    i64 n = e0.x * dy + (e1.x - e0.x) * (yc - e0.y);  // x_edge · dy
+    // centre 256·x + 128 >= n / dy  <=>  x >= (n - 128·dy) / (256·dy)
+    return ceil_div(n - kHalfPixel * dy, kSubpixel * dy);
+}
+
+inline Vec3d to_double(Vec3 v) { return {double(v.x), double(v.y), double(v.z)}; }
+
+inline i64 to_fixed(float v) {
+    float s = v * float(kSubpixel);
+    return i64(s < 0.0f ? s - 0.5f : s + 0.5f);  // round half away from zero
+}
+
+// One square root and one division per vector: this runs twice per fragment.
+inline Vec3 normalize_or(Vec3 v, Vec3 fallback) {
+    float l2 = v.x * v.x + v.y * v.y + v.z * v.z;
+    if (!(l2 > 0.0f) || !(l2 < 3.0e38f)) return fallback;
+    return v * (1.0f / std::sqrt(l2));
+}
+
+// M·(p, 1) without the divide (inline: three of these per triangle).
+inline Vec4 transform_homogeneous(const Mat4& m, Vec3 p) {
+    return {m.m[0][0] * p.x + m.m[0][1] * p.y + m.m[0][2] * p.z + m.m[0][3],
+            m.m[1][0] * p.x + m.m[1][1] * p.y + m.m[1][2] * p.z + m.m[1][3],
+            m.m[2][0] * p.x + m.m[2][1] * p.y + m.m[2][2] * p.z + m.m[2][3],
+            m.m[3][0] * p.x + m.m[3][1] * p.y + m.m[3][2] * p.z + m.m[3][3]};
+}
+
+// transform_point and transform_vector of core/vec, inline (same operations, same bits).
+inline Vec3 model_point(const Mat4& m, Vec3 p) {
+    Vec4 r = transform_homogeneous(m, p);
+    if (r.w != 0.0f && r.w != 1.0f) return {r.x / r.w, r.y / r.w, r.z / r.w};
+    return {r.x, r.y, r.z};
+}
+inline Vec3 model_vector(const Mat4& m, Vec3 v) {
+    return {m.m[0][0] * v.x + m.m[0][1] * v.y + m.m[0][2] * v.z,
+            m.m[1][0] * v.x + m.m[1][1] * v.y + m.m[1][2] * v.z,
+            m.m[2][0] * v.x + m.m[2][1] * v.y + m.m[2][2] * v.z};
+}
+
+// The per-vertex attributes of the original triangle: world position, world and object
+// normals (the plane's when the mesh has none), uv and colour.
+void prepare(const MeshContext& mc, SourceTriangle* t) {
+    const MeshView& mesh = *mc.mesh;
+    double cross_length = std::sqrt(length_squared(t->object_cross));
+    Vec3 object_n = to_float(t->object_cross / cross_length);
+    Vec3 world_n = normalize_or(model_vector(*mc.normal_matrix, object_n), object_n);
+    for (int k = 0; k < 3; ++k) {
+        std::uint32_t i = t->corner_index[k];
+        VertexData& v = t->v[k];
+        v.world_position = model_point(*mc.model, v.object_position);
+        v.uv = mesh.uvs ? mesh.uvs[i] : Vec2{0, 0};
+        v.color = mesh.colors ? mesh.colors[i] : Vec3{1, 1, 1};
+        if (mesh.normals) {
+            v.object_normal = normalize_or(mesh.normals[i], object_n);
+            v.normal = normalize_or(model_vector(*mc.normal_matrix, v.object_normal), world_n);
+        } else {
+            v.object_normal = object_n;  // flat: the plane's normal
+            v.normal = world_n;
+        }
+    }
+    t->ready = true;
+}
+
+// Fills the fragment's surface point from the perspective-correct barycentrics b.
+void interpolate(const SourceTriangle& t, Vec3 b, Fragment* f) {
+    const VertexData& p = t.v[0];
+    const VertexData& q = t.v[1];
+    const VertexData& r = t.v[2];
+    f->object_position = p.object_position * b.x + q.object_position * b.y + r.object_position * b.z;
+    f->world_position = p.world_position * b.x + q.world_position * b.y + r.world_position * b.z;
+    f->normal = normalize_or(p.normal * b.x + q.normal * b.y + r.normal * b.z, p.normal);
+    f->object_normal = normalize_or(p.object_normal * b.x + q.object_normal * b.y +
+                                        r.object_normal * b.z,
+                                    p.object_normal);
+    f->uv = p.uv * b.x + q.uv * b.y + r.uv * b.z;
+    f->color = p.color * b.x + q.color * b.y + r.color * b.z;
+}
+
+// Rasterizes one sub-triangle into the band. Returns true when it passed culling and
+// touches the band's rows.
+bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& a,
+                     const ScreenVertex& b, const ScreenVertex& c) {
+    const FrameBand& band = *ctx.band;
+    // Twice the signed area, in (1/256 pixel)^2. Screen y points down, so a counter-
+    // clockwise (front) triangle of the world has a negative area here.
+    i64 area2 = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+    if (area2 == 0) return false;
+    bool front = area2 < 0;
+    if ((ctx.cull == CullMode::back && !front) || (ctx.cull == CullMode::front && front))
+        return false;
+
+    // Sort the corners by y: v0 top, v1 middle, v2 bottom.
+    const ScreenVertex* v0 = &a;
+    const ScreenVertex* v1 = &b;
+    const ScreenVertex* v2 = &c;
+    if (v1->y < v0->y) { const ScreenVertex* t = v0; v0 = v1; v1 = t; }
+    if (v2->y < v1->y) { const ScreenVertex* t = v1; v1 = v2; v2 = t; }
+    if (v1->y < v0->y) { const ScreenVertex* t = v0; v0 = v1; v1 = t; }
+
+    // Rows whose centre lies in [v0.y, v2.y): the top vertex row is in, the bottom one is
+    // out (the top-left rule for horizontal edges), intersected with the band.
+    i64 row_begin = ceil_div(v0->y - kHalfPixel, kSubpixel);
+    i64 row_end = ceil_div(v2->y - kHalfPixel, kSubpixel);
+    i64 band_begin = band.y0, band_end = band.y0 + band.color.height;
+    if (row_begin < band_begin) row_begin = band_begin;
+    if (row_end > band_end) row_end = band_end;
+    if (row_begin >= row_end) return false;
+    if (!src.ready) prepare(ctx.mesh, &src);
+
+    // Is the middle vertex right of the long edge v0 -> v2? Then the long edge is the left.
+    bool middle_right = (v1->x - v0->x) * (v2->y - v0->y) - (v2->x - v0->x) * (v1->y - v0->y) > 0;
+
+    // Screen-space barycentrics as plane equations around corner a (pixel units, float):
+    // lambda_b = (p - a) x (c - a) / area, lambda_c = (b - a) x (p - a) / area.
+    double inv_area = 1.0 / double(area2);
+    float lb_dx = float(double(c.y - a.y) * inv_area), lb_dy = float(-double(c.x - a.x) * inv_area);
+    float lc_dx = float(-double(b.y - a.y) * inv_area), lc_dy = float(double(b.x - a.x) * inv_area);
+    float dz_b = b.z - a.z, dz_c = c.z - a.z;
+
+    Fragment f;
+    f.triangle = src.index;
+    f.front_facing = front;
+    const i64 width = band.frame_width;
+    for (i64 y = row_begin; y < row_end; ++y) {
+        i64 yc = y * kSubpixel + kHalfPixel;
+        // The short edge on this row: v0 -> v1 above the middle vertex, v1 -> v2 below.
+        i64 x_long = first_column_at_or_right_of(*v0, *v2, yc);
+        i64 x_short = yc < v1->y ? first_column_at_or_right_of(*v0, *v1, yc)
+                                 : first_column_at_or_right_of(*v1, *v2, yc);
+        i64 x_begin = middle_right ? x_long : x_short;
+        i64 x_end = middle_right ? x_short : x_long;
+        if (x_begin < 0) x_begin = 0;
+        if (x_end > width) x_end = width;
+        if (x_begin >= x_end) continue;
+
+        int band_row = int(y - band.y0);
+        Rgb8* color_row = band.color.row(band_row);
+        float* depth_row = band.depth.row(band_row);
+        float ry = float(yc - a.y);  // exact integer, small enough for float
+        float lb_row = ry * lb_dy, lc_row = ry * lc_dy;
+        f.y = int(y);
+        for (i64 x = x_begin; x < x_end; ++x) {
+            float rx = float(x * kSubpixel + kHalfPixel - a.x);
+            float lb = lb_row + rx * lb_dx;  // screen-space (affine) barycentrics
+            float lc = lc_row + rx * lc_dx;
+            float la = 1.0f - lb - lc;
+            // Depth z_ndc is affine in screen space: interpolate it linearly.
+            float z = a.z + lb * dz_b + lc * dz_c;
+            if (!(z < depth_row[x]) || z > 1.0f) continue;  // early z (and the far plane)
+            // Perspective-correct: interpolate bary / w linearly, divide by the 1 / w sum.
+            float qa = la * a.inv_w, qb = lb * b.inv_w, qc = lc * c.inv_w;
+            float inv_sum = 1.0f / (qa + qb + qc);
+            Vec3 bary = (a.bary * qa + b.bary * qb + c.bary * qc) * inv_sum;
+            interpolate(src, bary, &f);
+            f.x = int(x);
+            f.depth = z < 0.0f ? 0.0f : z;
+            color_row[x] = ctx.shader(f, ctx.user);
+            depth_row[x] = f.depth;
+            ++ctx.fragments;
+        }
+    }
+    return true;
+}
+
+inline bool finite_clip(Vec4 p) {
+    return is_finite(p.x) && is_finite(p.y) && is_finite(p.z) && is_finite(p.w);
+}
+
+// The divide and the viewport mapping, as clip_to_screen (camera.cpp) does it, keeping 1/w.
+ScreenVertex to_screen(const Camera& camera, const ClipVertex& v) {
+    ScreenVertex r;
+    float inv_w = 1.0f / v.clip.w;
+    float nx = v.clip.x * inv_w, ny = v.clip.y * inv_w, nz = v.clip.z * inv_w;
+    r.x = to_fixed((nx * 0.5f + 0.5f) * float(camera.width));
+    r.y = to_fixed((0.5f - ny * 0.5f) * float(camera.height));
+    r.z = nz * 0.5f + 0.5f;
+    r.inv_w = inv_w;
+    r.bary = v.bary;
+    return r;
+}
+
+}  // namespace
+
+Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
+                 const DrawOptions& options, FragmentShader shader, void* user,
+                 RasterStats* stats) {
+    // ---- Check everything before drawing anything ----
+    if (shader == nullptr)
+        return Status::error(StatusCode::invalid_argument, "draw_mesh: the shader is null");
+    SHITSUKAN_TRY(validate_band(camera, band));
+    SHITSUKAN_TRY(validate_mesh(mesh));
+    Mat4 normal_matrix;
+    SHITSUKAN_TRY(validate_model(options.model, &normal_matrix));
+
+    const Mat4 mvp = camera.projection * (camera.view * options.model);
+    DrawContext ctx{{&mesh, &options.model, &normal_matrix}, &band, options.cull, shader, user, 0};
+    RasterStats local;
+    local.triangles_in = mesh.triangle_count;
+
+    for (int t = 0; t < mesh.triangle_count; ++t) {
+        // ---- 1. Fetch the three corners, into clip space ----
+        SourceTriangle src;
+        src.index = t;
+        src.corner_index = mesh.indices + 3 * t;
+        ClipVertex corners[3];
+        bool finite = true;
+        for (int k = 0; k < 3; ++k) {
+            Vec3 p = mesh.positions[src.corner_index[k]];
+            finite = finite && is_finite(p);
+            src.v[k].object_position = p;
+            corners[k].clip = transform_homogeneous(mvp, p);
+            corners[k].bary = Vec3{k == 0 ? 1.0f : 0.0f, k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f};
+        }
+        // Zero-area and NaN/inf triangles are degenerate: skipped and counted. The plane
+        // normal is computed in double so that huge but finite coordinates do not overflow.
+        Vec3d e1 = to_double(src.v[1].object_position - src.v[0].object_position);
+        Vec3d e2 = to_double(src.v[2].object_position - src.v[0].object_position);
+        src.object_cross = cross(e1, e2);
+        double cross2 = length_squared(src.object_cross);
+        if (!finite || !(cross2 > 0.0) || !is_finite(cross2)) {
+            ++local.triangles_rejected;
+            continue;
+        }
+
+        // ---- 2. Clip in homogeneous space (most triangles need not: outcodes tell) ----
+        ScreenVertex s[kMaxClipVertices];
+        int count = 0;
+        unsigned c0 = clip_outcode(corners[0].clip), c1 = clip_outcode(corners[1].clip),
+                 c2 = clip_outcode(corners[2].clip);
+        if (c0 & c1 & c2 & kOutsideBits) continue;  // wholly beyond one side of the view
+        if (((c0 | c1 | c2) & kClipPlaneBits) == 0 && finite_clip(corners[0].clip) &&
+            finite_clip(corners[1].clip) && finite_clip(corners[2].clip)) {
+            // ---- 3. Divide and snap (w > 0 here: every corner is in front of the near plane)
+            for (int k = 0; k < 3; ++k) s[k] = to_screen(camera, corners[k]);
+            count = 3;
+        } else {
+            ClipPolygon poly;
+            ClipResult clip = clip_triangle(corners, &poly);
+            if (clip.not_finite) {
+                ++local.triangles_rejected;
+                continue;
+            }
+            if (clip.outside) continue;
+            if (clip.clipped_near) ++local.triangles_clipped;
+            // ---- 3. Divide and snap each corner of the clipped polygon ----
+            bool usable = true;
+            for (int k = 0; k < poly.count; ++k) {
+                // After near clipping w > 0 for the projections this library makes; a custom
+                // projection could still give w <= 0: such a triangle cannot be drawn.
+                if (!(poly.v[k].clip.w > 0.0f)) usable = false;
+                s[k] = to_screen(camera, poly.v[k]);
+            }
+            if (!usable) {
+                ++local.triangles_rejected;
+                continue;
+            }
+            count = poly.count;
+        }
+
+        // ---- 4. Cull and walk each triangle of the (fan-triangulated) polygon ----
+        bool drawn = false;
+        for (int k = 1; k + 1 < count; ++k)
+            drawn = raster_triangle(ctx, src, s[0], s[k], s[k + 1]) || drawn;
+        if (drawn) ++local.triangles_drawn;
+    }
+
+    if (stats) {
+        stats->triangles_in += local.triangles_in;
+        stats->triangles_drawn += local.triangles_drawn;
+        stats->triangles_clipped += local.triangles_clipped;
+        stats->triangles_rejected += local.triangles_rejected;
+        stats->fragments_shaded += ctx.fragments;
+    }
+    return Status::success();
+}
+
+}  // namespace shitsukan

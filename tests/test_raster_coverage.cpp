@@ -1,0 +1,148 @@
+// Tests for lib/shitsukan/raster/rasterizer.cpp: coverage. The top-left fill rule must give
+// every pixel of a tiling to exactly one triangle (shared edges, shared vertices, fans, edges
+// through pixel centres), and a closed mesh must have no cracks from any direction.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "raster_test_scenes.hpp"
+
+using namespace shitsukan;
+using namespace raster_test;
+
+namespace {
+
+// A grid of cells over [-s, s]^2 in the plane z = 0 (wider than the screen), interior
+// vertices moved by a deterministic jitter that puts a third of them exactly on pixel
+// centres and a third exactly on pixel corners (the cases a fill rule must decide). Every
+// third cell is a fan of four triangles around a centre vertex, the others two triangles
+// with alternating diagonals. Counter-clockwise seen from +z.
+TriangleMesh tiling_grid(int cells, float s, float pixel, std::uint64_t seed) {
+    TriangleMesh m;
+    Pcg32 rng(seed, 3u);
+    auto snap = [&](float v) {
+        int kind = int(rng.next_u32() % 3u);
+        if (kind == 0) return (std::floor(v / pixel) + 0.5f) * pixel;  // a pixel centre
+        if (kind == 1) return std::floor(v / pixel) * pixel;           // a pixel corner
+        return v + (rng.uniform() - 0.5f) * pixel;                     // anywhere
+    };
+    float step = 2.0f * s / float(cells);
+    for (int j = 0; j <= cells; ++j)
+        for (int i = 0; i <= cells; ++i) {
+            float x = -s + step * float(i), y = -s + step * float(j);
+            if (i > 0 && i < cells && j > 0 && j < cells) {
+                x = snap(x + (rng.uniform() - 0.5f) * 0.4f * step);
+                y = snap(y + (rng.uniform() - 0.5f) * 0.4f * step);
+            }
+            m.add_vertex({x, y, 0}, {0, 0, 1});
+        }
+    auto id = [&](int i, int j) { return std::uint32_t(j * (cells + 1) + i); };
+    for (int j = 0; j < cells; ++j)
+        for (int i = 0; i < cells; ++i) {
+            std::uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+            if ((i + j) % 3 == 0) {  // a fan around the cell's centre
+                Vec3 centre = (m.positions[a] + m.positions[b] + m.positions[c] +
+                               m.positions[d]) * 0.25f;
+                std::uint32_t e = m.add_vertex({snap(centre.x), snap(centre.y), 0}, {0, 0, 1});
+                m.add_triangle(a, b, e);
+                m.add_triangle(b, c, e);
+                m.add_triangle(c, d, e);
+                m.add_triangle(d, a, e);
+            } else if ((i + j) % 2 == 0) {
+                m.add_triangle(a, b, c);
+                m.add_triangle(a, c, d);
+            } else {
+                m.add_triangle(a, b, d);
+                m.add_triangle(b, c, d);
+            }
+        }
+    return m;
+}
+
+// Fibonacci points on the unit sphere: well-spread view directions.
+Vec3 direction(int i, int n) {
+    float y = 1.0f - 2.0f * (float(i) + 0.5f) / float(n);
+    float r = std::sqrt(1.0f - y * y);
+    float phi = float(i) * 2.39996323f;  // the golden angle
+    return {r * std::cos(phi), y, r * std::sin(phi)};
+}
+
+int count_not_one(Counts& c) {
+    int bad = 0;
+    for (int v : c.n) bad += v != 1;
+    return bad;
+}
+
+}  // namespace
+
+TEST_CASE("a grid of triangles tiling the screen covers every pixel exactly once (ortho)") {
+    // 64 x 64 pixels over [-1, 1]^2: one pixel is 1/32 world unit.
+    Camera cam = orthographic_camera({0, 0, 1}, {0, 0, 0}, {0, 1, 0}, 1.0f, 64, 64);
+    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+        TriangleMesh grid = tiling_grid(9, 1.3f, 1.0f / 32.0f, seed);
+        Counts c = coverage_per_triangle(cam, grid.view(), CullMode::back);
+        CHECK(count_not_one(c) == 0);
+        Counts none = coverage_per_triangle(cam, grid.view(), CullMode::none);
+        CHECK(none.n == c.n);
+        Counts front = coverage_per_triangle(cam, grid.view(), CullMode::front);
+        int written = 0;
+        for (int v : front.n) written += v;
+        CHECK(written == 0);  // seen from +z, every triangle is front-facing
+    }
+}
+
+TEST_CASE("a grid of triangles tiling the screen covers every pixel exactly once (perspective)") {
+    Camera cam = perspective_camera({0.3f, -0.4f, 1.6f}, {0.1f, 0.1f, 0}, {0, 1, 0}, 50.0f, 80, 60);
+    for (std::uint64_t seed = 5; seed <= 7; ++seed) {
+        TriangleMesh grid = tiling_grid(16, 3.0f, 0.01f, seed);
+        Counts c = coverage_per_triangle(cam, grid.view(), CullMode::back);
+        CHECK(count_not_one(c) == 0);
+    }
+}
+
+TEST_CASE("a closed mesh seen from many directions: no cracks, front layer written once") {
+    TriangleMesh meshes[3] = {box_mesh({-0.8f, -0.6f, -0.7f}, {0.7f, 0.9f, 0.5f}),
+                              sphere_mesh(1.0f, 20, 10), torus_mesh(0.9f, 0.4f, 24, 12)};
+    const bool convex[3] = {true, true, false};
+    const int kDirections = 12;
+    for (int m = 0; m < 3; ++m) {
+        MeshView mesh = meshes[m].view();
+        int mismatched = 0, layered = 0, shaded_not_front = 0;
+        long covered = 0;
+        for (int d = 0; d < kDirections; ++d) {
+            Vec3 eye = direction(d, kDirections) * 3.5f;
+            Camera cam = perspective_camera(eye, {0.05f, 0.02f, 0}, {0, 1, 0}, 45.0f, 64, 64);
+            Counts front = coverage_per_triangle(cam, mesh, CullMode::back);
+            Counts back = coverage_per_triangle(cam, mesh, CullMode::front);
+            // Every ray that enters a closed surface leaves it: as many front-facing as
+            // back-facing triangles cover each pixel. A crack breaks the balance.
+            for (std::size_t i = 0; i < front.n.size(); ++i) {
+                mismatched += front.n[i] != back.n[i];
+                if (convex[m]) layered += front.n[i] > 1;
+                covered += front.n[i] > 0;
+            }
+            if (convex[m]) {
+                // One draw call with early z: the shader runs exactly once per covered pixel.
+                Counts shaded(64, 64);
+                RgbImage color(64, 64);
+                FloatImage depth(64, 64);
+                FrameBand band = full_frame_band(color.view(), depth.view());
+                clear_band(band, Rgb8{0, 0, 0});
+                auto count = [&](const Fragment& f) {
+                    ++shaded.at(f.x, f.y);
+                    return Rgb8{1, 1, 1};
+                };
+                DrawOptions opt;
+                REQUIRE(draw_mesh(cam, band, mesh, opt, count).ok());
+                for (std::size_t i = 0; i < front.n.size(); ++i)
+                    shaded_not_front += shaded.n[i] != front.n[i];
+            }
+        }
+        INFO("mesh " << m);
+        CHECK(mismatched == 0);
+        CHECK(layered == 0);
+        CHECK(shaded_not_front == 0);
+        CHECK(covered > 64 * 64);  // the object is actually on screen
+    }
+}

@@ -1,0 +1,212 @@
+// Tests for lib/shitsukan/raster/rasterizer.cpp and band.cpp: degenerate and bad input.
+// Degenerate triangles are skipped and counted; bad buffers, indices, shaders and matrices
+// give a Status with a clear message and draw nothing. (The sanitizer run checks that
+// nothing is written outside the buffers.)
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <string>
+
+#include "raster_test_scenes.hpp"
+
+using namespace shitsukan;
+using namespace raster_test;
+
+namespace {
+
+Rgb8 white(const Fragment&, void*) { return Rgb8{255, 255, 255}; }
+
+struct Frame {
+    RgbImage color{32, 32};
+    FloatImage depth{32, 32};
+    FrameBand band;
+    Frame() {
+        band = full_frame_band(color.view(), depth.view());
+        clear_band(band, Rgb8{0, 0, 0});
+    }
+    int lit() const {
+        int n = 0;
+        for (int y = 0; y < 32; ++y)
+            for (int x = 0; x < 32; ++x) n += color.at(x, y).r != 0;
+        return n;
+    }
+};
+
+Camera camera32() { return perspective_camera({0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 45.0f, 32, 32); }
+
+bool mentions(const Status& s, const char* text) {
+    return std::string(s.message()).find(text) != std::string::npos;
+}
+
+}  // namespace
+
+TEST_CASE("zero-area, NaN and inf triangles are skipped and counted, the rest is drawn") {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    TriangleMesh m;
+    m.positions = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0},     // 0-2 a good triangle
+                   {-1, 0, 0}, {0, 0, 0},  {1, 0, 0},      // 3-5 collinear
+                   {nan, 0, 0}, {inf, 1, 0}, {0, -inf, 0}, // 6-8 not finite
+                   {0.5f, 0.5f, 0}};                       // 9
+    m.indices = {3, 4, 5,   // zero area (collinear)
+                 9, 9, 0,   // zero area (repeated vertex)
+                 6, 1, 2,   // NaN
+                 0, 7, 2,   // inf
+                 0, 1, 8,   // -inf
+                 0, 1, 2};  // good
+    Frame f;
+    RasterStats stats;
+    DrawOptions opt;
+    opt.cull = CullMode::none;
+    Status s = draw_mesh(camera32(), f.band, m.view(), opt, white, nullptr, &stats);
+    CHECK(s.ok());
+    CHECK(stats.triangles_in == 6);
+    CHECK(stats.triangles_rejected == 5);
+    CHECK(stats.triangles_drawn == 1);
+    CHECK(f.lit() > 50);
+    CHECK(stats.fragments_shaded == f.lit());
+
+    // Only degenerate triangles: nothing drawn at all.
+    Frame g;
+    TriangleMesh bad = m;
+    bad.indices.resize(15);
+    RasterStats st2;
+    CHECK(draw_mesh(camera32(), g.band, bad.view(), opt, white, nullptr, &st2).ok());
+    CHECK(g.lit() == 0);
+    CHECK(st2.triangles_rejected == 5);
+    CHECK(st2.fragments_shaded == 0);
+}
+
+TEST_CASE("huge but finite coordinates are clipped by the guard band, not overflowed") {
+    // 1e5: far beyond the guard band (about 10 units at this distance); the guard-band cut
+    // points are still precise in float, so the triangle covers the whole screen.
+    TriangleMesh m;
+    m.positions = {{-1e5f, -1e5f, 0}, {1e5f, -1e5f, 0}, {0, 1e5f, 0}};
+    m.indices = {0, 1, 2};
+    Frame f;
+    RasterStats stats;
+    CHECK(draw_mesh(camera32(), f.band, m.view(), DrawOptions{}, white, nullptr, &stats).ok());
+    CHECK(f.lit() == 32 * 32);
+    CHECK(stats.fragments_shaded == 32 * 32);
+    // 1e30: float cannot place the cut points precisely any more (nor could a GPU), but
+    // nothing overflows, nothing is written outside the band (sanitizer) and the status is ok.
+    for (float big : {1e30f, 3e38f}) {
+        m.positions = {{-big, -big, 0}, {big, -big, 0}, {0, big, 0}};
+        Frame g;
+        RasterStats st;
+        CHECK(draw_mesh(camera32(), g.band, m.view(), DrawOptions{}, white, nullptr, &st).ok());
+        CHECK(st.fragments_shaded == g.lit());
+    }
+}
+
+TEST_CASE("an empty mesh draws nothing and is fine") {
+    Frame f;
+    MeshView empty;
+    RasterStats stats;
+    CHECK(draw_mesh(camera32(), f.band, empty, DrawOptions{}, white, nullptr, &stats).ok());
+    CHECK(stats.triangles_in == 0);
+    CHECK(f.lit() == 0);
+}
+
+TEST_CASE("bad buffers, meshes, shaders and matrices: a clear Status, nothing drawn") {
+    TriangleMesh good;
+    good.positions = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+    good.indices = {0, 1, 2};
+    Camera cam = camera32();
+
+    SUBCASE("zero-size image") {
+        RgbImage color(0, 0);
+        FloatImage depth(0, 0);
+        FrameBand band = full_frame_band(color.view(), depth.view());
+        clear_band(band, Rgb8{1, 2, 3});  // harmless on an empty band
+        Status s = draw_mesh(cam, band, good.view(), DrawOptions{}, white, nullptr);
+        CHECK(s.code() == StatusCode::invalid_argument);
+        CHECK(mentions(s, "empty"));
+    }
+    SUBCASE("colour and depth sizes differ") {
+        RgbImage color(32, 32);
+        FloatImage depth(32, 16);
+        FrameBand band = make_band(color.view(), depth.view(), 0, 32, 32);
+        Status s = draw_mesh(cam, band, good.view(), DrawOptions{}, white, nullptr);
+        CHECK(!s.ok());
+        CHECK(mentions(s, "32 x 16"));
+    }
+    SUBCASE("band rows outside the frame, band narrower than the frame, frame != camera") {
+        RgbImage color(32, 8);
+        FloatImage depth(32, 8);
+        Status s = draw_mesh(cam, make_band(color.view(), depth.view(), 28, 32, 32), good.view(),
+                             DrawOptions{}, white, nullptr);
+        CHECK(!s.ok());
+        CHECK(mentions(s, "[28, 36)"));
+        s = draw_mesh(cam, make_band(color.view(), depth.view(), -1, 32, 32), good.view(),
+                      DrawOptions{}, white, nullptr);
+        CHECK(!s.ok());
+        RgbImage narrow(16, 8);
+        FloatImage narrow_depth(16, 8);
+        s = draw_mesh(cam, make_band(narrow.view(), narrow_depth.view(), 0, 32, 32), good.view(),
+                      DrawOptions{}, white, nullptr);
+        CHECK(!s.ok());
+        CHECK(mentions(s, "16 pixels wide"));
+        s = draw_mesh(cam, make_band(color.view(), depth.view(), 0, 32, 64), good.view(),
+                      DrawOptions{}, white, nullptr);
+        CHECK(!s.ok());
+        CHECK(mentions(s, "camera"));
+    }
+    SUBCASE("out-of-range index: refused before anything is drawn") {
+        TriangleMesh m = good;
+        m.indices = {0, 1, 2, 0, 1, 7};
+        Frame f;
+        Status s = draw_mesh(cam, f.band, m.view(), DrawOptions{}, white, nullptr);
+        CHECK(s.code() == StatusCode::invalid_argument);
+        CHECK(mentions(s, "triangle 1 corner 2 has index 7"));
+        CHECK(f.lit() == 0);
+    }
+    SUBCASE("missing arrays and negative counts") {
+        MeshView v = good.view();
+        v.indices = nullptr;
+        Frame f;
+        CHECK(!draw_mesh(cam, f.band, v, DrawOptions{}, white, nullptr).ok());
+        v = good.view();
+        v.triangle_count = -1;
+        CHECK(!draw_mesh(cam, f.band, v, DrawOptions{}, white, nullptr).ok());
+        v = good.view();
+        v.positions = nullptr;
+        CHECK(!draw_mesh(cam, f.band, v, DrawOptions{}, white, nullptr).ok());
+    }
+    SUBCASE("null shader, singular or NaN model, NaN camera, zero-size camera") {
+        Frame f;
+        Status s = draw_mesh(cam, f.band, good.view(), DrawOptions{}, nullptr, nullptr);
+        CHECK(mentions(s, "shader"));
+        DrawOptions opt;
+        opt.model = Mat4::scale({1, 0, 1});
+        s = draw_mesh(cam, f.band, good.view(), opt, white, nullptr);
+        CHECK(mentions(s, "singular"));
+        opt.model.m[0][0] = NAN;
+        CHECK(!draw_mesh(cam, f.band, good.view(), opt, white, nullptr).ok());
+        Camera bad = cam;
+        bad.view.m[1][1] = INFINITY;
+        CHECK(mentions(draw_mesh(bad, f.band, good.view(), DrawOptions{}, white, nullptr),
+                       "NaN/inf"));
+        bad = cam;
+        bad.width = 0;
+        CHECK(!draw_mesh(bad, f.band, good.view(), DrawOptions{}, white, nullptr).ok());
+        CHECK(f.lit() == 0);
+    }
+}
+
+TEST_CASE("triangles behind the eye or off screen draw nothing") {
+    TriangleMesh m;
+    m.positions = {{-1, -1, 5}, {1, -1, 5}, {0, 1, 5},          // behind the eye (z = 3)
+                   {10, -1, 0}, {12, -1, 0}, {11, 1, 0}};       // right of the screen
+    m.indices = {0, 1, 2, 3, 4, 5};
+    Frame f;
+    RasterStats stats;
+    DrawOptions opt;
+    opt.cull = CullMode::none;
+    CHECK(draw_mesh(camera32(), f.band, m.view(), opt, white, nullptr, &stats).ok());
+    CHECK(f.lit() == 0);
+    CHECK(stats.triangles_drawn == 0);
+    CHECK(stats.triangles_rejected == 0);
+}
