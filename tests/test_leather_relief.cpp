@@ -10,8 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "shitsukan/core/prng.hpp"
+
 #include "shitsukan/leather/maps.hpp"
 #include "shitsukan/leather/relief.hpp"
+#include "shitsukan/leather/scale_division.hpp"
 
 using namespace shitsukan;
 
@@ -282,4 +285,50 @@ TEST_CASE("relief maps: bad input gets a clear status") {
     BezierChain nan_section = s;
     nan_section.segments[0].p[2].y = NAN;
     CHECK(!make_leather_maps(p, labels.data(), 8, 8, nan_section, ReliefOptions{}, &maps).ok());
+}
+
+TEST_CASE("relief: the angular index finds the same edge point as the full scan") {
+    ScalePattern p;
+    REQUIRE(generate_scale_pattern(ScaleParams{}, &p).ok());  // perturbed, ~86 vertices each
+    std::vector<float> angles(p.vertices.size());
+    Pcg32 rng(5);
+    int indexed = 0, compared = 0;
+    for (int i = 0; i < p.polygon_count(); ++i) {
+        int n;
+        const Vec2* poly = p.polygon(i, &n);
+        Vec2 m = p.centroids[std::size_t(i)];
+        float* a = angles.data() + p.polygon_offsets[std::size_t(i)];
+        if (!make_angular_index(poly, n, m, a)) continue;
+        ++indexed;
+        for (int k = 0; k < 200; ++k) {
+            // Points inside: a random fraction of the way to a random boundary point.
+            Vec2 dir{std::cos(kTwoPi * rng.uniform()), std::sin(kTwoPi * rng.uniform())};
+            EdgeHit edge = scale_edge_point(poly, n, m, m + dir * 1e-3f);
+            Vec2 x = m + (edge.p - m) * (0.02f + 0.97f * rng.uniform());
+            EdgeHit full = scale_edge_point(poly, n, m, x);
+            EdgeHit fast = scale_edge_point_indexed(poly, n, m, x, a);
+            CHECK(fast.inside == full.inside);
+            CHECK(length(fast.p - full.p) <= 1e-6f);
+            ++compared;
+        }
+    }
+    CHECK(indexed == p.polygon_count());  // the pattern's polygons are star-shaped from m
+    CHECK(compared > 0);
+    // A clockwise polygon works the same way.
+    Vec2 cw[7];
+    for (int k = 0; k < 7; ++k) {
+        float a = -kTwoPi * float(k) / 7.0f;
+        cw[k] = Vec2{std::cos(a), std::sin(a)} * (1.0f + 0.2f * float(k % 2));
+    }
+    float cw_angles[7];
+    REQUIRE(make_angular_index(cw, 7, {0, 0}, cw_angles));
+    for (int k = 0; k < 100; ++k) {
+        Vec2 x{rng.uniform(-0.6f, 0.6f), rng.uniform(-0.6f, 0.6f)};
+        CHECK(length(scale_edge_point_indexed(cw, 7, {0, 0}, x, cw_angles).p -
+                     scale_edge_point(cw, 7, {0, 0}, x).p) <= 1e-6f);
+    }
+    // Not star-shaped from m: refused.
+    const Vec2 bow[6] = {{0, 0}, {2, 0}, {2, 2}, {1.9f, 0.2f}, {0.1f, 0.2f}, {0, 2}};
+    float tmp[6];
+    CHECK(!make_angular_index(bow, 6, {1.0f, 1.5f}, tmp));
 }

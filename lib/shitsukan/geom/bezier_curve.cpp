@@ -27,8 +27,13 @@ Vec2 bezier_derivative(const CubicBezier2& curve, float t) {
 SectionSample chain_point(const BezierChain& chain, int segment, float t) {
     SHITSUKAN_ASSERT(segment >= 0 && segment < chain.count);
     const CubicBezier2& c = chain.segments[segment];
-    Vec2 q = bezier_point(c, t);
-    Vec2 d = bezier_derivative(c, t);
+    float b[4], db[4];
+    bernstein_basis(3, t, b, db);  // eq. (2)'s weights and eq. (3)'s, in one call
+    Vec2 q{0, 0}, d{0, 0};
+    for (int i = 0; i < 4; ++i) {
+        q = q + c.p[i] * b[i];
+        d = d + c.p[i] * db[i];
+    }
     SectionSample s;
     s.r = q.x;
     s.z = q.y;
@@ -95,19 +100,23 @@ Status validate_section(const BezierChain& chain) {
 }
 
 float invert_r(const CubicBezier2& segment, float r) {
-    float r0 = segment.p[0].x, r3 = segment.p[3].x;
+    float r0 = segment.p[0].x, r1 = segment.p[1].x, r2 = segment.p[2].x, r3 = segment.p[3].x;
     if (!(r > r0)) return 0.0f;
     if (!(r < r3)) return 1.0f;
+    // r(t) of eq. (2) in power form, r0 + t(c1 + t(c2 + t c3)), for cheap Newton steps.
+    float c1 = 3.0f * (r1 - r0), c2 = 3.0f * (r2 - 2.0f * r1 + r0);
+    float c3 = r3 - 3.0f * r2 + 3.0f * r1 - r0;
     // Bracket [lo, hi] with r(lo) <= r <= r(hi); Newton from the chord guess, falling back
     // to bisection whenever the step leaves the bracket (r'(t) may vanish at isolated t).
     float lo = 0.0f, hi = 1.0f;
     float t = (r - r0) / (r3 - r0);
     const float tolerance = 1e-7f * (std::fabs(r0) + std::fabs(r3) + 1.0f);
     for (int step = 0; step < 40; ++step) {
-        float f = bezier_point(segment, t).x - r;
+        float f = r0 + t * (c1 + t * (c2 + t * c3)) - r;
         if (std::fabs(f) <= tolerance) break;
         if (f < 0) lo = t; else hi = t;
-        float d = bezier_derivative(segment, t).x;
+        if (hi - lo <= 1e-7f) break;  // float resolution of t reached
+        float d = c1 + t * (2.0f * c2 + 3.0f * c3 * t);
         float next = d > 0 ? t - f / d : -1.0f;
         if (!(next > lo && next < hi)) next = 0.5f * (lo + hi);
         if (next == t) break;

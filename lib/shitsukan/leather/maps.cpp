@@ -50,11 +50,17 @@ Status make_leather_maps(const ScalePattern& pattern, const int* labels, int wid
     out->normals.assign(count, Vec3{0, 0, 1});
     out->max_height = 0.0f;
     const float sx = pattern.width / float(width), sy = pattern.height / float(height);
-    std::vector<float> sizes(std::size_t(polygons), 0.0f);  // S of each scale, computed once
+    // Once per scale: its height unit S and the angular index of its vertices around m
+    // (O(log n) edge search; polygons that are not star-shaped use the full scan).
+    std::vector<float> sizes(std::size_t(polygons), 0.0f);
+    std::vector<float> angles(pattern.vertices.size(), 0.0f);
+    std::vector<char> indexed(std::size_t(polygons), 0);
     for (int i = 0; i < polygons; ++i) {
         int n;
         const Vec2* poly = pattern.polygon(i, &n);
         sizes[std::size_t(i)] = scale_size(poly, n);
+        float* a = angles.data() + pattern.polygon_offsets[std::size_t(i)];
+        indexed[std::size_t(i)] = make_angular_index(poly, n, pattern.centroids[std::size_t(i)], a);
     }
     for (int j = 0; j < height; ++j) {
         for (int i = 0; i < width; ++i) {
@@ -67,7 +73,11 @@ Status make_leather_maps(const ScalePattern& pattern, const int* labels, int wid
             ReliefSample s;
             // tokai1994 §3.2: "computed for each polygon edge and for every polygon of §3.1".
             Vec2 m = pattern.centroids[std::size_t(id)];
-            EdgeHit hit = scale_edge_point(poly, n, m, x);
+            EdgeHit hit = indexed[std::size_t(id)]
+                              ? scale_edge_point_indexed(
+                                    poly, n, m, x,
+                                    angles.data() + pattern.polygon_offsets[std::size_t(id)])
+                              : scale_edge_point(poly, n, m, x);
             float mp = length(hit.p - m);
             float rho = mp > 0.0f ? length(x - m) / mp : 0.0f;
             relief_along_ray(rho, m, hit, sizes[std::size_t(id)], section, options, &s);

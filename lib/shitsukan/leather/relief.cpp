@@ -49,34 +49,29 @@ Status validate_relief_options(const ReliefOptions& options) {
     return Status::success();
 }
 
-EdgeHit scale_edge_point(const Vec2* polygon, int n, Vec2 m, Vec2 x) {
-    SHITSUKAN_ASSERT(n >= 3);
-    Vec2 d = x - m;
-    if (d.x == 0.0f && d.y == 0.0f) d = {1.0f, 0.0f};  // at m: any direction will do
-    // Ray m + s·d against each edge a + w·(b - a): s = 1 is x itself, so the boundary point
-    // bounding x's side of the polygon is the nearest crossing with s >= 1.
-    const float s_min = 1.0f - 1e-5f;
-    float best = INFINITY, farthest = -1.0f;
-    int best_edge = -1, far_edge = -1;
-    for (int i = 0; i < n; ++i) {
-        Vec2 a = polygon[i], e = polygon[i + 1 < n ? i + 1 : 0] - a;
-        float denom = cross(d, e);
-        if (denom == 0.0f) continue;  // parallel to the ray
-        Vec2 am = a - m;
-        float s = cross(am, e) / denom;
-        float w = cross(am, d) / denom;
-        if (w < -1e-6f || w > 1.0f + 1e-6f || !(s > 0.0f)) continue;
-        if (s >= s_min && s < best) { best = s; best_edge = i; }
-        if (s > farthest) { farthest = s; far_edge = i; }
-    }
+namespace {
+
+// Crossing of the ray m + s·d with edge i (a + w·(b - a), w in [0, 1]); false if none.
+bool ray_edge(const Vec2* polygon, int n, int i, Vec2 m, Vec2 d, float* s_out) {
+    Vec2 a = polygon[i], e = polygon[i + 1 < n ? i + 1 : 0] - a;
+    float denom = cross(d, e);
+    if (denom == 0.0f) return false;  // parallel to the ray
+    Vec2 am = a - m;
+    float s = cross(am, e) / denom;
+    float w = cross(am, d) / denom;
+    if (w < -1e-6f || w > 1.0f + 1e-6f || !(s > 0.0f)) return false;
+    *s_out = s;
+    return true;
+}
+
+// x itself is s = 1 on the ray, so the boundary bounding x's side is the nearest crossing
+// with s >= 1 (a little tolerance for x exactly on the edge).
+constexpr float kSMin = 1.0f - 1e-5f;
+
+EdgeHit make_hit(const Vec2* polygon, int n, Vec2 m, Vec2 d, int edge, float s, bool inside) {
     EdgeHit hit;
-    hit.inside = best_edge >= 0;
-    int edge = hit.inside ? best_edge : far_edge;
-    if (edge < 0) {
-        hit.p = x;
-        return hit;
-    }
-    hit.p = m + d * (hit.inside ? best : farthest);
+    hit.inside = inside;
+    hit.p = m + d * s;
     Vec2 a = polygon[edge], e = polygon[edge + 1 < n ? edge + 1 : 0] - a;
     Vec2 normal = normalize(Vec2{e.y, -e.x});
     float dist = dot(a - m, normal);
@@ -84,6 +79,92 @@ EdgeHit scale_edge_point(const Vec2* polygon, int n, Vec2 m, Vec2 x) {
     hit.edge_normal = normal;
     hit.edge_distance = dist;
     return hit;
+}
+
+Vec2 ray_direction(Vec2 m, Vec2 x) {
+    Vec2 d = x - m;
+    if (d.x == 0.0f && d.y == 0.0f) d = {1.0f, 0.0f};  // at m: any direction will do
+    return d;
+}
+
+}  // namespace
+
+EdgeHit scale_edge_point(const Vec2* polygon, int n, Vec2 m, Vec2 x) {
+    SHITSUKAN_ASSERT(n >= 3);
+    Vec2 d = ray_direction(m, x);
+    float best = INFINITY, farthest = -1.0f;
+    int best_edge = -1, far_edge = -1;
+    for (int i = 0; i < n; ++i) {
+        float s;
+        if (!ray_edge(polygon, n, i, m, d, &s)) continue;
+        if (s >= kSMin && s < best) { best = s; best_edge = i; }
+        if (s > farthest) { farthest = s; far_edge = i; }
+    }
+    if (best_edge >= 0) return make_hit(polygon, n, m, d, best_edge, best, true);
+    if (far_edge >= 0) return make_hit(polygon, n, m, d, far_edge, farthest, false);
+    EdgeHit none;
+    none.p = x;
+    return none;
+}
+
+bool make_angular_index(const Vec2* polygon, int n, Vec2 m, float* angles) {
+    SHITSUKAN_ASSERT(n >= 3);
+    // Unwrapped angles of the vertices around m; a star-shaped counter-clockwise polygon
+    // turns by +2π in total, a clockwise one by -2π, each step strictly one way.
+    float sign = 0.0f;
+    for (int i = 0; i < n; ++i) {
+        Vec2 v = polygon[i] - m;
+        if (v.x == 0.0f && v.y == 0.0f) return false;
+        float a = std::atan2(v.y, v.x);
+        if (i > 0) {
+            float step = a - angles[i - 1];
+            while (step > kPi) step -= kTwoPi;
+            while (step <= -kPi) step += kTwoPi;
+            if (step == 0.0f) return false;
+            if (sign == 0.0f) sign = step > 0.0f ? 1.0f : -1.0f;
+            if (step * sign <= 0.0f) return false;
+            a = angles[i - 1] + step;
+        }
+        angles[i] = a;
+    }
+    // Closing the loop must complete exactly one turn.
+    float closing = std::atan2(polygon[0].y - m.y, polygon[0].x - m.x) - angles[n - 1];
+    while (closing * sign <= 0.0f) closing += sign * kTwoPi;
+    float total = angles[n - 1] - angles[0] + closing;
+    return std::fabs(total * sign - kTwoPi) < 1e-3f;
+}
+
+EdgeHit scale_edge_point_indexed(const Vec2* polygon, int n, Vec2 m, Vec2 x, const float* angles) {
+    SHITSUKAN_ASSERT(n >= 3);
+    Vec2 d = ray_direction(m, x);
+    float theta = std::atan2(d.y, d.x);
+    bool ccw = angles[n - 1] > angles[0];
+    // Search in increasing order: negate the angles of a clockwise polygon.
+    float first = ccw ? angles[0] : -angles[0];
+    float t = ccw ? theta : -theta;
+    while (t < first) t += kTwoPi;
+    while (t >= first + kTwoPi) t -= kTwoPi;
+    int lo = 0, hi = n - 1;  // largest i with angle_i <= t
+    while (lo < hi) {
+        int mid = (lo + hi + 1) / 2;
+        float a = ccw ? angles[mid] : -angles[mid];
+        if (a <= t) lo = mid; else hi = mid - 1;
+    }
+    // Edge lo (counter-clockwise) or lo - 1 (clockwise, edges run the other way) spans the
+    // ray's angle; its neighbours cover rounding at a vertex.
+    int centre = ccw ? lo : (lo - 1 + n) % n;
+    float best = INFINITY;
+    int best_edge = -1;
+    for (int k = -1; k <= 1; ++k) {
+        int i = (centre + k + n) % n;
+        float s;
+        if (ray_edge(polygon, n, i, m, d, &s) && s >= kSMin && s < best) {
+            best = s;
+            best_edge = i;
+        }
+    }
+    if (best_edge >= 0) return make_hit(polygon, n, m, d, best_edge, best, true);
+    return scale_edge_point(polygon, n, m, x);
 }
 
 float scale_size(const Vec2* polygon, int n) {

@@ -84,6 +84,16 @@ Status validate_relief_options(const ReliefOptions& options);
 // (x outside the polygon) hit.inside is false and p is the farthest crossing (or x).
 EdgeHit scale_edge_point(const Vec2* polygon, int n, Vec2 m, Vec2 x);
 
+// The same search in O(log n) for a polygon that is star-shaped from m (what the scale
+// pattern guarantees): the vertices' angles around m, unwrapped, increase (counter-clockwise)
+// or decrease (clockwise) through less than a full turn, so the edge the ray crosses is found
+// by binary search on the ray's angle. make_angular_index fills angles[0 .. n) (caller
+// memory) and returns false when the polygon is not star-shaped from m that way (then use
+// scale_edge_point). scale_edge_point_indexed tests the found edge and its two neighbours and
+// falls back to the full scan if none is crossed at or beyond x, so it returns the same hit.
+bool make_angular_index(const Vec2* polygon, int n, Vec2 m, float* angles);
+EdgeHit scale_edge_point_indexed(const Vec2* polygon, int n, Vec2 m, Vec2 x, const float* angles);
+
 // S = 2·area / perimeter (the height unit of one scale).
 float scale_size(const Vec2* polygon, int n);
 
