@@ -58,7 +58,7 @@ SHITSUKAN_FIGURE(tokai1994_fig19, "tokai1994", "fig19",
     // Left: the belt.
     {
         RgbView left = img.view().subview(0, 0, size, size);
-        Camera cam = perspective_camera({0.3f, 1.9f, 2.7f}, {0.0f, 0.1f, 0.25f}, {0, 1, 0}, 40.0f,
+        Camera cam = perspective_camera({0.5f, 2.0f, 3.0f}, {0.0f, 0.1f, 0.05f}, {0, 1, 0}, 42.0f,
                                         size, size);
         FloatImage depth(size, size);
         FrameBand band = full_frame_band(left, depth.view());
