@@ -22,6 +22,9 @@ WARN     += -Werror
 endif
 override CXXFLAGS := -std=c++17 -O2 $(WARN) -ffp-contract=off $(CXXFLAGS)
 override CPPFLAGS := -Ilib -Ipaper_figures $(CPPFLAGS)
+# LeakSanitizer needs ptrace-free processes; override with ASAN_OPTIONS=detect_leaks=0 where
+# a container forbids it.
+ASAN_OPTIONS ?= detect_leaks=1
 SAN_FLAGS := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
 SMALL_FLAGS := -fno-exceptions -fno-rtti -DSHITSUKAN_SMALL_DEVICE
 
@@ -33,6 +36,11 @@ EXAMPLE_SRCS := $(sort $(wildcard examples/*.cpp))
 # Files that promise the small-device rules (no allocation, no exceptions) carry the line
 # "// small-device: yes"; `make check-small` holds them to it.
 SMALL_SRCS   := $(shell grep -rl '^// small-device: yes' lib 2>/dev/null | LC_ALL=C sort)
+
+# Objects depend on a stamp named after the flags, so `CI=1 make test` after a plain build
+# really recompiles with -Werror instead of reusing objects built without it.
+FLAGS_HASH  := $(shell printf '%s' '$(CXX) $(CPPFLAGS) $(CXXFLAGS)' | cksum | cut -d' ' -f1)
+FLAGS_STAMP := $(BUILD)/.flags-$(FLAGS_HASH)
 
 LIB_OBJS   := $(LIB_SRCS:%.cpp=$(BUILD)/obj/%.o)
 FIG_OBJS   := $(FIG_SRCS:%.cpp=$(BUILD)/obj/%.o)
@@ -81,7 +89,7 @@ figures: deps
 
 test-sanitize: deps
 	@$(MAKE) --no-print-directory -j$(JOBS) $(BUILD)/tests-sanitize
-	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 $(BUILD)/tests-sanitize
+	ASAN_OPTIONS=$(ASAN_OPTIONS) UBSAN_OPTIONS=print_stacktrace=1 $(BUILD)/tests-sanitize
 
 examples: deps
 	@$(MAKE) --no-print-directory -j$(JOBS) $(EXAMPLES)
@@ -123,15 +131,20 @@ $(BUILD)/examples/%: $(BUILD)/obj/examples/%.o $(LIBRARY)
 	$(CXX) $(CXXFLAGS) -o $@ $< $(LIBRARY)
 
 # ---- compiling ----
-$(BUILD)/obj/%.o: %.cpp
+$(FLAGS_STAMP):
+	@mkdir -p $(@D)
+	@rm -f $(BUILD)/.flags-*
+	@touch $@
+
+$(BUILD)/obj/%.o: %.cpp $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CXX) $(CPPFLAGS) $(CXXFLAGS) -MMD -MP -c $< -o $@
 
-$(BUILD)/san/%.o: %.cpp
+$(BUILD)/san/%.o: %.cpp $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CXX) $(CPPFLAGS) $(CXXFLAGS) $(SAN_FLAGS) -MMD -MP -c $< -o $@
 
-$(BUILD)/small/%.o: %.cpp
+$(BUILD)/small/%.o: %.cpp $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CXX) $(CPPFLAGS) $(CXXFLAGS) $(SMALL_FLAGS) -MMD -MP -c $< -o $@
 

@@ -43,9 +43,15 @@ TEST_CASE("Gaussian: mean, variance, skewness, kurtosis of 1e6 draws") {
     double m1 = 0, m2 = 0, m3 = 0, m4 = 0;
     for (int i = 0; i < n; ++i) {
         double z = rng.gaussian();
-        m1 += z; m2 += z * z; m3 += z * z * z; m4 += z * z * z * z;
+        m1 += z;
+        m2 += z * z;
+        m3 += z * z * z;
+        m4 += z * z * z * z;
     }
-    m1 /= n; m2 /= n; m3 /= n; m4 /= n;
+    m1 /= n;
+    m2 /= n;
+    m3 /= n;
+    m4 /= n;
     double var = m2 - m1 * m1;
     // Standard errors at n = 1e6: mean 0.001, variance 0.0014, skew 0.0024, kurtosis 0.0049.
     CHECK(std::abs(m1) < 0.005);
@@ -109,7 +115,8 @@ TEST_CASE("coordinate hash: uniform and Gaussian statistics over a lattice") {
         for (int y = 0; y < n; ++y)
             for (int x = 0; x < n; ++x) {
                 double g = hash_gaussian(3u, 7u, x, y, z);
-                s += g; s2 += g * g;
+                s += g;
+                s2 += g * g;
                 float v = hash_uniform(3u, 8u, x, y, z);
                 REQUIRE(v >= 0.0f);
                 REQUIRE(v < 1.0f);

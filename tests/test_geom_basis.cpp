@@ -18,7 +18,8 @@ TEST_CASE("Bernstein and B-spline bases sum to 1 and derivatives match finite di
             CHECK(sum == doctest::Approx(1.0).epsilon(1e-12));
             bernstein_basis(n, t + h, bp);
             bernstein_basis(n, t - h, bm);
-            for (int i = 0; i <= n; ++i) CHECK(db[i] == doctest::Approx((bp[i] - bm[i]) / (2 * h)).epsilon(1e-5));
+            for (int i = 0; i <= n; ++i)
+                CHECK(db[i] == doctest::Approx((bp[i] - bm[i]) / (2 * h)).epsilon(1e-5));
             bspline_basis(n, t, b, db);
             sum = 0;
             for (int i = 0; i <= n; ++i) {
@@ -28,7 +29,8 @@ TEST_CASE("Bernstein and B-spline bases sum to 1 and derivatives match finite di
             CHECK(sum == doctest::Approx(1.0).epsilon(1e-12));
             bspline_basis(n, t + h, bp);
             bspline_basis(n, t - h, bm);
-            for (int i = 0; i <= n; ++i) CHECK(db[i] == doctest::Approx((bp[i] - bm[i]) / (2 * h)).epsilon(1e-5));
+            for (int i = 0; i <= n; ++i)
+                CHECK(db[i] == doctest::Approx((bp[i] - bm[i]) / (2 * h)).epsilon(1e-5));
         }
     }
 }

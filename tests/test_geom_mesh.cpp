@@ -37,9 +37,10 @@ bool watertight(const TriangleMesh& m, std::string* why) {
         if (count != back) {
             char buf[160];
             std::snprintf(buf, sizeof buf, "edge (%g,%g,%g)->(%g,%g,%g) used %d times, reverse %d",
-                          double(std::get<0>(e.first)), double(std::get<1>(e.first)), double(std::get<2>(e.first)),
-                          double(std::get<0>(e.second)), double(std::get<1>(e.second)), double(std::get<2>(e.second)),
-                          count, back);
+                          double(std::get<0>(e.first)), double(std::get<1>(e.first)),
+                          double(std::get<2>(e.first)), double(std::get<0>(e.second)),
+                          double(std::get<1>(e.second)), double(std::get<2>(e.second)), count,
+                          back);
             *why = buf;
             return false;
         }
@@ -50,7 +51,8 @@ bool watertight(const TriangleMesh& m, std::string* why) {
 double volume(const TriangleMesh& m) {  // divergence theorem: sum of signed tetrahedra
     double v = 0;
     for (std::size_t t = 0; t < m.indices.size(); t += 3) {
-        Vec3 a = m.positions[m.indices[t]], b = m.positions[m.indices[t + 1]], c = m.positions[m.indices[t + 2]];
+        Vec3 a = m.positions[m.indices[t]], b = m.positions[m.indices[t + 1]],
+             c = m.positions[m.indices[t + 2]];
         v += double(dot(a, cross(b, c))) / 6.0;
     }
     return v;
@@ -132,9 +134,21 @@ TEST_CASE("triangulation with holes covers outer minus holes") {
     }
     CHECK(area == doctest::Approx(12.0 - 1.0 - 1.0));
     // Bad input.
-    CHECK(triangulate_polygon({{{0, 0}, {1, 0}}}, &pts, &tris).code() == StatusCode::invalid_argument);
-    CHECK(triangulate_polygon({{{0, 0}, {1, 0}, {2, 0}}}, &pts, &tris).code() == StatusCode::degenerate);
+    CHECK(triangulate_polygon({{{0, 0}, {1, 0}}}, &pts, &tris).code() ==
+          StatusCode::invalid_argument);
+    CHECK(triangulate_polygon({{{0, 0}, {1, 0}, {2, 0}}}, &pts, &tris).code() ==
+          StatusCode::degenerate);
     CHECK_FALSE(triangulate_polygon({{{0, 0}, {1, NAN}, {2, 1}}}, &pts, &tris).ok());
+    // A hole outside the outer ring, a hole crossing it, and nested holes are refused.
+    std::vector<Vec2> square{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+    CHECK(triangulate_polygon({square, {{5, 1}, {6, 1}, {6, 2}}}, &pts, &tris).code() ==
+          StatusCode::invalid_argument);
+    CHECK(triangulate_polygon({square, {{3, 1}, {5, 1}, {3, 2}}}, &pts, &tris).code() ==
+          StatusCode::invalid_argument);
+    CHECK(triangulate_polygon(
+              {square, {{1, 1}, {3, 1}, {3, 3}, {1, 3}}, {{1.5f, 1.5f}, {2, 1.5f}, {2, 2}}}, &pts,
+              &tris)
+              .code() == StatusCode::invalid_argument);
 }
 
 TEST_CASE("block letters: NAGOYA extrudes to closed solids with the outline's area") {
@@ -142,7 +156,8 @@ TEST_CASE("block letters: NAGOYA extrudes to closed solids with the outline's ar
         std::vector<std::vector<Vec2>> rings;
         REQUIRE(block_letter_outline(c, &rings).ok());
         double area = 0;
-        for (std::size_t r = 0; r < rings.size(); ++r) area += std::abs(signed_area2(rings[r])) / 2 * (r == 0 ? 1 : -1);
+        for (std::size_t r = 0; r < rings.size(); ++r)
+            area += std::abs(signed_area2(rings[r])) / 2 * (r == 0 ? 1 : -1);
         TriangleMesh m;
         INFO("letter " << c);
         REQUIRE(make_extrusion(rings, 0.0f, 0.25f, &m).ok());
@@ -166,6 +181,24 @@ TEST_CASE("mesh builders reject bad input with a clear status") {
     const Vec2d bad[] = {{-1, 0}, {1, 1}};
     CHECK(make_revolution(bad, 2, 16, &m).code() == StatusCode::invalid_argument);
     CHECK(make_sphere_without_octant(1.0f, 0, &m).code() == StatusCode::invalid_argument);
+    const Vec2d same[] = {{1, 1}, {1, 1}, {1, 1}};
+    CHECK(make_revolution(same, 3, 16, &m).code() == StatusCode::degenerate);
+    // Repeated profile points are dropped, not turned into flipped triangles.
+    const Vec2d repeated[] = {{0, 0}, {1, 0}, {1, 0}, {1, 1}, {1, 1}, {0, 1}};
+    REQUIRE(make_revolution(repeated, 6, 32, &m).ok());
+    std::string why;
+    CHECK_MESSAGE(watertight(m, &why), why);
+    check_normals(m);
+    // Out-of-range indices and singular transforms are refused, not written through.
+    TriangleMesh broken;
+    broken.add_vertex({0, 0, 0});
+    broken.add_triangle(0, 1, 2);
+    CHECK(compute_vertex_normals(&broken).code() == StatusCode::invalid_argument);
+    TriangleMesh sink;
+    CHECK(append(&sink, broken, Mat4::identity()).code() == StatusCode::invalid_argument);
+    TriangleMesh box;
+    REQUIRE(make_box({0, 0, 0}, {1, 1, 1}, &box).ok());
+    CHECK(append(&sink, box, Mat4::scale({1, 0, 1})).code() == StatusCode::invalid_argument);
     Status s = make_uv_sphere(1.0f, 100000, 8, &m);
     CHECK(std::strstr(s.message(), "slices") != nullptr);
 }
@@ -173,7 +206,7 @@ TEST_CASE("mesh builders reject bad input with a clear status") {
 TEST_CASE("append transforms points and normals; OBJ export writes every element") {
     TriangleMesh a, b;
     REQUIRE(make_box({0, 0, 0}, {1, 1, 1}, &a).ok());
-    append(&b, a, Mat4::translate({2, 0, 0}) * Mat4::scale({2, 1, 1}));
+    REQUIRE(append(&b, a, Mat4::translate({2, 0, 0}) * Mat4::scale({2, 1, 1})).ok());
     CHECK(b.positions.size() == a.positions.size());
     CHECK(volume(b) == doctest::Approx(2.0));
     check_normals(b);
@@ -184,10 +217,14 @@ TEST_CASE("append transforms points and normals; OBJ export writes every element
     char line[256];
     int v = 0, vt = 0, vn = 0, faces = 0;
     while (std::fgets(line, sizeof line, f)) {
-        if (!std::strncmp(line, "v ", 2)) ++v;
-        else if (!std::strncmp(line, "vt ", 3)) ++vt;
-        else if (!std::strncmp(line, "vn ", 3)) ++vn;
-        else if (!std::strncmp(line, "f ", 2)) ++faces;
+        if (!std::strncmp(line, "v ", 2))
+            ++v;
+        else if (!std::strncmp(line, "vt ", 3))
+            ++vt;
+        else if (!std::strncmp(line, "vn ", 3))
+            ++vn;
+        else if (!std::strncmp(line, "f ", 2))
+            ++faces;
     }
     std::fclose(f);
     std::remove(path);

@@ -16,8 +16,8 @@ std::vector<FigureSpec>& registry() {
 }
 
 int paper_rank(const std::string& paper) {
-    static const char* order[] = {"foundation", "okada1987", "okada1989", "tokai1994",
-                                  "fujimoto2000", "hirota1998"};
+    static const char* order[] = {"foundation", "okada1987",    "okada1989",
+                                  "tokai1994",  "fujimoto2000", "hirota1998"};
     for (int i = 0; i < 6; ++i)
         if (paper == order[i]) return i;
     return 6;
@@ -64,11 +64,13 @@ std::vector<FigureSpec> registered_figures() {
 FigureContext::FigureContext(std::string out_dir, std::string paper, std::string id, bool quick)
     : out_dir_(std::move(out_dir)), paper_(std::move(paper)), id_(std::move(id)), quick_(quick) {}
 
-void FigureContext::given(const std::string& name, const std::string& value, const std::string& where) {
+void FigureContext::given(const std::string& name, const std::string& value,
+                          const std::string& where) {
     parameters_.push_back({name, value, true, where});
 }
 
-void FigureContext::chosen(const std::string& name, const std::string& value, const std::string& why) {
+void FigureContext::chosen(const std::string& name, const std::string& value,
+                           const std::string& why) {
     parameters_.push_back({name, value, false, why});
 }
 

@@ -40,15 +40,18 @@ void info(const std::string& what, const std::string& text) {
 int main(int argc, char** argv) {
     std::string only;
     for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--quick")) bench::g_min_seconds = 0.03;
-        else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
+        if (!std::strcmp(argv[i], "--quick"))
+            bench::g_min_seconds = 0.03;
+        else if (!std::strcmp(argv[i], "--only") && i + 1 < argc)
+            only = argv[++i];
         else {
             std::fprintf(stderr, "usage: bench [--quick] [--only SUBSTRING]\n");
             return 2;
         }
     }
     auto list = bench::registry();
-    std::sort(list.begin(), list.end(), [](auto& a, auto& b) { return std::strcmp(a.first, b.first) < 0; });
+    std::sort(list.begin(), list.end(),
+              [](auto& a, auto& b) { return std::strcmp(a.first, b.first) < 0; });
     for (auto& [name, fn] : list)
         if (only.empty() || std::string(name).find(only) != std::string::npos) fn();
     return 0;

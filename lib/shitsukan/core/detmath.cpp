@@ -14,7 +14,7 @@ double det_log(double x) {
     if (!(x > 0.0)) return x == 0.0 ? -HUGE_VAL : NAN;
     if (std::isinf(x)) return x;
     int e = 0;
-    double m = std::frexp(x, &e);  // x = m·2^e, m in [0.5, 1): exact
+    double m = std::frexp(x, &e);      // x = m·2^e, m in [0.5, 1): exact
     if (m < 0.70710678118654752440) {  // bring m into [sqrt(1/2), sqrt(2))
         m *= 2.0;
         e -= 1;

@@ -24,7 +24,8 @@ namespace shitsukan {
 
 class Pcg32 {
 public:
-    explicit Pcg32(std::uint64_t seed = 0x853c49e6748fea9bULL, std::uint64_t stream = 0xda3e39cb94b95bdbULL) {
+    explicit Pcg32(std::uint64_t seed = 0x853c49e6748fea9bULL,
+                   std::uint64_t stream = 0xda3e39cb94b95bdbULL) {
         state_ = 0u;
         inc_ = (stream << 1u) | 1u;
         next_u32();

@@ -8,14 +8,22 @@ namespace shitsukan {
 
 const char* status_code_name(StatusCode code) {
     switch (code) {
-        case StatusCode::ok: return "ok";
-        case StatusCode::invalid_argument: return "invalid argument";
-        case StatusCode::out_of_range: return "out of range";
-        case StatusCode::too_large: return "too large";
-        case StatusCode::buffer_too_small: return "buffer too small";
-        case StatusCode::degenerate: return "degenerate";
-        case StatusCode::io_error: return "i/o error";
-        case StatusCode::not_supported: return "not supported";
+        case StatusCode::ok:
+            return "ok";
+        case StatusCode::invalid_argument:
+            return "invalid argument";
+        case StatusCode::out_of_range:
+            return "out of range";
+        case StatusCode::too_large:
+            return "too large";
+        case StatusCode::buffer_too_small:
+            return "buffer too small";
+        case StatusCode::degenerate:
+            return "degenerate";
+        case StatusCode::io_error:
+            return "i/o error";
+        case StatusCode::not_supported:
+            return "not supported";
     }
     return "unknown status";
 }

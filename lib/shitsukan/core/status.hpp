@@ -39,7 +39,8 @@ public:
 #if defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))
 #endif
-    static Status error(StatusCode code, const char* format, ...);
+    static Status
+    error(StatusCode code, const char* format, ...);
 
     bool ok() const { return code_ == StatusCode::ok; }
     explicit operator bool() const { return ok(); }
@@ -52,9 +53,9 @@ private:
 };
 
 // Propagate a failed Status to the caller: SHITSUKAN_TRY(write_png(...));
-#define SHITSUKAN_TRY(expr)                         \
-    do {                                            \
-        ::shitsukan::Status shitsukan_s_ = (expr);  \
+#define SHITSUKAN_TRY(expr)                          \
+    do {                                             \
+        ::shitsukan::Status shitsukan_s_ = (expr);   \
         if (!shitsukan_s_.ok()) return shitsukan_s_; \
     } while (0)
 

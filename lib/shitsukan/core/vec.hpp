@@ -18,22 +18,19 @@
 
 namespace shitsukan {
 
-template <class T>
-struct TVec2 {
+template <class T> struct TVec2 {
     T x = 0, y = 0;
     T& operator[](int i) { return i == 0 ? x : y; }
     T operator[](int i) const { return i == 0 ? x : y; }
 };
 
-template <class T>
-struct TVec3 {
+template <class T> struct TVec3 {
     T x = 0, y = 0, z = 0;
     T& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
     T operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
 };
 
-template <class T>
-struct TVec4 {
+template <class T> struct TVec4 {
     T x = 0, y = 0, z = 0, w = 0;
     T& operator[](int i) { return i == 0 ? x : (i == 1 ? y : (i == 2 ? z : w)); }
     T operator[](int i) const { return i == 0 ? x : (i == 1 ? y : (i == 2 ? z : w)); }
@@ -46,16 +43,24 @@ using Vec2d = TVec2<double>;
 using Vec3d = TVec3<double>;
 
 // ---- Vec2 ----
-template <class T> inline TVec2<T> operator+(TVec2<T> a, TVec2<T> b) { return {a.x + b.x, a.y + b.y}; }
-template <class T> inline TVec2<T> operator-(TVec2<T> a, TVec2<T> b) { return {a.x - b.x, a.y - b.y}; }
+template <class T> inline TVec2<T> operator+(TVec2<T> a, TVec2<T> b) {
+    return {a.x + b.x, a.y + b.y};
+}
+template <class T> inline TVec2<T> operator-(TVec2<T> a, TVec2<T> b) {
+    return {a.x - b.x, a.y - b.y};
+}
 template <class T> inline TVec2<T> operator-(TVec2<T> a) { return {-a.x, -a.y}; }
 template <class T> inline TVec2<T> operator*(TVec2<T> a, T s) { return {a.x * s, a.y * s}; }
 template <class T> inline TVec2<T> operator*(T s, TVec2<T> a) { return {a.x * s, a.y * s}; }
 template <class T> inline TVec2<T> operator/(TVec2<T> a, T s) { return {a.x / s, a.y / s}; }
-template <class T> inline bool operator==(TVec2<T> a, TVec2<T> b) { return a.x == b.x && a.y == b.y; }
+template <class T> inline bool operator==(TVec2<T> a, TVec2<T> b) {
+    return a.x == b.x && a.y == b.y;
+}
 template <class T> inline bool operator!=(TVec2<T> a, TVec2<T> b) { return !(a == b); }
 template <class T> inline T dot(TVec2<T> a, TVec2<T> b) { return a.x * b.x + a.y * b.y; }
-template <class T> inline T cross(TVec2<T> a, TVec2<T> b) { return a.x * b.y - a.y * b.x; }  // z of 3D cross
+template <class T> inline T cross(TVec2<T> a, TVec2<T> b) {
+    return a.x * b.y - a.y * b.x;
+}  // z of 3D cross
 template <class T> inline T length_squared(TVec2<T> a) { return dot(a, a); }
 template <class T> inline T length(TVec2<T> a) { return std::sqrt(dot(a, a)); }
 template <class T> inline TVec2<T> normalize(TVec2<T> a) {
@@ -65,19 +70,35 @@ template <class T> inline TVec2<T> normalize(TVec2<T> a) {
 template <class T> inline bool is_finite(TVec2<T> a) { return is_finite(a.x) && is_finite(a.y); }
 
 // ---- Vec3 ----
-template <class T> inline TVec3<T> operator+(TVec3<T> a, TVec3<T> b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-template <class T> inline TVec3<T> operator-(TVec3<T> a, TVec3<T> b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+template <class T> inline TVec3<T> operator+(TVec3<T> a, TVec3<T> b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+template <class T> inline TVec3<T> operator-(TVec3<T> a, TVec3<T> b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
 template <class T> inline TVec3<T> operator-(TVec3<T> a) { return {-a.x, -a.y, -a.z}; }
-template <class T> inline TVec3<T> operator*(TVec3<T> a, T s) { return {a.x * s, a.y * s, a.z * s}; }
-template <class T> inline TVec3<T> operator*(T s, TVec3<T> a) { return {a.x * s, a.y * s, a.z * s}; }
-template <class T> inline TVec3<T> operator*(TVec3<T> a, TVec3<T> b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
-template <class T> inline TVec3<T> operator/(TVec3<T> a, T s) { return {a.x / s, a.y / s, a.z / s}; }
+template <class T> inline TVec3<T> operator*(TVec3<T> a, T s) {
+    return {a.x * s, a.y * s, a.z * s};
+}
+template <class T> inline TVec3<T> operator*(T s, TVec3<T> a) {
+    return {a.x * s, a.y * s, a.z * s};
+}
+template <class T> inline TVec3<T> operator*(TVec3<T> a, TVec3<T> b) {
+    return {a.x * b.x, a.y * b.y, a.z * b.z};
+}
+template <class T> inline TVec3<T> operator/(TVec3<T> a, T s) {
+    return {a.x / s, a.y / s, a.z / s};
+}
 template <class T> inline TVec3<T>& operator+=(TVec3<T>& a, TVec3<T> b) { return a = a + b; }
 template <class T> inline TVec3<T>& operator-=(TVec3<T>& a, TVec3<T> b) { return a = a - b; }
 template <class T> inline TVec3<T>& operator*=(TVec3<T>& a, T s) { return a = a * s; }
-template <class T> inline bool operator==(TVec3<T> a, TVec3<T> b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+template <class T> inline bool operator==(TVec3<T> a, TVec3<T> b) {
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+}
 template <class T> inline bool operator!=(TVec3<T> a, TVec3<T> b) { return !(a == b); }
-template <class T> inline T dot(TVec3<T> a, TVec3<T> b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+template <class T> inline T dot(TVec3<T> a, TVec3<T> b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 template <class T> inline TVec3<T> cross(TVec3<T> a, TVec3<T> b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
@@ -93,13 +114,21 @@ template <class T> inline TVec3<T> vmin(TVec3<T> a, TVec3<T> b) {
 template <class T> inline TVec3<T> vmax(TVec3<T> a, TVec3<T> b) {
     return {a.x > b.x ? a.x : b.x, a.y > b.y ? a.y : b.y, a.z > b.z ? a.z : b.z};
 }
-template <class T> inline bool is_finite(TVec3<T> a) { return is_finite(a.x) && is_finite(a.y) && is_finite(a.z); }
+template <class T> inline bool is_finite(TVec3<T> a) {
+    return is_finite(a.x) && is_finite(a.y) && is_finite(a.z);
+}
 template <class T> inline TVec3<T> lerp(TVec3<T> a, TVec3<T> b, T t) { return a + (b - a) * t; }
 
 // ---- Vec4 ----
-template <class T> inline TVec4<T> operator+(TVec4<T> a, TVec4<T> b) { return {a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w}; }
-template <class T> inline TVec4<T> operator-(TVec4<T> a, TVec4<T> b) { return {a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w}; }
-template <class T> inline TVec4<T> operator*(TVec4<T> a, T s) { return {a.x * s, a.y * s, a.z * s, a.w * s}; }
+template <class T> inline TVec4<T> operator+(TVec4<T> a, TVec4<T> b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w};
+}
+template <class T> inline TVec4<T> operator-(TVec4<T> a, TVec4<T> b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w};
+}
+template <class T> inline TVec4<T> operator*(TVec4<T> a, T s) {
+    return {a.x * s, a.y * s, a.z * s, a.w * s};
+}
 template <class T> inline TVec4<T> lerp(TVec4<T> a, TVec4<T> b, T t) { return a + (b - a) * t; }
 template <class T> inline TVec3<T> xyz(TVec4<T> a) { return {a.x, a.y, a.z}; }
 

@@ -86,7 +86,9 @@ void bspline_impl(int n, T t, T* b, T* db) {
 }  // namespace
 
 void bernstein_basis(int degree, float t, float* b, float* db) { bernstein_impl(degree, t, b, db); }
-void bernstein_basis(int degree, double t, double* b, double* db) { bernstein_impl(degree, t, b, db); }
+void bernstein_basis(int degree, double t, double* b, double* db) {
+    bernstein_impl(degree, t, b, db);
+}
 void bspline_basis(int degree, float t, float* b, float* db) { bspline_impl(degree, t, b, db); }
 void bspline_basis(int degree, double t, double* b, double* db) { bspline_impl(degree, t, b, db); }
 

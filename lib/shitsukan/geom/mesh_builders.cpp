@@ -28,7 +28,8 @@ Status check_positive(const char* what, const char* name, float v) {
 
 // Adds triangle a b c, flipped if needed so that its winding is counter-clockwise seen from
 // the side `outward` points to. Zero-area triangles are dropped (poles, axis points).
-void add_oriented(TriangleMesh* m, std::uint32_t a, std::uint32_t b, std::uint32_t c, Vec3 outward) {
+void add_oriented(TriangleMesh* m, std::uint32_t a, std::uint32_t b, std::uint32_t c,
+                  Vec3 outward) {
     Vec3 n = cross(m->positions[b] - m->positions[a], m->positions[c] - m->positions[a]);
     if (length_squared(n) == 0.0f) return;
     if (dot(n, outward) < 0.0f) std::swap(b, c);
@@ -43,7 +44,8 @@ Status make_box(Vec3 lo, Vec3 hi, TriangleMesh* out) {
         return Status::error(StatusCode::invalid_argument,
                              "make_box: need finite corners with min < max on every axis "
                              "(got (%g,%g,%g) .. (%g,%g,%g))",
-                             double(lo.x), double(lo.y), double(lo.z), double(hi.x), double(hi.y), double(hi.z));
+                             double(lo.x), double(lo.y), double(lo.z), double(hi.x), double(hi.y),
+                             double(hi.z));
     *out = TriangleMesh();
     // Each face: normal axis, sign; its four corners get their own vertices (flat normals).
     for (int axis = 0; axis < 3; ++axis) {
@@ -89,7 +91,8 @@ Status make_uv_sphere(float radius, int slices, int stacks, TriangleMesh* out) {
         for (int j = 0; j < slices; ++j) {
             std::uint32_t a = std::uint32_t(i * (slices + 1) + j), b = a + 1;
             std::uint32_t c = a + std::uint32_t(slices + 1), d = c + 1;
-            Vec3 mid = normalize(out->positions[a] + out->positions[b] + out->positions[c] + out->positions[d]);
+            Vec3 mid = normalize(out->positions[a] + out->positions[b] + out->positions[c] +
+                                 out->positions[d]);
             add_oriented(out, a, c, d, mid);
             add_oriented(out, a, d, b, mid);
         }
@@ -101,8 +104,9 @@ Status make_cylinder(float radius, float y0, float y1, int slices, bool caps, Tr
     SHITSUKAN_TRY(check_positive("make_cylinder", "radius", radius));
     SHITSUKAN_TRY(check_segments("make_cylinder", "slices", slices));
     if (!std::isfinite(y0) || !std::isfinite(y1) || !(y0 < y1))
-        return Status::error(StatusCode::invalid_argument, "make_cylinder: need finite y0 < y1 (got %g, %g)",
-                             double(y0), double(y1));
+        return Status::error(StatusCode::invalid_argument,
+                             "make_cylinder: need finite y0 < y1 (got %g, %g)", double(y0),
+                             double(y1));
     Vec2d profile[4] = {{0, y0}, {radius, y0}, {radius, y1}, {0, y1}};
     if (caps) return make_revolution(profile, 4, slices, out);
     return make_revolution(profile + 1, 2, slices, out);
@@ -114,9 +118,10 @@ Status make_torus(float major_radius, float minor_radius, int major_segments, in
     SHITSUKAN_TRY(check_positive("make_torus", "major_radius", major_radius));
     SHITSUKAN_TRY(check_positive("make_torus", "minor_radius", minor_radius));
     if (!(minor_radius < major_radius))
-        return Status::error(StatusCode::invalid_argument,
-                             "make_torus: minor_radius %g must be < major_radius %g (no self-intersection)",
-                             double(minor_radius), double(major_radius));
+        return Status::error(
+            StatusCode::invalid_argument,
+            "make_torus: minor_radius %g must be < major_radius %g (no self-intersection)",
+            double(minor_radius), double(major_radius));
     SHITSUKAN_TRY(check_segments("make_torus", "major_segments", major_segments));
     SHITSUKAN_TRY(check_segments("make_torus", "minor_segments", minor_segments));
     // The torus is the revolution of a circle (r, y) = (R + r cos v, r sin v) about y.
@@ -136,14 +141,27 @@ Status make_torus(float major_radius, float minor_radius, int major_segments, in
 Status make_revolution(const Vec2d* profile, int count, int segments, TriangleMesh* out) {
     if (!out) return Status::error(StatusCode::invalid_argument, "make_revolution: null output");
     if (!profile || count < 2)
-        return Status::error(StatusCode::invalid_argument, "make_revolution: need >= 2 profile points (got %d)", count);
+        return Status::error(StatusCode::invalid_argument,
+                             "make_revolution: need >= 2 profile points (got %d)", count);
     SHITSUKAN_TRY(check_segments("make_revolution", "segments", segments));
     for (int k = 0; k < count; ++k)
         if (!std::isfinite(profile[k].x) || !std::isfinite(profile[k].y) || profile[k].x < 0.0)
-            return Status::error(StatusCode::invalid_argument,
-                                 "make_revolution: profile point %d must be finite with r >= 0 (got r = %g, y = %g)",
-                                 k, profile[k].x, profile[k].y);
-    bool closed = count > 2 && profile[0].x == profile[count - 1].x && profile[0].y == profile[count - 1].y;
+            return Status::error(
+                StatusCode::invalid_argument,
+                "make_revolution: profile point %d must be finite with r >= 0 (got r = %g, y = %g)",
+                k, profile[k].x, profile[k].y);
+    // Repeated consecutive points would give zero-length segments with no normal: drop them.
+    std::vector<Vec2d> pts;
+    for (int k = 0; k < count; ++k)
+        if (pts.empty() || profile[k].x != pts.back().x || profile[k].y != pts.back().y)
+            pts.push_back(profile[k]);
+    if (pts.size() < 2)
+        return Status::error(StatusCode::degenerate,
+                             "make_revolution: the profile's points all coincide");
+    profile = pts.data();
+    count = int(pts.size());
+    bool closed =
+        count > 2 && profile[0].x == profile[count - 1].x && profile[0].y == profile[count - 1].y;
     int n = closed ? count - 1 : count;  // distinct points
     auto seg_normal = [&](int k) {       // normal of segment k -> k+1 (in the r, y plane)
         Vec2d a = profile[k % n], b = profile[(k + 1) % n];
@@ -157,16 +175,18 @@ Status make_revolution(const Vec2d* profile, int count, int segments, TriangleMe
     struct Ring {
         double r, y;
         Vec2d normal;
-        double v;           // arc-length parameter in [0, 1]
+        double v;  // arc-length parameter in [0, 1]
         bool joined_to_prev;
     };
     std::vector<double> arclen(std::size_t(nseg) + 1, 0.0);
     for (int k = 0; k < nseg; ++k) {
         Vec2d a = profile[k], b = profile[(k + 1) % n];
-        arclen[std::size_t(k) + 1] = arclen[std::size_t(k)] + std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
+        arclen[std::size_t(k) + 1] = arclen[std::size_t(k)] + std::sqrt((b.x - a.x) * (b.x - a.x) +
+                                                                        (b.y - a.y) * (b.y - a.y));
     }
     double total = arclen[std::size_t(nseg)];
-    if (total == 0) return Status::error(StatusCode::degenerate, "make_revolution: profile has zero length");
+    if (total == 0)
+        return Status::error(StatusCode::degenerate, "make_revolution: profile has zero length");
     std::vector<Ring> rings;
     for (int k = 0; k <= nseg; ++k) {
         const Vec2d& p = profile[k % n];
@@ -178,7 +198,9 @@ Status make_revolution(const Vec2d* profile, int count, int segments, TriangleMe
         double l = std::sqrt(avg.x * avg.x + avg.y * avg.y);
         bool sharp = has_in && has_out && (nin.x * nout.x + nin.y * nout.y) < 0.766;  // > ~40 deg
         if (!sharp) {
-            Vec2d nn = !has_in ? nout : !has_out ? nin : (l > 0 ? Vec2d{avg.x / l, avg.y / l} : nout);
+            Vec2d nn = !has_in    ? nout
+                       : !has_out ? nin
+                                  : (l > 0 ? Vec2d{avg.x / l, avg.y / l} : nout);
             rings.push_back({p.x, p.y, nn, v, k > 0});
         } else {
             if (k > 0) rings.push_back({p.x, p.y, nin, v, true});
@@ -197,7 +219,8 @@ Status make_revolution(const Vec2d* profile, int count, int segments, TriangleMe
     for (std::size_t i = 0; i + 1 < rings.size(); ++i) {
         if (!rings[i + 1].joined_to_prev) continue;
         for (int j = 0; j < segments; ++j) {
-            std::uint32_t a = std::uint32_t(i * std::size_t(segments + 1) + std::size_t(j)), b = a + 1;
+            std::uint32_t a = std::uint32_t(i * std::size_t(segments + 1) + std::size_t(j)),
+                          b = a + 1;
             std::uint32_t c = a + std::uint32_t(segments + 1), d = c + 1;
             Vec3 outward = out->normals[a] + out->normals[b] + out->normals[c] + out->normals[d];
             add_oriented(out, a, c, d, outward);
@@ -210,38 +233,47 @@ Status make_revolution(const Vec2d* profile, int count, int segments, TriangleMe
 // Uniform Catmull-Rom spline through the control points, in double (okada1987: "the spline
 // in 8-byte reals"). The end tangents use a doubled end point. Returns every control point
 // exactly, with samples_per_segment - 1 points in between.
-Status sample_spline(const Vec2d* control, int count, int samples_per_segment, std::vector<Vec2d>* out) {
+Status sample_spline(const Vec2d* control, int count, int samples_per_segment,
+                     std::vector<Vec2d>* out) {
     if (!out) return Status::error(StatusCode::invalid_argument, "sample_spline: null output");
     if (!control || count < 2)
-        return Status::error(StatusCode::invalid_argument, "sample_spline: need >= 2 control points (got %d)", count);
+        return Status::error(StatusCode::invalid_argument,
+                             "sample_spline: need >= 2 control points (got %d)", count);
     if (samples_per_segment < 1 || samples_per_segment > kMaxSegments)
-        return Status::error(StatusCode::invalid_argument, "sample_spline: samples_per_segment must be in [1, %d] (got %d)",
+        return Status::error(StatusCode::invalid_argument,
+                             "sample_spline: samples_per_segment must be in [1, %d] (got %d)",
                              kMaxSegments, samples_per_segment);
     for (int k = 0; k < count; ++k)
         if (!std::isfinite(control[k].x) || !std::isfinite(control[k].y))
-            return Status::error(StatusCode::invalid_argument, "sample_spline: control point %d is not finite", k);
+            return Status::error(StatusCode::invalid_argument,
+                                 "sample_spline: control point %d is not finite", k);
     out->clear();
     for (int k = 0; k + 1 < count; ++k) {
         Vec2d p0 = control[k > 0 ? k - 1 : 0], p1 = control[k], p2 = control[k + 1];
         Vec2d p3 = control[k + 2 < count ? k + 2 : count - 1];
         for (int s = 0; s < samples_per_segment; ++s) {
             double t = double(s) / samples_per_segment, t2 = t * t, t3 = t2 * t;
-            // C(t) = 0.5·[2P1 + (-P0 + P2)t + (2P0 - 5P1 + 4P2 - P3)t^2 + (-P0 + 3P1 - 3P2 + P3)t^3]
+            // C(t) = 0.5·[2P1 + (-P0 + P2)t + (2P0 - 5P1 + 4P2 - P3)t^2 + (-P0 + 3P1 - 3P2 +
+            // P3)t^3]
             auto eval = [&](double a, double b, double c, double d) {
-                return 0.5 * (2 * b + (-a + c) * t + (2 * a - 5 * b + 4 * c - d) * t2 + (-a + 3 * b - 3 * c + d) * t3);
+                return 0.5 * (2 * b + (-a + c) * t + (2 * a - 5 * b + 4 * c - d) * t2 +
+                              (-a + 3 * b - 3 * c + d) * t3);
             };
-            out->push_back(s == 0 ? p1 : Vec2d{eval(p0.x, p1.x, p2.x, p3.x), eval(p0.y, p1.y, p2.y, p3.y)});
+            out->push_back(
+                s == 0 ? p1 : Vec2d{eval(p0.x, p1.x, p2.x, p3.x), eval(p0.y, p1.y, p2.y, p3.y)});
         }
     }
     out->push_back(control[count - 1]);
     return Status::success();
 }
 
-Status make_extrusion(const std::vector<std::vector<Vec2>>& outline, float z0, float z1, TriangleMesh* out) {
+Status make_extrusion(const std::vector<std::vector<Vec2>>& outline, float z0, float z1,
+                      TriangleMesh* out) {
     if (!out) return Status::error(StatusCode::invalid_argument, "make_extrusion: null output");
     if (!std::isfinite(z0) || !std::isfinite(z1) || !(z0 < z1))
-        return Status::error(StatusCode::invalid_argument, "make_extrusion: need finite z0 < z1 (got %g, %g)",
-                             double(z0), double(z1));
+        return Status::error(StatusCode::invalid_argument,
+                             "make_extrusion: need finite z0 < z1 (got %g, %g)", double(z0),
+                             double(z1));
     std::vector<Vec2> pts;
     std::vector<std::uint32_t> tris;
     SHITSUKAN_TRY(triangulate_polygon(outline, &pts, &tris));
@@ -281,7 +313,8 @@ Status make_extrusion(const std::vector<std::vector<Vec2>>& outline, float z0, f
 }
 
 Status make_block_text(const char* text, float letter_height, float depth, TriangleMesh* out) {
-    if (!out || !text) return Status::error(StatusCode::invalid_argument, "make_block_text: null argument");
+    if (!out || !text)
+        return Status::error(StatusCode::invalid_argument, "make_block_text: null argument");
     SHITSUKAN_TRY(check_positive("make_block_text", "letter_height", letter_height));
     SHITSUKAN_TRY(check_positive("make_block_text", "depth", depth));
     *out = TriangleMesh();
@@ -297,7 +330,7 @@ Status make_block_text(const char* text, float letter_height, float depth, Trian
             for (Vec2& p : ring) p = Vec2{pen + p.x * letter_height, p.y * letter_height};
         TriangleMesh letter;
         SHITSUKAN_TRY(make_extrusion(rings, -0.5f * depth, 0.5f * depth, &letter));
-        append(out, letter, Mat4::identity());
+        SHITSUKAN_TRY(append(out, letter, Mat4::identity()));
         pen += kBlockLetterAdvance * letter_height;
     }
     return Status::success();
@@ -308,7 +341,9 @@ Status make_block_text(const char* text, float letter_height, float depth, Trian
 // projected to the sphere. Computing every point from its integer coordinates makes the
 // points shared by two patches (or by a patch and a cut face) bit-identical: no cracks.
 Status make_sphere_without_octant(float radius, int n, TriangleMesh* out) {
-    if (!out) return Status::error(StatusCode::invalid_argument, "make_sphere_without_octant: null output");
+    if (!out)
+        return Status::error(StatusCode::invalid_argument,
+                             "make_sphere_without_octant: null output");
     SHITSUKAN_TRY(check_positive("make_sphere_without_octant", "radius", radius));
     SHITSUKAN_TRY(check_segments("make_sphere_without_octant", "subdivisions", n, 1));
     *out = TriangleMesh();
@@ -326,17 +361,21 @@ Status make_sphere_without_octant(float radius, int n, TriangleMesh* out) {
             for (int j = 0; i + j <= n; ++j) {
                 Vec3 p = sphere_point(sx * i, sy * j, sz * (n - i - j));
                 Vec3 nn = normalize(p);
-                float u = 0.5f + std::atan2(-nn.z, nn.x) / kTwoPi, v = std::acos(clamp(nn.y, -1.0f, 1.0f)) / kPi;
+                float u = 0.5f + std::atan2(-nn.z, nn.x) / kTwoPi,
+                      v = std::acos(clamp(nn.y, -1.0f, 1.0f)) / kPi;
                 idx[std::size_t(i * (n + 1) + j)] = out->add_vertex(p, nn, {u, v});
             }
         for (int i = 0; i < n; ++i)
             for (int j = 0; i + j < n; ++j) {
-                std::uint32_t a = idx[std::size_t(i * (n + 1) + j)], b = idx[std::size_t((i + 1) * (n + 1) + j)];
+                std::uint32_t a = idx[std::size_t(i * (n + 1) + j)],
+                              b = idx[std::size_t((i + 1) * (n + 1) + j)];
                 std::uint32_t c = idx[std::size_t(i * (n + 1) + j + 1)];
-                add_oriented(out, a, b, c, out->positions[a] + out->positions[b] + out->positions[c]);
+                add_oriented(out, a, b, c,
+                             out->positions[a] + out->positions[b] + out->positions[c]);
                 if (i + j + 1 < n) {
                     std::uint32_t d = idx[std::size_t((i + 1) * (n + 1) + j + 1)];
-                    add_oriented(out, b, d, c, out->positions[b] + out->positions[d] + out->positions[c]);
+                    add_oriented(out, b, d, c,
+                                 out->positions[b] + out->positions[d] + out->positions[c]);
                 }
             }
     }
@@ -352,8 +391,9 @@ Status make_sphere_without_octant(float radius, int n, TriangleMesh* out) {
             c[(axis + 1) % 3] = n - k;
             c[(axis + 2) % 3] = k;
             Vec3 p = sphere_point(c[0], c[1], c[2]);
-            std::uint32_t cur = out->add_vertex(p, nrm, {0.5f + 0.5f * p[(axis + 1) % 3] / radius,
-                                                         0.5f + 0.5f * p[(axis + 2) % 3] / radius});
+            std::uint32_t cur = out->add_vertex(p, nrm,
+                                                {0.5f + 0.5f * p[(axis + 1) % 3] / radius,
+                                                 0.5f + 0.5f * p[(axis + 2) % 3] / radius});
             if (k > 0) add_oriented(out, centre, prev, cur, nrm);
             prev = cur;
         }
@@ -361,33 +401,64 @@ Status make_sphere_without_octant(float radius, int n, TriangleMesh* out) {
     return Status::success();
 }
 
-void append(TriangleMesh* dst, const TriangleMesh& src, const Mat4& transform) {
-    SHITSUKAN_ASSERT(dst != nullptr);
+namespace {
+
+Status check_indices(const char* what, const TriangleMesh& m) {
+    if (m.indices.size() % 3 != 0)
+        return Status::error(StatusCode::invalid_argument, "%s: %zu indices is not a multiple of 3",
+                             what, m.indices.size());
+    for (std::size_t k = 0; k < m.indices.size(); ++k)
+        if (m.indices[k] >= m.positions.size())
+            return Status::error(StatusCode::invalid_argument,
+                                 "%s: index %zu is %u but the mesh has %zu vertices", what, k,
+                                 m.indices[k], m.positions.size());
+    return Status::success();
+}
+
+}  // namespace
+
+Status append(TriangleMesh* dst, const TriangleMesh& src, const Mat4& transform) {
+    if (!dst) return Status::error(StatusCode::invalid_argument, "append: null destination");
+    SHITSUKAN_TRY(check_indices("append", src));
     bool ok = true;
     Mat4 normal_matrix = transpose(inverse(transform, &ok));  // normals: inverse transpose
+    if (!ok)
+        return Status::error(StatusCode::invalid_argument,
+                             "append: the transform is singular or not finite");
+    if (dst->positions.size() + src.positions.size() > 0xffffffffULL)
+        return Status::error(StatusCode::too_large,
+                             "append: %zu + %zu vertices exceed 32-bit indices",
+                             dst->positions.size(), src.positions.size());
     std::uint32_t base = std::uint32_t(dst->positions.size());
     bool had_colors = !dst->colors.empty() || (dst->positions.empty() && !src.colors.empty());
     for (std::size_t i = 0; i < src.positions.size(); ++i) {
-        Vec3 n = i < src.normals.size() ? normalize(transform_vector(normal_matrix, src.normals[i])) : Vec3{};
+        Vec3 n = i < src.normals.size() ? normalize(transform_vector(normal_matrix, src.normals[i]))
+                                        : Vec3{};
         Vec2 uv = i < src.uvs.size() ? src.uvs[i] : Vec2{};
         dst->add_vertex(transform_point(transform, src.positions[i]), n, uv);
-        if (had_colors) dst->colors.push_back(i < src.colors.size() ? src.colors[i] : Vec3{1, 1, 1});
+        if (had_colors)
+            dst->colors.push_back(i < src.colors.size() ? src.colors[i] : Vec3{1, 1, 1});
     }
     for (std::uint32_t k : src.indices) dst->indices.push_back(base + k);
+    return Status::success();
 }
 
-void compute_vertex_normals(TriangleMesh* mesh) {
-    SHITSUKAN_ASSERT(mesh != nullptr);
+Status compute_vertex_normals(TriangleMesh* mesh) {
+    if (!mesh)
+        return Status::error(StatusCode::invalid_argument, "compute_vertex_normals: null mesh");
+    SHITSUKAN_TRY(check_indices("compute_vertex_normals", *mesh));
     mesh->normals.assign(mesh->positions.size(), Vec3{});
     for (std::size_t t = 0; t + 2 < mesh->indices.size(); t += 3) {
         std::uint32_t a = mesh->indices[t], b = mesh->indices[t + 1], c = mesh->indices[t + 2];
         // The cross product's length is twice the area: an area-weighted sum.
-        Vec3 n = cross(mesh->positions[b] - mesh->positions[a], mesh->positions[c] - mesh->positions[a]);
+        Vec3 n =
+            cross(mesh->positions[b] - mesh->positions[a], mesh->positions[c] - mesh->positions[a]);
         mesh->normals[a] += n;
         mesh->normals[b] += n;
         mesh->normals[c] += n;
     }
     for (Vec3& n : mesh->normals) n = normalize(n);
+    return Status::success();
 }
 
 }  // namespace shitsukan

@@ -11,7 +11,8 @@
 //   sample_spline(ctrl, n, 16, &points);             // Catmull-Rom through ctrl, in double
 //   make_extrusion(outline, -0.1f, 0.1f, &m);        // outline[0] outer (any orientation),
 //                                                    // outline[1..] holes; extruded along z
-//   make_block_text("NAGOYA", 1.0f, 0.3f, &m);       // block capitals (block_letters.hpp), y = 0 baseline,
+//   make_block_text("NAGOYA", 1.0f, 0.3f, &m);       // block capitals (block_letters.hpp), y = 0
+//   baseline,
 //                                                    // letter height 1, depth along z
 //   make_sphere_without_octant(1.0f, 24, &m);        // closed: the x,y,z > 0 octant removed,
 //                                                    // three quarter-disc cut faces
@@ -41,7 +42,8 @@ Status make_extrusion(const std::vector<std::vector<Vec2>>& outline, float z0, f
                       TriangleMesh* out);
 Status make_block_text(const char* text, float letter_height, float depth, TriangleMesh* out);
 Status make_sphere_without_octant(float radius, int subdivisions, TriangleMesh* out);
-void append(TriangleMesh* dst, const TriangleMesh& src, const Mat4& transform);
-void compute_vertex_normals(TriangleMesh* mesh);
+// Both check the indices (and append the transform's invertibility) and say what is wrong.
+Status append(TriangleMesh* dst, const TriangleMesh& src, const Mat4& transform);
+Status compute_vertex_normals(TriangleMesh* mesh);
 
 }  // namespace shitsukan

@@ -23,12 +23,23 @@ bool segments_cross(P a, P b, P c, P d) {
         return true;
     // Collinear overlap also blocks a bridge.
     auto on = [](P p, P q, P r) {  // r on segment pq (collinear assumed)
-        return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) && std::min(p.y, q.y) <= r.y &&
-               r.y <= std::max(p.y, q.y);
+        return std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x) &&
+               std::min(p.y, q.y) <= r.y && r.y <= std::max(p.y, q.y);
     };
     if (o1 == 0 && on(a, b, c)) return true;
     if (o2 == 0 && on(a, b, d)) return true;
     return false;
+}
+
+// Even-odd point-in-polygon (crossing number) for a ring of points.
+bool inside_ring(const std::vector<Vec2>& ring, P p) {
+    bool in = false;
+    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+        P a{ring[i].x, ring[i].y}, b{ring[j].x, ring[j].y};
+        if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x)
+            in = !in;
+    }
+    return in;
 }
 
 bool inside_triangle(P a, P b, P c, P p) {  // closed triangle, a b c counter-clockwise
@@ -53,7 +64,8 @@ Status triangulate_polygon(const std::vector<std::vector<Vec2>>& rings, std::vec
         return Status::error(StatusCode::invalid_argument, "triangulate_polygon: null output");
     points->clear();
     triangles->clear();
-    if (rings.empty()) return Status::error(StatusCode::invalid_argument, "triangulate_polygon: no rings");
+    if (rings.empty())
+        return Status::error(StatusCode::invalid_argument, "triangulate_polygon: no rings");
     for (std::size_t r = 0; r < rings.size(); ++r) {
         if (rings[r].size() < 3)
             return Status::error(StatusCode::invalid_argument,
@@ -65,7 +77,32 @@ Status triangulate_polygon(const std::vector<std::vector<Vec2>>& rings, std::vec
                                      "triangulate_polygon: ring %zu has a non-finite vertex", r);
     }
     if (signed_area2(rings[0]) == 0.0)
-        return Status::error(StatusCode::degenerate, "triangulate_polygon: outer ring has zero area");
+        return Status::error(StatusCode::degenerate,
+                             "triangulate_polygon: outer ring has zero area");
+    // Holes must lie inside the outer ring and outside each other, and no two edges of
+    // different rings may cross: otherwise "outer minus holes" is not what the caller meant.
+    for (std::size_t r = 1; r < rings.size(); ++r) {
+        for (const Vec2& v : rings[r])
+            if (!inside_ring(rings[0], P{v.x, v.y}))
+                return Status::error(StatusCode::invalid_argument,
+                                     "triangulate_polygon: hole %zu has a vertex outside the outer "
+                                     "ring",
+                                     r);
+        for (std::size_t q = 1; q < rings.size(); ++q)
+            if (q != r && inside_ring(rings[q], P{rings[r][0].x, rings[r][0].y}))
+                return Status::error(StatusCode::invalid_argument,
+                                     "triangulate_polygon: hole %zu lies inside hole %zu", r, q);
+    }
+    for (std::size_t r = 0; r < rings.size(); ++r)
+        for (std::size_t q = r + 1; q < rings.size(); ++q)
+            for (std::size_t i = 0; i < rings[r].size(); ++i)
+                for (std::size_t j = 0; j < rings[q].size(); ++j) {
+                    const Vec2 &a = rings[r][i], &b = rings[r][(i + 1) % rings[r].size()];
+                    const Vec2 &c = rings[q][j], &d = rings[q][(j + 1) % rings[q].size()];
+                    if (segments_cross(P{a.x, a.y}, P{b.x, b.y}, P{c.x, c.y}, P{d.x, d.y}))
+                        return Status::error(StatusCode::invalid_argument,
+                                             "triangulate_polygon: rings %zu and %zu cross", r, q);
+                }
 
     // Vertex table: every ring vertex once; rings as index loops with the orientation fixed
     // (outer counter-clockwise, holes clockwise) so that the interior is always on the left.
@@ -92,7 +129,8 @@ Status triangulate_polygon(const std::vector<std::vector<Vec2>>& rings, std::vec
         for (std::uint32_t i : loops[r]) m = std::max(m, pt(i).x);
         return m;
     };
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return max_x(a) > max_x(b); });
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return max_x(a) > max_x(b); });
     std::vector<bool> merged(loops.size(), false);
     for (std::size_t r : order) {
         const std::vector<std::uint32_t>& hole = loops[r];
@@ -118,7 +156,8 @@ Status triangulate_polygon(const std::vector<std::vector<Vec2>>& rings, std::vec
             double d = (v.x - m.x) * (v.x - m.x) + (v.y - m.y) * (v.y - m.y);
             if (d < best_d && !blocked(m, v)) {
                 // The bridge must leave V into the polygon's interior (between its edges).
-                P prev = pt(poly[(k + poly.size() - 1) % poly.size()]), next = pt(poly[(k + 1) % poly.size()]);
+                P prev = pt(poly[(k + poly.size() - 1) % poly.size()]),
+                  next = pt(poly[(k + 1) % poly.size()]);
                 bool convex = orient(prev, v, next) >= 0;
                 bool in_cone = convex ? (orient(v, next, m) >= 0 && orient(prev, v, m) >= 0)
                                       : !(orient(v, next, m) < 0 && orient(prev, v, m) < 0);
@@ -131,7 +170,8 @@ Status triangulate_polygon(const std::vector<std::vector<Vec2>>& rings, std::vec
             return Status::error(StatusCode::invalid_argument,
                                  "triangulate_polygon: hole %zu is not inside the outer ring", r);
         std::vector<std::uint32_t> joined(poly.begin(), poly.begin() + std::ptrdiff_t(best) + 1);
-        for (std::size_t k = 0; k <= hole.size(); ++k) joined.push_back(hole[(mi + k) % hole.size()]);
+        for (std::size_t k = 0; k <= hole.size(); ++k)
+            joined.push_back(hole[(mi + k) % hole.size()]);
         joined.insert(joined.end(), poly.begin() + std::ptrdiff_t(best), poly.end());
         poly.swap(joined);
         merged[r] = true;

@@ -1,73 +1,20 @@
-// shitsukan/image/image.hpp — images over caller memory, and owning images on top.
+// shitsukan/image/image.hpp — owning images (host side) on top of the views.
 //
 // Manual
-//   Rgb8 px{255, 128, 0};
-//   Rgb8 buffer[64 * 32];
-//   RgbView view{buffer, 64, 32, 64};        // pixels, width, height, stride (in pixels)
-//   view.at(x, y) = px;                       // x right, y down, (0, 0) top-left
-//   RgbImage img(512, 512);                   // owning (std::vector), host side
-//   fill(img.view(), Rgb8{0, 0, 0});
-//   GrayView / GrayImage (uint8_t), FloatView / FloatImage (float),
-//   Gray16View / Gray16Image (uint16_t, e.g. height maps).
-//   A view with width or height 0 is empty; functions given one do nothing and say so.
-// Views never own memory; an Image owns and hands out views. Row y starts at
-// pixels + y·stride, so a view can be a band or a window of a larger buffer (subview).
+//   RgbImage img(512, 512);                   // owning (std::vector)
+//   fill(img.view(), Rgb8{0, 0, 0});          // any view function works on img.view()
+//   img.at(x, y) = Rgb8{255, 0, 0};
+//   GrayImage (uint8_t), FloatImage (float), Gray16Image (uint16_t).
+// The views themselves (RgbView, ...) are in image_view.hpp, which allocates nothing and is
+// what small-device code includes.
 #pragma once
 
 #include <cstddef>
-#include <cstdint>
 #include <vector>
 
-#include "shitsukan/core/assert.hpp"
+#include "shitsukan/image/image_view.hpp"
 
 namespace shitsukan {
-
-struct Rgb8 {
-    std::uint8_t r = 0, g = 0, b = 0;
-};
-inline bool operator==(Rgb8 a, Rgb8 b) { return a.r == b.r && a.g == b.g && a.b == b.b; }
-inline bool operator!=(Rgb8 a, Rgb8 b) { return !(a == b); }
-
-template <class P>
-struct ImageView {
-    P* pixels = nullptr;
-    int width = 0;
-    int height = 0;
-    int stride = 0;  // pixels between the starts of two rows, >= width
-
-    bool empty() const { return pixels == nullptr || width <= 0 || height <= 0; }
-    bool contains(int x, int y) const { return x >= 0 && y >= 0 && x < width && y < height; }
-    P& at(int x, int y) const {
-        SHITSUKAN_ASSERT(contains(x, y));
-        return pixels[std::size_t(y) * std::size_t(stride) + std::size_t(x)];
-    }
-    P* row(int y) const {
-        SHITSUKAN_ASSERT(y >= 0 && y < height);
-        return pixels + std::size_t(y) * std::size_t(stride);
-    }
-    // The rectangle [x0, x0+w) x [y0, y0+h), clipped to this view.
-    ImageView subview(int x0, int y0, int w, int h) const {
-        if (x0 < 0) { w += x0; x0 = 0; }
-        if (y0 < 0) { h += y0; y0 = 0; }
-        if (x0 + w > width) w = width - x0;
-        if (y0 + h > height) h = height - y0;
-        if (w <= 0 || h <= 0 || empty()) return ImageView{};
-        return ImageView{pixels + std::size_t(y0) * std::size_t(stride) + std::size_t(x0), w, h, stride};
-    }
-};
-
-using RgbView = ImageView<Rgb8>;
-using GrayView = ImageView<std::uint8_t>;
-using Gray16View = ImageView<std::uint16_t>;
-using FloatView = ImageView<float>;
-
-template <class P>
-void fill(const ImageView<P>& view, P value) {
-    for (int y = 0; y < view.height; ++y) {
-        P* r = view.row(y);
-        for (int x = 0; x < view.width; ++x) r[x] = value;
-    }
-}
 
 // Host-side owning image. Sizes are clamped at 0; width·height must fit in memory.
 template <class P>
@@ -100,12 +47,5 @@ using RgbImage = Image<Rgb8>;
 using GrayImage = Image<std::uint8_t>;
 using Gray16Image = Image<std::uint16_t>;
 using FloatImage = Image<float>;
-
-// Float in [0, 1] -> byte, rounded, clamped; NaN -> 0.
-inline std::uint8_t to_byte(float v) {
-    if (!(v > 0.0f)) return 0;
-    if (v >= 1.0f) return 255;
-    return std::uint8_t(v * 255.0f + 0.5f);
-}
 
 }  // namespace shitsukan

@@ -1,0 +1,65 @@
+// shitsukan/wrinkly/ist_original.hpp — the original Iterated Shuffle Transformation of
+// fujimoto2000 §2.1 (ref. 13): every base interval i has its own crossing number M_i
+// (交差区間数), simulated step by step on a real coordinate.
+//
+// Manual
+//   const int crossing[5] = {1, 1, 2, 1, 1};        // fig 2: M_i = 2 for the centre only
+//   IstOriginal ist;
+//   ist.base_intervals = 5;  ist.crossing = crossing;  ist.iterations = 1;
+//   if (!ist_original_check(ist)) ...               // Status with the offending value
+//   double v = ist_original_forward(ist, 0.37);     // u^0 -> u^K, eq. (1)
+//   double u = ist_original_inverse(ist, v);
+//
+// One iteration (§2.1(1)), on the sub-interval [start, end) that holds u in base interval i:
+//   1) it is divided into 2 M_i + 1 equal parts;
+//   2) part g goes to base interval i + g - M_i: "symmetrically to itself and the M_i
+//      neighbours on each side".
+// Where a part lands, chosen here (the paper shows it only in figs 1, 2): base interval j
+// receives, from each source i, the group of the parts g = j - i + M_i of every sub-interval
+// of i (in their order on the axis), and lays the groups out ordered by source from left to
+// right. With a constant M this is exactly the fully-connected IST (the group from j + t - M
+// in slot t, eq. 26), as §2.1(2) states; the tests check it at every sub-interval.
+// With unequal M_i the parts dealt into j no longer add up to j's width (fig 2: base 6 with
+// M = 2 gives fifths, its neighbours give thirds): chosen here, base intervals keep their
+// place and width, and the groups arriving in j are scaled together to fill it, keeping their
+// relative widths ("with unequal M_i the pieces have unequal widths").
+// Translation axis (fig 9, §2.2.2(1)): a part whose base interval would lie past an end stays
+// home and takes the place of the missing source (the fully-connected exchange left undone).
+// Cyclic axis: base intervals wrap.
+// Ranges: 1 <= B <= kIstMaxBase, 0 <= M_i <= 15, 0 <= K <= kIstMaxIterations; double
+// precision resolves the sub-intervals while prod (2 M + 1) stays below about 2^45.
+#pragma once
+
+#include "shitsukan/core/status.hpp"
+#include "shitsukan/wrinkly/ist_axis.hpp"
+#include "shitsukan/wrinkly/ist_procedure.hpp"
+
+namespace shitsukan {
+
+constexpr int kIstMaxCrossing = 15;  // 2 M + 1 <= 31 < kIstMaxN
+
+struct IstOriginal {
+    int base_intervals = 1;
+    const int* crossing = nullptr;   // M_i, i = 0..B-1; nullptr: every M_i = crossing_all
+    int crossing_all = 1;
+    const double* edges = nullptr;   // B + 1 edges from 0 to 1; nullptr: equal widths
+    int iterations = 0;              // K
+    IstEnds ends = IstEnds::cyclic;
+};
+
+Status ist_original_check(const IstOriginal& ist);
+int ist_original_crossing(const IstOriginal& ist, int base);  // M_i
+
+// The point's base interval and sub-interval on u^0: the base interval itself.
+void ist_original_start(const IstOriginal& ist, double u, IstPoint* point);
+// One iteration u^{k-1} -> u^k: 1) divide into 2 M_i + 1, 2) deal the part symmetrically.
+// If part != nullptr it receives g, the index of the part that held the point.
+void ist_original_step(const IstOriginal& ist, IstPoint* point, int* part = nullptr);
+
+double ist_original_forward(const IstOriginal& ist, double u);
+// Undoes the iterations K..1. To undo iteration k the sub-interval of u^{k-1} that held the
+// point must be known; it is found by following the point back to u^0 and forward again, so
+// the inverse costs O(K^2) steps.
+double ist_original_inverse(const IstOriginal& ist, double u);
+
+}  // namespace shitsukan
