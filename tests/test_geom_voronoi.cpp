@@ -8,6 +8,7 @@
 
 #include "shitsukan/core/prng.hpp"
 #include "shitsukan/geom/delaunay.hpp"
+#include "shitsukan/geom/planar_subdivision.hpp"
 #include "shitsukan/geom/polygon.hpp"
 #include "shitsukan/geom/predicates.hpp"
 #include "shitsukan/geom/voronoi.hpp"
@@ -26,7 +27,8 @@ std::vector<Vec2d> random_sites(int n, std::uint64_t seed) {
 }
 
 // Every sample of cell i is at least as near to site i as to any other site (1e-12 slack).
-void check_nearest_site(const std::vector<Vec2d>& sites, const VoronoiCells& cells, int samples_per_cell) {
+void check_nearest_site(const std::vector<Vec2d>& sites, const VoronoiCells& cells,
+                        int samples_per_cell) {
     Pcg32 rng(99, 3);
     for (int i = 0; i < cells.cell_count(); ++i) {
         int k;
@@ -39,7 +41,8 @@ void check_nearest_site(const std::vector<Vec2d>& sites, const VoronoiCells& cel
         }
         int tested = 0;
         for (int tries = 0; tested < samples_per_cell && tries < 50 * samples_per_cell; ++tries) {
-            Vec2d q{lo.x + (hi.x - lo.x) * rng.uniform_double(), lo.y + (hi.y - lo.y) * rng.uniform_double()};
+            Vec2d q{lo.x + (hi.x - lo.x) * rng.uniform_double(),
+                    lo.y + (hi.y - lo.y) * rng.uniform_double()};
             if (!point_in_polygon(v, k, q)) continue;
             ++tested;
             double own = length_squared(q - sites[std::size_t(i)]);
@@ -90,7 +93,8 @@ TEST_CASE("delaunay: empty circumcircles on random points") {
     DelaunayTriangulation dt;
     REQUIRE(build_delaunay(sites.data(), int(sites.size()), &dt).ok());
     for (const auto& t : dt.triangles) {
-        CHECK(orient2d(dt.points[std::size_t(t.v[0])], dt.points[std::size_t(t.v[1])], dt.points[std::size_t(t.v[2])]) > 0);
+        CHECK(orient2d(dt.points[std::size_t(t.v[0])], dt.points[std::size_t(t.v[1])],
+                       dt.points[std::size_t(t.v[2])]) > 0);
         for (std::size_t p = 0; p < sites.size(); ++p)
             REQUIRE(incircle(dt.points[std::size_t(t.v[0])], dt.points[std::size_t(t.v[1])],
                              dt.points[std::size_t(t.v[2])], sites[p]) <= 0.0);
@@ -146,13 +150,16 @@ TEST_CASE("voronoi: a = 0 triangular lattice -> equal regular hexagons with exac
         int k;
         const Vec2d* v = cells.cell(c, &k);
         Vec2d s = sites[std::size_t(c)];
-        if (s.x < side || s.x > 1 - side || s.y < side || s.y > 1 - side) continue;  // may be clipped
+        if (s.x < side || s.x > 1 - side || s.y < side || s.y > 1 - side)
+            continue;  // may be clipped
         ++hexagons;
         REQUIRE(k == 6);
-        CHECK(polygon_area(v, k) == doctest::Approx(1.5 * std::sqrt(3.0) * side * side).epsilon(1e-12));
+        CHECK(polygon_area(v, k) ==
+              doctest::Approx(1.5 * std::sqrt(3.0) * side * side).epsilon(1e-12));
         for (int j = 0; j < k; ++j) CHECK(length(v[j] - s) == doctest::Approx(side).epsilon(1e-12));
     }
     CHECK(hexagons > 60);
+    check_nearest_site(sites, cells, 10);
     CHECK(total_area(cells) == doctest::Approx(1.0).epsilon(1e-12));
 }
 
@@ -229,4 +236,52 @@ TEST_CASE("voronoi: bad input gives a status, not a crash") {
     const Vec2d clockwise[4] = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};
     CHECK(!voronoi_cells(&s, 1, clockwise, 4, &cells).ok());
     CHECK(!voronoi_cells(&s, 1, kSquare, 2, &cells).ok());
+}
+
+TEST_CASE(
+    "voronoi: degenerate stress (lattice, duplicates, lines) still gives shared-edge tilings") {
+    std::vector<Vec2d> sites;
+    for (int j = 0; j <= 20; ++j)
+        for (int i = 0; i <= 20; ++i) sites.push_back({i / 20.0, j / 20.0});  // on the border too
+    for (int i = 0; i < 50; ++i) sites.push_back(sites[std::size_t(i * 7)]);  // duplicates
+    for (int i = 0; i < 30; ++i) sites.push_back({0.013 + i * 0.031, 0.5});   // a line of seeds
+    auto extra = random_sites(100, 8);
+    sites.insert(sites.end(), extra.begin(), extra.end());
+    VoronoiCells cells;
+    REQUIRE(voronoi_cells(sites.data(), int(sites.size()), kSquare, 4, &cells).ok());
+    CHECK(total_area(cells) == doctest::Approx(1.0).epsilon(1e-12));
+    check_nearest_site(sites, cells, 5);
+    // the cells share their edges vertex for vertex: they form one planar subdivision
+    std::vector<Vec2d> verts;
+    std::vector<int> offsets(1, 0);
+    for (int i = 0; i < cells.cell_count(); ++i) {
+        int k;
+        const Vec2d* v = cells.cell(i, &k);
+        if (k < 3 || !(polygon_area(v, k) > 0)) continue;
+        verts.insert(verts.end(), v, v + k);
+        offsets.push_back(int(verts.size()));
+    }
+    PlanarSubdivision sub;
+    REQUIRE(
+        build_planar_subdivision(verts.data(), offsets.data(), int(offsets.size()) - 1, &sub).ok());
+    CHECK(outer_edges_on_box(sub, {0, 0}, {1, 1}));
+    int interior = 0;
+    for (const auto& e : sub.edges) interior += e.right >= 0;
+    CHECK(interior > 0);
+    // Euler's formula for a connected planar subdivision of a disc: V - E + F = 1
+    CHECK(int(sub.vertices.size()) - int(sub.edges.size()) + sub.face_count() == 1);
+}
+
+TEST_CASE("planar subdivision: overlaps and T junctions are reported") {
+    // two squares on top of each other
+    std::vector<Vec2d> v = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    std::vector<int> off = {0, 4, 8};
+    PlanarSubdivision sub;
+    CHECK(!build_planar_subdivision(v.data(), off.data(), 2, &sub).ok());
+    // a T junction: the left square's edge holds the right squares' shared corner
+    std::vector<Vec2d> t = {{0, 0}, {1, 0}, {1, 2}, {0, 2}, {1, 0}, {2, 0},
+                            {2, 1}, {1, 1}, {1, 1}, {2, 1}, {2, 2}, {1, 2}};
+    std::vector<int> toff = {0, 4, 8, 12};
+    REQUIRE(build_planar_subdivision(t.data(), toff.data(), 3, &sub).ok());
+    CHECK(!outer_edges_on_box(sub, {0, 0}, {2, 2}));  // edge (1,0)-(1,2) has one side only
 }

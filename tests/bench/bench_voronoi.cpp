@@ -64,5 +64,6 @@ SHITSUKAN_BENCH(voronoi_vs_boost_polygon) {
     bench::info("square lattice 100 x 100",
                 std::string(s.ok() ? "" : "error ") + "shitsukan " + std::to_string(four) +
                     " of 10000 cells have exactly 4 vertices; boost (integer input) " +
-                    std::to_string(vd.num_vertices()) + " Voronoi vertices (99 x 99 = 9801 expected)");
+                    std::to_string(vd.num_vertices()) +
+                    " Voronoi vertices (99 x 99 = 9801 expected)");
 }

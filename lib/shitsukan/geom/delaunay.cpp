@@ -32,10 +32,10 @@ std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y) {
 }
 
 struct BoundaryEdge {
-    int u, w;       // the edge u -> w as it runs in the cavity triangle (counter-clockwise)
-    int outside;    // triangle beyond it, -1 at the frame
+    int u, w;          // the edge u -> w as it runs in the cavity triangle (counter-clockwise)
+    int outside;       // triangle beyond it, -1 at the frame
     int outside_slot;  // index j with triangles[outside].n[j] == the cavity triangle
-    int created;    // the new triangle (p, u, w)
+    int created;       // the new triangle (p, u, w)
 };
 
 class Builder {
@@ -159,17 +159,27 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
 
 Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out, Vec2d cover_lo,
                       Vec2d cover_hi) {
-    if (out == nullptr) return Status::error(StatusCode::invalid_argument, "build_delaunay: out is null");
+    return build_delaunay(points, count, out, cover_lo, cover_hi, false);
+}
+
+Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out, Vec2d cover_lo,
+                      Vec2d cover_hi, bool keep_hilbert_numbering) {
+    if (out == nullptr)
+        return Status::error(StatusCode::invalid_argument, "build_delaunay: out is null");
     if (count < 1 || points == nullptr)
-        return Status::error(StatusCode::invalid_argument, "build_delaunay: need at least 1 point (got %d)", count);
+        return Status::error(StatusCode::invalid_argument,
+                             "build_delaunay: need at least 1 point (got %d)", count);
     if (count > (1 << 28))
-        return Status::error(StatusCode::too_large, "build_delaunay: %d points is more than 2^28", count);
+        return Status::error(StatusCode::too_large, "build_delaunay: %d points is more than 2^28",
+                             count);
     double lo_x = points[0].x, hi_x = points[0].x, lo_y = points[0].y, hi_y = points[0].y;
     for (int i = 0; i < count; ++i) {
-        if (!is_finite(points[i]) || std::fabs(points[i].x) > 1e100 || std::fabs(points[i].y) > 1e100)
-            return Status::error(StatusCode::invalid_argument,
-                                 "build_delaunay: point %d = (%g, %g) is not finite or beyond 1e100", i,
-                                 points[i].x, points[i].y);
+        if (!is_finite(points[i]) || std::fabs(points[i].x) > 1e100 ||
+            std::fabs(points[i].y) > 1e100)
+            return Status::error(
+                StatusCode::invalid_argument,
+                "build_delaunay: point %d = (%g, %g) is not finite or beyond 1e100", i, points[i].x,
+                points[i].y);
         lo_x = std::min(lo_x, points[i].x);
         hi_x = std::max(hi_x, points[i].x);
         lo_y = std::min(lo_y, points[i].y);
@@ -219,18 +229,30 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
         return a.i < b.i;
     });
     out->duplicate_of.assign(std::size_t(count), -1);
+    // Triangulate in Hilbert numbering (point k = points[order[k].i]) so that neighbouring
+    // points are neighbours in memory, then number the vertices back to the input's indices.
+    for (std::size_t k = 0; k < order.size(); ++k) out->points[k] = points[order[k].i];
     Builder builder(out);
     builder.start_frame();
     for (std::size_t k = 0; k < order.size(); ++k) {
         int i = order[k].i;
         if (k > 0 && points[order[k - 1].i] == points[i]) {
             int first = order[k - 1].i;
-            out->duplicate_of[std::size_t(i)] =
-                out->duplicate_of[std::size_t(first)] >= 0 ? out->duplicate_of[std::size_t(first)] : first;
+            out->duplicate_of[std::size_t(i)] = out->duplicate_of[std::size_t(first)] >= 0
+                                                    ? out->duplicate_of[std::size_t(first)]
+                                                    : first;
             continue;
         }
-        builder.insert(i);
+        builder.insert(int(k));
     }
+    if (!keep_hilbert_numbering) {
+        std::copy(points, points + count, out->points.begin());
+        for (DelaunayTriangle& t : out->triangles)
+            for (int& v : t.v)
+                if (v < count) v = order[std::size_t(v)].i;
+    }
+    out->insertion_order.resize(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) out->insertion_order[k] = order[k].i;
     out->point_triangle.assign(std::size_t(count) + 4, -1);
     for (std::size_t t = 0; t < out->triangles.size(); ++t)
         for (int v : out->triangles[t].v) out->point_triangle[std::size_t(v)] = int(t);

@@ -10,13 +10,14 @@
 //   dt.duplicate_of[i]       -1, or the smallest index of an identical earlier point
 //
 // Algorithm (Bowyer 1981 / Watson 1981, incremental): points are inserted in Hilbert-curve
-// order into a frame of 4 points placed 10 bounding-box half-extents from the data's centre, so every
-// input point is interior. Each insertion walks from the last new triangle to the triangle
-// containing the point (visibility walk, exact orient2d), collects the cavity of triangles
-// whose circumcircle contains the point STRICTLY (exact incircle > 0), and re-triangulates
-// it as a fan from the point. Tie-break: a point exactly on a circumcircle (incircle == 0)
-// does not enter the cavity, so cocircular points (lattices) give some valid triangulation of
-// their convex polygon; the Voronoi diagram built on top merges such triangles (voronoi.hpp).
+// order into a frame of 4 points placed 10 bounding-box half-extents from the data's centre,
+// so every input point is interior. Each insertion walks from the last new triangle to the
+// triangle containing the point (visibility walk, exact orient2d), collects the cavity of
+// triangles whose circumcircle contains the point STRICTLY (exact incircle > 0), and
+// re-triangulates it as a fan from the point. Tie-break: a point exactly on a circumcircle
+// (incircle == 0) does not enter the cavity, so cocircular points (lattices) give some valid
+// triangulation of their convex polygon; the Voronoi diagram built on top merges such
+// triangles (voronoi.hpp).
 // Expected O(n log n) for the sort, O(n) expected for the insertions on spread-out data
 // (O(1) walk and cavity per point in Hilbert order); worst case O(n^2).
 #pragma once
@@ -34,11 +35,12 @@ struct DelaunayTriangle {
 };
 
 struct DelaunayTriangulation {
-    int input_count = 0;                 // n; points[n .. n + 3] are the frame
-    std::vector<Vec2d> points;           // the input points followed by the 4 frame points
+    int input_count = 0;        // n; points[n .. n + 3] are the frame
+    std::vector<Vec2d> points;  // the input points followed by the 4 frame points
     std::vector<DelaunayTriangle> triangles;
-    std::vector<int> point_triangle;     // size n + 4
-    std::vector<int> duplicate_of;       // size n
+    std::vector<int> point_triangle;   // size n + 4
+    std::vector<int> duplicate_of;     // size n
+    std::vector<int> insertion_order;  // input indices in Hilbert order (spatially coherent)
 };
 
 Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out);
@@ -46,5 +48,10 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
 // every point of that box is then nearer to some input point than to any frame point.
 Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out, Vec2d cover_lo,
                       Vec2d cover_hi);
+// keep_hilbert_numbering = true: `points`, `triangles` and `point_triangle` use the Hilbert
+// numbering k (point k is input point insertion_order[k]; frame points stay n .. n + 3), which
+// keeps later walks over the triangulation cache-friendly; duplicate_of keeps input indices.
+Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out, Vec2d cover_lo,
+                      Vec2d cover_hi, bool keep_hilbert_numbering);
 
 }  // namespace shitsukan

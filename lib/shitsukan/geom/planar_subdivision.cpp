@@ -32,7 +32,8 @@ PointKey key_of(Vec2d p) {
 Status build_planar_subdivision(const Vec2d* vertices, const int* offsets, int polygon_count,
                                 PlanarSubdivision* out) {
     if (out == nullptr || offsets == nullptr || polygon_count < 0)
-        return Status::error(StatusCode::invalid_argument, "build_planar_subdivision: bad arguments");
+        return Status::error(StatusCode::invalid_argument,
+                             "build_planar_subdivision: bad arguments");
     out->vertices.clear();
     out->edges.clear();
     out->face_offsets.assign(1, 0);
@@ -43,14 +44,17 @@ Status build_planar_subdivision(const Vec2d* vertices, const int* offsets, int p
         int begin = offsets[f], end = offsets[f + 1];
         if (end - begin < 3)
             return Status::error(StatusCode::invalid_argument,
-                                 "build_planar_subdivision: polygon %d has %d vertices (need 3)", f, end - begin);
+                                 "build_planar_subdivision: polygon %d has %d vertices (need 3)", f,
+                                 end - begin);
         int first = -1, prev = -1;
         for (int i = begin; i <= end; ++i) {
             int id;
             if (i < end) {
                 if (!is_finite(vertices[i]))
-                    return Status::error(StatusCode::invalid_argument,
-                                         "build_planar_subdivision: polygon %d vertex %d is not finite", f, i - begin);
+                    return Status::error(
+                        StatusCode::invalid_argument,
+                        "build_planar_subdivision: polygon %d vertex %d is not finite", f,
+                        i - begin);
                 auto ins = vertex_id.emplace(key_of(vertices[i]), int(out->vertices.size()));
                 if (ins.second) out->vertices.push_back(vertices[i]);
                 id = ins.first->second;
@@ -61,7 +65,8 @@ Status build_planar_subdivision(const Vec2d* vertices, const int* offsets, int p
             if (prev >= 0) {
                 if (prev == id)
                     return Status::error(StatusCode::invalid_argument,
-                                         "build_planar_subdivision: polygon %d repeats a vertex", f);
+                                         "build_planar_subdivision: polygon %d repeats a vertex",
+                                         f);
                 int lo = prev < id ? prev : id, hi = prev < id ? id : prev;
                 std::uint64_t key = (std::uint64_t(std::uint32_t(lo)) << 32) | std::uint32_t(hi);
                 auto ins = edge_id.emplace(key, int(out->edges.size()));
@@ -71,9 +76,10 @@ Status build_planar_subdivision(const Vec2d* vertices, const int* offsets, int p
                 } else {
                     PlanarSubdivision::Edge& e = out->edges[std::size_t(ins.first->second)];
                     if (e.v0 == prev || e.right >= 0)
-                        return Status::error(StatusCode::invalid_argument,
-                                             "build_planar_subdivision: polygons %d and %d overlap along an edge",
-                                             e.left, f);
+                        return Status::error(
+                            StatusCode::invalid_argument,
+                            "build_planar_subdivision: polygons %d and %d overlap along an edge",
+                            e.left, f);
                     e.right = f;
                     out->face_edges.push_back(~ins.first->second);
                 }

@@ -12,9 +12,10 @@
 //   }
 //
 // Vertices are welded by exact equality (same bits), so the input polygons must share their
-// common boundary vertex for vertex: a vertex lying inside another polygon's edge (a T
-// junction) is an error, reported as a gap. An edge run twice in the same direction is
-// reported as an overlap. Why shared edges: tokai1994 perturbs each edge of the scale pattern
+// common boundary vertex for vertex. A vertex lying inside another polygon's edge (a T
+// junction) leaves both pieces with one side only: they look like outer boundary edges, which
+// outer_edges_on_box() reports. An edge run twice in the same direction (an overlap) is
+// refused with a Status. Why shared edges: tokai1994 perturbs each edge of the scale pattern
 // once, so the two scales on its sides keep fitting each other (processing 4).
 #pragma once
 
@@ -38,7 +39,8 @@ struct PlanarSubdivision {
 
     int face_count() const { return face_offsets.empty() ? 0 : int(face_offsets.size()) - 1; }
     int face_vertex(int face_edge) const {  // the vertex where a face edge starts
-        return face_edge >= 0 ? edges[std::size_t(face_edge)].v0 : edges[std::size_t(~face_edge)].v1;
+        return face_edge >= 0 ? edges[std::size_t(face_edge)].v0
+                              : edges[std::size_t(~face_edge)].v1;
     }
 };
 

@@ -8,8 +8,7 @@
 namespace shitsukan {
 namespace {
 
-template <class V>
-double area_of(const V* v, int n) {
+template <class V> double area_of(const V* v, int n) {
     double twice = 0.0;
     for (int i = 0; i < n; ++i) {
         const V& a = v[i];
@@ -19,8 +18,7 @@ double area_of(const V* v, int n) {
     return 0.5 * twice;
 }
 
-template <class V>
-Vec2d centroid_of(const V* v, int n) {
+template <class V> Vec2d centroid_of(const V* v, int n) {
     double twice = 0.0, cx = 0.0, cy = 0.0;
     // Relative to the first vertex: keeps the products small for polygons far from the origin.
     const double ox = double(v[0].x), oy = double(v[0].y);
@@ -43,8 +41,7 @@ Vec2d centroid_of(const V* v, int n) {
     return {ox + cx / (3.0 * twice), oy + cy / (3.0 * twice)};
 }
 
-template <class V, class S>
-bool inside_of(const V* v, int n, V q) {
+template <class V, class S> bool inside_of(const V* v, int n, V q) {
     bool inside = false;
     for (int i = 0; i < n; ++i) {
         V a = v[i], b = v[(i + 1) % n];
@@ -63,8 +60,10 @@ bool inside_of(const V* v, int n, V q) {
 
 void add_label(ClipVertex& v, int k) {
     if (v.on[0] == k || v.on[1] == k) return;
-    if (v.on[0] < 0) v.on[0] = k;
-    else if (v.on[1] < 0) v.on[1] = k;
+    if (v.on[0] < 0)
+        v.on[0] = k;
+    else if (v.on[1] < 0)
+        v.on[1] = k;
 }
 
 bool has_label(const ClipVertex& v, int k) { return k >= 0 && (v.on[0] == k || v.on[1] == k); }
@@ -86,30 +85,44 @@ Status check_convex_region(const Vec2d* region, int m) {
                              "region: need a convex polygon of at least 3 vertices (got %d)", m);
     for (int i = 0; i < m; ++i) {
         if (!is_finite(region[i]))
-            return Status::error(StatusCode::invalid_argument, "region: vertex %d = (%g, %g) is not finite",
-                                 i, region[i].x, region[i].y);
+            return Status::error(StatusCode::invalid_argument,
+                                 "region: vertex %d = (%g, %g) is not finite", i, region[i].x,
+                                 region[i].y);
     }
     for (int i = 0; i < m; ++i) {
         if (orient2d(region[i], region[(i + 1) % m], region[(i + 2) % m]) < 0.0)
             return Status::error(StatusCode::invalid_argument,
-                                 "region: not convex and counter-clockwise at vertex %d", (i + 1) % m);
+                                 "region: not convex and counter-clockwise at vertex %d",
+                                 (i + 1) % m);
     }
     double area = polygon_area(region, m);
     if (!(area > 0.0))
         return Status::error(StatusCode::invalid_argument,
-                             "region: empty (area %g); need a convex counter-clockwise polygon", area);
+                             "region: empty (area %g); need a convex counter-clockwise polygon",
+                             area);
     return Status::success();
 }
 
-void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, int m,
-                           std::vector<ClipVertex>* scratch) {
+double clip_snap_distance(const Vec2d* region, int m) {
     // Snap distance: rounded Voronoi vertices of a lattice that should lie ON the boundary
     // (x = 7 * (1/7) ...) miss it by an ulp and would leave cells 1e-17 wide.
     double diameter = 0.0;
     for (int i = 0; i < m; ++i)
-        for (int j = i + 1; j < m; ++j) diameter = std::max(diameter, length(region[i] - region[j]));
-    const double snap = kClipSnapRelative * diameter;
-    std::vector<double> side;
+        for (int j = i + 1; j < m; ++j)
+            diameter = std::max(diameter, length(region[i] - region[j]));
+    return kClipSnapRelative * diameter;
+}
+
+void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, int m,
+                           std::vector<ClipVertex>* scratch) {
+    clip_to_convex_region(poly, region, m, clip_snap_distance(region, m), scratch);
+}
+
+void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, int m, double snap,
+                           std::vector<ClipVertex>* scratch) {
+    constexpr int kStackSides = 64;
+    double side_stack[kStackSides];
+    std::vector<double> side_heap;
     for (int k = 0; k < m && !poly->empty(); ++k) {
         const Vec2d b0 = region[k], b1 = region[(k + 1) % m];
         const double edge_length = length(b1 - b0);
@@ -117,24 +130,35 @@ void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, i
         std::vector<ClipVertex>& out = *scratch;
         out.clear();
         const int n = int(in.size());
-        side.resize(std::size_t(n));
+        double* side = side_stack;
+        if (n > kStackSides) {
+            side_heap.resize(std::size_t(n));
+            side = side_heap.data();
+        }
+        bool all_inside = true;
         for (int i = 0; i < n; ++i) {
             ClipVertex& v = in[std::size_t(i)];
             double s = has_label(v, k) ? 0.0 : orient2d(b0, b1, v.p);
             if (s != 0.0 && std::fabs(s) <= snap * edge_length) {  // |s| = distance * |b1 - b0|
                 s = 0.0;
-                if (b0.x == b1.x) v.p.x = b0.x;
-                else if (b0.y == b1.y) v.p.y = b0.y;
-                else v.p = v.p - (b1 - b0) * (cross(b1 - b0, v.p - b0) / (edge_length * edge_length));
+                if (b0.x == b1.x)
+                    v.p.x = b0.x;
+                else if (b0.y == b1.y)
+                    v.p.y = b0.y;
+                else
+                    v.p =
+                        v.p - (b1 - b0) * (cross(b1 - b0, v.p - b0) / (edge_length * edge_length));
             }
             if (s == 0.0) add_label(v, k);
-            side[std::size_t(i)] = s;
+            side[i] = s;
+            all_inside = all_inside && s > 0.0;
         }
+        if (all_inside) continue;  // nothing to cut (the common case inside the region)
         for (int i = 0; i < n; ++i) {
             const ClipVertex& cur = in[std::size_t(i)];
             const ClipVertex& nxt = in[std::size_t((i + 1) % n)];
-            double sc = side[std::size_t(i)];
-            double sn = side[std::size_t((i + 1) % n)];
+            double sc = side[i];
+            double sn = side[(i + 1) % n];
             if (sc >= 0.0) out.push_back(cur);
             if ((sc > 0.0 && sn < 0.0) || (sc < 0.0 && sn > 0.0)) {
                 // canonical order of the segment's end points: the same bits from both cells

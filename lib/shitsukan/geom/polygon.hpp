@@ -51,5 +51,9 @@ struct ClipVertex {
 // empty). The region must pass check_convex_region.
 void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, int m,
                            std::vector<ClipVertex>* scratch);
+// The same with the snap distance computed once by the caller (many cells, one region).
+double clip_snap_distance(const Vec2d* region, int m);
+void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, int m, double snap,
+                           std::vector<ClipVertex>* scratch);
 
 }  // namespace shitsukan

@@ -49,17 +49,34 @@ int fast_expansion_sum(int elen, const double* e, int flen, const double* f, dou
     int ei = 0, fi = 0, hi = 0;
     double q, qnew, hh;
     double enow = e[0], fnow = f[0];
-    auto take_e = [&](double& out) { out = enow; ++ei; if (ei < elen) enow = e[ei]; };
-    auto take_f = [&](double& out) { out = fnow; ++fi; if (fi < flen) fnow = f[fi]; };
-    if ((fnow > enow) == (fnow > -enow)) take_e(q); else take_f(q);
+    auto take_e = [&](double& out) {
+        out = enow;
+        ++ei;
+        if (ei < elen) enow = e[ei];
+    };
+    auto take_f = [&](double& out) {
+        out = fnow;
+        ++fi;
+        if (fi < flen) fnow = f[fi];
+    };
+    if ((fnow > enow) == (fnow > -enow))
+        take_e(q);
+    else
+        take_f(q);
     if (ei < elen && fi < flen) {
         double next;
-        if ((fnow > enow) == (fnow > -enow)) take_e(next); else take_f(next);
+        if ((fnow > enow) == (fnow > -enow))
+            take_e(next);
+        else
+            take_f(next);
         fast_two_sum(next, q, qnew, hh);
         q = qnew;
         if (hh != 0.0) h[hi++] = hh;
         while (ei < elen && fi < flen) {
-            if ((fnow > enow) == (fnow > -enow)) take_e(next); else take_f(next);
+            if ((fnow > enow) == (fnow > -enow))
+                take_e(next);
+            else
+                take_f(next);
             two_sum(q, next, qnew, hh);
             q = qnew;
             if (hh != 0.0) h[hi++] = hh;

@@ -1,7 +1,8 @@
 // shitsukan/geom/predicates.hpp — exact geometric predicates on doubles (orientation, in-circle).
 //
 // Manual
-//   double o = orient2d(a, b, c);     // > 0: a, b, c counter-clockwise; < 0: clockwise; 0: collinear
+//   double o = orient2d(a, b, c);     // > 0: a, b, c counter-clockwise; < 0: clockwise;
+//                                     // 0: collinear
 //   double s = incircle(a, b, c, d);  // a, b, c counter-clockwise: > 0 d inside their circle,
 //                                     // < 0 outside, 0 exactly on it (cocircular)
 // The SIGN is always exact for any finite double inputs (no overflow assumed: |coordinates|

@@ -32,7 +32,8 @@ Vec2d circumcentre(Vec2d a, Vec2d b, Vec2d c) {
 
 Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int region_count,
                      VoronoiCells* out) {
-    if (out == nullptr) return Status::error(StatusCode::invalid_argument, "voronoi_cells: out is null");
+    if (out == nullptr)
+        return Status::error(StatusCode::invalid_argument, "voronoi_cells: out is null");
     SHITSUKAN_TRY(check_convex_region(region, region_count));
     Vec2d lo = region[0], hi = region[0];
     for (int i = 0; i < region_count; ++i) {
@@ -40,7 +41,7 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
         hi = {std::max(hi.x, region[i].x), std::max(hi.y, region[i].y)};
     }
     DelaunayTriangulation dt;
-    SHITSUKAN_TRY(build_delaunay(sites, count, &dt, lo, hi));
+    SHITSUKAN_TRY(build_delaunay(sites, count, &dt, lo, hi, true));  // Hilbert numbering
     const std::vector<DelaunayTriangle>& tris = dt.triangles;
     const std::vector<Vec2d>& pts = dt.points;
     const int tcount = int(tris.size());
@@ -76,7 +77,9 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
             if (v == b[0] || v == b[1] || v == b[2]) continue;
             // insert v into the sorted top-3
             int k = 3;
-            while (k > 0 && (b[k - 1] < 0 || lex_less(pts[std::size_t(v)], pts[std::size_t(b[k - 1])]))) --k;
+            while (k > 0 &&
+                   (b[k - 1] < 0 || lex_less(pts[std::size_t(v)], pts[std::size_t(b[k - 1])])))
+                --k;
             if (k >= 3) continue;
             for (int j = 2; j > k; --j) b[j] = b[j - 1];
             b[k] = v;
@@ -86,16 +89,18 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
     for (int t = 0; t < tcount; ++t) {
         if (root[std::size_t(t)] != t) continue;
         const int* b = &best[std::size_t(t) * 3];
-        centre[std::size_t(t)] = circumcentre(pts[std::size_t(b[0])], pts[std::size_t(b[1])], pts[std::size_t(b[2])]);
+        centre[std::size_t(t)] =
+            circumcentre(pts[std::size_t(b[0])], pts[std::size_t(b[1])], pts[std::size_t(b[2])]);
     }
 
-    // Walk around each site: the groups of its triangles, counter-clockwise, each once.
-    out->vertices.clear();
-    out->on_region_edge.clear();
-    out->offsets.assign(1, 0);
-    out->duplicate_of = dt.duplicate_of;
+    // Walk around each site: the groups of its triangles, counter-clockwise, each once. Sites
+    // are visited in Hilbert order (memory stays local), then the cells are put in input order.
     std::vector<ClipVertex> poly, scratch;
-    for (int s = 0; s < count; ++s) {
+    const double snap = clip_snap_distance(region, region_count);
+    std::vector<ClipVertex> cell_data;
+    std::vector<int> cell_start(static_cast<std::size_t>(count), 0);
+    std::vector<int> cell_size(static_cast<std::size_t>(count), 0);
+    for (int s = 0; s < count; ++s) {  // s: Hilbert number of the site
         poly.clear();
         int t0 = dt.point_triangle[std::size_t(s)];
         if (t0 >= 0) {
@@ -115,20 +120,33 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
                 SHITSUKAN_ASSERT(t >= 0);
             } while (t != t0);
             if (poly.size() > 1 && last_group == first_group) poly.pop_back();
-            clip_to_convex_region(&poly, region, region_count, &scratch);
+            clip_to_convex_region(&poly, region, region_count, snap, &scratch);
             // start at the lexicographically smallest vertex
             std::size_t m = 0;
             for (std::size_t k = 1; k < poly.size(); ++k)
                 if (lex_less(poly[k].p, poly[m].p)) m = k;
             std::rotate(poly.begin(), poly.begin() + std::ptrdiff_t(m), poly.end());
         }
-        for (const ClipVertex& v : poly) {
-            out->vertices.push_back(v.p);
-            out->on_region_edge.push_back(v.on[0]);
-            out->on_region_edge.push_back(v.on[1]);
-        }
-        out->offsets.push_back(int(out->vertices.size()));
+        const std::size_t site = std::size_t(dt.insertion_order[std::size_t(s)]);
+        cell_start[site] = int(cell_data.size());
+        cell_size[site] = int(poly.size());
+        cell_data.insert(cell_data.end(), poly.begin(), poly.end());
     }
+    out->vertices.resize(cell_data.size());
+    out->on_region_edge.resize(2 * cell_data.size());
+    out->offsets.resize(std::size_t(count) + 1);
+    out->duplicate_of = dt.duplicate_of;
+    std::size_t w = 0;
+    for (int s = 0; s < count; ++s) {
+        out->offsets[std::size_t(s)] = int(w);
+        const ClipVertex* v = cell_data.data() + cell_start[std::size_t(s)];
+        for (int k = 0; k < cell_size[std::size_t(s)]; ++k, ++w) {
+            out->vertices[w] = v[k].p;
+            out->on_region_edge[2 * w] = v[k].on[0];
+            out->on_region_edge[2 * w + 1] = v[k].on[1];
+        }
+    }
+    out->offsets[std::size_t(count)] = int(w);
     return Status::success();
 }
 

@@ -39,10 +39,10 @@
 namespace shitsukan {
 
 struct VoronoiCells {
-    std::vector<Vec2d> vertices;       // all cells' vertices, concatenated
-    std::vector<int> offsets;          // cell i = vertices[offsets[i] .. offsets[i + 1])
-    std::vector<int> on_region_edge;   // 2 per vertex: region edge indices through it, or -1
-    std::vector<int> duplicate_of;     // per site: -1, or the earlier identical site
+    std::vector<Vec2d> vertices;      // all cells' vertices, concatenated
+    std::vector<int> offsets;         // cell i = vertices[offsets[i] .. offsets[i + 1])
+    std::vector<int> on_region_edge;  // 2 per vertex: region edge indices through it, or -1
+    std::vector<int> duplicate_of;    // per site: -1, or the earlier identical site
 
     int cell_count() const { return offsets.empty() ? 0 : int(offsets.size()) - 1; }
     const Vec2d* cell(int i, int* count) const {

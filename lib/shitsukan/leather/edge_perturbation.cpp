@@ -31,7 +31,7 @@ double slope_bound(Vec2d a, Vec2d b, Vec2d c) {
     Vec2d u = ab / l;
     double h = std::fabs(cross(u, c - a));           // distance from c to the chord's line
     double da = dot(u, c - a), db = dot(-u, c - b);  // c's foot seen from a and from b
-    double tan_a = da > 0.0 ? h / da : inf;           // base angles of the fan triangle (a, b, c)
+    double tan_a = da > 0.0 ? h / da : inf;          // base angles of the fan triangle (a, b, c)
     double tan_b = db > 0.0 ? h / db : inf;
     // Star-shaped from c: at chord parameter s the curve point must satisfy
     // |s - s0| G + |f(s)| < h with |f(s)| <= G min(s, l - s) (s0: c's foot). The left side is
@@ -39,23 +39,26 @@ double slope_bound(Vec2d a, Vec2d b, Vec2d c) {
     // an end.
     double s0 = std::min(std::max(da, 0.0), l);
     double worst = 0.0;
-    for (double s : {0.0, l, 0.5 * l, s0}) worst = std::max(worst, std::fabs(s - da) + std::min(s, l - s));
+    for (double s : {0.0, l, 0.5 * l, s0})
+        worst = std::max(worst, std::fabs(s - da) + std::min(s, l - s));
     double star = h / worst;
     return std::min(std::min(tan_a, tan_b), star);
 }
 
 Status check_params(const PerturbationParams& prm) {
     if (!(prm.p >= 0.0f) || !is_finite(prm.p))
-        return Status::error(StatusCode::invalid_argument, "perturbation p must be >= 0 (got %g)", double(prm.p));
+        return Status::error(StatusCode::invalid_argument, "perturbation p must be >= 0 (got %g)",
+                             double(prm.p));
     if (prm.levels < 0 || prm.levels > kMaxPerturbationLevels)
-        return Status::error(StatusCode::invalid_argument, "perturbation levels must be in [0, %d] (got %d)",
+        return Status::error(StatusCode::invalid_argument,
+                             "perturbation levels must be in [0, %d] (got %d)",
                              kMaxPerturbationLevels, prm.levels);
     if (!(prm.decay > 0.0f && prm.decay <= 1.0f))
-        return Status::error(StatusCode::invalid_argument, "perturbation decay must be in (0, 1] (got %g)",
-                             double(prm.decay));
+        return Status::error(StatusCode::invalid_argument,
+                             "perturbation decay must be in (0, 1] (got %g)", double(prm.decay));
     if (!(prm.safety > 0.0f && prm.safety < 1.0f))
-        return Status::error(StatusCode::invalid_argument, "perturbation safety must be in (0, 1) (got %g)",
-                             double(prm.safety));
+        return Status::error(StatusCode::invalid_argument,
+                             "perturbation safety must be in (0, 1) (got %g)", double(prm.safety));
     return Status::success();
 }
 
@@ -101,7 +104,8 @@ void midpoint_displacement(Vec2d a, Vec2d b, const PerturbationParams& prm, std:
 Status perturb_subdivision(const PlanarSubdivision& sub, const PerturbationParams& prm,
                            std::uint32_t seed, float width, float height, ScalePattern* out,
                            PerturbationReport* report) {
-    if (out == nullptr) return Status::error(StatusCode::invalid_argument, "perturb_subdivision: out is null");
+    if (out == nullptr)
+        return Status::error(StatusCode::invalid_argument, "perturb_subdivision: out is null");
     SHITSUKAN_TRY(check_params(prm));
     const int faces = sub.face_count();
     // centroid of every (convex) polygon before perturbation: the fan centre of the bound
@@ -109,8 +113,10 @@ Status perturb_subdivision(const PlanarSubdivision& sub, const PerturbationParam
     std::vector<Vec2d> poly;
     for (int f = 0; f < faces; ++f) {
         poly.clear();
-        for (int k = sub.face_offsets[std::size_t(f)]; k < sub.face_offsets[std::size_t(f) + 1]; ++k)
-            poly.push_back(sub.vertices[std::size_t(sub.face_vertex(sub.face_edges[std::size_t(k)]))]);
+        for (int k = sub.face_offsets[std::size_t(f)]; k < sub.face_offsets[std::size_t(f) + 1];
+             ++k)
+            poly.push_back(
+                sub.vertices[std::size_t(sub.face_vertex(sub.face_edges[std::size_t(k)]))]);
         centre[std::size_t(f)] = polygon_centroid(poly.data(), int(poly.size()));
     }
     const int n = 1 << prm.levels;
@@ -126,8 +132,9 @@ Status perturb_subdivision(const PlanarSubdivision& sub, const PerturbationParam
             double l = length(b - a), ds = l / n;
             // the slope budget G, shared by the levels: level k (half-segment l / 2^k) may use
             // w_k = 2^-k / (1 - 2^-L) of it, so the coarse bends keep most of their amplitude
-            double bound = double(prm.safety) * std::min(slope_bound(a, b, centre[std::size_t(edge.left)]),
-                                                         slope_bound(a, b, centre[std::size_t(edge.right)]));
+            double bound =
+                double(prm.safety) * std::min(slope_bound(a, b, centre[std::size_t(edge.left)]),
+                                              slope_bound(a, b, centre[std::size_t(edge.right)]));
             double cap[kMaxPerturbationLevels];
             double half = 0.5 * l, weight_sum = 1.0 - std::ldexp(1.0, -prm.levels);
             bool capped = false;
@@ -139,7 +146,8 @@ Status perturb_subdivision(const PlanarSubdivision& sub, const PerturbationParam
             rep.clamped += capped;
             midpoint_displacement(a, b, prm, seed, f.data(), cap);
             double slope = 0.0;
-            for (int i = 0; i < n; ++i) slope = std::max(slope, std::fabs(f[std::size_t(i) + 1] - f[std::size_t(i)]) / ds);
+            for (int i = 0; i < n; ++i)
+                slope = std::max(slope, std::fabs(f[std::size_t(i) + 1] - f[std::size_t(i)]) / ds);
             SHITSUKAN_ASSERT(slope <= bound * (1.0 + 1e-9));  // the sum of the caps' slopes
             Vec2d u = (b - a) / l, nrm{-u.y, u.x};
             for (int i = 1; i < n; ++i) {
@@ -160,13 +168,15 @@ Status perturb_subdivision(const PlanarSubdivision& sub, const PerturbationParam
     std::vector<Vec2> fpoly;
     for (int f_id = 0; f_id < faces; ++f_id) {
         fpoly.clear();
-        for (int k = sub.face_offsets[std::size_t(f_id)]; k < sub.face_offsets[std::size_t(f_id) + 1]; ++k) {
+        for (int k = sub.face_offsets[std::size_t(f_id)];
+             k < sub.face_offsets[std::size_t(f_id) + 1]; ++k) {
             int fe = sub.face_edges[std::size_t(k)];
             int e = fe >= 0 ? fe : ~fe;
             Vec2d start = sub.vertices[std::size_t(sub.face_vertex(fe))];
             fpoly.push_back(to_float(start));
             int c0 = curve_offset[std::size_t(e)], c1 = curve_offset[std::size_t(e) + 1];
-            Vec2d other = sub.vertices[std::size_t(fe >= 0 ? sub.edges[std::size_t(e)].v1 : sub.edges[std::size_t(e)].v0)];
+            Vec2d other = sub.vertices[std::size_t(fe >= 0 ? sub.edges[std::size_t(e)].v1
+                                                           : sub.edges[std::size_t(e)].v0)];
             if (lex_less(start, other)) {
                 for (int i = c0; i < c1; ++i) fpoly.push_back(to_float(curve[std::size_t(i)]));
             } else {

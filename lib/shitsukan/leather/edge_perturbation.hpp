@@ -40,10 +40,10 @@
 namespace shitsukan {
 
 struct PerturbationParams {
-    float p = 0.015f;             // given (fig. 7): first-level amplitude, pattern units (W = 1)
-    int levels = 4;               // chosen: 2^4 = 16 segments per edge, smooth at 512 px
-    float decay = 0.5f;           // chosen: amplitude halves with the segment (H = 1)
-    float safety = 0.6f;          // chosen: fraction of the tiling bound actually used
+    float p = 0.015f;     // given (fig. 7): first-level amplitude, pattern units (W = 1)
+    int levels = 4;       // chosen: 2^4 = 16 segments per edge, smooth at 512 px
+    float decay = 0.5f;   // chosen: amplitude halves with the segment (H = 1)
+    float safety = 0.6f;  // chosen: fraction of the tiling bound actually used
 };
 
 constexpr int kMaxPerturbationLevels = 10;

@@ -39,19 +39,23 @@ void collect_cells(const VoronoiCells& cells, std::vector<Vec2d>* verts, std::ve
 
 Status check_scale_params(const ScaleParams& prm) {
     if (!(prm.width > 0.0f && prm.height > 0.0f) || !is_finite(prm.width) || !is_finite(prm.height))
-        return Status::error(StatusCode::invalid_argument, "scale pattern: width and height must be > 0 (got %g x %g)",
+        return Status::error(StatusCode::invalid_argument,
+                             "scale pattern: width and height must be > 0 (got %g x %g)",
                              double(prm.width), double(prm.height));
     if (!(prm.D > 0.0f) || !is_finite(prm.D))
-        return Status::error(StatusCode::invalid_argument, "scale pattern: seed spacing D must be > 0 (got %g)",
-                             double(prm.D));
+        return Status::error(StatusCode::invalid_argument,
+                             "scale pattern: seed spacing D must be > 0 (got %g)", double(prm.D));
     if (!(prm.d >= 0.0f) || !is_finite(prm.d))
         return Status::error(StatusCode::invalid_argument,
-                             "scale pattern: distance d from the centre line must be >= 0 (got %g)", double(prm.d));
+                             "scale pattern: distance d from the centre line must be >= 0 (got %g)",
+                             double(prm.d));
     if (!(prm.a >= 0.0f && prm.a <= 1.0f))
         return Status::error(StatusCode::invalid_argument,
-                             "scale pattern: relative displacement a must be in [0, 1] (got %g)", double(prm.a));
+                             "scale pattern: relative displacement a must be in [0, 1] (got %g)",
+                             double(prm.a));
     if (!(prm.perturbation.p >= 0.0f) || !is_finite(prm.perturbation.p))
-        return Status::error(StatusCode::invalid_argument, "scale pattern: perturbation p must be >= 0 (got %g)",
+        return Status::error(StatusCode::invalid_argument,
+                             "scale pattern: perturbation p must be >= 0 (got %g)",
                              double(prm.perturbation.p));
     return Status::success();
 }
@@ -59,9 +63,11 @@ Status check_scale_params(const ScaleParams& prm) {
 Status divide_single_stage(const Vec2d* seeds, int count, float width, float height,
                            PlanarSubdivision* out, std::vector<int>* face_site) {
     if (!(width > 0.0f && height > 0.0f) || !is_finite(width) || !is_finite(height))
-        return Status::error(StatusCode::invalid_argument, "divide_single_stage: empty region %g x %g",
-                             double(width), double(height));
-    const Vec2d region[4] = {{0, 0}, {double(width), 0}, {double(width), double(height)}, {0, double(height)}};
+        return Status::error(StatusCode::invalid_argument,
+                             "divide_single_stage: empty region %g x %g", double(width),
+                             double(height));
+    const Vec2d region[4] = {
+        {0, 0}, {double(width), 0}, {double(width), double(height)}, {0, double(height)}};
     VoronoiCells cells;
     SHITSUKAN_TRY(voronoi_cells(seeds, count, region, 4, &cells));
     std::vector<Vec2d> verts;
@@ -72,13 +78,16 @@ Status divide_single_stage(const Vec2d* seeds, int count, float width, float hei
 }
 
 Status divide_scales(const ScaleParams& prm, ScaleDivision* out) {
-    if (out == nullptr) return Status::error(StatusCode::invalid_argument, "divide_scales: out is null");
+    if (out == nullptr)
+        return Status::error(StatusCode::invalid_argument, "divide_scales: out is null");
     SHITSUKAN_TRY(check_scale_params(prm));
 
     // ---- Stage 1 (§3.1 (1)): vertical division --------------------------------------------
-    SHITSUKAN_TRY(stage1_seeds(prm.width, prm.height, prm.D, prm.d, prm.a, prm.seed, &out->stage1_seeds));
-    SHITSUKAN_TRY(divide_single_stage(out->stage1_seeds.moved.data(), int(out->stage1_seeds.moved.size()),
-                                      prm.width, prm.height, &out->stage1, &out->stage1_site));
+    SHITSUKAN_TRY(
+        stage1_seeds(prm.width, prm.height, prm.D, prm.d, prm.a, prm.seed, &out->stage1_seeds));
+    SHITSUKAN_TRY(divide_single_stage(out->stage1_seeds.moved.data(),
+                                      int(out->stage1_seeds.moved.size()), prm.width, prm.height,
+                                      &out->stage1, &out->stage1_site));
     const PlanarSubdivision& s1 = out->stage1;
 
     // ---- Stage 2 (§3.1 (2)): horizontal division inside each stage-1 polygon -------------
@@ -93,18 +102,29 @@ Status divide_scales(const ScaleParams& prm, ScaleDivision* out) {
     VoronoiCells vc;
     std::vector<Vec2d> region;
     for (int f = 0; f < s1.face_count(); ++f) {
-        const int e0 = s1.face_offsets[std::size_t(f)], m = s1.face_offsets[std::size_t(f) + 1] - e0;
+        const int e0 = s1.face_offsets[std::size_t(f)],
+                  m = s1.face_offsets[std::size_t(f) + 1] - e0;
         region.clear();
-        for (int k = 0; k < m; ++k) region.push_back(s1.vertices[std::size_t(s1.face_vertex(s1.face_edges[std::size_t(e0 + k)]))]);
+        for (int k = 0; k < m; ++k)
+            region.push_back(
+                s1.vertices[std::size_t(s1.face_vertex(s1.face_edges[std::size_t(e0 + k)]))]);
         // processings 1-2: a row parallel to x through this polygon's own seed, moved along x
+        // (the columns of the polygon's own half: its scales end at the centre-line joint;
+        // with d = 0 both rows sit on the centre line and every polygon spans both halves)
         const int site = out->stage1_site[std::size_t(f)];
-        SHITSUKAN_TRY(stage2_row_seeds(out->columns, prm.a, out->stage1_seeds.moved[std::size_t(site)].y, site,
-                                       prm.seed, &row));
-        out->stage2_seeds.original.insert(out->stage2_seeds.original.end(), row.original.begin(), row.original.end());
-        out->stage2_seeds.moved.insert(out->stage2_seeds.moved.end(), row.moved.begin(), row.moved.end());
+        const Vec2d own = out->stage1_seeds.original[std::size_t(site)];
+        const int side = prm.d > 0.0f ? (own.x < 0.5 * double(prm.width) ? -1 : 1) : 0;
+        SHITSUKAN_TRY(stage2_row_seeds(out->columns, prm.a,
+                                       out->stage1_seeds.moved[std::size_t(site)].y, site, prm.seed,
+                                       &row, side));
+        out->stage2_seeds.original.insert(out->stage2_seeds.original.end(), row.original.begin(),
+                                          row.original.end());
+        out->stage2_seeds.moved.insert(out->stage2_seeds.moved.end(), row.moved.begin(),
+                                       row.moved.end());
         out->stage2_row.insert(out->stage2_row.end(), row.moved.size(), f);
         // processing 3: Voronoi division clipped to the stage-1 polygon
-        SHITSUKAN_TRY(voronoi_cells(row.moved.data(), int(row.moved.size()), region.data(), m, &vc));
+        SHITSUKAN_TRY(
+            voronoi_cells(row.moved.data(), int(row.moved.size()), region.data(), m, &vc));
         for (int c = 0; c < vc.cell_count(); ++c) {
             int k;
             const Vec2d* v = vc.cell(c, &k);
@@ -119,9 +139,9 @@ Status divide_scales(const ScaleParams& prm, ScaleDivision* out) {
                 if (r0 >= 0 && r1 >= 0) {
                     int lo = std::min(r0, r1), hi = std::max(r0, r1);
                     int corner = (hi == lo + 1) ? hi : ((lo == 0 && hi == m - 1) ? 0 : -1);
-                    if (corner >= 0 &&
-                        orient2d(region[std::size_t((corner + m - 1) % m)], region[std::size_t(corner)],
-                                 region[std::size_t((corner + 1) % m)]) > 0.0)
+                    if (corner >= 0 && orient2d(region[std::size_t((corner + m - 1) % m)],
+                                                region[std::size_t(corner)],
+                                                region[std::size_t((corner + 1) % m)]) > 0.0)
                         t.p = region[std::size_t(corner)];
                 }
                 for (int j = 0; j < 2; ++j) {
@@ -141,17 +161,41 @@ Status divide_scales(const ScaleParams& prm, ScaleDivision* out) {
     }
 
     // ---- T junctions: both sides of a stage-1 edge get all points on it ------------------
+    // Points on an edge closer than kWeldRelative * max(W, H) are one point (the edge's own
+    // end point if it is among them): with a = 0 the columns line up across a stage-1 edge
+    // and the two sides compute the same junction with different rounding (1e-14 apart).
+    const double weld = kWeldRelative * std::max(double(prm.width), double(prm.height));
     std::vector<std::vector<double>> on_edge_t(s1.edges.size());
     for (std::size_t g = 0; g < s1.edges.size(); ++g) {
-        Vec2d a = s1.vertices[std::size_t(s1.edges[g].v0)], b = s1.vertices[std::size_t(s1.edges[g].v1)];
+        Vec2d a = s1.vertices[std::size_t(s1.edges[g].v0)],
+              b = s1.vertices[std::size_t(s1.edges[g].v1)];
         std::vector<Vec2d>& pts = on_edge[g];
         auto t_of = [&](Vec2d p) { return dot(p - a, b - a); };
-        std::sort(pts.begin(), pts.end(), [&](Vec2d p, Vec2d q) {
+        auto before = [&](Vec2d p, Vec2d q) {
             double tp = t_of(p), tq = t_of(q);
             if (tp != tq) return tp < tq;
             return p.x < q.x || (p.x == q.x && p.y < q.y);
-        });
+        };
+        std::sort(pts.begin(), pts.end(), before);
         pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+        std::vector<Vec2d> canonical(pts.size());
+        for (std::size_t i = 0; i < pts.size();) {
+            std::size_t j = i;
+            while (j + 1 < pts.size() && length(pts[j + 1] - pts[i]) <= weld) ++j;
+            Vec2d c = pts[i];
+            for (std::size_t k = i; k <= j; ++k)
+                if (pts[k] == a || pts[k] == b) c = pts[k];
+            for (std::size_t k = i; k <= j; ++k) canonical[k] = c;
+            i = j + 1;
+        }
+        for (auto& cell : cells)
+            for (TaggedVertex& t : cell) {
+                if (t.on[0] != int(g) && t.on[1] != int(g)) continue;
+                auto it = std::lower_bound(pts.begin(), pts.end(), t.p, before);
+                if (it != pts.end() && *it == t.p) t.p = canonical[std::size_t(it - pts.begin())];
+            }
+        canonical.erase(std::unique(canonical.begin(), canonical.end()), canonical.end());
+        pts = canonical;
         for (Vec2d p : pts) on_edge_t[g].push_back(t_of(p));
     }
     std::vector<Vec2d> verts;
@@ -174,10 +218,12 @@ Status divide_scales(const ScaleParams& prm, ScaleDivision* out) {
             double ta = dot(a.p - e0, e1 - e0), tb = dot(b.p - e0, e1 - e0);
             if (ta < tb) {
                 for (std::size_t j = 0; j < pts.size(); ++j)
-                    if (ts[j] > ta && ts[j] < tb && pts[j] != a.p && pts[j] != b.p) verts.push_back(pts[j]);
+                    if (ts[j] > ta && ts[j] < tb && pts[j] != a.p && pts[j] != b.p)
+                        verts.push_back(pts[j]);
             } else {
                 for (std::size_t j = pts.size(); j-- > 0;)
-                    if (ts[j] < ta && ts[j] > tb && pts[j] != a.p && pts[j] != b.p) verts.push_back(pts[j]);
+                    if (ts[j] < ta && ts[j] > tb && pts[j] != a.p && pts[j] != b.p)
+                        verts.push_back(pts[j]);
             }
         }
         // drop repeats (a corner snapped onto its neighbour)
@@ -186,7 +232,8 @@ Status divide_scales(const ScaleParams& prm, ScaleDivision* out) {
             if (w == first || verts[i] != verts[w - 1]) verts[w++] = verts[i];
         verts.resize(w);
         while (verts.size() - first > 1 && verts[first] == verts.back()) verts.pop_back();
-        if (verts.size() - first < 3 || !(polygon_area(verts.data() + first, int(verts.size() - first)) > 0.0)) {
+        if (verts.size() - first < 3 ||
+            !(polygon_area(verts.data() + first, int(verts.size() - first)) > 0.0)) {
             verts.resize(first);
             continue;
         }
@@ -194,20 +241,24 @@ Status divide_scales(const ScaleParams& prm, ScaleDivision* out) {
         kept_stage1.push_back(out->cell_stage1[c]);
     }
     out->cell_stage1 = kept_stage1;
-    Status s = build_planar_subdivision(verts.data(), offsets.data(), int(offsets.size()) - 1, &out->cells);
-    if (!s) return Status::error(StatusCode::degenerate, "divide_scales: stage-2 cells do not fit: %s", s.message());
+    Status s = build_planar_subdivision(verts.data(), offsets.data(), int(offsets.size()) - 1,
+                                        &out->cells);
+    if (!s)
+        return Status::error(StatusCode::degenerate, "divide_scales: stage-2 cells do not fit: %s",
+                             s.message());
     return Status::success();
 }
 
 Status generate_scale_pattern(const ScaleParams& prm, ScalePattern* pattern, ScaleDivision* steps) {
     if (pattern == nullptr)
-        return Status::error(StatusCode::invalid_argument, "generate_scale_pattern: pattern is null");
+        return Status::error(StatusCode::invalid_argument,
+                             "generate_scale_pattern: pattern is null");
     ScaleDivision local;
     ScaleDivision* div = steps ? steps : &local;
     SHITSUKAN_TRY(divide_scales(prm, div));
     // processing 4 on the final polygons
-    return perturb_subdivision(div->cells, prm.perturbation, prm.seed, prm.width, prm.height, pattern,
-                               &div->perturbation);
+    return perturb_subdivision(div->cells, prm.perturbation, prm.seed, prm.width, prm.height,
+                               pattern, &div->perturbation);
 }
 
 }  // namespace shitsukan

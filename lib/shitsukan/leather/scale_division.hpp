@@ -16,7 +16,8 @@
 //   stage 1: two seed rows parallel to y at distance d from the centre line, spacing D,
 //            moved along y (seed_layout.hpp), Voronoi division of the rectangle;
 //   stage 2: for each stage-1 polygon, one seed row parallel to x through its (moved) seed,
-//            columns narrowing toward the left and right edges, moved along x; Voronoi
+//            on the columns of its own half (left or right of the centre line; both when
+//            d = 0), narrowing toward the left and right edges, moved along x; Voronoi
 //            division clipped to that polygon. The pieces of a stage-1 edge seen from its two
 //            sides are split at each other's end points (T junctions become vertices), so the
 //            final polygons share every edge and form one planar subdivision;
@@ -42,25 +43,28 @@
 
 namespace shitsukan {
 
+// Stage-2 junctions on a stage-1 edge closer than this (times the region size) are welded.
+constexpr double kWeldRelative = 1e-9;
+
 struct ScaleParams {
-    float width = 1.0f, height = 1.0f;  // the paper's square pattern region
-    float D = 0.1f;                     // chosen: seed spacing, 10 rows on the unit square
-    float d = 0.1f;                     // given (fig. 7): d = 1.0 D
-    float a = 0.25f;                    // given (fig. 7)
+    float width = 1.0f, height = 1.0f;     // the paper's square pattern region
+    float D = 0.1f;                        // chosen: seed spacing, 10 rows on the unit square
+    float d = 0.1f;                        // given (fig. 7): d = 1.0 D
+    float a = 0.25f;                       // given (fig. 7)
     float edge_ratio = kDefaultEdgeRatio;  // chosen: stage-2 spacing at the edges / D
-    PerturbationParams perturbation;    // p = 0.015 given (fig. 7); recursion chosen
+    PerturbationParams perturbation;       // p = 0.015 given (fig. 7); recursion chosen
     std::uint32_t seed = 1;
 };
 
 struct ScaleDivision {
     SeedLayout stage1_seeds;
-    PlanarSubdivision stage1;             // stage-1 polygons, before perturbation
-    std::vector<int> stage1_site;         // stage-1 polygon -> its seed index
+    PlanarSubdivision stage1;      // stage-1 polygons, before perturbation
+    std::vector<int> stage1_site;  // stage-1 polygon -> its seed index
     Stage2Columns columns;
-    SeedLayout stage2_seeds;              // every row, concatenated
-    std::vector<int> stage2_row;          // stage-2 seed -> stage-1 polygon of its row
-    PlanarSubdivision cells;              // final polygons, before perturbation
-    std::vector<int> cell_stage1;         // final polygon -> stage-1 polygon
+    SeedLayout stage2_seeds;       // every row, concatenated
+    std::vector<int> stage2_row;   // stage-2 seed -> stage-1 polygon of its row
+    PlanarSubdivision cells;       // final polygons, before perturbation
+    std::vector<int> cell_stage1;  // final polygon -> stage-1 polygon
     PerturbationReport perturbation;
 };
 

@@ -6,13 +6,17 @@
 
 namespace shitsukan {
 
-Status rasterize_scale_labels(const ScalePattern& pattern, int width, int height, std::int32_t* labels) {
+Status rasterize_scale_labels(const ScalePattern& pattern, int width, int height,
+                              std::int32_t* labels) {
     if (labels == nullptr || width <= 0 || height <= 0 || width > 65536 || height > 65536)
-        return Status::error(StatusCode::invalid_argument,
-                             "rasterize_scale_labels: image size must be 1..65536 a side (got %d x %d)", width, height);
+        return Status::error(
+            StatusCode::invalid_argument,
+            "rasterize_scale_labels: image size must be 1..65536 a side (got %d x %d)", width,
+            height);
     if (!(pattern.width > 0.0f && pattern.height > 0.0f))
-        return Status::error(StatusCode::invalid_argument, "rasterize_scale_labels: pattern is %g x %g",
-                             double(pattern.width), double(pattern.height));
+        return Status::error(StatusCode::invalid_argument,
+                             "rasterize_scale_labels: pattern is %g x %g", double(pattern.width),
+                             double(pattern.height));
     const std::size_t total = std::size_t(width) * std::size_t(height);
     std::fill(labels, labels + total, -1);
     const double px = double(pattern.width) / width, py = double(pattern.height) / height;
@@ -35,7 +39,7 @@ Status rasterize_scale_labels(const ScalePattern& pattern, int width, int height
             for (int k = 0; k < n; ++k) {
                 Vec2 a = v[k], b = v[(k + 1) % n];
                 if (b.y < a.y || (b.y == a.y && b.x < a.x)) std::swap(a, b);  // lower end first
-                if (!(y >= double(a.y) && y < double(b.y))) continue;          // half-open in y
+                if (!(y >= double(a.y) && y < double(b.y))) continue;         // half-open in y
                 double t = (y - double(a.y)) / (double(b.y) - double(a.y));
                 xs.push_back(double(a.x) + t * (double(b.x) - double(a.x)));
             }
@@ -47,9 +51,10 @@ Status rasterize_scale_labels(const ScalePattern& pattern, int width, int height
                 for (; i < width && centre_x(i) < xs[s + 1]; ++i) {
                     std::int32_t& l = labels[std::size_t(j) * std::size_t(width) + std::size_t(i)];
                     if (l >= 0)
-                        return Status::error(StatusCode::degenerate,
-                                             "rasterize_scale_labels: polygons %d and %d overlap at pixel (%d, %d)",
-                                             int(l), f, i, j);
+                        return Status::error(
+                            StatusCode::degenerate,
+                            "rasterize_scale_labels: polygons %d and %d overlap at pixel (%d, %d)",
+                            int(l), f, i, j);
                     l = f;
                 }
             }
@@ -57,7 +62,8 @@ Status rasterize_scale_labels(const ScalePattern& pattern, int width, int height
     }
     for (std::size_t k = 0; k < total; ++k)
         if (labels[k] < 0)
-            return Status::error(StatusCode::degenerate, "rasterize_scale_labels: pixel (%d, %d) is in no polygon",
+            return Status::error(StatusCode::degenerate,
+                                 "rasterize_scale_labels: pixel (%d, %d) is in no polygon",
                                  int(k % std::size_t(width)), int(k / std::size_t(width)));
     return Status::success();
 }

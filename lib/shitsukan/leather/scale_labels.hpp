@@ -21,6 +21,7 @@
 
 namespace shitsukan {
 
-Status rasterize_scale_labels(const ScalePattern& pattern, int width, int height, std::int32_t* labels);
+Status rasterize_scale_labels(const ScalePattern& pattern, int width, int height,
+                              std::int32_t* labels);
 
 }  // namespace shitsukan

@@ -11,16 +11,19 @@ constexpr int kMaxSeedsPerLine = 4096;
 
 Status check_common(const char* who, float width, float height, float D, float a) {
     if (!(width > 0.0f) || !(height > 0.0f) || !is_finite(width) || !is_finite(height))
-        return Status::error(StatusCode::invalid_argument, "%s: width and height must be > 0 (got %g x %g)",
-                             who, double(width), double(height));
+        return Status::error(StatusCode::invalid_argument,
+                             "%s: width and height must be > 0 (got %g x %g)", who, double(width),
+                             double(height));
     if (!(D > 0.0f) || !is_finite(D))
-        return Status::error(StatusCode::invalid_argument, "%s: seed spacing D must be > 0 (got %g)", who,
-                             double(D));
+        return Status::error(StatusCode::invalid_argument,
+                             "%s: seed spacing D must be > 0 (got %g)", who, double(D));
     if (!(a >= 0.0f && a <= 1.0f))
         return Status::error(StatusCode::invalid_argument,
-                             "%s: relative displacement a must be in [0, 1] (got %g)", who, double(a));
+                             "%s: relative displacement a must be in [0, 1] (got %g)", who,
+                             double(a));
     if (width / D > kMaxSeedsPerLine || height / D > kMaxSeedsPerLine)
-        return Status::error(StatusCode::too_large, "%s: %g x %g / D = %g gives more than %d seeds a line", who,
+        return Status::error(StatusCode::too_large,
+                             "%s: %g x %g / D = %g gives more than %d seeds a line", who,
                              double(width), double(height), double(D), kMaxSeedsPerLine);
     return Status::success();
 }
@@ -37,9 +40,9 @@ Status square_lattice_seeds(float width, float height, float D, float a, std::ui
     out->original.clear();
     out->moved.clear();
     const int nx = int(std::ceil(width / D)), ny = int(std::ceil(height / D));
-    for (int j = -1; j <= ny; ++j)
-        for (int i = -1; i <= nx; ++i) {
-            Vec2d p{(i + 0.5) * double(D), (j + 0.5) * double(D)};
+    for (int j = -1; j <= ny + 1; ++j)
+        for (int i = -1; i <= nx + 1; ++i) {
+            Vec2d p{i * double(D), j * double(D)};
             out->original.push_back(p);
             p.x += seed_displacement(D, a, hashed_rnd(seed, kStreamLatticeX, i, j));
             p.y += seed_displacement(D, a, hashed_rnd(seed, kStreamLatticeY, i, j));
@@ -71,15 +74,16 @@ Status stage1_seeds(float width, float height, float D, float d, float a, std::u
     SHITSUKAN_TRY(check_common("stage1_seeds", width, height, D, a));
     if (!(d >= 0.0f) || !is_finite(d))
         return Status::error(StatusCode::invalid_argument,
-                             "stage1_seeds: distance d from the centre line must be >= 0 (got %g)", double(d));
+                             "stage1_seeds: distance d from the centre line must be >= 0 (got %g)",
+                             double(d));
     out->original.clear();
     out->moved.clear();
     const double xc = 0.5 * double(width);
     const int ny = int(std::ceil(height / D));
-    for (int j = -1; j <= ny; ++j)
+    for (int j = -1; j <= ny + 1; ++j)
         for (int side = 0; side < 2; ++side) {
             // processing 1: two rows parallel to y, at distance d on each side of the centre line
-            Vec2d p{side == 0 ? xc - double(d) : xc + double(d), (j + 0.5) * double(D)};
+            Vec2d p{side == 0 ? xc - double(d) : xc + double(d), j * double(D)};
             out->original.push_back(p);
             // processing 2: move along y by eq. (1)
             p.y += seed_displacement(D, a, hashed_rnd(seed, kStreamStage1, 2 * j + side, 0));
@@ -98,42 +102,57 @@ Status stage2_columns(float width, float D, float edge_ratio, Stage2Columns* out
     SHITSUKAN_TRY(check_common("stage2_columns", width, width, D, 0.0f));
     if (!(edge_ratio > 0.05f && edge_ratio <= 1.0f))
         return Status::error(StatusCode::invalid_argument,
-                             "stage2_columns: edge spacing ratio must be in (0.05, 1] (got %g)", double(edge_ratio));
+                             "stage2_columns: edge spacing ratio must be in (0.05, 1] (got %g)",
+                             double(edge_ratio));
     const double xc = 0.5 * double(width);
-    std::vector<double> t(1, 0.0), s(1, double(D));
+    // distances t_k from the centre line: t_1 = s(0) / 2, then steps of s at the step's middle
+    std::vector<double> t(1, 0.5 * stage2_spacing(width, D, edge_ratio, xc));
+    std::vector<double> s(1, double(stage2_spacing(width, D, edge_ratio, xc + t[0])));
     while (t.back() <= xc) {  // until one column lies beyond the edge
         double first = stage2_spacing(width, D, edge_ratio, xc + t.back());
         double step = stage2_spacing(width, D, edge_ratio, xc + t.back() + 0.5 * first);
         t.push_back(t.back() + step);
         s.push_back(stage2_spacing(width, D, edge_ratio, xc + t.back()));
     }
+    // stretch all distances by one common factor so that a column lies exactly on each edge:
+    // the edge scales are then cut through their middle, never left as slivers
+    std::size_t nearest = 0;
+    for (std::size_t k = 0; k < t.size(); ++k)
+        if (std::fabs(t[k] - xc) < std::fabs(t[nearest] - xc)) nearest = k;
+    const double stretch = xc / t[nearest];
+    for (std::size_t k = 0; k < t.size(); ++k) {
+        t[k] *= stretch;
+        s[k] *= stretch;
+    }
     out->x.clear();
     out->spacing.clear();
     out->index.clear();
     const int n = int(t.size());
-    for (int k = n - 1; k >= 1; --k) {
+    for (int k = n - 1; k >= 0; --k) {
         out->x.push_back(xc - t[std::size_t(k)]);
         out->spacing.push_back(s[std::size_t(k)]);
-        out->index.push_back(-k);
+        out->index.push_back(-(k + 1));
     }
     for (int k = 0; k < n; ++k) {
         out->x.push_back(xc + t[std::size_t(k)]);
         out->spacing.push_back(s[std::size_t(k)]);
-        out->index.push_back(k);
+        out->index.push_back(k + 1);
     }
     return Status::success();
 }
 
 Status stage2_row_seeds(const Stage2Columns& columns, float a, double row_y, int row_id,
-                        std::uint32_t seed, SeedLayout* out) {
+                        std::uint32_t seed, SeedLayout* out, int side) {
     if (!(a >= 0.0f && a <= 1.0f))
         return Status::error(StatusCode::invalid_argument,
-                             "stage2_row_seeds: relative displacement a must be in [0, 1] (got %g)", double(a));
+                             "stage2_row_seeds: relative displacement a must be in [0, 1] (got %g)",
+                             double(a));
     if (!is_finite(row_y))
         return Status::error(StatusCode::invalid_argument, "stage2_row_seeds: row y is not finite");
     out->original.clear();
     out->moved.clear();
     for (std::size_t k = 0; k < columns.x.size(); ++k) {
+        if ((side < 0 && columns.index[k] > 0) || (side > 0 && columns.index[k] < 0)) continue;
         // processing 1: seeds on a row parallel to x; processing 2: moved along x
         Vec2d p{columns.x[k], row_y};
         out->original.push_back(p);

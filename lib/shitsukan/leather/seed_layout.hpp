@@ -21,9 +21,14 @@
 // Stage-2 spacing law (chosen here; the paper only says the spacing narrows toward the left
 // and right edges): with u = |x - W/2| / (W/2) in [0, 1],
 //   s(u) = D · (1 - (1 - r) · u^2),   r = edge ratio (default 0.5: edge scales half as wide).
-// Columns start at the centre line (x = W/2) and step outward by s evaluated at the middle
-// of each step, until one column lies beyond each edge. In stage 2 eq. (1) uses the local
-// spacing s_k as "D", so a narrow column moves proportionally less.
+// On each side the first column lies half a spacing from the centre line (x = W/2 ± s(0)/2),
+// the next ones step outward by s evaluated at the middle of each step, until one column
+// lies beyond each edge; then all distances (and spacings) are stretched by one common factor
+// (a few percent) so that a column lies exactly on each edge: the edge scales are cut through
+// their middle instead of leaving slivers. The centre line gets no column: it is where the
+// left and right stage-1 polygons meet (the joint pattern), so scales end there instead of
+// being cut in two. In stage 2, eq. (1) uses the local spacing s_k as "D", so a narrow column
+// moves proportionally less.
 #pragma once
 
 #include <cstdint>
@@ -56,7 +61,8 @@ enum SeedStream : std::uint32_t {
 
 constexpr float kDefaultEdgeRatio = 0.5f;  // chosen: stage-2 spacing at the edges = D / 2
 
-// Square lattice ((i + 1/2) D, (j + 1/2) D) over the rectangle plus one ring outside it,
+// Square lattice (i D, j D) over the rectangle plus one ring outside it (chosen: lattice
+// points on the border, so the border cuts cells through their middle, never to slivers),
 // each seed moved along x and along y by independent eq. (1) displacements.
 Status square_lattice_seeds(float width, float height, float D, float a, std::uint32_t seed,
                             SeedLayout* out);
@@ -64,24 +70,26 @@ Status square_lattice_seeds(float width, float height, float D, float a, std::ui
 Status triangular_lattice_seeds(float width, float height, float D, float a, std::uint32_t seed,
                                 SeedLayout* out);
 
-// Stage 1 (fig. 4): two rows parallel to y at x = W/2 - d (left, j-th seed index 2j) and
-// x = W/2 + d (right, index 2j + 1), y = (j + 1/2) D, one seed beyond each end; moved along y.
+// Stage 1 (fig. 4): two rows parallel to y at x = W/2 - d (left) and x = W/2 + d (right),
+// y = j D for j = -1 .. ceil(H / D) + 1 (chosen: the top and bottom edges then cut rows near
+// their middle, never a sliver); seed 2 (j + 1) + side; moved along y.
 Status stage1_seeds(float width, float height, float D, float d, float a, std::uint32_t seed,
                     SeedLayout* out);
 
 struct Stage2Columns {
     std::vector<double> x;        // column positions, increasing
     std::vector<double> spacing;  // the local spacing s_k used in eq. (1)
-    std::vector<int> index;       // signed column number: 0 on the centre line
+    std::vector<int> index;       // signed column number: -1, -2, ... left, 1, 2, ... right
 };
 
 // Stage 2 (fig. 6): column positions from the spacing law above.
 Status stage2_columns(float width, float D, float edge_ratio, Stage2Columns* out);
 float stage2_spacing(float width, float D, float edge_ratio, double x);  // s(u(x))
 
-// One stage-2 row at height row_y: a seed on every column, moved along x by s_k · a · Rnd;
-// row_id selects the random numbers (the tokai pipeline uses the stage-1 seed index).
+// One stage-2 row at height row_y: a seed on every column (side < 0: left columns only,
+// side > 0: right only, 0: all), moved along x by s_k · a · Rnd; row_id selects the random
+// numbers (the tokai pipeline uses the stage-1 seed index).
 Status stage2_row_seeds(const Stage2Columns& columns, float a, double row_y, int row_id,
-                        std::uint32_t seed, SeedLayout* out);
+                        std::uint32_t seed, SeedLayout* out, int side = 0);
 
 }  // namespace shitsukan

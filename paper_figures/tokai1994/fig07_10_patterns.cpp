@@ -1,0 +1,136 @@
+// tokai1994 figs. 7-10: the scale pattern after both divisions (fig. 7: d = 1.0 D, a = 0.25,
+// p = 0.015) and the effect of d (fig. 8), a (fig. 9) and the perturbation p (fig. 10), each
+// varied around the fig. 7 values.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "driver/figure.hpp"
+#include "shitsukan/image/png16.hpp"
+#include "shitsukan/leather/scale_division.hpp"
+#include "shitsukan/leather/scale_labels.hpp"
+#include "shitsukan/leather/scale_statistics.hpp"
+#include "tokai1994/scale_drawing.hpp"
+
+using namespace shitsukan;
+using namespace shitsukan::figures;
+using namespace shitsukan::figures::tokai;
+
+namespace {
+
+struct Panel {
+    ScaleParams prm;
+    std::string label;
+};
+
+Status panels_figure(FigureContext& ctx, const std::vector<Panel>& panels, const char* varied) {
+    record_scale_params(ctx, ScaleParams{});
+    const int side = ctx.quick() ? 128 : 256, gap = side / 12, caption = 24;
+    const int width = int(panels.size()) * side + (int(panels.size()) + 1) * gap;
+    const int height = side + 2 * gap + caption;
+    std::vector<ScalePattern> patterns(panels.size());
+    std::string note = std::string("Varied: ") + varied + ".";
+    for (std::size_t i = 0; i < panels.size(); ++i) {
+        ScaleDivision steps;
+        SHITSUKAN_TRY(generate_scale_pattern(panels[i].prm, &patterns[i], &steps));
+        note += fmt(" %s: %d scales.", panels[i].label.c_str(), patterns[i].polygon_count());
+    }
+    ctx.note(note);
+    return save_png_and_svg(ctx, width, height, [&](Canvas& c) {
+        for (std::size_t i = 0; i < panels.size(); ++i) {
+            const Frame f{float(gap + int(i) * (side + gap)), float(gap), float(side)};
+            draw_pattern(c, patterns[i], f, kInk, 1.0f);
+            draw_border(c, f, 1, 1, kInk, 1.2f);
+            c.text({f.ox, float(gap + side + 8)}, panels[i].label, kInk, ctx.quick() ? 1 : 2);
+        }
+    });
+}
+
+}  // namespace
+
+SHITSUKAN_FIGURE(tokai_fig07, "tokai1994", "fig07",
+                 "Scale pattern after both divisions (d = 1.0 D, a = 0.25, p = 0.015)") {
+    ScaleParams prm;
+    record_scale_params(ctx, prm);
+    ScaleDivision steps;
+    ScalePattern pattern;
+    SHITSUKAN_TRY(generate_scale_pattern(prm, &pattern, &steps));
+    ScaleStatistics st;
+    SHITSUKAN_TRY(measure_scale_statistics(steps.cells, prm.width, prm.height, &st));
+    ctx.note(
+        fmt("Measured before perturbation: mean corner count of the %d inner scales %.2f "
+            "(feature (1): near-quadrilateral); mean width %.4f at 0.3-0.45 W from the "
+            "centre line vs %.4f at 0.1-0.2 W, ratio %.2f (feature (3)).",
+            st.cells, st.mean_corners, st.edge_width, st.centre_width, st.edge_to_centre));
+    ctx.note(fmt(
+        "%d scales in %d stage-1 polygons; %d interior edges perturbed once each (max offset "
+        "%.4f). "
+        "Look for (1) near-quadrilateral scales in regular rows, (2) the joint pattern along the "
+        "centre line, (3) scales narrowing toward the left and right edges.",
+        pattern.polygon_count(), steps.stage1.face_count(), steps.perturbation.edges,
+        steps.perturbation.max_offset));
+    const int size = ctx.quick() ? 256 : 512, margin = size / 32;
+    const Frame f{float(margin), float(margin), float(size - 2 * margin)};
+    SHITSUKAN_TRY(save_png_and_svg(ctx, size, size, [&](Canvas& c) {
+        draw_pattern(c, pattern, f, kInk, 1.3f);
+        draw_border(c, f, 1, 1, kInk, 1.5f);
+    }));
+    // The same polygons as data for the relief step (fig07.csv) and as a label image
+    // (fig07_labels.png: 16-bit gray, value = polygon id, every pixel exactly one polygon).
+    std::string csv = "polygon,centroid_x,centroid_y,vertex_count,vertices (x y ...)\n";
+    for (int i = 0; i < pattern.polygon_count(); ++i) {
+        int n;
+        const Vec2* v = pattern.polygon(i, &n);
+        csv += fmt("%d,%.7g,%.7g,%d,", i, double(pattern.centroids[std::size_t(i)].x),
+                   double(pattern.centroids[std::size_t(i)].y), n);
+        for (int k = 0; k < n; ++k)
+            csv += fmt("%s%.7g %.7g", k ? " " : "", double(v[k].x), double(v[k].y));
+        csv += "\n";
+    }
+    SHITSUKAN_TRY(ctx.save_text(".csv", csv));
+    const int n = size;
+    std::vector<std::int32_t> labels(std::size_t(n) * std::size_t(n));
+    SHITSUKAN_TRY(rasterize_scale_labels(pattern, n, n, labels.data()));
+    Gray16Image ids(n, n);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+            ids.at(i, j) = std::uint16_t(labels[std::size_t(j) * std::size_t(n) + std::size_t(i)]);
+    return write_png16(ctx.path("_labels.png").c_str(), ids.view());
+}
+
+SHITSUKAN_FIGURE(tokai_fig08, "tokai1994", "fig08",
+                 "Effect of the distance d from the centre line") {
+    std::vector<Panel> panels;
+    for (float k : {0.25f, 0.5f, 1.0f, 2.0f}) {
+        Panel p;
+        p.prm.d = k * p.prm.D;
+        p.label = fmt("d = %g D", double(k));
+        panels.push_back(p);
+    }
+    ctx.chosen("d values", "0.25 D, 0.5 D, 1.0 D, 2.0 D", "the paper's values are not printed");
+    return panels_figure(ctx, panels, "d (a = 0.25, p = 0.015)");
+}
+
+SHITSUKAN_FIGURE(tokai_fig09, "tokai1994", "fig09", "Effect of the relative displacement a") {
+    std::vector<Panel> panels;
+    for (float a : {0.0f, 0.1f, 0.25f, 0.5f}) {
+        Panel p;
+        p.prm.a = a;
+        p.label = fmt("a = %g", double(a));
+        panels.push_back(p);
+    }
+    ctx.chosen("a values", "0, 0.1, 0.25, 0.5", "the paper's values are not printed");
+    return panels_figure(ctx, panels, "a (d = 1.0 D, p = 0.015)");
+}
+
+SHITSUKAN_FIGURE(tokai_fig10, "tokai1994", "fig10", "Effect of the perturbation p") {
+    std::vector<Panel> panels;
+    for (float pv : {0.0f, 0.0075f, 0.015f, 0.03f}) {
+        Panel p;
+        p.prm.perturbation.p = pv;
+        p.label = fmt("p = %g", double(pv));
+        panels.push_back(p);
+    }
+    ctx.chosen("p values", "0, 0.0075, 0.015, 0.03", "the paper's values are not printed");
+    return panels_figure(ctx, panels, "p (d = 1.0 D, a = 0.25)");
+}
