@@ -18,7 +18,8 @@ int main() {
          {Table1Section::convex, Table1Section::concave, Table1Section::two_segment}) {
         BezierChain section = table1_section(which);
         Status s = validate_section(section);
-        std::printf("%s: %s\n   r     t      z      dz/dr\n", table1_section_name(which), s.message());
+        std::printf("%s: %s\n   r     t      z      dz/dr\n", table1_section_name(which),
+                    s.message());
         for (int k = 0; k <= 10; ++k) {
             float r = 0.1f * float(k);
             SectionSample q = section_at_r(section, r);  // z(r), and eq. (3) at that t

@@ -117,8 +117,8 @@ TEST_CASE("bezier: a chain is continuous at the join (fig. 15), and z(r) too") {
 TEST_CASE("bezier: bad sections get a clear status, no crash") {
     BezierChain s = table1_section(Table1Section::convex);
     SUBCASE("r goes backwards") {
-        s.segments[0].p[1].x = 0.6f;  // r steps a = 0.6, b = -0.3, c = 0.62:
-        s.segments[0].p[2].x = 0.3f;  // b^2 = 0.09 <= ac = 0.372, so r(t) still increases
+        s.segments[0].p[1].x = 0.6f;      // r steps a = 0.6, b = -0.3, c = 0.62:
+        s.segments[0].p[2].x = 0.3f;      // b^2 = 0.09 <= ac = 0.372, so r(t) still increases
         CHECK(validate_section(s).ok());  // r dips in the control polygon but not in r(t)
         s.segments[0].p[3].x = 0.2f;      // c = -0.1 < 0: r(t) decreases near t = 1
         Status st = validate_section(s);

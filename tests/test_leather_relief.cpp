@@ -139,7 +139,8 @@ TEST_CASE("relief: the edge point p lies on the boundary, beyond x, for star-sha
 }
 
 TEST_CASE("relief: normals are unit, point up, and follow eq. (4) along the ray") {
-    const Vec2 hex[6] = {{1, 0}, {0.5f, 0.866f}, {-0.5f, 0.866f}, {-1, 0}, {-0.5f, -0.866f}, {0.5f, -0.866f}};
+    const Vec2 hex[6] = {{1, 0},  {0.5f, 0.866f},   {-0.5f, 0.866f},
+                         {-1, 0}, {-0.5f, -0.866f}, {0.5f, -0.866f}};
     BezierChain s = table1_section(Table1Section::convex);
     ReliefOptions opt;
     for (int k = 0; k < 500; ++k) {
@@ -155,7 +156,8 @@ TEST_CASE("relief: normals are unit, point up, and follow eq. (4) along the ray"
             Vec2 u = normalize(r.edge_point);
             float nr = r.normal.x * u.x + r.normal.y * u.y;
             CHECK(std::fabs(cross(Vec2{r.normal.x, r.normal.y}, u)) < 1e-5f);
-            if (std::fabs(q.dz) > 1e-3f) CHECK(r.normal.z / nr == doctest::Approx(-q.dr / q.dz).epsilon(1e-3));
+            if (std::fabs(q.dz) > 1e-3f)
+                CHECK(r.normal.z / nr == doctest::Approx(-q.dr / q.dz).epsilon(1e-3));
         }
     }
 }
@@ -207,14 +209,14 @@ TEST_CASE("relief maps: the normal map is the gradient of the height map") {
             std::sort(errors.begin(), errors.end());
             float median = errors[errors.size() / 2];
             float p90 = errors[errors.size() * 9 / 10];
-            MESSAGE(std::string(hex ? "hexagons" : "squares") << ", "
-                    << std::string(rule == ReliefNormal::eq4 ? "eq. (4)" : "height gradient")
-                    << ": angle(normal map, FD gradient of height map) median " << median
-                    << " deg, 90th percentile " << p90 << " deg over " << errors.size()
-                    << " pixels");
+            MESSAGE(
+                std::string(hex ? "hexagons" : "squares")
+                << ", " << std::string(rule == ReliefNormal::eq4 ? "eq. (4)" : "height gradient")
+                << ": angle(normal map, FD gradient of height map) median " << median
+                << " deg, 90th percentile " << p90 << " deg over " << errors.size() << " pixels");
             if (rule == ReliefNormal::height_gradient) {
                 CHECK(median < 0.05f);  // exact up to float and the FD at creases
-                CHECK(p90 < 2.0f);   // measured 0.21 (squares), 1.1 (hexagons): fan creases
+                CHECK(p90 < 2.0f);      // measured 0.21 (squares), 1.1 (hexagons): fan creases
             } else {
                 // eq. (4) ignores the tilt across the ray and uses the ray length, not S:
                 // measured median 1.8 / 1.2 deg, 90th percentile 13.6 / 9.4 deg.

@@ -57,7 +57,8 @@ TEST_CASE("handbag: 7 valid patches; the body tube and the handle join G1; norma
         Vec3 q = patch_point(bottom, t, 0.0f).position;
         for (int k = 0; k < 4; ++k)
             for (int r = 0; r <= 200; ++r)
-                gap = std::fmin(gap, length(patch_point(bag.patches[k], float(r) / 200.0f, 0.0f).position - q));
+                gap = std::fmin(
+                    gap, length(patch_point(bag.patches[k], float(r) / 200.0f, 0.0f).position - q));
         CHECK(gap < 5e-3f);
     }
     CHECK(patch_point(bottom, 0.5f, 0.5f).normal.y < -0.99f);
@@ -70,7 +71,8 @@ TEST_CASE("handbag: 7 valid patches; the body tube and the handle join G1; norma
     // Handle halves meet at the top with the same position and normal.
     for (int s = 0; s <= 10; ++s) {
         float v = float(s) / 10.0f;
-        PatchPoint a = patch_point(bag.patches[5], 1.0f, v), b = patch_point(bag.patches[6], 0.0f, v);
+        PatchPoint a = patch_point(bag.patches[5], 1.0f, v),
+                   b = patch_point(bag.patches[6], 0.0f, v);
         CHECK(length(a.position - b.position) < 1e-6f);
         CHECK(angle_degrees(a.normal, b.normal) < 0.5f);
     }

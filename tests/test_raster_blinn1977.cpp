@@ -77,7 +77,9 @@ TEST_CASE("bump mapping: texture tangents, an orthonormal frame, and the perturb
     CHECK(!triangle_texture_tangents(p0, p1, p2, {1, 1}, {1, 1}, {2, 2}, &dpdx, &dpdy));
     Pcg32 rng(11);
     for (int k = 0; k < 300; ++k) {
-        auto rnd = [&] { return Vec3{rng.uniform() - 0.5f, rng.uniform() - 0.5f, rng.uniform() - 0.5f}; };
+        auto rnd = [&] {
+            return Vec3{rng.uniform() - 0.5f, rng.uniform() - 0.5f, rng.uniform() - 0.5f};
+        };
         Vec3 n = normalize(rnd()), tx = rnd(), ty = rnd();  // sheared, not perpendicular to n
         TangentFrame f = orthonormal_tangent_frame(n, tx, ty);
         CHECK(std::fabs(dot(f.t, f.b)) < 1e-5f);

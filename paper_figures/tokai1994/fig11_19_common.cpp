@@ -51,15 +51,15 @@ void record_shading(FigureContext& ctx) {
     ctx.chosen("Blinn 1977 distribution", "D3 (Trowbridge-Reitz), with G and Fresnel F",
                "Blinn's best fit to measured data; the paper does not say which of D1-D3");
     Blinn1977Material l = leather_material(), m = metal_material();
-    ctx.chosen("leather", fmt("colour (%.2f, %.2f, %.2f), Ka %.2f, Kd %.2f, Ks %.2f, c3 %.2f, n %.1f",
-                              double(l.color.x), double(l.color.y), double(l.color.z),
-                              double(l.ka), double(l.kd), double(l.ks), double(l.c3),
-                              double(l.refractive_index)),
+    ctx.chosen("leather",
+               fmt("colour (%.2f, %.2f, %.2f), Ka %.2f, Kd %.2f, Ks %.2f, c3 %.2f, n %.1f",
+                   double(l.color.x), double(l.color.y), double(l.color.z), double(l.ka),
+                   double(l.kd), double(l.ks), double(l.c3), double(l.refractive_index)),
                "paper: 'reflection parameters found by trial and error' (not printed)");
-    ctx.chosen("clasp metal", fmt("colour (%.2f, %.2f, %.2f), Ka %.2f, Kd %.2f, Ks %.2f, c3 %.2f, n %.1f",
-                                  double(m.color.x), double(m.color.y), double(m.color.z),
-                                  double(m.ka), double(m.kd), double(m.ks), double(m.c3),
-                                  double(m.refractive_index)),
+    ctx.chosen("clasp metal",
+               fmt("colour (%.2f, %.2f, %.2f), Ka %.2f, Kd %.2f, Ks %.2f, c3 %.2f, n %.1f",
+                   double(m.color.x), double(m.color.y), double(m.color.z), double(m.ka),
+                   double(m.kd), double(m.ks), double(m.c3), double(m.refractive_index)),
                "brass-like; not printed");
     ctx.given("lights", "2 point lights, Z-buffer, no shadows, no anti-aliasing", "tokai1994 §5");
     ctx.chosen("display gamma", "1/2.2", "the model's output is linear");
@@ -72,9 +72,10 @@ Rgb8 to_display(Vec3 c) {
 
 Status crocodile_pattern(FigureContext& ctx, ScalePattern* out) {
     ScaleParams prm;  // the fig. 7 defaults of the scale-pattern module
-    ctx.given("pattern", fmt("fig. 7: d = 1.0 D, a = %.2f, p = %.3f", double(prm.a),
-                             double(prm.perturbation.p)),
-              "tokai1994 §3.1 (the parameters used for the rest of the paper)");
+    ctx.given(
+        "pattern",
+        fmt("fig. 7: d = 1.0 D, a = %.2f, p = %.3f", double(prm.a), double(prm.perturbation.p)),
+        "tokai1994 §3.1 (the parameters used for the rest of the paper)");
     ctx.chosen("pattern D, seed", fmt("D = %.3f, seed %u", double(prm.D), unsigned(prm.seed)),
                "scale-pattern module defaults (the paper prints no D)");
     return generate_scale_pattern(prm, out);
@@ -87,14 +88,14 @@ Status snake_pattern(FigureContext& ctx, float width, float height, ScalePattern
     const float D = 0.065f, a = 0.1f;
     const std::uint32_t seed = 3;
     ctx.given("belt pattern", "fig. 3(b): triangle lattice + Voronoi division", "tokai1994 §5");
-    ctx.chosen("belt pattern D, a, seed", fmt("D = %.3f, a = %.2f, seed %u", double(D), double(a),
-                                              unsigned(seed)),
+    ctx.chosen("belt pattern D, a, seed",
+               fmt("D = %.3f, a = %.2f, seed %u", double(D), double(a), unsigned(seed)),
                "about 6 scales across the belt; a and seed as the fig. 3(b) figure");
     SeedLayout seeds;
     SHITSUKAN_TRY(triangular_lattice_seeds(width, height, D, a, seed, &seeds));
     PlanarSubdivision sub;
-    SHITSUKAN_TRY(divide_single_stage(seeds.moved.data(), int(seeds.moved.size()), width, height,
-                                      &sub));
+    SHITSUKAN_TRY(
+        divide_single_stage(seeds.moved.data(), int(seeds.moved.size()), width, height, &sub));
     PerturbationParams prm;
     prm.p = 0.015f * D / 0.125f;  // fig. 3(b)'s perturbation relative to its spacing
     return perturb_subdivision(sub, prm, seed, width, height, out);
@@ -206,7 +207,8 @@ void draw_axes(Canvas& c, const PlotFrame& f, Vec2 lo, Vec2 hi, float tick, cons
         c.line(p, p - Vec2{5, 0}, ink, 1.0f);
         c.text(p + Vec2{-30, -4}, fmt("%.1f", double(y)), ink, 1);
     }
-    c.text(f.to_pixel({hi.x, 0}) + Vec2{-6 * float(std::string(x_label).size()), 22}, x_label, ink, 2);
+    c.text(f.to_pixel({hi.x, 0}) + Vec2{-6 * float(std::string(x_label).size()), 22}, x_label, ink,
+           2);
     c.text(f.to_pixel({0, hi.y}) + Vec2{8, -2}, y_label, ink, 2);
 }
 

@@ -24,7 +24,9 @@ SHITSUKAN_FIGURE(tokai1994_fig11, "tokai1994", "fig11",
     RgbImage img(w, h, Rgb8{255, 255, 255});
     RasterCanvas canvas(img.view());
     Canvas& cv = canvas;
-    auto px = [&](Vec2 q) { return Vec2{(0.05f + 0.9f * q.x) * float(w), (0.95f - 0.9f * q.y) * float(h)}; };
+    auto px = [&](Vec2 q) {
+        return Vec2{(0.05f + 0.9f * q.x) * float(w), (0.95f - 0.9f * q.y) * float(h)};
+    };
     Vec2 poly[4];
     for (int i = 0; i < 4; ++i) poly[i] = px(c.p[i]);
     cv.polyline(poly, 4, Rgb8{150, 150, 150}, 1.5f * s);
@@ -36,7 +38,8 @@ SHITSUKAN_FIGURE(tokai1994_fig11, "tokai1994", "fig11",
         Vec2 a = px(q), b = px(q + d * 0.12f);
         cv.line(a, b, Rgb8{200, 60, 40}, 2.0f * s);
         cv.marker(a, MarkerShape::dot, 7.0f * s, Rgb8{20, 60, 170});
-        cv.text(a + Vec2{6 * s, 6 * s}, fmt("t=%.2f", double(t)), Rgb8{20, 60, 170}, ctx.quick() ? 1 : 2);
+        cv.text(a + Vec2{6 * s, 6 * s}, fmt("t=%.2f", double(t)), Rgb8{20, 60, 170},
+                ctx.quick() ? 1 : 2);
     }
     const char* names[4] = {"P0", "P1", "P2", "P3"};
     for (int i = 0; i < 4; ++i) {
@@ -45,8 +48,9 @@ SHITSUKAN_FIGURE(tokai1994_fig11, "tokai1994", "fig11",
     }
     cv.text({8 * s, 8 * s}, "blue: eq. (2), grey: control polygon, red: dP/dt of eq. (3) x 0.12",
             Rgb8{60, 60, 60}, 1);
-    ctx.note("The curve starts at P0 and ends at P3, tangent there to P0P1 and P2P3 (eq. (3) at "
-             "t = 0 and 1 gives 3(P1 - P0) and 3(P3 - P2)); it stays inside the control polygon's "
-             "convex hull.");
+    ctx.note(
+        "The curve starts at P0 and ends at P3, tangent there to P0P1 and P2P3 (eq. (3) at "
+        "t = 0 and 1 gives 3(P1 - P0) and 3(P3 - P2)); it stays inside the control polygon's "
+        "convex hull.");
     return ctx.save_png(img.view());
 }

@@ -46,19 +46,23 @@ SHITSUKAN_FIGURE(tokai1994_fig12, "tokai1994", "fig12",
 
     // (a) Top view, the height as grey (white = high).
     const float view = 0.92f * float(H);
-    auto top = [&](Vec2 q) { return Vec2{0.04f * float(H) + q.x * view, 0.96f * float(H) - q.y * view}; };
+    auto top = [&](Vec2 q) {
+        return Vec2{0.04f * float(H) + q.x * view, 0.96f * float(H) - q.y * view};
+    };
     {
         RgbView panel = img.view().subview(0, 0, H, H);
         float top_h = 0.13f * scale_size(poly, n);
         for (int j = 0; j < panel.height; ++j)
             for (int i = 0; i < panel.width; ++i) {
-                Vec2 q{(float(i) + 0.5f - 0.04f * float(H)) / view, (0.96f * float(H) - float(j) - 0.5f) / view};
+                Vec2 q{(float(i) + 0.5f - 0.04f * float(H)) / view,
+                       (0.96f * float(H) - float(j) - 0.5f) / view};
                 ReliefSample r;
                 EdgeHit hit = scale_edge_point(poly, n, m, q);
                 if (!hit.inside) continue;
                 scale_relief(poly, n, m, q, section, opt, &r);
                 float g = clamp(r.height / top_h, 0.0f, 1.0f);
-                panel.at(i, j) = Rgb8{to_byte(0.35f + 0.6f * g), to_byte(0.33f + 0.6f * g), to_byte(0.3f + 0.6f * g)};
+                panel.at(i, j) = Rgb8{to_byte(0.35f + 0.6f * g), to_byte(0.33f + 0.6f * g),
+                                      to_byte(0.3f + 0.6f * g)};
             }
     }
     std::vector<Vec2> outline;
@@ -88,7 +92,9 @@ SHITSUKAN_FIGURE(tokai1994_fig12, "tokai1994", "fig12",
     cv.marker(top(p), MarkerShape::dot, 10 * s, Rgb8{200, 40, 30});
     cv.text(top(p) + Vec2{8 * s, -8 * s}, "p", Rgb8{200, 40, 30}, text_scale);
     cv.text(top((m + p) * 0.5f) + Vec2{0, 10 * s}, "r axis", Rgb8{200, 40, 30}, text_scale);
-    cv.text({8 * s, 6 * s}, "(a) top view, grey = height; blue: (n_x, n_y) of eq. (4) at rho = 0.86, x70", Rgb8{0, 0, 0}, 1);
+    cv.text({8 * s, 6 * s},
+            "(a) top view, grey = height; blue: (n_x, n_y) of eq. (4) at rho = 0.86, x70",
+            Rgb8{0, 0, 0}, 1);
 
     // (b) The section along the r axis: r = rho (0 at m, 1 at p), z in the same units.
     tokai_relief::PlotFrame f{float(H) + 0.10f * float(H), 0.62f * float(H), 0.82f * float(H)};
@@ -114,12 +120,14 @@ SHITSUKAN_FIGURE(tokai1994_fig12, "tokai1994", "fig12",
     cv.line(f.to_pixel({1.0f, 0.0f}), f.to_pixel({1.0f, 0.3f}), Rgb8{200, 40, 30}, 1.5f * s);
     cv.text(f.to_pixel({1.0f, 0.3f}) + Vec2{-8 * s, -22 * s}, "p", Rgb8{200, 40, 30}, text_scale);
     cv.text(f.to_pixel({0.0f, 0.0f}) + Vec2{4 * s, 24 * s}, "m", Rgb8{0, 0, 0}, text_scale);
-    cv.text(f.to_pixel({0.86f, 0.0f}) + Vec2{-60 * s, 40 * s}, "groove floor", Rgb8{120, 120, 120}, 1);
+    cv.text(f.to_pixel({0.86f, 0.0f}) + Vec2{-60 * s, 40 * s}, "groove floor", Rgb8{120, 120, 120},
+            1);
     cv.text({float(H) + 8 * s, 6 * s}, "(b) section z(r) of Table 1 (fig. 13a), normals of eq. (4)",
             Rgb8{0, 0, 0}, 1);
-    ctx.note(fmt("The ray from m through x meets the edge at p = (%.3f, %.3f); x lies at "
-                 "rho = %.3f of the way, height %.4f. Past r = 0.92 the section has ended: the "
-                 "flat floor of the groove up to p (r = 1).",
-                 double(p.x), double(p.y), double(at_x.rho), double(at_x.height)));
+    ctx.note(
+        fmt("The ray from m through x meets the edge at p = (%.3f, %.3f); x lies at "
+            "rho = %.3f of the way, height %.4f. Past r = 0.92 the section has ended: the "
+            "flat floor of the groove up to p (r = 1).",
+            double(p.x), double(p.y), double(at_x.rho), double(at_x.height)));
     return ctx.save_png(img.view());
 }

@@ -15,8 +15,10 @@ namespace {
 
 const char* table1_text(Table1Section which) {
     switch (which) {
-        case Table1Section::convex: return "(0.0, 0.1) (0.51, 0.1) (0.75, 0.13) (0.92, 0.0)";
-        case Table1Section::concave: return "(0.0, 0.03) (0.8, 0.05) (0.9, 0.25) (0.94, 0.0)";
+        case Table1Section::convex:
+            return "(0.0, 0.1) (0.51, 0.1) (0.75, 0.13) (0.92, 0.0)";
+        case Table1Section::concave:
+            return "(0.0, 0.03) (0.8, 0.05) (0.9, 0.25) (0.94, 0.0)";
         case Table1Section::two_segment:
             return "(0.0, 0.25) (0.23, 0.07) (0.47, 0.07) (0.6, 0.25) + "
                    "(0.6, 0.25) (0.73, 0.2) (0.85, 0.13) (0.9, 0.0)";
@@ -48,7 +50,8 @@ Status section_plot(FigureContext& ctx, Table1Section which) {
         for (int i = 0; i < 4; ++i) ctrl[i] = f.to_pixel(section.segments[k].p[i]);
         cv.polyline(ctrl, 4, Rgb8{160, 160, 160}, 1.2f * s);
         for (int i = 0; i < 4; ++i)
-            cv.marker(ctrl[i], MarkerShape::square, 9.0f * s, k == 0 ? Rgb8{90, 90, 90} : Rgb8{170, 90, 40});
+            cv.marker(ctrl[i], MarkerShape::square, 9.0f * s,
+                      k == 0 ? Rgb8{90, 90, 90} : Rgb8{170, 90, 40});
     }
     std::vector<Vec2> curve;
     for (int k = 0; k <= 400; ++k) {
@@ -75,7 +78,7 @@ Status section_texture(FigureContext& ctx, Table1Section which, bool close_up) {
     const int zoom = close_up ? 3 : 1;
     LeatherMaps maps;
     SHITSUKAN_TRY(tokai_relief::leather_maps(pattern, out * zoom, out * zoom, table1_section(which),
-                                      ReliefOptions{}, &maps));
+                                             ReliefOptions{}, &maps));
     ctx.chosen("map resolution", fmt("%d x %d", out * zoom, out * zoom),
                close_up ? "3x the texture, so the close-up has one map texel per pixel"
                         : "one texel per output pixel");
@@ -85,8 +88,9 @@ Status section_texture(FigureContext& ctx, Table1Section which, bool close_up) {
         Vec2 c = (lo + hi) * 0.5f, half = (hi - lo) * (0.5f / 3.0f);
         lo = c - half;
         hi = c + half;
-        ctx.chosen("close-up window", fmt("[%.3f, %.3f] x [%.3f, %.3f]", double(lo.x), double(hi.x),
-                                          double(lo.y), double(hi.y)),
+        ctx.chosen("close-up window",
+                   fmt("[%.3f, %.3f] x [%.3f, %.3f]", double(lo.x), double(hi.x), double(lo.y),
+                       double(hi.y)),
                    "the centre line of the belly, 3x");
     }
     tokai_relief::shade_flat_texture(maps, lo, hi, img.view());
@@ -103,7 +107,8 @@ SHITSUKAN_FIGURE(tokai1994_fig13a, "tokai1994", "fig13a", "Convex section (Table
 SHITSUKAN_FIGURE(tokai1994_fig13b, "tokai1994", "fig13b", "Convex leather texture (fig. 13b)") {
     return section_texture(ctx, Table1Section::convex, false);
 }
-SHITSUKAN_FIGURE(tokai1994_fig13c, "tokai1994", "fig13c", "Convex leather texture, close-up (fig. 13c)") {
+SHITSUKAN_FIGURE(tokai1994_fig13c, "tokai1994", "fig13c",
+                 "Convex leather texture, close-up (fig. 13c)") {
     return section_texture(ctx, Table1Section::convex, true);
 }
 SHITSUKAN_FIGURE(tokai1994_fig14a, "tokai1994", "fig14a", "Concave section (Table 1, fig. 14a)") {
@@ -112,15 +117,19 @@ SHITSUKAN_FIGURE(tokai1994_fig14a, "tokai1994", "fig14a", "Concave section (Tabl
 SHITSUKAN_FIGURE(tokai1994_fig14b, "tokai1994", "fig14b", "Concave leather texture (fig. 14b)") {
     return section_texture(ctx, Table1Section::concave, false);
 }
-SHITSUKAN_FIGURE(tokai1994_fig14c, "tokai1994", "fig14c", "Concave leather texture, close-up (fig. 14c)") {
+SHITSUKAN_FIGURE(tokai1994_fig14c, "tokai1994", "fig14c",
+                 "Concave leather texture, close-up (fig. 14c)") {
     return section_texture(ctx, Table1Section::concave, true);
 }
-SHITSUKAN_FIGURE(tokai1994_fig15a, "tokai1994", "fig15a", "Two-segment section (Table 1, fig. 15a)") {
+SHITSUKAN_FIGURE(tokai1994_fig15a, "tokai1994", "fig15a",
+                 "Two-segment section (Table 1, fig. 15a)") {
     return section_plot(ctx, Table1Section::two_segment);
 }
-SHITSUKAN_FIGURE(tokai1994_fig15b, "tokai1994", "fig15b", "Two-segment leather texture (fig. 15b)") {
+SHITSUKAN_FIGURE(tokai1994_fig15b, "tokai1994", "fig15b",
+                 "Two-segment leather texture (fig. 15b)") {
     return section_texture(ctx, Table1Section::two_segment, false);
 }
-SHITSUKAN_FIGURE(tokai1994_fig15c, "tokai1994", "fig15c", "Two-segment leather texture, close-up (fig. 15c)") {
+SHITSUKAN_FIGURE(tokai1994_fig15c, "tokai1994", "fig15c",
+                 "Two-segment leather texture, close-up (fig. 15c)") {
     return section_texture(ctx, Table1Section::two_segment, true);
 }

@@ -26,7 +26,8 @@ SHITSUKAN_FIGURE(tokai1994_fig16, "tokai1994", "fig16",
     BezierPatch patch;
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j)
-            patch.p[i][j] = {-1.0f + 2.0f * float(i) / 3.0f, h[i][j], 1.0f - 2.0f * float(j) / 3.0f};
+            patch.p[i][j] = {-1.0f + 2.0f * float(i) / 3.0f, h[i][j],
+                             1.0f - 2.0f * float(j) / 3.0f};
     SHITSUKAN_TRY(validate_patch(patch));
     ctx.given("surface", "P(u,v) = sum_ij P_ij B_i(u) B_j(v), B_k = 3!/(k!(3-k)!) u^k (1-u)^(3-k)",
               "tokai1994 eq. (5)");
@@ -39,8 +40,8 @@ SHITSUKAN_FIGURE(tokai1994_fig16, "tokai1994", "fig16",
     opt.segments_u = opt.segments_v = 32;
     tokai_relief::BumpSurface surface;
     SHITSUKAN_TRY(tessellate_patch_strip(&patch, 1, opt, &surface.mesh));
-    Camera cam = perspective_camera({2.6f, 2.7f, 3.6f}, {0.0f, 0.2f, 0.0f}, {0, 1, 0}, 36.0f,
-                                    size, size);
+    Camera cam =
+        perspective_camera({2.6f, 2.7f, 3.6f}, {0.0f, 0.2f, 0.0f}, {0, 1, 0}, 36.0f, size, size);
     RgbImage img(size, size);
     FloatImage depth(size, size);
     FrameBand band = full_frame_band(img.view(), depth.view());
@@ -75,11 +76,13 @@ SHITSUKAN_FIGURE(tokai1994_fig16, "tokai1994", "fig16",
             Vec3 q = project(cam, patch.p[i][j]);
             cv.marker({q.x, q.y}, MarkerShape::dot, 8.0f * s, Rgb8{200, 40, 30});
             if ((i == 0 || i == 3) && (j == 0 || j == 3))
-                cv.text({q.x + 6 * s, q.y - 18 * s}, fmt("P%d%d", i, j), Rgb8{0, 0, 0}, ctx.quick() ? 1 : 2);
+                cv.text({q.x + 6 * s, q.y - 18 * s}, fmt("P%d%d", i, j), Rgb8{0, 0, 0},
+                        ctx.quick() ? 1 : 2);
         }
     cv.text({8 * s, 8 * s}, "red: control net P_ij (i along u, j along v); grey: P(u, v)",
             Rgb8{0, 0, 0}, 1);
-    ctx.note("The patch passes through its four corner points only; the 12 others pull it. "
-             "Each boundary is the cubic Bezier curve of its 4 boundary control points.");
+    ctx.note(
+        "The patch passes through its four corner points only; the 12 others pull it. "
+        "Each boundary is the cubic Bezier curve of its 4 boundary control points.");
     return ctx.save_png(img.view());
 }

@@ -51,7 +51,8 @@ Status build_handbag(int segments, HandbagScene* scene) {
     tokai_relief::compute_texture_tangents(&scene->bottom);
     tokai_relief::compute_texture_tangents(&scene->handle);
     for (int k = 0; k < 2; ++k)
-        SHITSUKAN_TRY(make_spherical_segment(bag.clasp[k], segments, segments / 2, &scene->knobs[k]));
+        SHITSUKAN_TRY(
+            make_spherical_segment(bag.clasp[k], segments, segments / 2, &scene->knobs[k]));
     return Status::success();
 }
 
@@ -124,8 +125,10 @@ SHITSUKAN_FIGURE(tokai1994_fig17, "tokai1994", "fig17",
     std::vector<WireEdge> edges;
     auto polyline = [&](auto point, int samples) {
         std::uint32_t first = std::uint32_t(lines.positions.size());
-        for (int k = 0; k <= samples; ++k) lines.positions.push_back(point(float(k) / float(samples)));
-        for (int k = 0; k < samples; ++k) edges.push_back({first + std::uint32_t(k), first + std::uint32_t(k) + 1});
+        for (int k = 0; k <= samples; ++k)
+            lines.positions.push_back(point(float(k) / float(samples)));
+        for (int k = 0; k < samples; ++k)
+            edges.push_back({first + std::uint32_t(k), first + std::uint32_t(k) + 1});
     };
     for (const BezierPatch& p : scene.bag.patches)
         for (int k = 0; k <= 8; ++k) {
@@ -137,28 +140,38 @@ SHITSUKAN_FIGURE(tokai1994_fig17, "tokai1994", "fig17",
         const float lat0 = std::asin(sg.cut_below);
         for (int k = 0; k < 12; ++k) {
             float lon = kTwoPi * float(k) / 12.0f;
-            polyline([&](float t) {
-                float lat = lat0 + (0.5f * kPi - lat0) * t;
-                return sg.center + Vec3{std::cos(lat) * std::cos(lon), std::sin(lat), std::cos(lat) * std::sin(lon)} * sg.radius;
-            }, 16);
+            polyline(
+                [&](float t) {
+                    float lat = lat0 + (0.5f * kPi - lat0) * t;
+                    return sg.center + Vec3{std::cos(lat) * std::cos(lon), std::sin(lat),
+                                            std::cos(lat) * std::sin(lon)} *
+                                           sg.radius;
+                },
+                16);
         }
         for (int k = 0; k < 4; ++k) {
             float lat = lat0 + (0.5f * kPi - lat0) * float(k) / 4.0f;
-            polyline([&](float t) {
-                float lon = kTwoPi * t;
-                return sg.center + Vec3{std::cos(lat) * std::cos(lon), std::sin(lat), std::cos(lat) * std::sin(lon)} * sg.radius;
-            }, 32);
+            polyline(
+                [&](float t) {
+                    float lon = kTwoPi * t;
+                    return sg.center + Vec3{std::cos(lat) * std::cos(lon), std::sin(lat),
+                                            std::cos(lat) * std::sin(lon)} *
+                                           sg.radius;
+                },
+                32);
         }
     }
     WireOptions wire;
     wire.color = Rgb8{0, 0, 0};
     wire.depth_test = true;
     SHITSUKAN_TRY(draw_edges(cam, band, lines.view(), edges.data(), int(edges.size()), wire));
-    ctx.chosen("wire density", "iso-curves u, v = k/8 per patch; 12 meridians, 4 parallels per knob",
+    ctx.chosen("wire density",
+               "iso-curves u, v = k/8 per patch; 12 meridians, 4 parallels per knob",
                "readable at 512 px; hidden lines removed with the Z-buffer");
-    ctx.note("Patches 0-3 (front, right side, back, left side) form one tube joined G1 at the "
-             "rounded corners; patch 4 closes the bottom; patches 5-6 form the handle; the two "
-             "knobs of the kiss-lock clasp are spherical segments.");
+    ctx.note(
+        "Patches 0-3 (front, right side, back, left side) form one tube joined G1 at the "
+        "rounded corners; patch 4 closes the bottom; patches 5-6 form the handle; the two "
+        "knobs of the kiss-lock clasp are spherical segments.");
     return ctx.save_png(img.view());
 }
 
@@ -166,25 +179,29 @@ SHITSUKAN_FIGURE(tokai1994_fig18, "tokai1994", "fig18",
                  "Handbag with the fig. 13 leather bump-mapped (left) and a close-up (right)") {
     record_design(ctx);
     tokai_relief::record_shading(ctx);
-    ctx.given("leather", "fig. 13(b): the fig. 7 pattern with the fig. 13(a) section", "tokai1994 §5");
-    ctx.given("mapping", "vertex (x, y, z), normal and (u, v) per polygon, linear inside; bump "
-                         "mapping at shading time; Z-buffer",
+    ctx.given("leather", "fig. 13(b): the fig. 7 pattern with the fig. 13(a) section",
+              "tokai1994 §5");
+    ctx.given("mapping",
+              "vertex (x, y, z), normal and (u, v) per polygon, linear inside; bump "
+              "mapping at shading time; Z-buffer",
               "tokai1994 §4-5");
-    ctx.chosen("texture scale", fmt("%.2f pattern units per bag unit (bag height 0.92)",
-                                    double(kTextureScale)),
+    ctx.chosen("texture scale",
+               fmt("%.2f pattern units per bag unit (bag height 0.92)", double(kTextureScale)),
                "the belly fills the front panel; mirrored repetition beyond the pattern square");
     ctx.chosen("texture coordinates", "arc length along rows and columns of each strip (§4)",
                "the pattern follows the surface across patch edges without seams");
     const int size = ctx.quick() ? 128 : 512;
     const int map_size = ctx.quick() ? 256 : 1536;
-    ctx.chosen("sizes", fmt("two %d x %d frames; leather maps %d x %d; 32 x 32 quads per patch",
-                            size, size, map_size, map_size),
+    ctx.chosen("sizes",
+               fmt("two %d x %d frames; leather maps %d x %d; 32 x 32 quads per patch", size, size,
+                   map_size, map_size),
                "the close-up needs about 3 map texels per pixel of the full view");
     ScalePattern pattern;
     SHITSUKAN_TRY(tokai_relief::crocodile_pattern(ctx, &pattern));
     LeatherMaps maps;
     SHITSUKAN_TRY(tokai_relief::leather_maps(pattern, map_size, map_size,
-                                      table1_section(Table1Section::convex), ReliefOptions{}, &maps));
+                                             table1_section(Table1Section::convex), ReliefOptions{},
+                                             &maps));
     HandbagScene scene;
     SHITSUKAN_TRY(build_handbag(32, &scene));
     RgbImage img(2 * size, size);
@@ -195,8 +212,9 @@ SHITSUKAN_FIGURE(tokai1994_fig18, "tokai1994", "fig18",
     double frame = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     SHITSUKAN_TRY(render_handbag(scene, maps, close_camera(size, size),
                                  img.view().subview(size, 0, size, size), &stats));
-    ctx.note(fmt("Frame time of the full view: %.3f s (%ld fragments shaded over both views; "
-                 "the paper: about 2 minutes on an IRIS Crimson R4000).",
-                 frame, stats.fragments_shaded));
+    ctx.note(
+        fmt("Frame time of the full view: %.3f s (%ld fragments shaded over both views; "
+            "the paper: about 2 minutes on an IRIS Crimson R4000).",
+            frame, stats.fragments_shaded));
     return ctx.save_png(img.view());
 }

@@ -14,16 +14,19 @@
 using namespace shitsukan;
 using namespace shitsukan::figures;
 
-SHITSUKAN_FIGURE(tokai1994_fig19, "tokai1994", "fig19",
-                 "Snake-leather belt (fig. 3(b) pattern, fig. 13(a) section) and the texture used") {
+SHITSUKAN_FIGURE(
+    tokai1994_fig19, "tokai1994", "fig19",
+    "Snake-leather belt (fig. 3(b) pattern, fig. 13(a) section) and the texture used") {
     tokai_relief::record_shading(ctx);
-    ctx.given("leather", "fig. 3(b) pattern (triangle lattice) + fig. 13(a) section", "tokai1994 §5");
+    ctx.given("leather", "fig. 3(b) pattern (triangle lattice) + fig. 13(a) section",
+              "tokai1994 §5");
     const BeltDesign design;
-    ctx.chosen("belt", fmt("width %.2f, coiled on its edge from r = %.2f to %.2f over %.2f turns, "
-                           "one bicubic patch per quarter turn",
-                           double(design.width), double(design.r0), double(design.r1),
-                           double(design.turns)),
-               "the paper shows a belt but prints no shape");
+    ctx.chosen(
+        "belt",
+        fmt("width %.2f, coiled on its edge from r = %.2f to %.2f over %.2f turns, "
+            "one bicubic patch per quarter turn",
+            double(design.width), double(design.r0), double(design.r1), double(design.turns)),
+        "the paper shows a belt but prints no shape");
     const int size = ctx.quick() ? 128 : 512;
     const float texels_per_unit = ctx.quick() ? 120.0f : 420.0f;
 
@@ -48,8 +51,10 @@ SHITSUKAN_FIGURE(tokai1994_fig19, "tokai1994", "fig19",
     int mw = int(length * texels_per_unit), mh = int(width * texels_per_unit);
     SHITSUKAN_TRY(tokai_relief::leather_maps(pattern, mw, mh, table1_section(Table1Section::convex),
                                              ReliefOptions{}, &maps));
-    ctx.chosen("texture", fmt("%.2f x %.2f pattern units = the belt's arc length x width; maps "
-                              "%d x %d", double(length), double(width), mw, mh),
+    ctx.chosen("texture",
+               fmt("%.2f x %.2f pattern units = the belt's arc length x width; maps "
+                   "%d x %d",
+                   double(length), double(width), mw, mh),
                "one texture unit per world unit along the belt (§4 arc length)");
 
     Blinn1977Material snake = tokai_relief::leather_material();
@@ -75,8 +80,8 @@ SHITSUKAN_FIGURE(tokai1994_fig19, "tokai1994", "fig19",
         auto t0 = std::chrono::steady_clock::now();
         SHITSUKAN_TRY(draw_mesh(cam, band, belt.mesh.view(), draw, shader));
         double frame = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        ctx.note(fmt("Belt frame time %.3f s; %d scales on the belt.", frame,
-                     pattern.polygon_count()));
+        ctx.note(
+            fmt("Belt frame time %.3f s; %d scales on the belt.", frame, pattern.polygon_count()));
     }
     // Right: the texture used, two consecutive pieces of the belt's texture seen flat.
     {
@@ -88,7 +93,8 @@ SHITSUKAN_FIGURE(tokai1994_fig19, "tokai1994", "fig19",
         }
         RasterCanvas canvas(img.view());
         Canvas& cv = canvas;
-        cv.line({float(size), float(size / 2)}, {float(2 * size), float(size / 2)}, Rgb8{255, 255, 255}, 2.0f);
+        cv.line({float(size), float(size / 2)}, {float(2 * size), float(size / 2)},
+                Rgb8{255, 255, 255}, 2.0f);
         cv.text({float(size) + 6, 6}, fmt("texture used: belt x = 0 .. %.2f", double(piece)),
                 Rgb8{255, 255, 255}, 1);
         cv.text({float(size) + 6, float(size / 2) + 6},

@@ -67,9 +67,10 @@ SHITSUKAN_BENCH(leather_maps) {
         bench::sink(maps.max_height);
     });
     const double pixels = double(size) * size;
-    bench::report("leather height + normal map 512x512 (fig. 7 pattern, fig. 13 section), per "
-                  "pixel",
-                  relief / pixels, "polygon lookup alone (label image)", lookup / pixels);
+    bench::report(
+        "leather height + normal map 512x512 (fig. 7 pattern, fig. 13 section), per "
+        "pixel",
+        relief / pixels, "polygon lookup alone (label image)", lookup / pixels);
 
     // The fig. 18 frame.
     std::vector<std::int32_t> big(std::size_t(1536) * 1536);
@@ -99,8 +100,8 @@ SHITSUKAN_BENCH(leather_maps) {
     }
     TriangleMesh knobs[2];
     for (int k = 0; k < 2; ++k) make_spherical_segment(bag.clasp[k], 32, 16, &knobs[k]);
-    Camera cam = perspective_camera({2.25f, 1.50f, 2.55f}, {0.04f, 0.64f, 0.0f}, {0, 1, 0}, 30.0f,
-                                    512, 512);
+    Camera cam =
+        perspective_camera({2.25f, 1.50f, 2.55f}, {0.04f, 0.64f, 0.0f}, {0, 1, 0}, 30.0f, 512, 512);
     RgbImage color(512, 512);
     FloatImage depth(512, 512);
     FrameBand band = full_frame_band(color.view(), depth.view());

@@ -63,18 +63,16 @@ Status validate_section(const BezierChain& chain) {
         for (int i = 0; i < 4; ++i)
             if (!is_finite(chain.segments[k].p[i]))
                 return Status::error(StatusCode::invalid_argument,
-                                     "section: control point %d of segment %d is not finite", i,
-                                     k);
+                                     "section: control point %d of segment %d is not finite", i, k);
     for (int k = 0; k + 1 < chain.count; ++k) {
         Vec2 gap = chain.segments[k + 1].p[0] - chain.segments[k].p[3];
         if (length(gap) > 1e-5f)
-            return Status::error(StatusCode::invalid_argument,
-                                 "section: segment %d ends at (%g, %g) but segment %d starts at "
-                                 "(%g, %g); a chain must be joined",
-                                 k, double(chain.segments[k].p[3].x),
-                                 double(chain.segments[k].p[3].y), k + 1,
-                                 double(chain.segments[k + 1].p[0].x),
-                                 double(chain.segments[k + 1].p[0].y));
+            return Status::error(
+                StatusCode::invalid_argument,
+                "section: segment %d ends at (%g, %g) but segment %d starts at "
+                "(%g, %g); a chain must be joined",
+                k, double(chain.segments[k].p[3].x), double(chain.segments[k].p[3].y), k + 1,
+                double(chain.segments[k + 1].p[0].x), double(chain.segments[k + 1].p[0].y));
     }
     // r'(t)/3 = a(1-t)^2 + 2b t(1-t) + c t^2 (Bernstein form of the derivative): it is >= 0 on
     // [0, 1] iff a >= 0, c >= 0 and either b >= 0 or the minimum, (ac - b^2)/(a - 2b + c), is
@@ -114,7 +112,10 @@ float invert_r(const CubicBezier2& segment, float r) {
     for (int step = 0; step < 40; ++step) {
         float f = r0 + t * (c1 + t * (c2 + t * c3)) - r;
         if (std::fabs(f) <= tolerance) break;
-        if (f < 0) lo = t; else hi = t;
+        if (f < 0)
+            lo = t;
+        else
+            hi = t;
         if (hi - lo <= 1e-7f) break;  // float resolution of t reached
         float d = c1 + t * (2.0f * c2 + 3.0f * c3 * t);
         float next = d > 0 ? t - f / d : -1.0f;

@@ -65,10 +65,9 @@ Status validate_patch(const BezierPatch& patch) {
         return Status::error(StatusCode::degenerate,
                              "bezier patch: all 16 control points coincide");
     const char* names[4] = {"v = 0", "v = 1", "u = 0", "u = 1"};
-    float lengths[4] = {patch_iso_length(patch, true, 0.0f, 16),
-                        patch_iso_length(patch, true, 1.0f, 16),
-                        patch_iso_length(patch, false, 0.0f, 16),
-                        patch_iso_length(patch, false, 1.0f, 16)};
+    float lengths[4] = {
+        patch_iso_length(patch, true, 0.0f, 16), patch_iso_length(patch, true, 1.0f, 16),
+        patch_iso_length(patch, false, 0.0f, 16), patch_iso_length(patch, false, 1.0f, 16)};
     for (int e = 0; e < 4; ++e)
         if (!(lengths[e] > 1e-6f * size))
             return Status::error(StatusCode::degenerate,
@@ -82,12 +81,16 @@ float patch_iso_length(const BezierPatch& patch, bool along_u, float at, int ste
     if (steps < 1) steps = 1;
     float total = 0.0f;
     Vec3 prev, p, du, dv;
-    if (along_u) evaluate(patch, 0.0f, at, &prev, &du, &dv);
-    else evaluate(patch, at, 0.0f, &prev, &du, &dv);
+    if (along_u)
+        evaluate(patch, 0.0f, at, &prev, &du, &dv);
+    else
+        evaluate(patch, at, 0.0f, &prev, &du, &dv);
     for (int k = 1; k <= steps; ++k) {
         float s = float(k) / float(steps);
-        if (along_u) evaluate(patch, s, at, &p, &du, &dv);
-        else evaluate(patch, at, s, &p, &du, &dv);
+        if (along_u)
+            evaluate(patch, s, at, &p, &du, &dv);
+        else
+            evaluate(patch, at, s, &p, &du, &dv);
         total += length(p - prev);
         prev = p;
     }

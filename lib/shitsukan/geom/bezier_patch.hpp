@@ -26,8 +26,8 @@ struct BezierPatch {
 
 struct PatchPoint {
     Vec3 position;
-    Vec3 du, dv;    // partial derivatives
-    Vec3 normal;    // unit, du x dv direction
+    Vec3 du, dv;  // partial derivatives
+    Vec3 normal;  // unit, du x dv direction
 };
 
 // eq. (5) and its partial derivatives.

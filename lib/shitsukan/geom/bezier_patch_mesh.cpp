@@ -48,8 +48,7 @@ Status tessellate_patch_strip(const BezierPatch* patches, int count,
     Vec3 lo = patches[0].p[0][0], hi = lo;
     for (int k = 0; k < count; ++k) {
         Status s = validate_patch(patches[k]);
-        if (!s.ok())
-            return Status::error(s.code(), "patch strip: patch %d: %s", k, s.message());
+        if (!s.ok()) return Status::error(s.code(), "patch strip: patch %d: %s", k, s.message());
         for (int i = 0; i < 4; ++i)
             for (int j = 0; j < 4; ++j) {
                 lo = vmin(lo, patches[k].p[i][j]);
@@ -148,9 +147,7 @@ Status tessellate_patch_strip(const BezierPatch* patches, int count,
     }
     for (int j = 0; j < nv; ++j)
         for (int c = 0; c + 1 < columns; ++c) {
-            auto id = [&](int cc, int jj) {
-                return std::uint32_t(jj * columns + cc);
-            };
+            auto id = [&](int cc, int jj) { return std::uint32_t(jj * columns + cc); };
             out->add_triangle(id(c, j), id(c + 1, j), id(c + 1, j + 1));
             out->add_triangle(id(c, j), id(c + 1, j + 1), id(c, j + 1));
         }

@@ -18,8 +18,8 @@ Status make_leather_maps(const ScalePattern& pattern, const int* labels, int wid
     int polygons = pattern.polygon_count();
     if (polygons < 1 || int(pattern.centroids.size()) != polygons)
         return Status::error(StatusCode::invalid_argument,
-                             "leather maps: the pattern has %d polygons and %d centroids",
-                             polygons, int(pattern.centroids.size()));
+                             "leather maps: the pattern has %d polygons and %d centroids", polygons,
+                             int(pattern.centroids.size()));
     if (!(pattern.width > 0) || !(pattern.height > 0))
         return Status::error(StatusCode::invalid_argument,
                              "leather maps: pattern size must be > 0 (got %g x %g)",
@@ -73,11 +73,11 @@ Status make_leather_maps(const ScalePattern& pattern, const int* labels, int wid
             ReliefSample s;
             // tokai1994 §3.2: "computed for each polygon edge and for every polygon of §3.1".
             Vec2 m = pattern.centroids[std::size_t(id)];
-            EdgeHit hit = indexed[std::size_t(id)]
-                              ? scale_edge_point_indexed(
-                                    poly, n, m, x,
-                                    angles.data() + pattern.polygon_offsets[std::size_t(id)])
-                              : scale_edge_point(poly, n, m, x);
+            EdgeHit hit =
+                indexed[std::size_t(id)]
+                    ? scale_edge_point_indexed(
+                          poly, n, m, x, angles.data() + pattern.polygon_offsets[std::size_t(id)])
+                    : scale_edge_point(poly, n, m, x);
             float mp = length(hit.p - m);
             float rho = mp > 0.0f ? length(x - m) / mp : 0.0f;
             relief_along_ray(rho, m, hit, sizes[std::size_t(id)], section, options, &s);

@@ -39,14 +39,18 @@
 namespace shitsukan {
 
 struct LeatherMaps {
-    int width = 0, height = 0;                     // pixels
-    float pattern_width = 1, pattern_height = 1;   // pattern units covered by the maps
-    std::vector<float> heights;                    // width·height, row j <-> y = (j+0.5)·H/h
-    std::vector<Vec3> normals;                     // width·height, unit, pattern frame
-    float max_height = 0;                          // largest height in the map
+    int width = 0, height = 0;                    // pixels
+    float pattern_width = 1, pattern_height = 1;  // pattern units covered by the maps
+    std::vector<float> heights;                   // width·height, row j <-> y = (j+0.5)·H/h
+    std::vector<Vec3> normals;                    // width·height, unit, pattern frame
+    float max_height = 0;                         // largest height in the map
 
-    float at_height(int i, int j) const { return heights[std::size_t(j) * std::size_t(width) + std::size_t(i)]; }
-    Vec3 at_normal(int i, int j) const { return normals[std::size_t(j) * std::size_t(width) + std::size_t(i)]; }
+    float at_height(int i, int j) const {
+        return heights[std::size_t(j) * std::size_t(width) + std::size_t(i)];
+    }
+    Vec3 at_normal(int i, int j) const {
+        return normals[std::size_t(j) * std::size_t(width) + std::size_t(i)];
+    }
 };
 
 // Builds the maps: for every pixel, scale_relief of its polygon at the pixel centre.

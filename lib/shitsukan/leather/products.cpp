@@ -24,20 +24,28 @@ void body_row(const BodyRow& r, int side, Vec3 out[4]) {
     float w = r.w, d = r.d, k = r.k, y = r.y;
     switch (side) {
         case 0:  // front, x increasing
-            out[0] = {-(w - k), y, d - k}; out[1] = {-(w - 2 * k), y, d};
-            out[2] = {w - 2 * k, y, d};    out[3] = {w - k, y, d - k};
+            out[0] = {-(w - k), y, d - k};
+            out[1] = {-(w - 2 * k), y, d};
+            out[2] = {w - 2 * k, y, d};
+            out[3] = {w - k, y, d - k};
             break;
         case 1:  // right, z decreasing
-            out[0] = {w - k, y, d - k};    out[1] = {w, y, d - 2 * k};
-            out[2] = {w, y, -(d - 2 * k)}; out[3] = {w - k, y, -(d - k)};
+            out[0] = {w - k, y, d - k};
+            out[1] = {w, y, d - 2 * k};
+            out[2] = {w, y, -(d - 2 * k)};
+            out[3] = {w - k, y, -(d - k)};
             break;
         case 2:  // back, x decreasing
-            out[0] = {w - k, y, -(d - k)};    out[1] = {w - 2 * k, y, -d};
-            out[2] = {-(w - 2 * k), y, -d};   out[3] = {-(w - k), y, -(d - k)};
+            out[0] = {w - k, y, -(d - k)};
+            out[1] = {w - 2 * k, y, -d};
+            out[2] = {-(w - 2 * k), y, -d};
+            out[3] = {-(w - k), y, -(d - k)};
             break;
         default:  // left, z increasing
-            out[0] = {-(w - k), y, -(d - k)}; out[1] = {-w, y, -(d - 2 * k)};
-            out[2] = {-w, y, d - 2 * k};      out[3] = {-(w - k), y, d - k};
+            out[0] = {-(w - k), y, -(d - k)};
+            out[1] = {-w, y, -(d - 2 * k)};
+            out[2] = {-w, y, d - 2 * k};
+            out[3] = {-(w - k), y, d - k};
             break;
     }
 }
@@ -81,7 +89,7 @@ Handbag make_handbag() {
         };
         const Vec3 centre{0.0f, 0.95f, 0.0f};  // the arch's outward normals point away from it
         const float radius = 0.045f;
-        const float across[4] = {radius, radius, -radius, -radius};            // along z
+        const float across[4] = {radius, radius, -radius, -radius};  // along z
         const float raise[4] = {0.0f, 4.0f * radius / 3.0f, 4.0f * radius / 3.0f, 0.0f};
         for (int h = 0; h < 2; ++h)
             for (int i = 0; i < 4; ++i) {
@@ -107,8 +115,8 @@ Status make_belt(const BeltDesign& d, std::vector<BezierPatch>* out) {
                              "belt: need width > 0 and 0 < r0 < r1 (got width %g, r0 %g, r1 %g)",
                              double(d.width), double(d.r0), double(d.r1));
     if (!(d.turns >= 0.25f && d.turns <= 8.0f))
-        return Status::error(StatusCode::invalid_argument,
-                             "belt: turns must be 0.25..8 (got %g)", double(d.turns));
+        return Status::error(StatusCode::invalid_argument, "belt: turns must be 0.25..8 (got %g)",
+                             double(d.turns));
     const int n = int(std::ceil(d.turns * 4.0f - 1e-4f));
     const float total = d.turns * kTwoPi, step = total / float(n);
     auto point = [&](float t) {  // the spiral r(t) = r0 + (r1 - r0) t / total

@@ -58,21 +58,26 @@ struct SphericalSegment {
 
 struct Handbag {
     BezierPatch patches[7];
-    const char* names[7] = {"front", "right side", "back", "left side", "bottom",
-                            "handle (left half)", "handle (right half)"};
-    int body_first = 0, body_count = 4;    // the tube strip
-    int bottom = 4;                         // one patch
-    int handle_first = 5, handle_count = 2; // the handle strip
+    const char* names[7] = {"front",
+                            "right side",
+                            "back",
+                            "left side",
+                            "bottom",
+                            "handle (left half)",
+                            "handle (right half)"};
+    int body_first = 0, body_count = 4;      // the tube strip
+    int bottom = 4;                          // one patch
+    int handle_first = 5, handle_count = 2;  // the handle strip
     SphericalSegment clasp[2];
 };
 
 Handbag make_handbag();
 
 struct BeltDesign {
-    float width = 0.40f;   // across the belt (y)
-    float r0 = 0.70f;      // inner radius of the coil
-    float r1 = 1.25f;      // outer radius
-    float turns = 1.5f;    // coil turns (quarter turns are rounded up)
+    float width = 0.40f;  // across the belt (y)
+    float r0 = 0.70f;     // inner radius of the coil
+    float r1 = 1.25f;     // outer radius
+    float turns = 1.5f;   // coil turns (quarter turns are rounded up)
 };
 
 // invalid_argument for non-finite or non-positive sizes, r1 <= r0, or turns outside 0.25..8.

@@ -30,9 +30,12 @@ BezierChain table1_section(Table1Section which) {
 
 const char* table1_section_name(Table1Section which) {
     switch (which) {
-        case Table1Section::convex: return "convex (fig. 13a)";
-        case Table1Section::concave: return "concave (fig. 14a)";
-        case Table1Section::two_segment: return "two segments (fig. 15a)";
+        case Table1Section::convex:
+            return "convex (fig. 13a)";
+        case Table1Section::concave:
+            return "concave (fig. 14a)";
+        case Table1Section::two_segment:
+            return "two segments (fig. 15a)";
     }
     return "?";
 }
@@ -75,7 +78,10 @@ EdgeHit make_hit(const Vec2* polygon, int n, Vec2 m, Vec2 d, int edge, float s, 
     Vec2 a = polygon[edge], e = polygon[edge + 1 < n ? edge + 1 : 0] - a;
     Vec2 normal = normalize(Vec2{e.y, -e.x});
     float dist = dot(a - m, normal);
-    if (dist < 0.0f) { normal = -normal; dist = -dist; }  // the side facing away from m
+    if (dist < 0.0f) {
+        normal = -normal;
+        dist = -dist;
+    }  // the side facing away from m
     hit.edge_normal = normal;
     hit.edge_distance = dist;
     return hit;
@@ -97,8 +103,14 @@ EdgeHit scale_edge_point(const Vec2* polygon, int n, Vec2 m, Vec2 x) {
     for (int i = 0; i < n; ++i) {
         float s;
         if (!ray_edge(polygon, n, i, m, d, &s)) continue;
-        if (s >= kSMin && s < best) { best = s; best_edge = i; }
-        if (s > farthest) { farthest = s; far_edge = i; }
+        if (s >= kSMin && s < best) {
+            best = s;
+            best_edge = i;
+        }
+        if (s > farthest) {
+            farthest = s;
+            far_edge = i;
+        }
     }
     if (best_edge >= 0) return make_hit(polygon, n, m, d, best_edge, best, true);
     if (far_edge >= 0) return make_hit(polygon, n, m, d, far_edge, farthest, false);
@@ -148,7 +160,10 @@ EdgeHit scale_edge_point_indexed(const Vec2* polygon, int n, Vec2 m, Vec2 x, con
     while (lo < hi) {
         int mid = (lo + hi + 1) / 2;
         float a = ccw ? angles[mid] : -angles[mid];
-        if (a <= t) lo = mid; else hi = mid - 1;
+        if (a <= t)
+            lo = mid;
+        else
+            hi = mid - 1;
     }
     // Edge lo (counter-clockwise) or lo - 1 (clockwise, edges run the other way) spans the
     // ray's angle; its neighbours cover rounding at a vertex.
@@ -178,9 +193,8 @@ float scale_size(const Vec2* polygon, int n) {
     return perimeter > 0.0f ? std::fabs(area2) / perimeter : 0.0f;  // 2·area / perimeter
 }
 
-void relief_along_ray(float rho, Vec2 m, const EdgeHit& hit, float size,
-                      const BezierChain& section, const ReliefOptions& options,
-                      ReliefSample* out) {
+void relief_along_ray(float rho, Vec2 m, const EdgeHit& hit, float size, const BezierChain& section,
+                      const ReliefOptions& options, ReliefSample* out) {
     SHITSUKAN_ASSERT(section.count >= 1 && options.edge_r > 0.0f);
     Vec2 mp = hit.p - m;
     float n_r = length(mp);  // eq. (4): n_r = sqrt(n_x^2 + n_y^2), the ray's length |p - m|

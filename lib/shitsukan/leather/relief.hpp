@@ -62,19 +62,19 @@ struct ReliefOptions {
 
 // Where the r axis of fig. 12 leaves the polygon.
 struct EdgeHit {
-    Vec2 p{0, 0};            // the edge point p
-    Vec2 edge_normal{0, 0};  // outward unit normal of the crossed edge (n_e)
-    float edge_distance = 0; // distance from m to that edge's line (d_e)
-    bool inside = false;     // false: no crossing at or beyond x (x outside the polygon)
+    Vec2 p{0, 0};             // the edge point p
+    Vec2 edge_normal{0, 0};   // outward unit normal of the crossed edge (n_e)
+    float edge_distance = 0;  // distance from m to that edge's line (d_e)
+    bool inside = false;      // false: no crossing at or beyond x (x outside the polygon)
 };
 
 struct ReliefSample {
-    float height = 0;      // in the units of the polygon coordinates
-    float scale_size = 0;  // S = 2·area / perimeter of the polygon
-    Vec3 normal{0, 0, 1};  // unit, z up
-    float rho = 0;         // relative distance |x - m| / |p - m|
-    float r = 0;           // section coordinate
-    Vec2 edge_point{0, 0}; // p
+    float height = 0;       // in the units of the polygon coordinates
+    float scale_size = 0;   // S = 2·area / perimeter of the polygon
+    Vec3 normal{0, 0, 1};   // unit, z up
+    float rho = 0;          // relative distance |x - m| / |p - m|
+    float r = 0;            // section coordinate
+    Vec2 edge_point{0, 0};  // p
 };
 
 Status validate_relief_options(const ReliefOptions& options);
@@ -103,8 +103,7 @@ void scale_relief(const Vec2* polygon, int n, Vec2 m, Vec2 x, const BezierChain&
                   const ReliefOptions& options, ReliefSample* out);
 
 // Steps 2-4 for a known relative distance rho, edge hit and scale size S (fig. 12 plots).
-void relief_along_ray(float rho, Vec2 m, const EdgeHit& hit, float size,
-                      const BezierChain& section, const ReliefOptions& options,
-                      ReliefSample* out);
+void relief_along_ray(float rho, Vec2 m, const EdgeHit& hit, float size, const BezierChain& section,
+                      const ReliefOptions& options, ReliefSample* out);
 
 }  // namespace shitsukan

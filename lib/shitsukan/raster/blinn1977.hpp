@@ -6,11 +6,11 @@
 //   Blinn1977Material leather;                 // defaults below (a dark-brown glossy leather)
 //   PointLight lights[2] = {{{4, 5, 6}, {0.8f, 0.8f, 0.8f}}, {{-5, 2, 3}, {0.4f, 0.4f, 0.45f}}};
 //   Vec3 rgb = shade_blinn1977(leather, point, normal, eye, lights, 2);   // linear, may be > 1
-//   float s = blinn1977_specular(leather, n, l, e);                        // the D·G·F/(N·E) term
+//   float s = blinn1977_specular(leather, n, l, e);     // the D·G·F/(N·E) term
 //
 // The model (Blinn 1977, after Torrance and Sparrow): with unit N, L (to the light), E (to the
 // eye) and H = (L + E)/|L + E|,
-//   I = ambient·Ka + sum over lights  light·( Kd·color·(N·L) + Ks·specular_color·D·G·F/(N·E) )
+//   I = Ka·color + sum over lights  light·(Kd·color·(N·L) + Ks·specular_color·D·G·F/(N·E))
 //   D: the distribution of microfacet slopes, one of Blinn's three
 //      D1 = (N·H)^c1                             (Phong's, on H)
 //      D2 = exp(-(alpha·c2)^2), alpha = angle(N, H)   (Gaussian)
@@ -37,7 +37,7 @@ namespace shitsukan {
 enum class BlinnDistribution { d1_phong, d2_gaussian, d3_trowbridge_reitz };
 
 struct Blinn1977Material {
-    Vec3 color{0.35f, 0.17f, 0.08f};     // diffuse reflectance (linear RGB)
+    Vec3 color{0.35f, 0.17f, 0.08f};  // diffuse reflectance (linear RGB)
     Vec3 specular_color{1.0f, 1.0f, 1.0f};
     float ka = 0.25f, kd = 0.8f, ks = 0.5f;
     BlinnDistribution distribution = BlinnDistribution::d3_trowbridge_reitz;
