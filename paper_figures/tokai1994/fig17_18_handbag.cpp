@@ -36,10 +36,12 @@ Status build_handbag(int segments, HandbagScene* scene) {
     opt.texture_scale = kTextureScale;
     // Body: one strip around the bag, x measured from the front panel's middle, which shows
     // the centre line of the belly pattern (x = 0.5 of the pattern square).
-    opt.anchor = 0.5f;
+    // The tube is tessellated from the left side on (left, front, right, back), so the only
+    // break of the texture, where the tube closes, is the back left corner.
+    const BezierPatch tube[4] = {bag.patches[3], bag.patches[0], bag.patches[1], bag.patches[2]};
+    opt.anchor = 1.5f;
     opt.texture_origin = {0.5f, 0.12f};
-    SHITSUKAN_TRY(tessellate_patch_strip(bag.patches + bag.body_first, bag.body_count, opt,
-                                         &scene->body.mesh));
+    SHITSUKAN_TRY(tessellate_patch_strip(tube, 4, opt, &scene->body.mesh));
     opt.anchor = 0.0f;
     opt.texture_origin = {0.1f, 0.1f};
     SHITSUKAN_TRY(tessellate_patch_strip(bag.patches + bag.bottom, 1, opt, &scene->bottom.mesh));

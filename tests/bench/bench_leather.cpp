@@ -81,9 +81,10 @@ SHITSUKAN_BENCH(leather_maps) {
     PatchStripOptions opt;
     opt.segments_u = opt.segments_v = 32;
     opt.texture_scale = 0.8f;
-    opt.anchor = 0.5f;
+    opt.anchor = 1.5f;  // left, front, right, back: the front's middle
     opt.texture_origin = {0.5f, 0.12f};
-    tessellate_patch_strip(bag.patches, 4, opt, &parts[0].mesh);
+    const BezierPatch tube[4] = {bag.patches[3], bag.patches[0], bag.patches[1], bag.patches[2]};
+    tessellate_patch_strip(tube, 4, opt, &parts[0].mesh);
     opt.anchor = 0.0f;
     tessellate_patch_strip(bag.patches + 4, 1, opt, &parts[1].mesh);
     tessellate_patch_strip(bag.patches + 5, 2, opt, &parts[2].mesh);

@@ -34,7 +34,9 @@
 //     (-0.05, 0.95, +0.012) and (+0.05, 0.95, -0.012), cut off below -0.6·radius (where
 //     they sit on the frame).
 // Tessellating 0-3 as one strip and 5-6 as one strip gives a texture that runs around the
-// bag and along the handle without a break (geom/bezier_patch_mesh.hpp).
+// bag and along the handle without a break (geom/bezier_patch_mesh.hpp), except where the
+// tube closes on itself; start the strip at the left side (3, 0, 1, 2) to put that at the
+// back left corner.
 //
 // The belt (fig. 19): a strip of width `width` coiled as a flat spiral, lying on its edge
 // (width along y), from radius r0 to r1 over `turns` turns, one cubic patch per quarter turn.
