@@ -2,6 +2,7 @@
 // wireframe, and rendered with the fig. 13 leather bump-mapped (Blinn 1977 shading, two point
 // lights, Z-buffer, no shadows, no anti-aliasing), with a close-up.
 #include <chrono>
+#include <initializer_list>
 #include <vector>
 
 #include "driver/figure.hpp"
@@ -133,7 +134,7 @@ SHITSUKAN_FIGURE(tokai1994_fig17, "tokai1994", "fig17",
             edges.push_back({first + std::uint32_t(k), first + std::uint32_t(k) + 1});
     };
     for (const BezierPatch& p : scene.bag.patches)
-        for (int k = 0; k <= 8; ++k) {
+        for (int k = 1; k < 8; ++k) {  // inner iso-curves; the patch edges follow in red
             float c = float(k) / 8.0f;
             polyline([&](float t) { return patch_point(p, t, c).position; }, 48);
             polyline([&](float t) { return patch_point(p, c, t).position; }, 48);
@@ -166,6 +167,16 @@ SHITSUKAN_FIGURE(tokai1994_fig17, "tokai1994", "fig17",
     WireOptions wire;
     wire.color = Rgb8{0, 0, 0};
     wire.depth_test = true;
+    SHITSUKAN_TRY(draw_edges(cam, band, lines.view(), edges.data(), int(edges.size()), wire));
+    // The patch boundaries (u, v = 0 or 1), in red, so the 7 patches can be told apart.
+    lines = TriangleMesh{};
+    edges.clear();
+    for (const BezierPatch& p : scene.bag.patches)
+        for (float c : {0.0f, 1.0f}) {
+            polyline([&](float t) { return patch_point(p, t, c).position; }, 64);
+            polyline([&](float t) { return patch_point(p, c, t).position; }, 64);
+        }
+    wire.color = Rgb8{210, 30, 30};
     SHITSUKAN_TRY(draw_edges(cam, band, lines.view(), edges.data(), int(edges.size()), wire));
     ctx.chosen("wire density",
                "iso-curves u, v = k/8 per patch; 12 meridians, 4 parallels per knob",
