@@ -72,7 +72,8 @@ float section_r_last(const BezierChain& chain);
 
 // Parameter t of one segment whose r(t) equals r, for a segment with non-decreasing r(t)
 // and r inside [r(0), r(1)] (clamped otherwise). Newton steps inside a bisection bracket;
-// stops at |r(t) - r| <= 1e-7·scale or after 40 steps.
+// stops at |r(t) - r| <= 1e-7·scale, a bracket narrower than 1e-7, or after 40 steps
+// (2-3 Newton steps for the Table 1 sections).
 float invert_r(const CubicBezier2& segment, float r);
 
 }  // namespace shitsukan

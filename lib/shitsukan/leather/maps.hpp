@@ -53,7 +53,8 @@ struct LeatherMaps {
     }
 };
 
-// Builds the maps: for every pixel, scale_relief of its polygon at the pixel centre.
+// Builds the maps: for every pixel, scale_relief of its polygon at the pixel centre (with
+// S and the angular edge index of relief.hpp computed once per polygon).
 // invalid_argument for sizes outside 1..16384, a label outside -1..polygon_count-1 (the
 // message gives the pixel), an invalid section or options, or a pattern without polygons.
 Status make_leather_maps(const ScalePattern& pattern, const int* labels, int width, int height,
