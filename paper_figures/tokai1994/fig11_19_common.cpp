@@ -62,7 +62,18 @@ void record_shading(FigureContext& ctx) {
                    double(m.kd), double(m.ks), double(m.c3), double(m.refractive_index)),
                "brass-like; not printed");
     ctx.given("lights", "2 point lights, Z-buffer, no shadows, no anti-aliasing", "tokai1994 §5");
+    ctx.chosen("light placement",
+               "key light high at the upper left, fill light (about 1/3) low at the right; flat "
+               "textures: placed relative to the window; objects: (-3.5, 4, 3.5), (4.5, 1, 1.5)",
+               "positions not printed");
     ctx.chosen("display gamma", "1/2.2", "the model's output is linear");
+}
+
+void record_relief(FigureContext& ctx) {
+    ctx.chosen("edge_r", "1: r is the relative distance |x - m| / |p - m|",
+               "README reading; the section ends before the edge, leaving a groove floor");
+    ctx.chosen("height unit", "S = 2·area/perimeter per scale", "flat sections stay flat");
+    ctx.chosen("normals", "eq. (4), (n_x, n_y) along p - m", "the paper's rule");
 }
 
 Rgb8 to_display(Vec3 c) {

@@ -27,6 +27,9 @@ Blinn1977Material suede_material();  // the unbumped back of the belt
 // Records the materials and the reflection-model choice in the figure's parameter table.
 void record_shading(FigureContext& ctx);
 
+// Records the relief choices (edge_r, height unit, normal rule) of ReliefOptions{}.
+void record_relief(FigureContext& ctx);
+
 // Linear RGB -> 8-bit with the display gamma 1/2.2 (chosen here), clamped.
 Rgb8 to_display(Vec3 linear);
 

@@ -28,10 +28,7 @@ const char* table1_text(Table1Section which) {
 
 void record_section(FigureContext& ctx, Table1Section which) {
     ctx.given("section control points", table1_text(which), "Table 1");
-    ctx.chosen("edge_r", "1: r is the relative distance |x - m| / |p - m|",
-               "README reading; the section ends before the edge, leaving a groove floor");
-    ctx.chosen("height unit", "S = 2·area/perimeter per scale", "flat sections stay flat");
-    ctx.chosen("normals", "eq. (4), (n_x, n_y) along p - m", "the paper's rule");
+    tokai_relief::record_relief(ctx);
 }
 
 Status section_plot(FigureContext& ctx, Table1Section which) {

@@ -192,6 +192,7 @@ SHITSUKAN_FIGURE(tokai1994_fig18, "tokai1994", "fig18",
                  "Handbag with the fig. 13 leather bump-mapped (left) and a close-up (right)") {
     record_design(ctx);
     tokai_relief::record_shading(ctx);
+    tokai_relief::record_relief(ctx);
     ctx.given("leather", "fig. 13(b): the fig. 7 pattern with the fig. 13(a) section",
               "tokai1994 §5");
     ctx.given("mapping",

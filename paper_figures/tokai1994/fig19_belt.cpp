@@ -18,6 +18,7 @@ SHITSUKAN_FIGURE(
     tokai1994_fig19, "tokai1994", "fig19",
     "Snake-leather belt (fig. 3(b) pattern, fig. 13(a) section) and the texture used") {
     tokai_relief::record_shading(ctx);
+    tokai_relief::record_relief(ctx);
     ctx.given("leather", "fig. 3(b) pattern (triangle lattice) + fig. 13(a) section",
               "tokai1994 §5");
     const BeltDesign design;
