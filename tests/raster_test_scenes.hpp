@@ -46,7 +46,8 @@ inline TriangleMesh sphere_mesh(float r, int slices, int stacks) {
         float theta = kPi * float(i) / float(stacks);
         for (int j = 0; j < slices; ++j) {
             float phi = kTwoPi * float(j) / float(slices);
-            Vec3 n{std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi)};
+            Vec3 n{std::sin(theta) * std::cos(phi), std::cos(theta),
+                   -std::sin(theta) * std::sin(phi)};
             m.add_vertex(n * r, n);
         }
     }
@@ -58,7 +59,8 @@ inline TriangleMesh sphere_mesh(float r, int slices, int stacks) {
             m.add_triangle(ring(i, j), ring(i + 1, j), ring(i + 1, j + 1));
             m.add_triangle(ring(i, j), ring(i + 1, j + 1), ring(i, j + 1));
         }
-    for (int j = 0; j < slices; ++j) m.add_triangle(bottom, ring(stacks - 1, j + 1), ring(stacks - 1, j));
+    for (int j = 0; j < slices; ++j)
+        m.add_triangle(bottom, ring(stacks - 1, j + 1), ring(stacks - 1, j));
     return m;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "raster_test_scenes.hpp"
+#include "shitsukan/geom/mesh_builders.hpp"
 
 using namespace shitsukan;
 using namespace raster_test;
@@ -101,6 +102,48 @@ TEST_CASE("a grid of triangles tiling the screen covers every pixel exactly once
     }
 }
 
+TEST_CASE("a tiling clipped by the near plane and the guard band still covers once") {
+    // A jittered grid laid on the floor y = 0, reaching far behind the eye (z up to +20) and
+    // far to the sides: many triangles cross the near plane or the guard band, and their
+    // cut points must match along shared edges.
+    // The eye 0.02 above the floor, closer than the near plane (0.05): the near plane cuts
+    // the floor inside the view, at the bottom of the picture.
+    Camera cam = perspective_camera({0, 0.02f, 0}, {0.2f, -0.15f, -1}, {0, 1, 0}, 70.0f, 72, 54);
+    Mat4 lay_flat = Mat4::rotate_x(-kPi / 2);  // (x, y, 0) -> (x, 0, -y)
+    for (std::uint64_t seed = 11; seed <= 12; ++seed) {
+        TriangleMesh grid = tiling_grid(24, 20.0f, 0.01f, seed);
+        Counts c = coverage_per_triangle(cam, grid.view(), CullMode::back, lay_flat);
+        // Down a column: sky, the floor, then (below the near plane's cut line) nothing
+        // again. The floor must be one unbroken run: a crack would split it.
+        int twice = 0, holes = 0, covered = 0, bottom_empty = 0;
+        for (int x = 0; x < c.width; ++x) {
+            int runs = 0;
+            for (int y = 0; y < c.height; ++y) {
+                int n = c.at(x, y);
+                twice += n > 1;
+                covered += n > 0;
+                if (n > 0 && (y == 0 || c.at(x, y - 1) == 0)) ++runs;
+            }
+            holes += runs > 1;
+            bottom_empty += c.at(x, c.height - 1) == 0;
+        }
+        RgbImage color(72, 54);
+        FloatImage depth(72, 54);
+        RasterStats stats;
+        DrawOptions opt;
+        opt.model = lay_flat;
+        auto any = [](const Fragment&) { return Rgb8{1, 1, 1}; };
+        clear_band(full_frame_band(color.view(), depth.view()), Rgb8{});
+        REQUIRE(draw_mesh(cam, full_frame_band(color.view(), depth.view()), grid.view(), opt, any,
+                          &stats).ok());
+        CHECK(stats.triangles_clipped >= 2);
+        CHECK(twice == 0);
+        CHECK(holes == 0);
+        CHECK(covered > 72 * 54 / 4);
+        CHECK(bottom_empty == 72);  // the part of the floor nearer than the near plane is cut
+    }
+}
+
 TEST_CASE("a closed mesh seen from many directions: no cracks, front layer written once") {
     TriangleMesh meshes[3] = {box_mesh({-0.8f, -0.6f, -0.7f}, {0.7f, 0.9f, 0.5f}),
                               sphere_mesh(1.0f, 20, 10), torus_mesh(0.9f, 0.4f, 24, 12)};
@@ -144,5 +187,31 @@ TEST_CASE("a closed mesh seen from many directions: no cracks, front layer writt
         CHECK(layered == 0);
         CHECK(shaded_not_front == 0);
         CHECK(covered > 64 * 64);  // the object is actually on screen
+    }
+}
+
+TEST_CASE("the mesh builders' closed solids have no cracks from any direction") {
+    TriangleMesh meshes[4];
+    REQUIRE(make_uv_sphere(1.0f, 24, 12, &meshes[0]).ok());
+    REQUIRE(make_torus(0.9f, 0.35f, 24, 12, &meshes[1]).ok());
+    REQUIRE(make_cylinder(0.6f, -0.8f, 0.9f, 20, true, &meshes[2]).ok());
+    REQUIRE(make_sphere_without_octant(1.0f, 8, &meshes[3]).ok());
+    const int kDirections = 8;
+    for (int m = 0; m < 4; ++m) {
+        int mismatched = 0;
+        long covered = 0;
+        for (int d = 0; d < kDirections; ++d) {
+            Vec3 eye = direction(d + 3, kDirections + 6) * 3.5f;
+            Camera cam = perspective_camera(eye, {0.03f, 0.01f, 0}, {0, 1, 0}, 45.0f, 56, 56);
+            Counts front = coverage_per_triangle(cam, meshes[m].view(), CullMode::back);
+            Counts back = coverage_per_triangle(cam, meshes[m].view(), CullMode::front);
+            for (std::size_t i = 0; i < front.n.size(); ++i) {
+                mismatched += front.n[i] != back.n[i];
+                covered += front.n[i] > 0;
+            }
+        }
+        INFO("builder mesh " << m);
+        CHECK(mismatched == 0);
+        CHECK(covered > 56 * 56);
     }
 }

@@ -210,3 +210,27 @@ TEST_CASE("triangles behind the eye or off screen draw nothing") {
     CHECK(stats.triangles_drawn == 0);
     CHECK(stats.triangles_rejected == 0);
 }
+
+TEST_CASE("shader forms: function + user pointer, functor, captureless two-argument lambda") {
+    TriangleMesh m;
+    m.positions = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+    m.indices = {0, 1, 2};
+    Frame a, b, c;
+    int calls = 0;
+    auto functor = [&](const Fragment&) {
+        ++calls;
+        return Rgb8{255, 0, 0};
+    };
+    auto two_args = [](const Fragment&, void* user) {
+        ++*static_cast<int*>(user);
+        return Rgb8{255, 0, 0};
+    };
+    int calls2 = 0;
+    CHECK(draw_mesh(camera32(), a.band, m.view(), DrawOptions{}, white, nullptr).ok());
+    CHECK(draw_mesh(camera32(), b.band, m.view(), DrawOptions{}, functor).ok());
+    CHECK(draw_mesh(camera32(), c.band, m.view(), DrawOptions{}, two_args, &calls2).ok());
+    CHECK(calls == a.lit());
+    CHECK(calls2 == a.lit());
+    CHECK(b.lit() == a.lit());
+    CHECK(c.lit() == a.lit());
+}

@@ -158,3 +158,33 @@ TEST_CASE("depth order of intersecting triangles does not depend on drawing orde
     CHECK(wrong == 0);
     CHECK(differ == 0);
 }
+
+TEST_CASE("facing: counter-clockwise is front; culling and Fragment::front_facing agree") {
+    Camera cam = perspective_camera({0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 45.0f, 32, 32);
+    TriangleMesh ccw;
+    ccw.positions = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+    ccw.indices = {0, 1, 2};
+    TriangleMesh cw = ccw;
+    cw.indices = {0, 2, 1};
+    for (CullMode cull : {CullMode::none, CullMode::back, CullMode::front}) {
+        for (int m = 0; m < 2; ++m) {
+            RgbImage color(32, 32);
+            FloatImage depth(32, 32);
+            FrameBand band = full_frame_band(color.view(), depth.view());
+            clear_band(band, Rgb8{});
+            long front = 0, back = 0;
+            auto count = [&](const Fragment& f) {
+                (f.front_facing ? front : back)++;
+                return Rgb8{1, 1, 1};
+            };
+            DrawOptions opt;
+            opt.cull = cull;
+            REQUIRE(draw_mesh(cam, band, (m == 0 ? ccw : cw).view(), opt, count).ok());
+            bool is_front = m == 0;
+            bool drawn = cull == CullMode::none || (cull == CullMode::back) == is_front;
+            CHECK((is_front ? front : back) > (drawn ? 50 : -1));
+            CHECK((is_front ? back : front) == 0);
+            if (!drawn) CHECK(front + back == 0);
+        }
+    }
+}

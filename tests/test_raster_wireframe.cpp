@@ -149,3 +149,15 @@ TEST_CASE("hidden lines: edges behind a surface are not drawn; bands == full fra
     CHECK(lit <= n_hidden);
     CHECK(lit > n_hidden * 2 / 3);
 }
+
+TEST_CASE("view_distance inverts the window depth of both camera kinds") {
+    Camera persp = perspective_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 50.0f, 64, 64, 0.1f, 50.0f);
+    Camera ortho = orthographic_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 2.0f, 64, 64, 0.1f, 50.0f);
+    for (float z : {4.5f, 2.0f, 0.0f, -7.0f, -30.0f}) {
+        float d = 5.0f - z;  // distance along the view axis
+        CHECK(view_distance(persp, project(persp, {0.3f, -0.2f, z}).z) ==
+              doctest::Approx(d).epsilon(1e-3));
+        CHECK(view_distance(ortho, project(ortho, {0.3f, -0.2f, z}).z) ==
+              doctest::Approx(d).epsilon(1e-4));
+    }
+}

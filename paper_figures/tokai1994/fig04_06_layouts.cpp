@@ -94,7 +94,10 @@ SHITSUKAN_FIGURE(tokai_fig05, "tokai1994", "fig05",
                                       prm.height, &stage1, &report));
     ctx.note(fmt(
         "%d stage-1 polygons, edges perturbed (processing 4, %d interior edges). Left and right "
-        "polygons meet along the centre line in a zig-zag: the joint pattern of §2 (2).",
+        "polygons meet along the centre line in a zig-zag: the joint pattern of §2 (2). "
+        "Stated deviation: the final pattern (fig. 7) divides the straight stage-1 polygons and "
+        "perturbs every final edge once, so a stage-1 edge is bent piece by piece between the "
+        "stage-2 junctions rather than as this one curve (scale_division.hpp).",
         stage1.polygon_count(), report.edges));
     const int size = ctx.quick() ? 256 : 512, margin = size / 32;
     const Frame f{float(margin), float(margin), float(size - 2 * margin)};
@@ -148,8 +151,25 @@ SHITSUKAN_FIGURE(
             Vec2 t = f(Vec2d{x, 1.0});
             c.line({t.x, t.y + 4.0f}, {t.x, t.y + 14.0f}, kBlue, 1.5f);
         }
-        draw_legend(c, {float(margin), float(size - margin) + 30.0f}, marker,
-                    fmt("column ticks: s(u) = D (1 - %g u^2), a = %g, moved along x",
+        // the spacing at the centre (the two columns beside the centre line) and at the edge
+        const Stage2Columns& col = steps.columns;
+        std::size_t mid = 0, last = 0;
+        for (std::size_t k = 0; k < col.x.size(); ++k) {
+            if (col.index[k] == 1) mid = k;
+            if (col.x[k] <= 1.0) last = k;
+        }
+        if (mid > 0 && last > 0) {
+            const float y = f(Vec2d{0.0, 1.0}).y + 9.0f;
+            draw_dimension(c, {f(Vec2d{col.x[mid - 1], 1.0}).x, y},
+                           {f(Vec2d{col.x[mid], 1.0}).x, y}, "", kBlue, {0, 0});
+            draw_dimension(c, {f(Vec2d{col.x[last - 1], 1.0}).x, y},
+                           {f(Vec2d{col.x[last], 1.0}).x, y}, "", kBlue, {0, 0});
+            c.text({f(Vec2d{0.5, 1.0}).x - 3.0f, y + 6.0f}, "D", kBlue, 1);
+            c.text({f(Vec2d{col.x[last - 1], 1.0}).x - 24.0f, y + 6.0f},
+                   fmt("%.2g D", (col.x[last] - col.x[last - 1]) / double(prm.D)), kBlue, 1);
+        }
+        draw_legend(c, {float(margin), float(size - margin) + 36.0f}, marker,
+                    fmt("ticks: s(u) = D (1 - %g u^2); a = %g along x",
                         double(1.0f - prm.edge_ratio), double(prm.a)));
     });
 }

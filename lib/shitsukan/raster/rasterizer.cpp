@@ -1,10 +1,13 @@
 // small-device: yes (no allocation, no exceptions)
 //
 // The scanline rasterizer. Per triangle:
-//   1. fetch its three vertices, transform them (clip space, world space, normals),
-//   2. clip in homogeneous space (clip.hpp), fan-triangulate the polygon,
-//   3. per sub-triangle: divide by w, snap to 1/256 pixel, cull by the sign of the area,
-//   4. walk the scanlines of the band: per row, the span between the left and right edge
+//   1. fetch its three corners and take them to clip space; skip degenerate ones,
+//   2. clip in homogeneous space when an outcode asks for it (clip.hpp),
+//   3. divide by w and snap to 1/256 pixel,
+//   4. per triangle of the (fan-triangulated) polygon: cull by the sign of the area, then,
+//      if it touches the band, fetch the remaining vertex attributes (world position,
+//      normals, uv, colour) and walk the scanlines of the band: per row, the span between
+//      the left and right edge
 //      follows from exact integer arithmetic (top-left rule), per pixel the depth is tested
 //      before the shader is called (early z), and attributes are interpolated
 //      perspective-correctly.
@@ -37,9 +40,11 @@ struct VertexData {
 // in the band (prepare), since most triangles of a band render do not.
 struct SourceTriangle {
     VertexData v[3];
+    VertexData dq, dr;  // v[1] - v[0] and v[2] - v[0], attribute by attribute
     const std::uint32_t* corner_index = nullptr;  // the three mesh indices
     Vec3d object_cross;                           // (p1 - p0) x (p2 - p0), nonzero
     int index = 0;
+    bool flat = false;  // the mesh has no normals
     bool ready = false;
 };
 
@@ -138,22 +143,40 @@ void prepare(const MeshContext& mc, SourceTriangle* t) {
             v.normal = world_n;
         }
     }
+    for (int k = 0; k < 2; ++k) {
+        VertexData& d = k == 0 ? t->dq : t->dr;
+        const VertexData& q = t->v[k + 1];
+        const VertexData& p = t->v[0];
+        d.object_position = q.object_position - p.object_position;
+        d.world_position = q.world_position - p.world_position;
+        d.normal = q.normal - p.normal;
+        d.object_normal = q.object_normal - p.object_normal;
+        d.color = q.color - p.color;
+        d.uv = q.uv - p.uv;
+    }
+    t->flat = mesh.normals == nullptr;
     t->ready = true;
 }
 
 // Fills the fragment's surface point from the perspective-correct barycentrics b.
 void interpolate(const SourceTriangle& t, Vec3 b, Fragment* f) {
+    // a = p·b0 + q·b1 + r·b2 = p + (q - p)·b1 + (r - p)·b2 (b0 + b1 + b2 = 1): one product
+    // fewer per component, with the differences made once per triangle (prepare).
     const VertexData& p = t.v[0];
-    const VertexData& q = t.v[1];
-    const VertexData& r = t.v[2];
-    f->object_position = p.object_position * b.x + q.object_position * b.y + r.object_position * b.z;
-    f->world_position = p.world_position * b.x + q.world_position * b.y + r.world_position * b.z;
-    f->normal = normalize_or(p.normal * b.x + q.normal * b.y + r.normal * b.z, p.normal);
-    f->object_normal = normalize_or(p.object_normal * b.x + q.object_normal * b.y +
-                                        r.object_normal * b.z,
-                                    p.object_normal);
-    f->uv = p.uv * b.x + q.uv * b.y + r.uv * b.z;
-    f->color = p.color * b.x + q.color * b.y + r.color * b.z;
+    const VertexData& dq = t.dq;
+    const VertexData& dr = t.dr;
+    f->object_position = p.object_position + dq.object_position * b.y + dr.object_position * b.z;
+    f->world_position = p.world_position + dq.world_position * b.y + dr.world_position * b.z;
+    if (t.flat) {  // no vertex normals: the plane's normal, the same over the triangle
+        f->normal = p.normal;
+        f->object_normal = p.object_normal;
+    } else {
+        f->normal = normalize_or(p.normal + dq.normal * b.y + dr.normal * b.z, p.normal);
+        f->object_normal = normalize_or(
+            p.object_normal + dq.object_normal * b.y + dr.object_normal * b.z, p.object_normal);
+    }
+    f->uv = p.uv + dq.uv * b.y + dr.uv * b.z;
+    f->color = p.color + dq.color * b.y + dr.color * b.z;
 }
 
 // Rasterizes one sub-triangle into the band. Returns true when it passed culling and
@@ -190,12 +213,14 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
     // Is the middle vertex right of the long edge v0 -> v2? Then the long edge is the left.
     bool middle_right = (v1->x - v0->x) * (v2->y - v0->y) - (v2->x - v0->x) * (v1->y - v0->y) > 0;
 
-    // Screen-space barycentrics as plane equations around corner a (pixel units, float):
+    // Screen-space barycentrics as plane equations around corner a (in 1/256 pixel units):
     // lambda_b = (p - a) x (c - a) / area, lambda_c = (b - a) x (p - a) / area.
     double inv_area = 1.0 / double(area2);
     float lb_dx = float(double(c.y - a.y) * inv_area), lb_dy = float(-double(c.x - a.x) * inv_area);
     float lc_dx = float(-double(b.y - a.y) * inv_area), lc_dy = float(double(b.x - a.x) * inv_area);
     float dz_b = b.z - a.z, dz_c = c.z - a.z;
+    const bool unclipped = a.bary == Vec3{1, 0, 0} && b.bary == Vec3{0, 1, 0} &&
+                           c.bary == Vec3{0, 0, 1};
 
     Fragment f;
     f.triangle = src.index;
@@ -230,7 +255,10 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
             // Perspective-correct: interpolate bary / w linearly, divide by the 1 / w sum.
             float qa = la * a.inv_w, qb = lb * b.inv_w, qc = lc * c.inv_w;
             float inv_sum = 1.0f / (qa + qb + qc);
-            Vec3 bary = (a.bary * qa + b.bary * qb + c.bary * qc) * inv_sum;
+            // An unclipped triangle's corners are the original ones, bary (1,0,0), (0,1,0),
+            // (0,0,1): the general sum below then reduces exactly (same bits) to (qa, qb, qc).
+            Vec3 bary = unclipped ? Vec3{qa, qb, qc} * inv_sum
+                                  : (a.bary * qa + b.bary * qb + c.bary * qc) * inv_sum;
             interpolate(src, bary, &f);
             f.x = int(x);
             f.depth = z < 0.0f ? 0.0f : z;
@@ -289,7 +317,8 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
             finite = finite && is_finite(p);
             src.v[k].object_position = p;
             corners[k].clip = transform_homogeneous(mvp, p);
-            corners[k].bary = Vec3{k == 0 ? 1.0f : 0.0f, k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f};
+            corners[k].bary = Vec3{k == 0 ? 1.0f : 0.0f, k == 1 ? 1.0f : 0.0f,
+                                   k == 2 ? 1.0f : 0.0f};
         }
         // Zero-area and NaN/inf triangles are degenerate: skipped and counted. The plane
         // normal is computed in double so that huge but finite coordinates do not overflow.

@@ -7,17 +7,25 @@
 //   DrawOptions opt;  opt.model = Mat4::rotate_y(0.3f);  opt.cull = CullMode::back;
 //   auto shader = [&](const Fragment& f) { return shade_marble(f.object_position); };
 //   Status s = draw_mesh(camera, band, mesh.view(), opt, shader, &stats);
+//   See also: shading.hpp (lights, Lambert, Blinn-Phong), wireframe.hpp (edges as lines),
+//   clip.hpp (the homogeneous clipper), camera.hpp.
 //
 // CONVENTIONS (small3dlib-style)
 //   - Right-handed world; camera looks down -z of eye space; counter-clockwise = front face.
 //   - Screen: x right, y down, pixel (x, y) covers [x, x+1) x [y, y+1), sampled at its
-//     centre (x + 0.5, y + 0.5). Vertices keep sub-pixel positions.
+//     centre (x + 0.5, y + 0.5). Vertices keep sub-pixel positions: snapped to 1/256 pixel,
+//     after which coverage is decided with exact 64-bit integer arithmetic.
 //   - Fill rule: top-left. A pixel centre exactly on a shared edge belongs to exactly one
 //     of the two triangles; a grid of triangles tiling the screen covers each pixel once.
 //   - Depth: z in [0, 1] (0 = near plane), float Z-buffer, a fragment is kept when its depth
-//     is strictly less than the stored one. clear_band sets depth to +inf.
+//     is strictly less than the stored one (and not beyond the far plane, z <= 1). The test
+//     runs before the shader (early z). clear_band sets depth to +inf.
 //   - Near-plane clipping in homogeneous clip space before the divide (a triangle with a
-//     vertex at w <= 0 is clipped, never dropped whole and never wrapped around).
+//     vertex at w <= 0 is clipped, never dropped whole and never wrapped around); a guard
+//     band 8x the view volume clips huge triangles (raster/clip.hpp). The clipped polygon is
+//     drawn as a fan; its pieces tile it exactly (same fill rule).
+//   - Facing: decided per drawn triangle from the sign of its snapped screen area;
+//     CullMode::back (the default) skips clockwise-on-screen triangles.
 //   - Interpolation: object position, normal, uv and colour are perspective-correct
 //     (attributes / w interpolated linearly in screen space, then divided by 1/w).
 //   - Bands: a FrameBand is the rows [y0, y0 + color.height) of a frame of
@@ -82,7 +90,8 @@ struct RasterStats {
 constexpr int kMaxFrameSize = 16384;
 
 FrameBand full_frame_band(const RgbView& color, const FloatView& depth);
-FrameBand make_band(const RgbView& color, const FloatView& depth, int y0, int frame_width, int frame_height);
+FrameBand make_band(const RgbView& color, const FloatView& depth, int y0, int frame_width,
+                    int frame_height);
 void clear_band(const FrameBand& band, Rgb8 background);
 
 // The checks draw_mesh() (and draw_wireframe()) run before drawing anything, for callers

@@ -36,7 +36,7 @@
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/core/vec.hpp"
 #include "shitsukan/geom/mesh_view.hpp"
-#include "shitsukan/image/image.hpp"
+#include "shitsukan/image/image_view.hpp"
 
 namespace shitsukan {
 

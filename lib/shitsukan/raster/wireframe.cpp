@@ -71,7 +71,8 @@ void draw_line(LineContext& ctx, Vec3 a, Vec3 b) {
         first = std::max(first, long(band.y0));
         end = std::min(end, long(band.y0 + band.color.height));
     } else if (dy != 0.0f) {
-        float ta = (float(band.y0) - a.y) / dy, tb = (float(band.y0 + band.color.height) - a.y) / dy;
+        float ta = (float(band.y0) - a.y) / dy;
+        float tb = (float(band.y0 + band.color.height) - a.y) / dy;
         float xa = a.x + dx * std::min(ta, tb), xb = a.x + dx * std::max(ta, tb);
         float xlo = std::min(xa, xb), xhi = std::max(xa, xb);
         if (xlo > -1e6f) first = std::max(first, long(std::floor(xlo)) - 1);

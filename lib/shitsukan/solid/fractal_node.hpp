@@ -1,0 +1,83 @@
+// shitsukan/solid/fractal_node.hpp — the three rules of one recursion level (okada1987 eqs.
+// (1)-(4)), written once and shared by lattice Types I, II and III.
+//
+// Manual
+//   NodeClass c = classify_node(R, x, y, z);   // level n, half spacing h, which axes are odd
+//   float de = edge_midpoint(dv1, dv2, g * L);              // eq. (1)
+//   float dp = face_centre(edge_values, g * L);             // eq. (3), four edge midpoints
+//   float dc = cube_centre(face_values, g * L);             // eq. (4), six face centres
+//   float g  = node_gaussian(seed, x, y, z);                // N(0, 1) of the node (hash)
+//
+// Lattice coordinates are integers 0..2^R on each axis. A node first appears at level
+// n = R - t, where 2^t is the largest power of two dividing all three coordinates (t capped
+// at R; the eight corners are level 0). At that level the coordinates divided by h = 2^t
+// are odd on 1 axis (an edge midpoint), 2 axes (a face centre) or 3 axes (a cube centre).
+// Its parents are the neighbours at distance h along its odd axes, taken in the fixed order
+// axis x-, x+, y-, y+, z-, z+. Every type sums the parents in that order with the same
+// float operations, which is what makes Types I, II and III agree bit for bit.
+// small-device: yes (inline, no allocation)
+#pragma once
+
+#include <cstdint>
+
+#include "shitsukan/core/hash.hpp"
+
+namespace shitsukan {
+
+struct NodeClass {
+    int level = 0;      // 0 for the eight initial corners, else 1..R
+    int half = 0;       // h = 2^(R - level): distance to the parents
+    int odd_axes = 0;   // bit 0: x, bit 1: y, bit 2: z are odd multiples of h
+    int odd_count = 0;  // 1 edge midpoint, 2 face centre, 3 cube centre (0 for corners)
+};
+
+inline NodeClass classify_node(int R, std::int32_t x, std::int32_t y, std::int32_t z) {
+    std::uint32_t bits = std::uint32_t(x) | std::uint32_t(y) | std::uint32_t(z) |
+                         (std::uint32_t(1) << R);
+    int t = 0;
+    while (((bits >> t) & 1u) == 0u) ++t;  // t <= R because bit R is set
+    NodeClass c;
+    c.level = R - t;
+    c.half = 1 << t;
+    if (c.level == 0) return c;
+    c.odd_axes = int((std::uint32_t(x) >> t) & 1u) | int(((std::uint32_t(y) >> t) & 1u) << 1) |
+                 int(((std::uint32_t(z) >> t) & 1u) << 2);
+    c.odd_count = (c.odd_axes & 1) + ((c.odd_axes >> 1) & 1) + ((c.odd_axes >> 2) & 1);
+    return c;
+}
+
+// The hash stream of the lattice's random numbers (0); the 2D quadtree lattice uses 1.
+constexpr std::uint32_t kLatticeStream = 0u;
+constexpr std::uint32_t kQuadtreeStream = 1u;
+
+// g ~ N(0, 1) of the node (x, y, z): the same number whoever asks first (okada1989 §3-3).
+inline float node_gaussian(std::uint32_t seed, std::int32_t x, std::int32_t y, std::int32_t z) {
+    return hash_gaussian(seed, kLatticeStream, x, y, z);
+}
+
+// The same number with the seed's hash start computed once (a lattice draws millions):
+// node_gaussian_from(hash_start(seed, kLatticeStream), x, y, z) == node_gaussian(seed, x, y, z).
+inline float node_gaussian_from(std::uint64_t start, std::int32_t x, std::int32_t y,
+                                std::int32_t z) {
+    std::uint64_t h = hash_add(start, std::uint32_t(x));
+    h = hash_add(h, std::uint32_t(y));
+    return gaussian_from_bits(hash_add(h, std::uint32_t(z)));
+}
+
+// okada1987 eq. (1): D_e = (D_v1 + D_v2)/2 + g·L_r, the edge midpoint from its two ends.
+inline float edge_midpoint(float dv1, float dv2, float g_times_l) {
+    return (dv1 + dv2) * 0.5f + g_times_l;
+}
+
+// okada1987 eq. (3): D_p = (1/4)·sum of the face's four EDGE MIDPOINTS (computed in step (1)
+// of the same level, not the face's corners) + g·L_r.
+inline float face_centre(const float edge[4], float g_times_l) {
+    return (edge[0] + edge[1] + edge[2] + edge[3]) * 0.25f + g_times_l;
+}
+
+// okada1987 eq. (4): D_c = (1/6)·sum of the six face centres + g·L_r.
+inline float cube_centre(const float face[6], float g_times_l) {
+    return (face[0] + face[1] + face[2] + face[3] + face[4] + face[5]) / 6.0f + g_times_l;
+}
+
+}  // namespace shitsukan

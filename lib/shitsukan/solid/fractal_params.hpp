@@ -1,0 +1,63 @@
+// shitsukan/solid/fractal_params.hpp — the parameters of okada1987's 3D random fractal lattice.
+//
+// Manual
+//   FractalParams p;                 // R = 6 (65^3 points), beta = 0.5, seed = 1987, corners 0
+//   p.beta = 0.7f;
+//   Status s = validate_fractal_params(p, kTypeIMaxDepth);
+//   int n = lattice_side(p.R);       // 2^R + 1 points a side (okada1987 §2.2)
+//   float a = level_amplitude(3, p.beta);   // L_r^(3) = exp(-2·beta), eq. (2)
+//
+// Parameters and ranges
+//   R        recursion depth, 0 <= R <= the type's limit (Type I: kTypeIMaxDepth = 10,
+//            Type III: kTypeIIIMaxDepth = 24). Default 6: both papers' 65^3 lattice.
+//   beta     decay constant of eq. (2), finite, >= 0. Default 0.5 (chosen here: the papers
+//            print no value; 0.5 keeps the finest level at e^-2.5 = 8 % of the first, a
+//            visibly rough but continuous turbulence).
+//   seed     selects the random numbers g. Default 1987 (chosen here).
+//   corners  the eight initial values at the cube's corners (okada1987 §2.2 "given initial
+//            values"), finite. Index = i + 2j + 4k for the corner (i, j, k) in {0, 1}^3.
+//            Default 0 (chosen here: D then has mean 0 everywhere, so k alone sets the scale).
+//   noise    where g comes from: NoiseSource::hash (default) draws g for the node (x, y, z)
+//            as hash_gaussian(seed, 0, x, y, z), so every lattice type gives every node the
+//            same number whatever the order of evaluation (okada1989 Type III's idea);
+//            NoiseSource::sequential draws from one Pcg32(seed) stream in build order, as a
+//            1987 program calling a random-number routine would (Type I and II only).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "shitsukan/core/status.hpp"
+
+namespace shitsukan {
+
+enum class NoiseSource : std::uint8_t { hash = 0, sequential = 1 };
+
+struct FractalParams {
+    int R = 6;
+    float beta = 0.5f;
+    std::uint32_t seed = 1987u;
+    float corners[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+    NoiseSource noise = NoiseSource::hash;
+};
+
+constexpr int kTypeIMaxDepth = 10;    // 1025^3 floats = 4.3 GB: beyond that, use Type III
+constexpr int kTypeIIIMaxDepth = 24;  // float coordinates still address single cells
+
+// 2^R + 1 points a side (okada1989 prints 2^{R+1}: an OCR slip; R = 6 gives 65).
+inline std::int64_t lattice_side(int R) { return (std::int64_t(1) << R) + 1; }
+
+// Bytes of a Type I array of depth R (float32 values), as a 64-bit count.
+inline std::uint64_t lattice_bytes(int R) {
+    std::uint64_t n = std::uint64_t(lattice_side(R));
+    return n * n * n * sizeof(float);
+}
+
+// okada1987 eq. (2): L_r^(n) = L_r^(n-1)·e^-beta = e^-(n-1)·beta, n = 1..R. Computed with
+// det_exp so every platform and every lattice type uses the same float.
+float level_amplitude(int n, float beta);
+
+// Checks R against [0, max_depth], beta >= 0 and finite, corners finite.
+Status validate_fractal_params(const FractalParams& params, int max_depth);
+
+}  // namespace shitsukan

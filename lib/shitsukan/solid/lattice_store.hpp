@@ -1,0 +1,49 @@
+// shitsukan/solid/lattice_store.hpp — host side: an owning Type I lattice with a memory
+// budget, and saving/loading it as the paper kept its lattice on file (okada1987 §4.4:
+// "file write 0.9 s").
+//
+// Manual
+//   FractalLattice lattice;
+//   Status s = lattice.build(params);                 // refuses > 512 MiB (default budget)
+//   s = lattice.build(params, 64u << 20);             // or a budget of your own
+//   float d = turbulence(lattice.view(), p);
+//   s = save_lattice("lattice.shl", lattice);         // raw little-endian float32 + header
+//   FractalLattice back;  s = load_lattice("lattice.shl", &back);
+//
+// File format (all little-endian): 8 bytes magic "SHKLAT01", int32 R, float32 beta,
+// uint32 seed, uint32 noise source (0 hash, 1 sequential), float32 corners[8], then
+// (2^R + 1)^3 float32 values, x fastest, then y, then z.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "shitsukan/core/status.hpp"
+#include "shitsukan/solid/fractal_lattice.hpp"
+
+namespace shitsukan {
+
+constexpr std::uint64_t kDefaultLatticeBudget = std::uint64_t(512) << 20;  // 512 MiB: R <= 8
+
+class FractalLattice {
+public:
+    Status build(const FractalParams& params, std::uint64_t budget_bytes = kDefaultLatticeBudget);
+    LatticeView view() const { return view_; }
+    const FractalParams& params() const { return params_; }
+    bool empty() const { return values_.empty(); }
+    std::size_t bytes() const { return values_.size() * sizeof(float); }
+
+private:
+    friend Status load_lattice(const std::string& path, FractalLattice* out,
+                               std::uint64_t budget_bytes);
+    FractalParams params_;
+    std::vector<float> values_;
+    LatticeView view_;
+};
+
+Status save_lattice(const std::string& path, const FractalLattice& lattice);
+Status load_lattice(const std::string& path, FractalLattice* out,
+                    std::uint64_t budget_bytes = kDefaultLatticeBudget);
+
+}  // namespace shitsukan

@@ -1,0 +1,110 @@
+// Host side: Type II keeps its list in a std::unordered_map.
+#include "shitsukan/solid/lattice_type2.hpp"
+
+#include "shitsukan/core/assert.hpp"
+#include "shitsukan/solid/fractal_node.hpp"
+#include "shitsukan/solid/turbulence.hpp"
+
+namespace shitsukan {
+namespace {
+std::uint64_t pack(std::int32_t x, std::int32_t y, std::int32_t z) {
+    return std::uint64_t(std::uint32_t(x)) | (std::uint64_t(std::uint32_t(y)) << 21) |
+           (std::uint64_t(std::uint32_t(z)) << 42);
+}
+}  // namespace
+
+Status TypeIILattice::init(const FractalParams& params) {
+    SHITSUKAN_TRY(validate_fractal_params(params, kTypeIIMaxDepth));
+    params_ = params;
+    for (int n = 1; n <= params.R; ++n) amplitude_[n] = level_amplitude(n, params.beta);
+    ready_ = true;
+    clear();
+    return Status::success();
+}
+
+void TypeIILattice::clear() {
+    list_.clear();
+    rng_ = Pcg32(params_.seed, kLatticeStream);
+}
+
+// The recursion of eqs. (1)-(4) from one node back to its ancestors.
+float TypeIILattice::compute(std::int32_t x, std::int32_t y, std::int32_t z) {
+    const int R = params_.R;
+    const NodeClass c = classify_node(R, x, y, z);
+    if (c.level == 0) {  // an initial corner
+        const std::int32_t last = std::int32_t(1) << R;
+        return params_.corners[(x == last) + 2 * (y == last) + 4 * (z == last)];
+    }
+    const std::uint64_t key = pack(x, y, z);
+    auto found = list_.find(key);
+    if (found != list_.end()) return found->second;
+
+    const std::int32_t h = c.half;
+    const std::int32_t step[3][3] = {{h, 0, 0}, {0, h, 0}, {0, 0, h}};
+    auto parent = [&](int axis, int sign) {
+        return compute(x + sign * step[axis][0], y + sign * step[axis][1],
+                       z + sign * step[axis][2]);
+    };
+    // Parents first (recursively), then the node's own g: the order a sequential stream sees.
+    float parents[6];
+    int axis = c.odd_axes == 1 ? 0 : (c.odd_axes == 2 ? 1 : 2);
+    int a = (c.odd_axes & 1) ? 0 : 1, b = (c.odd_axes & 4) ? 2 : 1;
+    if (c.odd_count == 1) {
+        parents[0] = parent(axis, -1), parents[1] = parent(axis, +1);
+    } else if (c.odd_count == 2) {
+        parents[0] = parent(a, -1), parents[1] = parent(a, +1);
+        parents[2] = parent(b, -1), parents[3] = parent(b, +1);
+    } else {
+        for (int i = 0; i < 6; ++i) parents[i] = parent(i / 2, (i % 2) ? +1 : -1);
+    }
+    const float g = params_.noise == NoiseSource::hash ? node_gaussian(params_.seed, x, y, z)
+                                                       : rng_.gaussian();
+    const float g_times_l = g * amplitude_[c.level];
+    float value;
+    if (c.odd_count == 1)
+        value = edge_midpoint(parents[0], parents[1], g_times_l);  // eq. (1)
+    else if (c.odd_count == 2)
+        value = face_centre(parents, g_times_l);                    // eq. (3)
+    else
+        value = cube_centre(parents, g_times_l);                    // eq. (4)
+    list_.emplace(key, value);
+    return value;
+}
+
+float TypeIILattice::node_value(std::int32_t x, std::int32_t y, std::int32_t z) {
+    SHITSUKAN_ASSERT(ready_);
+    const std::int32_t last = std::int32_t(1) << params_.R;
+    SHITSUKAN_ASSERT(x >= 0 && y >= 0 && z >= 0 && x <= last && y <= last && z <= last);
+    return compute(x, y, z);
+}
+
+Status TypeIILattice::node_value_checked(std::int32_t x, std::int32_t y, std::int32_t z,
+                                         float* out) {
+    if (!ready_)
+        return Status::error(StatusCode::invalid_argument, "Type II lattice: not initialised");
+    const std::int32_t last = std::int32_t(1) << params_.R;
+    if (x < 0 || y < 0 || z < 0 || x > last || y > last || z > last)
+        return Status::error(StatusCode::out_of_range,
+                             "Type II lattice: node (%d, %d, %d) is outside [0, %d]^3", int(x),
+                             int(y), int(z), int(last));
+    if (out == nullptr) return Status::error(StatusCode::invalid_argument, "out must not be null");
+    *out = compute(x, y, z);
+    return Status::success();
+}
+
+float TypeIILattice::turbulence(Vec3 p) {
+    SHITSUKAN_ASSERT(ready_);
+    const int cells = 1 << params_.R;
+    int ix, iy, iz;
+    float fx, fy, fz;
+    split_lattice_coordinate(p.x, cells, &ix, &fx);
+    split_lattice_coordinate(p.y, cells, &iy, &fy);
+    split_lattice_coordinate(p.z, cells, &iz, &fz);
+    float d[8];
+    for (int k = 0; k < 2; ++k)
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i) d[i + 2 * j + 4 * k] = compute(ix + i, iy + j, iz + k);
+    return trilinear_corners(d, fx, fy, fz);
+}
+
+}  // namespace shitsukan

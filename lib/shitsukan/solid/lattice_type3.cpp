@@ -1,0 +1,178 @@
+// small-device: yes (Type III lattice: hash-addressed nodes, O(R) state, no allocation)
+#include "shitsukan/solid/lattice_type3.hpp"
+
+#include "shitsukan/core/assert.hpp"
+#include "shitsukan/core/hash.hpp"
+#include "shitsukan/solid/fractal_node.hpp"
+#include "shitsukan/solid/turbulence.hpp"
+
+namespace shitsukan {
+namespace {
+inline int grid_index(int a, int b, int c) { return a + 3 * b + 9 * c; }
+}  // namespace
+
+Status TypeIIILattice::init(const FractalParams& params) {
+    SHITSUKAN_TRY(validate_fractal_params(params, kTypeIIIMaxDepth));
+    if (params.noise != NoiseSource::hash)
+        return Status::error(StatusCode::not_supported,
+                             "Type III lattice: needs NoiseSource::hash (a sequential stream "
+                             "depends on the order of queries)");
+    R_ = params.R;
+    hash_start_ = hash_start(params.seed, kLatticeStream);
+    for (int n = 1; n <= R_; ++n) amplitude_[n] = level_amplitude(n, params.beta);
+    for (int i = 0; i < 8; ++i) corners0_[i] = params.corners[i];
+    cached_depth_ = 0;
+    subdivisions_ = 0;
+    last_cell_[0] = last_cell_[1] = last_cell_[2] = -1;
+    for (Block& b : row_cache_) b.x0 = b.y0 = b.z0 = -1;
+    return Status::success();
+}
+
+// One recursion level on one cell (okada1987 §2.2 steps (1)-(3)): the cell of level n-1 with
+// lower corner (x0, y0, z0) and the given corners becomes the 27-node block of level n.
+void TypeIIILattice::subdivide(int n, const float corners[8], std::int32_t x0, std::int32_t y0,
+                               std::int32_t z0) {
+    Block& block = blocks_[n];
+    float* grid = block.v;
+    const std::int32_t h = std::int32_t(1) << (R_ - n);
+    const float amplitude = amplitude_[n];
+    auto g = [&](int a, int b, int c) {
+        return node_gaussian_from(hash_start_, x0 + a * h, y0 + b * h, z0 + c * h) * amplitude;
+    };
+    // The parent's corners sit at the even grid positions.
+    for (int k = 0; k < 2; ++k)
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i)
+                grid[grid_index(2 * i, 2 * j, 2 * k)] = corners[i + 2 * j + 4 * k];
+    // Step (1), eq. (1): the 12 edge midpoints (exactly one grid index is 1).
+    for (int c = 0; c <= 2; c += 2)
+        for (int b = 0; b <= 2; b += 2) {
+            grid[grid_index(1, b, c)] =
+                edge_midpoint(grid[grid_index(0, b, c)], grid[grid_index(2, b, c)], g(1, b, c));
+            grid[grid_index(b, 1, c)] =
+                edge_midpoint(grid[grid_index(b, 0, c)], grid[grid_index(b, 2, c)], g(b, 1, c));
+            grid[grid_index(b, c, 1)] =
+                edge_midpoint(grid[grid_index(b, c, 0)], grid[grid_index(b, c, 2)], g(b, c, 1));
+        }
+    // Step (2), eq. (3): the 6 face centres from the face's four edge midpoints, in the
+    // order (first odd axis -, +, second odd axis -, +).
+    for (int e = 0; e <= 2; e += 2) {
+        const float yz[4] = {grid[grid_index(e, 0, 1)], grid[grid_index(e, 2, 1)],
+                             grid[grid_index(e, 1, 0)], grid[grid_index(e, 1, 2)]};
+        grid[grid_index(e, 1, 1)] = face_centre(yz, g(e, 1, 1));
+        const float xz[4] = {grid[grid_index(0, e, 1)], grid[grid_index(2, e, 1)],
+                             grid[grid_index(1, e, 0)], grid[grid_index(1, e, 2)]};
+        grid[grid_index(1, e, 1)] = face_centre(xz, g(1, e, 1));
+        const float xy[4] = {grid[grid_index(0, 1, e)], grid[grid_index(2, 1, e)],
+                             grid[grid_index(1, 0, e)], grid[grid_index(1, 2, e)]};
+        grid[grid_index(1, 1, e)] = face_centre(xy, g(1, 1, e));
+    }
+    // Step (3), eq. (4): the centre from the six face centres x-, x+, y-, y+, z-, z+.
+    const float faces[6] = {grid[grid_index(0, 1, 1)], grid[grid_index(2, 1, 1)],
+                            grid[grid_index(1, 0, 1)], grid[grid_index(1, 2, 1)],
+                            grid[grid_index(1, 1, 0)], grid[grid_index(1, 1, 2)]};
+    grid[grid_index(1, 1, 1)] = cube_centre(faces, g(1, 1, 1));
+    block.x0 = x0, block.y0 = y0, block.z0 = z0;
+    ++subdivisions_;
+}
+
+// The 8 corners of the sub-cell (ox, oy, oz) in {0, 1}^3 of a block.
+static void block_corners(const float* grid, int ox, int oy, int oz, float out[8]) {
+    for (int k = 0; k < 2; ++k)
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i)
+                out[i + 2 * j + 4 * k] = grid[grid_index(ox + i, oy + j, oz + k)];
+}
+
+const float* TypeIIILattice::unit_cell_corners(std::int32_t ix, std::int32_t iy,
+                                               std::int32_t iz) {
+    if (ix == last_cell_[0] && iy == last_cell_[1] && iz == last_cell_[2]) return cell_;
+    if (R_ == 0) {
+        for (int i = 0; i < 8; ++i) cell_[i] = corners0_[i];
+    } else {
+        // The finest block (edge 2) holding the unit cell: first look in the row cache.
+        const std::int32_t fx0 = ix & ~1, fy0 = iy & ~1, fz0 = iz & ~1;
+        Block* slot = nullptr;
+        if (kTypeIIIRowCache > 0) {
+            std::uint32_t key = (std::uint32_t(fx0 >> 1) * 73856093u) ^
+                                (std::uint32_t(fy0 >> 1) * 19349663u) ^
+                                (std::uint32_t(fz0 >> 1) * 83492791u);
+            slot = &row_cache_[key & std::uint32_t(kTypeIIIRowCache - 1)];
+            if (slot->x0 == fx0 && slot->y0 == fy0 && slot->z0 == fz0) {
+                block_corners(slot->v, ix - fx0, iy - fy0, iz - fz0, cell_);
+                last_cell_[0] = ix, last_cell_[1] = iy, last_cell_[2] = iz;
+                return cell_;
+            }
+        }
+        float corners[8];
+        for (int n = 1; n <= R_; ++n) {
+            // The cell of level n-1 holding the query: edge 2^(R-n+1).
+            const std::int32_t edge = std::int32_t(1) << (R_ - n + 1);
+            const std::int32_t x0 = ix & ~(edge - 1), y0 = iy & ~(edge - 1), z0 = iz & ~(edge - 1);
+            const Block& b = blocks_[n];
+            if (n <= cached_depth_ && b.x0 == x0 && b.y0 == y0 && b.z0 == z0) continue;
+            // Cache miss: take the cell's corners from the block of level n-1 and subdivide.
+            if (n == 1) {
+                for (int i = 0; i < 8; ++i) corners[i] = corners0_[i];
+            } else {
+                const Block& up = blocks_[n - 1];
+                block_corners(up.v, (x0 - up.x0) / edge, (y0 - up.y0) / edge,
+                              (z0 - up.z0) / edge, corners);
+            }
+            subdivide(n, corners, x0, y0, z0);
+            cached_depth_ = n;
+        }
+        const Block& last = blocks_[R_];
+        block_corners(last.v, ix - last.x0, iy - last.y0, iz - last.z0, cell_);
+        if (slot != nullptr) *slot = last;
+    }
+    last_cell_[0] = ix, last_cell_[1] = iy, last_cell_[2] = iz;
+    return cell_;
+}
+
+float TypeIIILattice::node_value(std::int32_t x, std::int32_t y, std::int32_t z) {
+    SHITSUKAN_ASSERT(R_ >= 0);
+    const std::int32_t last = std::int32_t(1) << R_;
+    SHITSUKAN_ASSERT(x >= 0 && y >= 0 && z >= 0 && x <= last && y <= last && z <= last);
+    // The unit cell whose lower corner is the node (the last node uses the last cell).
+    const std::int32_t ix = x < last ? x : last - 1, iy = y < last ? y : last - 1,
+                       iz = z < last ? z : last - 1;
+    const float* corner = unit_cell_corners(ix, iy, iz);
+    return corner[(x - ix) + 2 * (y - iy) + 4 * (z - iz)];
+}
+
+Status TypeIIILattice::node_value_checked(std::int32_t x, std::int32_t y, std::int32_t z,
+                                          float* out) {
+    if (R_ < 0)
+        return Status::error(StatusCode::invalid_argument, "Type III lattice: not initialised");
+    const std::int32_t last = std::int32_t(1) << R_;
+    if (x < 0 || y < 0 || z < 0 || x > last || y > last || z > last)
+        return Status::error(StatusCode::out_of_range,
+                             "Type III lattice: node (%d, %d, %d) is outside [0, %d]^3", int(x),
+                             int(y), int(z), int(last));
+    if (out == nullptr) return Status::error(StatusCode::invalid_argument, "out must not be null");
+    *out = node_value(x, y, z);
+    return Status::success();
+}
+
+float TypeIIILattice::turbulence(Vec3 p) {
+    SHITSUKAN_ASSERT(R_ >= 0);
+    const int cells = 1 << R_;
+    int ix, iy, iz;
+    float fx, fy, fz;
+    split_lattice_coordinate(p.x, cells, &ix, &fx);
+    split_lattice_coordinate(p.y, cells, &iy, &fy);
+    split_lattice_coordinate(p.z, cells, &iz, &fz);
+    return trilinear_corners(unit_cell_corners(ix, iy, iz), fx, fy, fz);  // eq. (6)
+}
+
+Status TypeIIILattice::turbulence_checked(Vec3 p, float* out) {
+    if (R_ < 0)
+        return Status::error(StatusCode::invalid_argument, "Type III lattice: not initialised");
+    if (out == nullptr) return Status::error(StatusCode::invalid_argument, "out must not be null");
+    SHITSUKAN_TRY(check_lattice_point(p, R_));
+    *out = turbulence(p);
+    return Status::success();
+}
+
+}  // namespace shitsukan

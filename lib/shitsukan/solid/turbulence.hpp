@@ -1,0 +1,63 @@
+// shitsukan/solid/turbulence.hpp — the 3D turbulence function D(P): trilinear interpolation
+// of the lattice, okada1987 eq. (6) (okada1989 §3-4).
+//
+// Manual
+//   float d = turbulence(lattice, Vec3{10.3f, 40.0f, 31.7f});      // Type I view, clamped
+//   Status s = turbulence_checked(lattice, p, &d);                  // out_of_range outside
+//   float d8 = trilinear_corners(corner_values, fx, fy, fz);        // eq. (6) on one cell
+//
+// Coordinates are lattice coordinates: node (i, j, k) sits at P = (i, j, k), the lattice
+// fills [0, 2^R]^3 (R = 6: [0, 64]^3). Objects are mapped into it by the caller (the
+// figures use lattice = 32 + 28·object for objects inside [-1, 1]^3, see
+// paper_figures/okada1987/okada_common.hpp).
+// Outside the lattice: turbulence() clamps each coordinate to [0, 2^R] (the boundary
+// values continue outwards, constant along the normal); NaN coordinates are treated as 0.
+// turbulence_checked() refuses such points with out_of_range / invalid_argument instead.
+// Corner order everywhere: index i + 2j + 4k for the corner at offset (i, j, k).
+// small-device: yes (no allocation)
+#pragma once
+
+#include "shitsukan/core/status.hpp"
+#include "shitsukan/core/vec.hpp"
+#include "shitsukan/solid/fractal_lattice.hpp"
+
+namespace shitsukan {
+
+// okada1987 eq. (6): D_x = (1/V_0)·sum_i D_i·V_i, where V_i is the volume of the box that
+// P_x cuts off diagonally opposite corner P_i, and V_0 = 1 for a unit cell. At a node the
+// weights are exactly 1 and 0, so node values come back bit for bit.
+inline float trilinear_corners(const float d[8], float fx, float fy, float fz) {
+    const float wx[2] = {1.0f - fx, fx}, wy[2] = {1.0f - fy, fy}, wz[2] = {1.0f - fz, fz};
+    float v[8];  // D_i · V_i, with V_i = the product of the three opposite extents
+    for (int k = 0; k < 2; ++k)
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i)
+                v[i + 2 * j + 4 * k] = d[i + 2 * j + 4 * k] * (wx[i] * wy[j] * wz[k]);
+    // Summed pairwise (a fixed order, shorter dependency chain than left to right).
+    return ((v[0] + v[1]) + (v[2] + v[3])) + ((v[4] + v[5]) + (v[6] + v[7]));
+}
+
+// Splits one coordinate into the unit cell [cell, cell + 1] holding it and the fraction
+// within, clamping to [0, cells] (cells = 2^R). The last node belongs to the last cell.
+inline void split_lattice_coordinate(float t, int cells, int* cell, float* fraction) {
+    if (!(t > 0.0f)) t = 0.0f;  // also catches NaN
+    if (t > float(cells)) t = float(cells);
+    int c = int(t);
+    if (c >= cells) c = cells > 0 ? cells - 1 : 0;
+    *cell = c;
+    *fraction = t - float(c);
+}
+
+// True when p lies in [0, 2^R]^3 (and is not NaN).
+inline bool inside_lattice(Vec3 p, int R) {
+    const float hi = float(1 << R);
+    return p.x >= 0.0f && p.y >= 0.0f && p.z >= 0.0f && p.x <= hi && p.y <= hi && p.z <= hi;
+}
+
+Status check_lattice_point(Vec3 p, int R);  // invalid_argument for NaN/inf, out_of_range outside
+
+// D(P) from a Type I array.
+float turbulence(const LatticeView& lattice, Vec3 p);
+Status turbulence_checked(const LatticeView& lattice, Vec3 p, float* out);
+
+}  // namespace shitsukan

@@ -1,0 +1,284 @@
+// paper_figures/okada1987/okada_common.cpp — the shared lattice, choices, scenes and shader.
+#include "okada1987/okada_common.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "shitsukan/geom/mesh_builders.hpp"
+#include "shitsukan/raster/rasterizer.hpp"
+
+namespace shitsukan::okada {
+
+using figures::fmt;
+
+// Six layers of impurity, lattice units along the texture's z (the object's up axis):
+// uneven spacing and widths, sharp and soft skirts (chosen here; the paper gives none).
+const MarbleStripe kStripes[6] = {{8.0f, 1.2f, 0.9f},  {17.0f, 2.5f, 0.6f}, {26.0f, 0.8f, 1.5f},
+                                  {35.0f, 3.5f, 0.5f}, {46.0f, 1.5f, 0.8f}, {55.0f, 2.0f, 0.7f}};
+
+namespace {
+double g_build_seconds = 0.0;
+const Vec3 kLight = normalize(Vec3{0.3f, 0.8f, 0.55f});  // from the upper front, slightly right
+}  // namespace
+
+const FractalLattice& shared_lattice() {
+    static FractalLattice lattice;
+    if (lattice.empty()) {
+        FractalParams p;
+        p.R = 6;
+        p.beta = kBeta;
+        p.seed = kSeed;
+        auto t0 = std::chrono::steady_clock::now();
+        Status s = lattice.build(p);
+        g_build_seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        SHITSUKAN_ASSERT(s.ok());  // fixed, valid parameters: a failure is a bug
+    }
+    return lattice;
+}
+
+double shared_lattice_build_seconds() {
+    (void)shared_lattice();
+    return g_build_seconds;
+}
+
+void record_lattice(figures::FigureContext& ctx) {
+    ctx.given("lattice", "65^3 (R = 6), one lattice for every figure",
+              "okada1987 §4.4, okada1989 §4-4");
+    ctx.given("noise g", "N(0, 1), amplitude exp(-(n-1)·beta)", "okada1987 eqs. (1)-(5)");
+    ctx.given("lattice type", "Type I (the whole 65^3 array in memory)", "okada1989 §4-4");
+    ctx.chosen("beta", fmt("%g", double(kBeta)),
+               "not printed; finest level at e^-4.5 = 1 % of the first: smooth folds at k = 16 "
+               "(0.5 broke the k = 16 marble into fine noise)");
+    ctx.chosen("seed", fmt("%u (coordinate hash, Types I/II/III agree)", kSeed),
+               "any seed; hash noise so okada1989's three types give the same lattice");
+    ctx.chosen("corner values", "0 (all eight)", "not given; D then has mean 0 everywhere");
+    ctx.chosen("object -> lattice", "(32 + 30x, 32 - 30z, 32 + 30y), object in [-1, 1]^3, y up",
+               "objects fill [2, 62]^3 of the lattice; texture z = object up");
+    ctx.chosen("texture units", "one lattice spacing: P, c_j, w_j, r and the shift k·D(P)",
+               "the paper does not say in which unit k applies; in lattice units k = 16 folds "
+               "the layers and k = 1.6 bends rings 5.2 units apart");
+}
+
+void record_material(figures::FigureContext& ctx, Material m, float k) {
+    if (m == Material::marble_single) {
+        ctx.given("k", fmt("%g", double(k)), "okada1989 §4-4 (marble 16)");
+        ctx.given("G", "one trapezoid with exponential skirts, u = (0, 0, 1)",
+                  "okada1989 eqs. (8), (9)");
+        ctx.chosen("stripe (lattice units)",
+                   fmt("c %g, w %g, alpha %g", double(kSingleStripe.c), double(kSingleStripe.w),
+                       double(kSingleStripe.alpha)),
+                   "not given; one layer through the middle of the object");
+        ctx.chosen("G'", "1 - min(G, 1)", "as okada1987: I_max = limestone, I_min = impurity");
+        ctx.chosen("I_max (limestone)", "(238, 234, 226)", "warm white");
+        ctx.chosen("I_min (impurity)", "(62, 74, 80)", "dark grey-green");
+    } else if (m == Material::marble) {
+        ctx.given("k", fmt("%g", double(k)), "okada1987 §4.4 (marble 16; fig. 12a 0..30)");
+        ctx.given("G", "sum of trapezoids with exponential skirts, u = (0, 0, 1)",
+                  "okada1987 eqs. (8), (9)");
+        std::string s;
+        for (int j = 0; j < kStripeCount; ++j)
+            s += fmt("%s(c %g, w %g, alpha %g)", j ? ", " : "", double(kStripes[j].c),
+                     double(kStripes[j].w), double(kStripes[j].alpha));
+        ctx.chosen("stripes (lattice units)", s, "not given; uneven layers, sharp and soft skirts");
+        ctx.chosen("G'", "1 - min(G, 1)",
+                   "eq. (12): I_max = limestone, I_min = impurity, and G = 1 inside a layer");
+        ctx.chosen("I_max (limestone)", "(238, 234, 226)", "warm white");
+        ctx.chosen("I_min (impurity)", "(62, 74, 80)", "dark grey-green veins");
+    } else {
+        ctx.given("k", fmt("%g", double(k)), "okada1987 §4.4 (wood 1.6; fig. 12b 0..6)");
+        ctx.given("G", "sin(k2·r), radial u (eq. 11)", "okada1987 eqs. (10), (11)");
+        ctx.chosen("k2", fmt("%g (rings every %.1f lattice units)", double(kWoodK2),
+                             2.0 * 3.14159265 / double(kWoodK2)),
+                   "not given; about 10 rings across an object");
+        ctx.chosen("axis (x0, y0)",
+                   fmt("(%g, %g) lattice", double(kWoodAxis.x), double(kWoodAxis.y)),
+                   "off the objects' centre, as a board cut beside the pith");
+        ctx.chosen("G'", "(sin + 1)/2", "sin lies in [-1, 1], eq. (12) needs [0, 1]; linear map");
+        ctx.chosen("r = 0", "u = 0 (no shift)", "radial direction undefined on the axis");
+        ctx.chosen("I_max (winter wood)", "(128, 72, 34)", "dark late wood");
+        ctx.chosen("I_min (summer wood)", "(226, 184, 128)", "light early wood");
+    }
+    ctx.chosen("shading", "colour·(0.3 + 0.7·max(0, n·l)), l = (0.3, 0.8, 0.55) normalised",
+               "the paper does not describe its shading");
+}
+
+void record_camera(figures::FigureContext& ctx, const std::string& description) {
+    ctx.chosen("camera", description, "not given; three faces / the cut visible");
+}
+
+float density(Material m, float k, Vec3 lp) {
+    const float d = turbulence(shared_lattice().view(), lp);  // D(P), eq. (6)
+    if (m == Material::marble || m == Material::marble_single) {
+        const MarbleParams params = m == Material::marble ? MarbleParams{kStripes, kStripeCount, k}
+                                                          : MarbleParams{&kSingleStripe, 1, k};
+        const float g = marble_texture(lp, d, params);  // G(P + k·D(P)·(0, 0, 1))
+        return 1.0f - (g < 1.0f ? g : 1.0f);
+    }
+    WoodParams w;
+    w.x0 = kWoodAxis.x;
+    w.y0 = kWoodAxis.y;
+    w.k2 = kWoodK2;
+    w.k = k;
+    return wood_unit_range(wood_texture(lp, d, w));  // (sin(k2·r') + 1)/2
+}
+
+Vec3 material_color(Material m, float g) {
+    return m != Material::wood ? lookup_color(g, kMarbleImpurity, kMarbleLimestone)
+                                 : lookup_color(g, kWoodSummer, kWoodWinter);
+}
+
+void add_piece(Scene* scene, const TriangleMesh& mesh, const Mat4& model) {
+    Piece p;
+    p.mesh = mesh;
+    p.model = model;
+    scene->pieces.push_back(std::move(p));
+}
+
+namespace {
+
+struct SolidShader {
+    Material material;
+    float k;
+    Rgb8 operator()(const Fragment& f) const {
+        const Vec3 lp = object_to_lattice(f.object_position);
+        const Vec3 c = material_color(material, density(material, k, lp));
+        Vec3 n = f.normal;
+        if (!f.front_facing) n = -n;
+        const float lambert = std::fmax(0.0f, dot(n, kLight));
+        const float light = 0.3f + 0.7f * lambert;
+        auto to8 = [](float v) {
+            return std::uint8_t(v <= 0.0f ? 0 : (v >= 255.0f ? 255 : int(v + 0.5f)));
+        };
+        return Rgb8{to8(c.x * light), to8(c.y * light), to8(c.z * light)};
+    }
+};
+
+// Uniform scale and shift so the mesh's bounding box is centred in [-extent, extent]^3.
+void fit_to_cube(TriangleMesh* m, float extent) {
+    Vec3 lo{1e30f, 1e30f, 1e30f}, hi{-1e30f, -1e30f, -1e30f};
+    for (const Vec3& p : m->positions) lo = vmin(lo, p), hi = vmax(hi, p);
+    const Vec3 size = hi - lo, mid = (lo + hi) * 0.5f;
+    const float s = 2.0f * extent / std::fmax(size.x, std::fmax(size.y, size.z));
+    for (Vec3& p : m->positions) p = (p - mid) * s;
+}
+
+// A Catmull-Rom profile (r, y) through the control points, in double (okada1987 §4.4: the
+// spline is the one computation in 8-byte reals).
+Status spline_profile(const Vec2d* control, int count, int samples, std::vector<Vec2d>* out) {
+    return sample_spline(control, count, samples, out);
+}
+
+}  // namespace
+
+Status render_scene(const Scene& scene, Material m, float k, int size, RgbImage* out) {
+    out->resize(size, size, kBackground);
+    FloatImage depth(size, size);
+    const FrameBand band = full_frame_band(out->view(), depth.view());
+    clear_band(band, kBackground);
+    const Camera camera = perspective_camera(scene.eye, scene.target, Vec3{0, 1, 0},
+                                             scene.fov_degrees, size, size);
+    SolidShader shader{m, k};
+    for (const Piece& piece : scene.pieces) {
+        DrawOptions opt;
+        opt.model = piece.model;
+        opt.cull = CullMode::back;
+        SHITSUKAN_TRY(draw_mesh(camera, band, piece.mesh.view(), opt, shader));
+    }
+    return Status::success();
+}
+
+std::string scene_camera_text(const Scene& s) {
+    return fmt("perspective, eye (%g, %g, %g), target (%g, %g, %g), fov %g deg", double(s.eye.x),
+               double(s.eye.y), double(s.eye.z), double(s.target.x), double(s.target.y),
+               double(s.target.z), double(s.fov_degrees));
+}
+
+Status build_scene(const std::string& name, bool quick, Scene* out) {
+    *out = Scene();
+    const int seg = quick ? 32 : 96;  // revolution / sphere resolution
+    TriangleMesh mesh;
+    if (name == "cube") {
+        SHITSUKAN_TRY(make_box({-0.9f, -0.9f, -0.9f}, {0.9f, 0.9f, 0.9f}, &mesh));
+        add_piece(out, mesh);
+        out->eye = {3.6f, 3.0f, 4.6f};
+    } else if (name == "slices") {
+        // The cube cut into five slabs across x, spread apart: each slab keeps its object
+        // coordinates (the texture) and is only moved by its model matrix.
+        const float x0 = -0.9f, thickness = 0.3f, pitch = 0.375f, spread = 0.32f;
+        for (int i = 0; i < 5; ++i) {
+            float a = x0 + pitch * float(i);
+            SHITSUKAN_TRY(make_box({a, -0.9f, -0.9f}, {a + thickness, 0.9f, 0.9f}, &mesh));
+            add_piece(out, mesh, Mat4::translate({spread * (float(i) - 2.0f), 0.0f, 0.0f}));
+        }
+        out->eye = {5.2f, 3.2f, 5.2f};
+    } else if (name == "cut_sphere") {
+        SHITSUKAN_TRY(make_sphere_without_octant(0.9f, quick ? 12 : 40, &mesh));
+        add_piece(out, mesh);
+        out->eye = {2.7f, 2.3f, 3.1f};
+    } else if (name == "pot") {
+        const Vec2d control[] = {{0.0, -1.0},  {0.50, -1.0}, {0.78, -0.7}, {0.92, -0.25},
+                                 {0.80, 0.20}, {0.50, 0.55}, {0.40, 0.80}, {0.50, 1.0}};
+        std::vector<Vec2d> profile;
+        SHITSUKAN_TRY(spline_profile(control, 8, quick ? 6 : 16, &profile));
+        // The lip and the inside: step in by the wall thickness and go down into the pot.
+        profile.push_back({0.42, 1.0});
+        profile.push_back({0.32, 0.80});
+        profile.push_back({0.40, 0.55});
+        profile.push_back({0.0, 0.45});
+        SHITSUKAN_TRY(make_revolution(profile.data(), int(profile.size()), seg, &mesh));
+        fit_to_cube(&mesh, 0.92f);
+        add_piece(out, mesh);
+        out->eye = {3.4f, 3.4f, 4.6f};
+    } else if (name == "nagoya") {
+        SHITSUKAN_TRY(make_block_text("NAGOYA", 1.0f, 0.45f, &mesh));
+        fit_to_cube(&mesh, 0.95f);
+        add_piece(out, mesh);
+        out->eye = {0.0f, 1.0f, 2.6f};
+        out->fov_degrees = 42.0f;
+    } else if (name == "cup") {
+        const Vec2d profile[] = {{0.0, -0.9},  {0.52, -0.9}, {0.58, -0.84}, {0.62, 0.2},
+                                 {0.66, 0.88}, {0.66, 0.92}, {0.60, 0.92},  {0.56, 0.2},
+                                 {0.50, -0.78}, {0.0, -0.78}};
+        SHITSUKAN_TRY(make_revolution(profile, 10, seg, &mesh));
+        TriangleMesh handle;
+        SHITSUKAN_TRY(make_torus(0.3f, 0.07f, seg / 2, quick ? 8 : 24, &handle));
+        // The handle: a ring in the xy plane, its inner half hidden in the wall.
+        append(&mesh, handle, Mat4::translate({0.66f, 0.05f, 0.0f}) * Mat4::rotate_x(1.5707963f));
+        fit_to_cube(&mesh, 0.92f);
+        add_piece(out, mesh);
+        out->eye = {1.9f, 2.4f, 4.2f};
+    } else if (name == "ashtray") {
+        const Vec2d profile[] = {{0.0, -0.3},  {0.90, -0.3}, {0.98, -0.22}, {1.0, 0.05},
+                                 {0.96, 0.12}, {0.74, 0.12}, {0.66, 0.02},  {0.58, -0.14},
+                                 {0.0, -0.14}};
+        SHITSUKAN_TRY(make_revolution(profile, 9, seg, &mesh));
+        fit_to_cube(&mesh, 0.92f);
+        add_piece(out, mesh);
+        out->eye = {1.5f, 2.5f, 2.7f};
+    } else if (name == "torus") {
+        SHITSUKAN_TRY(make_torus(0.64f, 0.28f, seg, quick ? 16 : 48, &mesh));
+        fit_to_cube(&mesh, 0.92f);
+        add_piece(out, mesh);
+        out->eye = {1.6f, 2.5f, 2.8f};
+    } else {
+        return Status::error(StatusCode::invalid_argument, "okada: unknown scene %s", name.c_str());
+    }
+    return Status::success();
+}
+
+Status object_figure(figures::FigureContext& ctx, const std::string& scene_name, Material m) {
+    const float k = m == Material::wood ? kWoodK : kMarbleK;
+    Scene scene;
+    SHITSUKAN_TRY(build_scene(scene_name, ctx.quick(), &scene));
+    record_lattice(ctx);
+    record_material(ctx, m, k);
+    record_camera(ctx, scene_camera_text(scene));
+    ctx.given("image", "512 x 512, RGB 8 bit",
+              ctx.paper() == "okada1989" ? "okada1989 §4-4" : "okada1987 §4.4");
+    RgbImage img;
+    SHITSUKAN_TRY(render_scene(scene, m, k, ctx.quick() ? 128 : 512, &img));
+    return ctx.save_png(img.view());
+}
+
+}  // namespace shitsukan::okada

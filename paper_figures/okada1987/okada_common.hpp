@@ -1,0 +1,107 @@
+// paper_figures/okada1987/okada_common.hpp — what every okada1987 / okada1989 figure shares:
+// the one 65^3 lattice, the chosen stripes, colours, camera and object -> lattice mapping,
+// and the solid-texture shader run by the rasterizer.
+//
+// Manual
+//   const FractalLattice& lattice = okada::shared_lattice();   // built once per process
+//   okada::record_lattice(ctx);  okada::record_material(ctx, okada::Material::marble, 16.0f);
+//   okada::Scene scene;  okada::add_piece(&scene, mesh);       // meshes in [-1, 1]^3
+//   RgbImage img;  okada::render_scene(scene, okada::Material::wood, 1.6f, 512, &img);
+//
+// Every value the papers leave open is chosen here, once (DESIGN.md: given vs. chosen):
+//   lattice    R = 6 (given), beta = kBeta, seed = kSeed, corners 0, hash noise (so the
+//              Type I array equals Types II/III, okada1989 Table "types").
+//   mapping    object space [-1, 1]^3 (y up) -> lattice (32 + 30x, 32 - 30z, 32 + 30y): the
+//              texture's z axis (marble's layer normal, wood's axis) is the object's up
+//              axis, the objects fill [2, 62]^3 of [0, 64]^3, so D(P) never leaves the
+//              lattice (even the wood's displaced point is not looked up again). All texture
+//              lengths (P, c_j, w_j, r, the shift k·D) are in lattice spacings.
+//   marble     six stripes (kStripes, lattice units), G' = 1 - min(G, 1) so that G' = 1
+//              (I_max) is limestone and the stripes take the impurity colour I_min.
+//   okada1989  one stripe kSingleStripe (c 32, w 3, alpha 0.5), same G' and colours.
+//   wood       axis through lattice (x0, y0) = kWoodAxis, k2 = kWoodK2 (rings every
+//              2·pi/k2 = 5.2 lattice units), G' = (sin + 1)/2; I_max winter (late) wood.
+//   shading    Lambert, light from the upper front (slightly right), 0.3 + 0.7·max(0, n·l).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "driver/figure.hpp"
+#include "shitsukan/core/vec.hpp"
+#include "shitsukan/geom/mesh.hpp"
+#include "shitsukan/image/image.hpp"
+#include "shitsukan/raster/camera.hpp"
+#include "shitsukan/solid/solid.hpp"
+
+namespace shitsukan::okada {
+
+// marble: okada1987's sum of stripes (eq. (8)); marble_single: okada1989's single stripe
+// (its eq. (8)); wood: the radial sine of both papers (eq. (10)).
+enum class Material { marble, marble_single, wood };
+
+constexpr float kBeta = 0.9f;
+constexpr std::uint32_t kSeed = 1987u;
+constexpr float kMarbleK = 16.0f;  // okada1987 §4.4
+constexpr float kWoodK = 1.6f;     // okada1987 §4.4
+constexpr float kLatticeCentre = 32.0f;
+constexpr float kLatticeScale = 30.0f;
+constexpr float kWoodK2 = 1.2f;
+const Vec2 kWoodAxis{6.0f, 14.0f};
+extern const MarbleStripe kStripes[6];
+const MarbleStripe kSingleStripe{32.0f, 3.0f, 0.5f};  // okada1989: one layer through the middle
+constexpr int kStripeCount = 6;
+const Vec3 kMarbleLimestone{238.0f, 234.0f, 226.0f};  // I_max
+const Vec3 kMarbleImpurity{62.0f, 74.0f, 80.0f};      // I_min
+const Vec3 kWoodWinter{128.0f, 72.0f, 34.0f};         // I_max (late wood, dark)
+const Vec3 kWoodSummer{226.0f, 184.0f, 128.0f};       // I_min (early wood, light)
+const Rgb8 kBackground{24, 26, 32};
+
+// The one lattice of every figure (okada1987 §4.4: "the same fractal lattice for all").
+const FractalLattice& shared_lattice();
+double shared_lattice_build_seconds();  // wall time of the one build in this process
+
+void record_lattice(figures::FigureContext& ctx);
+void record_material(figures::FigureContext& ctx, Material m, float k);
+void record_camera(figures::FigureContext& ctx, const std::string& description);
+
+// Object space -> lattice coordinates (see the top of this file).
+inline Vec3 object_to_lattice(Vec3 p) {
+    return Vec3{kLatticeCentre + kLatticeScale * p.x, kLatticeCentre - kLatticeScale * p.z,
+                kLatticeCentre + kLatticeScale * p.y};
+}
+
+// The texture density G' in [0, 1] at a lattice point (pixel shift + eq. (12)'s input).
+float density(Material m, float k, Vec3 lattice_point);
+// Density -> colour by eq. (12) with the material's I_min / I_max.
+Vec3 material_color(Material m, float density);
+
+struct Piece {
+    TriangleMesh mesh;
+    Mat4 model = Mat4::identity();  // object -> world; the texture uses object space
+};
+
+struct Scene {
+    std::vector<Piece> pieces;
+    Vec3 eye{3.4f, 2.6f, 4.2f};
+    Vec3 target{0.0f, 0.0f, 0.0f};
+    float fov_degrees = 30.0f;
+};
+
+void add_piece(Scene* scene, const TriangleMesh& mesh, const Mat4& model = Mat4::identity());
+
+// Renders the scene into a size x size image with the solid texture.
+Status render_scene(const Scene& scene, Material m, float k, int size, RgbImage* out);
+
+// The okada1987 objects (object space inside [-1, 1]^3): "cube", "slices", "cut_sphere",
+// "pot", "nagoya"; okada1989: "cup", "ashtray", "torus". Returns the scene with its camera.
+Status build_scene(const std::string& name, bool quick, Scene* out);
+std::string scene_camera_text(const Scene& scene);
+
+// fig. 12: a 4 x 4 grid of cubes with k = k_step·i, i = 0..15, labelled, (4·tile)^2 pixels.
+Status render_k_grid(Material m, float k_step, int tile, RgbImage* out);
+
+// Renders and saves one object figure (fig10..15, okada1989 fig08..10), recording all values.
+Status object_figure(figures::FigureContext& ctx, const std::string& scene_name, Material m);
+
+}  // namespace shitsukan::okada

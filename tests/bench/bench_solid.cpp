@@ -1,0 +1,152 @@
+// bench_solid — okada's fractal turbulence D(P) against the usual peers, same points, same run:
+// stb_perlin fbm (6 octaves) and libnoise Perlin (6 octaves).
+#define STB_PERLIN_IMPLEMENTATION
+#include <stb/stb_perlin.h>
+
+#include <libnoise/noise.h>
+
+#include <string>
+#include <vector>
+
+#include "bench.hpp"
+#include "shitsukan/core/prng.hpp"
+#include "shitsukan/solid/solid.hpp"
+
+using namespace shitsukan;
+
+namespace {
+
+const FractalLattice& bench_lattice() {
+    static FractalLattice lattice;
+    if (lattice.empty()) (void)lattice.build(FractalParams());
+    return lattice;
+}
+
+// Scattered points inside the 65^3 lattice (lattice units). The peers see the same points
+// divided by 8 (a frequency where their octaves are busy; the cost does not depend on it).
+std::vector<Vec3> scattered_points(int n) {
+    Pcg32 rng(7u, 3u);
+    std::vector<Vec3> pts(static_cast<std::size_t>(n));
+    for (Vec3& p : pts)
+        p = Vec3{rng.uniform(0.0f, 64.0f), rng.uniform(0.0f, 64.0f), rng.uniform(0.0f, 64.0f)};
+    return pts;
+}
+
+// A 512 x 512 raster slice through the lattice: pixel (x, y) -> (x/8, y/8, 32.3).
+std::vector<Vec3> slice_points() {
+    std::vector<Vec3> pts;
+    pts.reserve(512 * 512);
+    for (int y = 0; y < 512; ++y)
+        for (int x = 0; x < 512; ++x)
+            pts.push_back(Vec3{(float(x) + 0.5f) / 8.0f, (float(y) + 0.5f) / 8.0f, 32.3f});
+    return pts;
+}
+
+float stb_fbm(Vec3 p) { return stb_perlin_fbm_noise3(p.x / 8, p.y / 8, p.z / 8, 2.0f, 0.5f, 6); }
+
+}  // namespace
+
+SHITSUKAN_BENCH(solid_type1_sample) {
+    const LatticeView v = bench_lattice().view();
+    const std::vector<Vec3> pts = scattered_points(4096);
+    noise::module::Perlin perlin;
+    perlin.SetOctaveCount(6);
+    const double n = double(pts.size());
+    double ours = bench::ns_per_op([&] {
+        float s = 0;
+        for (const Vec3& p : pts) s += turbulence(v, p);
+        bench::sink(s);
+    }) / n;
+    double stb = bench::ns_per_op([&] {
+        float s = 0;
+        for (const Vec3& p : pts) s += stb_fbm(p);
+        bench::sink(s);
+    }) / n;
+    double libnoise = bench::ns_per_op([&] {
+        double s = 0;
+        for (const Vec3& p : pts) s += perlin.GetValue(p.x / 8, p.y / 8, p.z / 8);
+        bench::sink(s);
+    }) / n;
+    bench::report("D(P) Type I per sample, scattered points (goal ratio >= 15)", ours,
+                  "stb_perlin fbm-6", stb);
+    bench::report("D(P) Type I per sample, scattered points", ours, "libnoise Perlin-6", libnoise);
+}
+
+SHITSUKAN_BENCH(solid_type3_slice) {
+    const std::vector<Vec3> pts = slice_points();
+    FractalParams params;
+    TypeIIILattice t3;
+    (void)t3.init(params);
+    noise::module::Perlin perlin;
+    perlin.SetOctaveCount(6);
+    const double n = double(pts.size());
+    double ours = bench::ns_per_op([&] {
+        float s = 0;
+        for (const Vec3& p : pts) s += t3.turbulence(p);
+        bench::sink(s);
+    }) / n;
+    double stb = bench::ns_per_op([&] {
+        float s = 0;
+        for (const Vec3& p : pts) s += stb_fbm(p);
+        bench::sink(s);
+    }) / n;
+    double libnoise = bench::ns_per_op([&] {
+        double s = 0;
+        for (const Vec3& p : pts) s += perlin.GetValue(p.x / 8, p.y / 8, p.z / 8);
+        bench::sink(s);
+    }) / n;
+    const LatticeView v = bench_lattice().view();
+    double type1 = bench::ns_per_op([&] {
+        float s = 0;
+        for (const Vec3& p : pts) s += turbulence(v, p);
+        bench::sink(s);
+    }) / n;
+    bench::report("D(P) Type I per sample, 512x512 slice", type1, "stb_perlin fbm-6", stb);
+    bench::report("D(P) Type III per sample, 512x512 slice (goal ratio >= 1)", ours,
+                  "stb_perlin fbm-6", stb);
+    bench::report("D(P) Type III per sample, 512x512 slice", ours, "libnoise Perlin-6", libnoise);
+    FractalParams deep;
+    deep.R = 20;
+    TypeIIILattice t20;
+    (void)t20.init(deep);
+    double ours20 = bench::ns_per_op([&] {
+        float s = 0;
+        // The same slice, 1/8 cell per pixel, deep inside the 1,048,577^3 lattice.
+        for (const Vec3& p : pts) s += t20.turbulence(p + Vec3{300000.0f, 200000.0f, 400000.0f});
+        bench::sink(s);
+    }) / n;
+    bench::report("D(P) Type III R = 20 per sample, 512x512 slice", ours20, "stb_perlin fbm-6",
+                  stb);
+}
+
+SHITSUKAN_BENCH(solid_lattice_build) {
+    FractalParams params;
+    std::vector<float> values(65 * 65 * 65);
+    LatticeView v;
+    double build = bench::ns_per_op([&] {
+        (void)build_fractal_lattice(params, values.data(), values.size() * sizeof(float), &v);
+        bench::sink(values[1000]);
+    });
+    double draws = bench::ns_per_op([&] {
+        Pcg32 rng(params.seed, 0u);
+        float s = 0;
+        for (int i = 0; i < 65 * 65 * 65 - 8; ++i) s += rng.gaussian();
+        bench::sink(s);
+    });
+    bench::report("65^3 lattice build, whole (goal ratio >= 0.5)", build,
+                  "274617 Pcg32 Gaussians", draws);
+}
+
+SHITSUKAN_BENCH(solid_type3_memory) {
+    for (int R : {6, 20}) {
+        FractalParams p;
+        p.R = R;
+        TypeIIILattice t3;
+        (void)t3.init(p);
+        bench::info("Type III memory R = " + std::to_string(R),
+                    "ancestry " + std::to_string(t3.ancestry_bytes()) + " bytes, whole object " +
+                        std::to_string(TypeIIILattice::object_bytes()) +
+                        " bytes (fixed, no allocation); Type I would need " +
+                        std::to_string(lattice_bytes(R)) + " bytes");
+    }
+}

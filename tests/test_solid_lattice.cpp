@@ -1,0 +1,289 @@
+// Tests for lib/shitsukan/solid: fractal_lattice (Type I), lattice_type2, lattice_type3,
+// fractal_node, fractal_params, quadtree_lattice.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "shitsukan/solid/solid.hpp"
+
+using namespace shitsukan;
+
+namespace {
+
+std::vector<float> build_type1(const FractalParams& p, LatticeView* view, int levels = -1) {
+    std::vector<float> values(std::size_t(lattice_bytes(p.R) / sizeof(float)));
+    Status s = build_fractal_lattice(p, values.data(), values.size() * sizeof(float), view, levels);
+    REQUIRE_MESSAGE(s.ok(), s.message());
+    return values;
+}
+
+bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// value minus the mean of its parents (eqs. (1)-(4) with g = 0): the correction eps^(n), eq. (5)
+float correction(const LatticeView& v, int x, int y, int z, int* level) {
+    NodeClass c = classify_node(v.R, x, y, z);
+    *level = c.level;
+    const int h = c.half;
+    auto at = [&](int ax, int sign) {
+        return v.at(x + (ax == 0 ? sign * h : 0), y + (ax == 1 ? sign * h : 0),
+                    z + (ax == 2 ? sign * h : 0));
+    };
+    float mean;
+    if (c.odd_count == 1) {
+        int ax = c.odd_axes == 1 ? 0 : (c.odd_axes == 2 ? 1 : 2);
+        mean = edge_midpoint(at(ax, -1), at(ax, +1), 0.0f);
+    } else if (c.odd_count == 2) {
+        int a = (c.odd_axes & 1) ? 0 : 1, b = (c.odd_axes & 4) ? 2 : 1;
+        const float e[4] = {at(a, -1), at(a, +1), at(b, -1), at(b, +1)};
+        mean = face_centre(e, 0.0f);
+    } else {
+        const float f[6] = {at(0, -1), at(0, +1), at(1, -1), at(1, +1), at(2, -1), at(2, +1)};
+        mean = cube_centre(f, 0.0f);
+    }
+    return v.at(x, y, z) - mean;
+}
+
+struct Moments {
+    double n = 0, sum = 0, sum2 = 0;
+    void add(double x) { n += 1, sum += x, sum2 += x * x; }
+    double mean() const { return sum / n; }
+    double sd() const { return std::sqrt(sum2 / n - mean() * mean()); }
+};
+
+}  // namespace
+
+TEST_CASE("lattice side is 2^R + 1 and the node classes follow eqs. (1)-(4)") {
+    CHECK(lattice_side(6) == 65);
+    CHECK(lattice_bytes(6) == 65ull * 65 * 65 * 4);
+    CHECK(classify_node(6, 0, 64, 0).level == 0);
+    NodeClass e = classify_node(6, 32, 0, 64);  // level 1 edge midpoint along x
+    CHECK(e.level == 1);
+    CHECK(e.half == 32);
+    CHECK(e.odd_count == 1);
+    CHECK(classify_node(6, 32, 32, 0).odd_count == 2);
+    CHECK(classify_node(6, 32, 32, 32).odd_count == 3);
+    NodeClass fine = classify_node(6, 3, 8, 12);
+    CHECK(fine.level == 6);
+    CHECK(fine.odd_axes == 1);
+    CHECK(level_amplitude(1, 0.5f) == 1.0f);
+    CHECK(level_amplitude(3, 0.5f) == doctest::Approx(std::exp(-1.0)).epsilon(1e-6));
+}
+
+TEST_CASE("Types I, II and III give the same float at all 65^3 nodes (hash noise)") {
+    FractalParams p;  // R = 6, beta 0.5, seed 1987
+    p.corners[3] = 0.75f;
+    p.corners[6] = -1.25f;
+    LatticeView v;
+    std::vector<float> values = build_type1(p, &v);
+    TypeIILattice t2;
+    REQUIRE(t2.init(p).ok());
+    TypeIIILattice t3;
+    REQUIRE(t3.init(p).ok());
+    long mismatches2 = 0, mismatches3 = 0;
+    for (int z = 0; z <= 64; ++z)
+        for (int y = 0; y <= 64; ++y)
+            for (int x = 0; x <= 64; ++x) {
+                float a = v.at(x, y, z);
+                if (!same_bits(a, t2.node_value(x, y, z))) ++mismatches2;
+                if (!same_bits(a, t3.node_value(x, y, z))) ++mismatches3;
+            }
+    CHECK(mismatches2 == 0);
+    CHECK(mismatches3 == 0);
+    CHECK(t2.list_size() == std::size_t(65 * 65 * 65 - 8));
+    // Type III in an incoherent order (reversed, strided) still agrees.
+    long mismatches3b = 0;
+    for (int i = 0; i < 20000; ++i) {
+        int x = (i * 37) % 65, y = (i * 11 + 5) % 65, z = 64 - (i % 65);
+        if (!same_bits(v.at(x, y, z), t3.node_value(x, y, z))) ++mismatches3b;
+    }
+    CHECK(mismatches3b == 0);
+    // D(P) away from the nodes agrees too (same trilinear code on the same corners).
+    for (int i = 0; i < 500; ++i) {
+        Vec3 q{float(i % 64) + 0.37f, float((i * 7) % 64) + 0.81f, float((i * 13) % 64) + 0.05f};
+        float a = turbulence(v, q);
+        CHECK(same_bits(a, t3.turbulence(q)));
+        CHECK(same_bits(a, t2.turbulence(q)));
+    }
+}
+
+TEST_CASE("corrections at each level have mean 0 and sd exp(-(n-1) beta) (eq. (5))") {
+    const float beta = 0.5f;
+    // Fine levels 5..6 from one 65^3 lattice; coarse levels 1..4 pooled over 400 seeds of
+    // R = 4 lattices (a level-1 cube has only 19 new nodes).
+    Moments m[7];
+    {
+        FractalParams p;
+        p.beta = beta;
+        LatticeView v;
+        std::vector<float> values = build_type1(p, &v);
+        for (int z = 0; z <= 64; ++z)
+            for (int y = 0; y <= 64; ++y)
+                for (int x = 0; x <= 64; ++x) {
+                    int level;
+                    if (classify_node(6, x, y, z).level < 5) continue;
+                    float c = correction(v, x, y, z, &level);
+                    m[level].add(c / level_amplitude(level, beta));
+                }
+    }
+    for (std::uint32_t seed = 1; seed <= 400; ++seed) {
+        FractalParams p;
+        p.R = 4;
+        p.beta = beta;
+        p.seed = seed;
+        LatticeView v;
+        std::vector<float> values = build_type1(p, &v);
+        for (int z = 0; z <= 16; ++z)
+            for (int y = 0; y <= 16; ++y)
+                for (int x = 0; x <= 16; ++x) {
+                    int level;
+                    if (classify_node(4, x, y, z).level == 0) continue;
+                    float c = correction(v, x, y, z, &level);
+                    m[level].add(c / level_amplitude(level, beta));
+                }
+    }
+    for (int n = 1; n <= 6; ++n) {
+        INFO("level " << n << ": samples " << m[n].n << " mean " << m[n].mean() << " sd "
+                      << m[n].sd());
+        REQUIRE(m[n].n > 5000);
+        // Tolerances: 5 standard errors of the mean (1/sqrt(N)) and of the sd (1/sqrt(2N)).
+        CHECK(std::fabs(m[n].mean()) < 5.0 / std::sqrt(m[n].n));
+        CHECK(std::fabs(m[n].sd() - 1.0) < 5.0 / std::sqrt(2.0 * m[n].n));
+    }
+}
+
+TEST_CASE("partial builds and the sequential noise source") {
+    FractalParams p;
+    LatticeView v;
+    std::vector<float> values = build_type1(p, &v, 2);
+    CHECK(std::isfinite(v.at(16, 48, 32)));  // spacing 16 grid: level <= 2
+    CHECK(std::isnan(v.at(8, 0, 0)));        // level 3: not built yet
+    std::vector<float> full = build_type1(p, &v);
+    CHECK(same_bits(values[std::size_t(32 * 65 * 65 + 16 * 65 + 48)],
+                    full[std::size_t(32 * 65 * 65 + 16 * 65 + 48)]));
+
+    FractalParams q = p;
+    q.noise = NoiseSource::sequential;
+    LatticeView vs;
+    std::vector<float> seq = build_type1(q, &vs);
+    CHECK(!same_bits(vs.at(32, 32, 32), v.at(32, 32, 32)));
+    // Type II with a sequential stream: the values depend on the order of the queries.
+    TypeIILattice a, b;
+    REQUIRE(a.init(q).ok());
+    REQUIRE(b.init(q).ok());
+    float a1 = a.node_value(5, 9, 17);
+    (void)b.node_value(40, 3, 60);
+    float b1 = b.node_value(5, 9, 17);
+    CHECK(!same_bits(a1, b1));
+    TypeIIILattice t3;
+    CHECK(t3.init(q).code() == StatusCode::not_supported);
+}
+
+TEST_CASE("Type III works at R = 20 in O(R) memory and agrees with Type II there") {
+    FractalParams p;
+    p.R = 20;
+    TypeIIILattice t3;
+    REQUIRE(t3.init(p).ok());
+    TypeIILattice t2;
+    REQUIRE(t2.init(p).ok());
+    // 25 levels of 27 floats (O(R)) plus the fixed 64-block row cache, no allocation
+    CHECK(TypeIIILattice::object_bytes() < 4096 + 64 * 120);
+    CHECK(t3.ancestry_bytes() == 20 * (12 + 27 * 4));
+    const std::int32_t last = 1 << 20;
+    const std::int32_t probes[5][3] = {{0, 0, 0}, {last, 17, 123457}, {524288, 524288, 524288},
+                                       {999999, 3, 77}, {1, last - 1, 262145}};
+    for (auto& q : probes) {
+        float a = t3.node_value(q[0], q[1], q[2]);
+        CHECK(same_bits(a, t2.node_value(q[0], q[1], q[2])));
+    }
+    // A coherent scan along x recomputes about one subdivision per cell crossed.
+    long before = t3.subdivisions();
+    float prev = t3.turbulence(Vec3{1000.0f, 5000.0f, 7000.0f});
+    float max_step = 0;
+    for (int i = 1; i <= 4000; ++i) {
+        float d = t3.turbulence(Vec3{1000.0f + 0.25f * float(i), 5000.0f, 7000.0f});
+        max_step = std::fmax(max_step, std::fabs(d - prev));
+        prev = d;
+    }
+    long per_cell = (t3.subdivisions() - before) / 1000;
+    CHECK(per_cell <= 3);
+    CHECK(max_step < 0.05f);  // continuous: level-20 amplitude is e^-9.5 ~ 7.5e-5 per cell
+    float out;
+    CHECK(t3.node_value_checked(0, last + 1, 0, &out).code() == StatusCode::out_of_range);
+    CHECK(t3.turbulence_checked(Vec3{-1.0f, 0.0f, 0.0f}, &out).code() == StatusCode::out_of_range);
+}
+
+TEST_CASE("bad lattice parameters get a clear status") {
+    FractalParams p;
+    p.R = -1;
+    std::vector<float> buf(65 * 65 * 65);
+    LatticeView v;
+    Status s = build_fractal_lattice(p, buf.data(), buf.size() * 4, &v);
+    CHECK(s.code() == StatusCode::invalid_argument);
+    CHECK(std::string(s.message()).find("got -1") != std::string::npos);
+    p.R = 11;
+    CHECK(build_fractal_lattice(p, buf.data(), buf.size() * 4, &v).code() ==
+          StatusCode::invalid_argument);
+    p = FractalParams();
+    p.beta = -0.1f;
+    CHECK(build_fractal_lattice(p, buf.data(), buf.size() * 4, &v).code() ==
+          StatusCode::invalid_argument);
+    p.beta = std::nanf("");
+    CHECK(build_fractal_lattice(p, buf.data(), buf.size() * 4, &v).code() ==
+          StatusCode::invalid_argument);
+    p = FractalParams();
+    p.corners[5] = INFINITY;
+    CHECK(!build_fractal_lattice(p, buf.data(), buf.size() * 4, &v).ok());
+    p = FractalParams();
+    s = build_fractal_lattice(p, buf.data(), 1000, &v);
+    CHECK(s.code() == StatusCode::buffer_too_small);
+    CHECK(std::string(s.message()).find("1098500") != std::string::npos);
+    p.R = 25;
+    TypeIIILattice t3;
+    CHECK(t3.init(p).code() == StatusCode::invalid_argument);
+}
+
+TEST_CASE("quadtree lattice (okada1987 §2.1): midpoints and centres, level by level") {
+    QuadtreeParams q;
+    q.R = 4;
+    q.corners[1] = 2.0f;
+    float h[17 * 17];
+    int side = 0;
+    REQUIRE(build_quadtree_lattice(q, h, sizeof h, &side, 1).ok());
+    CHECK(side == 17);
+    CHECK(std::isnan(h[4]));
+    // Level 1 centre = mean of the four corners + g·1
+    float g = hash_gaussian(q.seed, kQuadtreeStream, 8, 8, 0);
+    CHECK(h[8 * 17 + 8] == doctest::Approx(0.5f + g).epsilon(1e-6));
+    REQUIRE(build_quadtree_lattice(q, h, sizeof h, &side).ok());
+    for (float v : h) CHECK(std::isfinite(v));
+    CHECK(build_quadtree_lattice(q, h, 10, &side).code() == StatusCode::buffer_too_small);
+    q.R = 13;
+    CHECK(build_quadtree_lattice(q, h, sizeof h, &side).code() == StatusCode::invalid_argument);
+}
+
+TEST_CASE("tiny lattices (R = 0, 1, 2): the three types still agree") {
+    for (int R = 0; R <= 2; ++R) {
+        FractalParams p;
+        p.R = R;
+        for (int i = 0; i < 8; ++i) p.corners[i] = 0.25f * float(i) - 1.0f;
+        LatticeView v;
+        std::vector<float> values = build_type1(p, &v);
+        TypeIILattice t2;
+        REQUIRE(t2.init(p).ok());
+        TypeIIILattice t3;
+        REQUIRE(t3.init(p).ok());
+        const int last = 1 << R;
+        for (int z = 0; z <= last; ++z)
+            for (int y = 0; y <= last; ++y)
+                for (int x = 0; x <= last; ++x) {
+                    CHECK(same_bits(v.at(x, y, z), t2.node_value(x, y, z)));
+                    CHECK(same_bits(v.at(x, y, z), t3.node_value(x, y, z)));
+                }
+        CHECK(v.at(last, 0, last) == p.corners[5]);  // corner (1, 0, 1)
+        const Vec3 mid{0.5f * float(last), 0.25f * float(last), 0.75f * float(last)};
+        CHECK(same_bits(turbulence(v, mid), t3.turbulence(mid)));
+    }
+}

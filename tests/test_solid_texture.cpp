@@ -1,0 +1,171 @@
+// Tests for lib/shitsukan/solid: turbulence (eq. (6)), marble (eq. (8)), wood (eqs. (10),
+// (11)), pixel_shift (okada1989 eq. (7)), color_lookup (eq. (12)), lattice_store.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "shitsukan/solid/solid.hpp"
+
+using namespace shitsukan;
+
+namespace {
+const FractalLattice& test_lattice() {
+    static FractalLattice lattice;
+    if (lattice.empty()) {
+        FractalParams p;
+        REQUIRE(lattice.build(p).ok());
+    }
+    return lattice;
+}
+bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+}  // namespace
+
+TEST_CASE("trilinear D(P): exact at nodes, linear along edges, continuous across faces") {
+    const LatticeView v = test_lattice().view();
+    for (int i = 0; i < 200; ++i) {
+        int x = (i * 7) % 65, y = (i * 29) % 65, z = (i * 3) % 65;
+        CHECK(same_bits(turbulence(v, Vec3{float(x), float(y), float(z)}), v.at(x, y, z)));
+    }
+    // Along an x edge between nodes (10, 20, 30) and (11, 20, 30): linear in t.
+    const float a = v.at(10, 20, 30), b = v.at(11, 20, 30);
+    for (float t = 0.0f; t <= 1.0f; t += 0.125f) {
+        float d = turbulence(v, Vec3{10.0f + t, 20.0f, 30.0f});
+        CHECK(d == doctest::Approx((1.0f - t) * a + t * b).epsilon(1e-5));
+    }
+    // Across the face x = 11: the limit from cell 10 (fx -> 1) equals cell 11 at fx = 0.
+    float corners[8];
+    for (int k = 0; k < 2; ++k)
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i) corners[i + 2 * j + 4 * k] = v.at(10 + i, 20 + j, 30 + k);
+    float from_left = trilinear_corners(corners, 1.0f, 0.3f, 0.6f);
+    float at_face = turbulence(v, Vec3{11.0f, 20.3f, 30.6f});
+    CHECK(from_left == doctest::Approx(at_face).epsilon(1e-6));
+    // The weights of eq. (6) sum to 1: a constant lattice interpolates to the constant.
+    const float ones[8] = {2.5f, 2.5f, 2.5f, 2.5f, 2.5f, 2.5f, 2.5f, 2.5f};
+    CHECK(trilinear_corners(ones, 0.3f, 0.7f, 0.1f) == doctest::Approx(2.5f).epsilon(1e-6));
+}
+
+TEST_CASE("turbulence outside the lattice: clamped, or refused by the checked form") {
+    const LatticeView v = test_lattice().view();
+    CHECK(same_bits(turbulence(v, Vec3{-5.0f, 3.0f, 3.0f}), turbulence(v, Vec3{0.0f, 3.0f, 3.0f})));
+    CHECK(same_bits(turbulence(v, Vec3{70.0f, 3.0f, 3.0f}), v.at(64, 3, 3)));
+    CHECK(std::isfinite(turbulence(v, Vec3{std::nanf(""), 3.0f, 3.0f})));
+    float out = 0;
+    Status s = turbulence_checked(v, Vec3{64.5f, 1.0f, 1.0f}, &out);
+    CHECK(s.code() == StatusCode::out_of_range);
+    CHECK(std::string(s.message()).find("64.5") != std::string::npos);
+    CHECK(turbulence_checked(v, Vec3{std::nanf(""), 1.0f, 1.0f}, &out).code() ==
+          StatusCode::invalid_argument);
+    CHECK(turbulence_checked(v, Vec3{64.0f, 0.0f, 32.0f}, &out).ok());
+}
+
+TEST_CASE("marble eq. (8): trapezoid with exponential skirt, sum of stripes, pixel shift") {
+    const MarbleStripe s{10.0f, 4.0f, 0.5f};
+    CHECK(trapezoid_skirt(10.0f, s) == 1.0f);
+    CHECK(trapezoid_skirt(12.0f, s) == 1.0f);  // the edge of the flat top
+    CHECK(trapezoid_skirt(13.0f, s) == doctest::Approx(std::exp(-0.5)).epsilon(1e-6));
+    CHECK(trapezoid_skirt(5.0f, s) == doctest::Approx(std::exp(-1.5)).epsilon(1e-6));
+    const MarbleStripe two[2] = {s, {30.0f, 2.0f, 1.0f}};
+    CHECK(marble_original(20.0f, two, 2) ==
+          doctest::Approx(std::exp(-0.5 * 8.0) + std::exp(-9.0)).epsilon(1e-6));
+    MarbleParams m{two, 2, 16.0f};
+    REQUIRE(validate_marble(m).ok());
+    // P' = P + k·D·(0, 0, 1): the texture at z shows G at z + k·D.
+    const Vec3 p{3.0f, 4.0f, 5.0f};
+    CHECK(marble_texture(p, 0.25f, m) == doctest::Approx(marble_original(9.0f, two, 2)));
+    // k = 0 gives G itself, whatever D is.
+    m.k = 0.0f;
+    for (float d : {-2.0f, 0.0f, 1.5f})
+        CHECK(marble_texture(p, d, m) == marble_original(5.0f, two, 2));
+    // bad stripes
+    MarbleStripe zero_width{10.0f, 0.0f, 1.0f};
+    Status bad = validate_marble(MarbleParams{&zero_width, 1, 16.0f});
+    CHECK(bad.code() == StatusCode::invalid_argument);
+    CHECK(std::string(bad.message()).find("width") != std::string::npos);
+    MarbleStripe no_decay{10.0f, 1.0f, 0.0f};
+    CHECK(!validate_marble(MarbleParams{&no_decay, 1, 16.0f}).ok());
+    CHECK(!validate_marble(MarbleParams{nullptr, 0, 16.0f}).ok());
+    MarbleStripe nan_c{std::nanf(""), 1.0f, 1.0f};
+    CHECK(!validate_marble(MarbleParams{&nan_c, 1, 16.0f}).ok());
+}
+
+TEST_CASE("wood eqs. (10), (11): radial sine, radial displacement, r = 0") {
+    WoodParams w;
+    w.x0 = 10.0f;
+    w.y0 = 20.0f;
+    w.k2 = 0.5f;
+    w.k = 1.6f;
+    REQUIRE(validate_wood(w).ok());
+    const float pi = 3.14159265f;
+    // r = pi/(2 k2) = pi: the crest of the first ring.
+    CHECK(wood_original(Vec3{10.0f + pi, 20.0f, 7.0f}, w) == doctest::Approx(1.0f).epsilon(1e-6));
+    CHECK(wood_original(Vec3{10.0f, 20.0f - 2.0f * pi, -3.0f}, w) ==
+          doctest::Approx(0.0f).epsilon(1e-5));
+    Vec3 u;
+    REQUIRE(wood_radial_direction(Vec3{13.0f, 24.0f, 0.0f}, w, &u).ok());
+    CHECK(u.x == doctest::Approx(0.6f));
+    CHECK(u.y == doctest::Approx(0.8f));
+    CHECK(u.z == 0.0f);
+    // Shifted along the radius: r' = r + k·D.
+    const Vec3 p{13.0f, 24.0f, 2.0f};  // r = 5
+    CHECK(wood_texture(p, 0.5f, w) ==
+          doctest::Approx(std::sin(0.5f * (5.0f + 0.8f))).epsilon(1e-5));
+    w.k = 0.0f;
+    CHECK(wood_texture(p, 3.0f, w) == wood_original(p, w));
+    // On the axis: a degenerate status, and the texture stays defined (no displacement).
+    Status s = wood_radial_direction(Vec3{10.0f, 20.0f, 5.0f}, w, &u);
+    CHECK(s.code() == StatusCode::degenerate);
+    CHECK(u == Vec3{0.0f, 0.0f, 0.0f});
+    w.k = 1.6f;
+    CHECK(wood_texture(Vec3{10.0f, 20.0f, 5.0f}, 2.0f, w) == 0.0f);
+    CHECK(wood_unit_range(-1.0f) == 0.0f);
+    CHECK(wood_unit_range(1.0f) == 1.0f);
+    w.k2 = 0.0f;
+    CHECK(validate_wood(w).code() == StatusCode::invalid_argument);
+    w.k2 = 1.0f;
+    w.x0 = INFINITY;
+    CHECK(!validate_wood(w).ok());
+}
+
+TEST_CASE("colour lookup eq. (12) interpolates I_min..I_max and clamps G'") {
+    const Vec3 lo{10, 20, 30}, hi{210, 220, 230};
+    CHECK(lookup_color(0.0f, lo, hi) == lo);
+    CHECK(lookup_color(1.0f, lo, hi) == hi);
+    Vec3 mid = lookup_color(0.25f, lo, hi);
+    CHECK(mid.x == doctest::Approx(60.0f));
+    CHECK(lookup_color(1.7f, lo, hi) == hi);
+    CHECK(lookup_color(std::nanf(""), lo, hi) == lo);
+}
+
+TEST_CASE("lattice file: save and load round trip, header and budget") {
+    const FractalLattice& lattice = test_lattice();
+    const char* tmp = std::getenv("TMPDIR");
+    std::string path = std::string(tmp ? tmp : "/tmp") + "/shitsukan_test_lattice.shl";
+    REQUIRE(save_lattice(path, lattice).ok());
+    FractalLattice back;
+    REQUIRE(load_lattice(path, &back).ok());
+    CHECK(back.params().R == 6);
+    CHECK(back.params().seed == lattice.params().seed);
+    CHECK(back.params().beta == lattice.params().beta);
+    CHECK(std::memcmp(back.view().values, lattice.view().values, lattice.bytes()) == 0);
+    // File size: 56-byte header + 65^3 floats.
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    REQUIRE(f != nullptr);
+    std::fseek(f, 0, SEEK_END);
+    CHECK(std::ftell(f) == 56 + 65 * 65 * 65 * 4);
+    std::fclose(f);
+    FractalLattice small;
+    Status s = load_lattice(path, &small, 1000);
+    CHECK(s.code() == StatusCode::too_large);
+    std::remove(path.c_str());
+    CHECK(load_lattice(path, &back).code() == StatusCode::io_error);
+    FractalParams big;
+    big.R = 9;
+    Status b = small.build(big);
+    CHECK(b.code() == StatusCode::too_large);
+    CHECK(std::string(b.message()).find("540") != std::string::npos);  // 540,456,708 bytes
+}
