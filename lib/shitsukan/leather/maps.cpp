@@ -1,0 +1,196 @@
+#include "shitsukan/leather/maps.hpp"
+
+#include <cmath>
+
+#include "shitsukan/core/assert.hpp"
+
+namespace shitsukan {
+
+Status make_leather_maps(const ScalePattern& pattern, const int* labels, int width, int height,
+                         const BezierChain& section, const ReliefOptions& options,
+                         LeatherMaps* out) {
+    if (width < 1 || height < 1 || width > 16384 || height > 16384)
+        return Status::error(StatusCode::invalid_argument,
+                             "leather maps: size must be 1..16384 a side (got %d x %d)", width,
+                             height);
+    if (labels == nullptr)
+        return Status::error(StatusCode::invalid_argument, "leather maps: labels is null");
+    int polygons = pattern.polygon_count();
+    if (polygons < 1 || int(pattern.centroids.size()) != polygons)
+        return Status::error(StatusCode::invalid_argument,
+                             "leather maps: the pattern has %d polygons and %d centroids", polygons,
+                             int(pattern.centroids.size()));
+    if (!(pattern.width > 0) || !(pattern.height > 0))
+        return Status::error(StatusCode::invalid_argument,
+                             "leather maps: pattern size must be > 0 (got %g x %g)",
+                             double(pattern.width), double(pattern.height));
+    SHITSUKAN_TRY(validate_section(section));
+    SHITSUKAN_TRY(validate_relief_options(options));
+    for (int i = 0; i < polygons; ++i) {
+        int n;
+        pattern.polygon(i, &n);
+        if (n < 3)
+            return Status::error(StatusCode::invalid_argument,
+                                 "leather maps: polygon %d has %d vertices (need >= 3)", i, n);
+    }
+    std::size_t count = std::size_t(width) * std::size_t(height);
+    for (std::size_t k = 0; k < count; ++k)
+        if (labels[k] < -1 || labels[k] >= polygons)
+            return Status::error(StatusCode::invalid_argument,
+                                 "leather maps: label %d at pixel (%d, %d) is not a polygon id "
+                                 "(-1..%d)",
+                                 labels[k], int(k % std::size_t(width)),
+                                 int(k / std::size_t(width)), polygons - 1);
+
+    out->width = width;
+    out->height = height;
+    out->pattern_width = pattern.width;
+    out->pattern_height = pattern.height;
+    out->heights.assign(count, 0.0f);
+    out->normals.assign(count, Vec3{0, 0, 1});
+    out->max_height = 0.0f;
+    const float sx = pattern.width / float(width), sy = pattern.height / float(height);
+    // Once per scale: its height unit S and the angular index of its vertices around m
+    // (O(log n) edge search; polygons that are not star-shaped use the full scan).
+    std::vector<float> sizes(std::size_t(polygons), 0.0f);
+    std::vector<float> angles(pattern.vertices.size(), 0.0f);
+    std::vector<char> indexed(std::size_t(polygons), 0);
+    for (int i = 0; i < polygons; ++i) {
+        int n;
+        const Vec2* poly = pattern.polygon(i, &n);
+        sizes[std::size_t(i)] = scale_size(poly, n);
+        float* a = angles.data() + pattern.polygon_offsets[std::size_t(i)];
+        indexed[std::size_t(i)] = make_angular_index(poly, n, pattern.centroids[std::size_t(i)], a);
+    }
+    for (int j = 0; j < height; ++j) {
+        for (int i = 0; i < width; ++i) {
+            std::size_t k = std::size_t(j) * std::size_t(width) + std::size_t(i);
+            int id = labels[k];
+            if (id < 0) continue;  // no polygon: groove floor
+            int n;
+            const Vec2* poly = pattern.polygon(id, &n);
+            Vec2 x{(float(i) + 0.5f) * sx, (float(j) + 0.5f) * sy};
+            ReliefSample s;
+            // tokai1994 §3.2: "computed for each polygon edge and for every polygon of §3.1".
+            Vec2 m = pattern.centroids[std::size_t(id)];
+            EdgeHit hit =
+                indexed[std::size_t(id)]
+                    ? scale_edge_point_indexed(
+                          poly, n, m, x, angles.data() + pattern.polygon_offsets[std::size_t(id)])
+                    : scale_edge_point(poly, n, m, x);
+            float mp = length(hit.p - m);
+            float rho = mp > 0.0f ? length(x - m) / mp : 0.0f;
+            relief_along_ray(rho, m, hit, sizes[std::size_t(id)], section, options, &s);
+            out->heights[k] = s.height;
+            out->normals[k] = s.normal;
+            if (s.height > out->max_height) out->max_height = s.height;
+        }
+    }
+    return Status::success();
+}
+
+namespace {
+
+// Bilinear weights for pixel-centre sampling, clamped at the borders.
+struct Bilinear {
+    int i0, i1, j0, j1;
+    float fx, fy;
+};
+
+Bilinear bilinear(const LeatherMaps& maps, Vec2 q) {
+    float u = q.x / maps.pattern_width * float(maps.width) - 0.5f;
+    float v = q.y / maps.pattern_height * float(maps.height) - 0.5f;
+    u = clamp(u, 0.0f, float(maps.width - 1));
+    v = clamp(v, 0.0f, float(maps.height - 1));
+    if (!is_finite(u)) u = 0.0f;
+    if (!is_finite(v)) v = 0.0f;
+    Bilinear b;
+    b.i0 = int(u);
+    b.j0 = int(v);
+    b.i1 = b.i0 + 1 < maps.width ? b.i0 + 1 : b.i0;
+    b.j1 = b.j0 + 1 < maps.height ? b.j0 + 1 : b.j0;
+    b.fx = u - float(b.i0);
+    b.fy = v - float(b.j0);
+    return b;
+}
+
+}  // namespace
+
+Vec3 normal_at(const LeatherMaps& maps, Vec2 q) {
+    SHITSUKAN_ASSERT(maps.width > 0 && maps.height > 0);
+    Bilinear b = bilinear(maps, q);
+    Vec3 top = lerp(maps.at_normal(b.i0, b.j0), maps.at_normal(b.i1, b.j0), b.fx);
+    Vec3 bottom = lerp(maps.at_normal(b.i0, b.j1), maps.at_normal(b.i1, b.j1), b.fx);
+    Vec3 n = normalize(lerp(top, bottom, b.fy));
+    return length_squared(n) > 0.0f ? n : Vec3{0, 0, 1};
+}
+
+float height_at(const LeatherMaps& maps, Vec2 q) {
+    SHITSUKAN_ASSERT(maps.width > 0 && maps.height > 0);
+    Bilinear b = bilinear(maps, q);
+    float top = lerp(maps.at_height(b.i0, b.j0), maps.at_height(b.i1, b.j0), b.fx);
+    float bottom = lerp(maps.at_height(b.i0, b.j1), maps.at_height(b.i1, b.j1), b.fx);
+    return lerp(top, bottom, b.fy);
+}
+
+void encode_height16(const LeatherMaps& maps, std::uint16_t* out, float max_height) {
+    float top = max_height > 0.0f ? max_height : maps.max_height;
+    float scale = top > 0.0f ? 65535.0f / top : 0.0f;
+    for (int j = 0; j < maps.height; ++j) {
+        std::uint16_t* row = out + std::size_t(maps.height - 1 - j) * std::size_t(maps.width);
+        for (int i = 0; i < maps.width; ++i) {
+            float v = clamp(maps.at_height(i, j) * scale, 0.0f, 65535.0f);
+            row[i] = std::uint16_t(v + 0.5f);
+        }
+    }
+}
+
+void encode_normal_rgb(const LeatherMaps& maps, std::uint8_t* out) {
+    for (int j = 0; j < maps.height; ++j) {
+        std::uint8_t* row = out + 3 * std::size_t(maps.height - 1 - j) * std::size_t(maps.width);
+        for (int i = 0; i < maps.width; ++i) {
+            Vec3 n = maps.at_normal(i, j);
+            for (int c = 0; c < 3; ++c) {
+                float v = clamp((n[c] + 1.0f) * 0.5f * 255.0f + 0.5f, 0.0f, 255.0f);
+                row[3 * i + c] = std::uint8_t(v);
+            }
+        }
+    }
+}
+
+Status make_relief_mesh(const LeatherMaps& maps, int step, float z_scale, TriangleMesh* out) {
+    if (step < 1)
+        return Status::error(StatusCode::invalid_argument,
+                             "relief mesh: step must be >= 1 (got %d)", step);
+    if (!is_finite(z_scale))
+        return Status::error(StatusCode::invalid_argument, "relief mesh: z_scale is not finite");
+    int nx = (maps.width - 1) / step + 1, ny = (maps.height - 1) / step + 1;
+    if (nx < 2 || ny < 2)
+        return Status::error(StatusCode::invalid_argument,
+                             "relief mesh: %d x %d map with step %d gives fewer than 2x2 samples",
+                             maps.width, maps.height, step);
+    *out = TriangleMesh{};
+    const float sx = maps.pattern_width / float(maps.width);
+    const float sy = maps.pattern_height / float(maps.height);
+    for (int b = 0; b < ny; ++b) {
+        for (int a = 0; a < nx; ++a) {
+            int i = a * step, j = b * step;
+            float x = (float(i) + 0.5f) * sx, y = (float(j) + 0.5f) * sy;
+            Vec3 n = maps.at_normal(i, j);
+            if (z_scale != 1.0f) n = normalize(Vec3{n.x * z_scale, n.y * z_scale, n.z});
+            out->add_vertex({x, y, maps.at_height(i, j) * z_scale}, n,
+                            {x / maps.pattern_width, y / maps.pattern_height});
+        }
+    }
+    for (int b = 0; b + 1 < ny; ++b) {
+        for (int a = 0; a + 1 < nx; ++a) {
+            std::uint32_t v00 = std::uint32_t(b * nx + a), v10 = v00 + 1;
+            std::uint32_t v01 = v00 + std::uint32_t(nx), v11 = v01 + 1;
+            out->add_triangle(v00, v10, v11);  // counter-clockwise seen from +z
+            out->add_triangle(v00, v11, v01);
+        }
+    }
+    return Status::success();
+}
+
+}  // namespace shitsukan

@@ -1,0 +1,80 @@
+// shitsukan/leather/maps.hpp — the leather texture of tokai1994 §3.2 for a whole scale
+// pattern: a height map and a normal map, and their exports (16-bit height, RGB normal map,
+// relief mesh for OBJ).
+//
+// Manual
+//   std::vector<int> labels(w * h);                 // pixel -> polygon id, from the pattern's
+//   ...                                             // label function (leather/scale_pattern)
+//   LeatherMaps maps;
+//   Status s = make_leather_maps(pattern, labels.data(), w, h,
+//                                table1_section(Table1Section::convex), ReliefOptions{}, &maps);
+//   Vec3 n = normal_at(maps, {x, y});                // bilinear, in pattern units, unit length
+//   std::vector<uint16_t> h16(w * h);  encode_height16(maps, h16.data());   // top row = +y
+//   std::vector<uint8_t> rgb(3 * w * h); encode_normal_rgb(maps, rgb.data());
+//   TriangleMesh mesh; make_relief_mesh(maps, 4, &mesh);  write_obj("relief.obj", mesh);
+//
+// Conventions
+//   Pixel (i, j) of the maps is the pattern point ((i + 0.5)·W/w, (j + 0.5)·H/h): row 0 is
+//   y = 0 (pattern y up, as the paper's x-y plane). labels[j·w + i] is the polygon id of that
+//   point, or -1 for "no polygon" (treated as groove floor: height 0, normal up).
+//   Heights are in pattern units (section z times the ray length |p - m|, see relief.hpp).
+//   Normals are in the pattern frame (x, y, z up), unit length.
+//   Exports flip rows so the image's top row is the largest y (image "up" = +y), and the
+//   normal map uses the common OpenGL-style encoding rgb = (n + 1)/2 · 255 with green = +y.
+//   The 16-bit height map stores height / max_height · 65535 (max_height = maps.max_height
+//   unless given): one unit of the PNG is max_height / 65535 pattern units.
+// Host side (std::vector); the per-point relief (relief.hpp) is small-device.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "shitsukan/core/status.hpp"
+#include "shitsukan/core/vec.hpp"
+#include "shitsukan/geom/bezier_curve.hpp"
+#include "shitsukan/geom/mesh.hpp"
+#include "shitsukan/leather/relief.hpp"
+#include "shitsukan/leather/scale_pattern.hpp"
+
+namespace shitsukan {
+
+struct LeatherMaps {
+    int width = 0, height = 0;                    // pixels
+    float pattern_width = 1, pattern_height = 1;  // pattern units covered by the maps
+    std::vector<float> heights;                   // width·height, row j <-> y = (j+0.5)·H/h
+    std::vector<Vec3> normals;                    // width·height, unit, pattern frame
+    float max_height = 0;                         // largest height in the map
+
+    float at_height(int i, int j) const {
+        return heights[std::size_t(j) * std::size_t(width) + std::size_t(i)];
+    }
+    Vec3 at_normal(int i, int j) const {
+        return normals[std::size_t(j) * std::size_t(width) + std::size_t(i)];
+    }
+};
+
+// Builds the maps: for every pixel, scale_relief of its polygon at the pixel centre (with
+// S and the angular edge index of relief.hpp computed once per polygon).
+// invalid_argument for sizes outside 1..16384, a label outside -1..polygon_count-1 (the
+// message gives the pixel), an invalid section or options, or a pattern without polygons.
+Status make_leather_maps(const ScalePattern& pattern, const int* labels, int width, int height,
+                         const BezierChain& section, const ReliefOptions& options,
+                         LeatherMaps* out);
+
+// Bilinear normal at a pattern point (clamped to the map), renormalised.
+Vec3 normal_at(const LeatherMaps& maps, Vec2 pattern_point);
+// Bilinear height at a pattern point (clamped to the map).
+float height_at(const LeatherMaps& maps, Vec2 pattern_point);
+
+// 16-bit height image, width·height values, top row = largest y. max_height <= 0 means
+// maps.max_height.
+void encode_height16(const LeatherMaps& maps, std::uint16_t* out, float max_height = 0.0f);
+// RGB normal map, 3·width·height bytes, top row = largest y.
+void encode_normal_rgb(const LeatherMaps& maps, std::uint8_t* out);
+
+// A grid mesh of the relief: every `step`-th pixel centre becomes a vertex
+// (x, y, height · z_scale) with the map's normal and uv = (x/W, y/H). invalid_argument for
+// step < 1 or a map smaller than 2x2 samples.
+Status make_relief_mesh(const LeatherMaps& maps, int step, float z_scale, TriangleMesh* out);
+
+}  // namespace shitsukan

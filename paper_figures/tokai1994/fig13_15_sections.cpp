@@ -1,0 +1,132 @@
+// tokai1994 figs. 13-15: the three cross-sections of Table 1 and the leather they give.
+// (a) the section plot, (b) the shaded leather texture of the fig. 7 pattern, (c) a close-up.
+#include <vector>
+
+#include "driver/figure.hpp"
+#include "shitsukan/image/canvas.hpp"
+#include "shitsukan/leather/maps.hpp"
+#include "shitsukan/leather/relief.hpp"
+#include "tokai1994/fig11_19_common.hpp"
+
+using namespace shitsukan;
+using namespace shitsukan::figures;
+
+namespace {
+
+const char* table1_text(Table1Section which) {
+    switch (which) {
+        case Table1Section::convex:
+            return "(0.0, 0.1) (0.51, 0.1) (0.75, 0.13) (0.92, 0.0)";
+        case Table1Section::concave:
+            return "(0.0, 0.03) (0.8, 0.05) (0.9, 0.25) (0.94, 0.0)";
+        case Table1Section::two_segment:
+            return "(0.0, 0.25) (0.23, 0.07) (0.47, 0.07) (0.6, 0.25) + "
+                   "(0.6, 0.25) (0.73, 0.2) (0.85, 0.13) (0.9, 0.0)";
+    }
+    return "";
+}
+
+void record_section(FigureContext& ctx, Table1Section which) {
+    ctx.given("section control points", table1_text(which), "Table 1");
+    tokai_relief::record_relief(ctx);
+}
+
+Status section_plot(FigureContext& ctx, Table1Section which) {
+    record_section(ctx, which);
+    const int w = ctx.quick() ? 360 : 720, h = ctx.quick() ? 180 : 360;
+    const float s = float(w) / 720.0f;
+    RgbImage img(w, h, Rgb8{255, 255, 255});
+    RasterCanvas canvas(img.view());
+    Canvas& cv = canvas;
+    BezierChain section = table1_section(which);
+    // Equal scales on r and z, as the section is used (z is not exaggerated).
+    tokai_relief::PlotFrame f{70.0f * s, 0.80f * float(h), 0.60f * float(w)};
+    tokai_relief::draw_axes(cv, f, {0.0f, 0.0f}, {1.05f, 0.40f}, 0.1f, "r", "z");
+    for (int k = 0; k < section.count; ++k) {
+        Vec2 ctrl[4];
+        for (int i = 0; i < 4; ++i) ctrl[i] = f.to_pixel(section.segments[k].p[i]);
+        cv.polyline(ctrl, 4, Rgb8{160, 160, 160}, 1.2f * s);
+        for (int i = 0; i < 4; ++i)
+            cv.marker(ctrl[i], MarkerShape::square, 9.0f * s,
+                      k == 0 ? Rgb8{90, 90, 90} : Rgb8{170, 90, 40});
+    }
+    std::vector<Vec2> curve;
+    for (int k = 0; k <= 400; ++k) {
+        float r = float(k) / 400.0f;
+        curve.push_back(f.to_pixel({r, section_at_r(section, r).z}));
+    }
+    cv.polyline(curve.data(), int(curve.size()), Rgb8{20, 60, 170}, 3.0f * s);
+    cv.line(f.to_pixel({1.0f, 0.0f}), f.to_pixel({1.0f, 0.3f}), Rgb8{200, 40, 30}, 1.5f * s);
+    cv.text(f.to_pixel({1.0f, 0.3f}) + Vec2{-30 * s, -14 * s}, "edge p", Rgb8{200, 40, 30}, 1);
+    cv.text({10 * s, 8 * s},
+            fmt("%s: blue z(r), grey control polygon%s", table1_section_name(which),
+                section.count > 1 ? " (brown: 2nd segment)" : ""),
+            Rgb8{0, 0, 0}, 1);
+    return ctx.save_png(img.view());
+}
+
+Status section_texture(FigureContext& ctx, Table1Section which, bool close_up) {
+    record_section(ctx, which);
+    tokai_relief::record_shading(ctx);
+    ScalePattern pattern;
+    SHITSUKAN_TRY(tokai_relief::crocodile_pattern(ctx, &pattern));
+    const int out = ctx.quick() ? 128 : 512;
+    // The close-up shows the middle third of the pattern (the centre line) at 3x.
+    const int zoom = close_up ? 3 : 1;
+    LeatherMaps maps;
+    SHITSUKAN_TRY(tokai_relief::leather_maps(pattern, out * zoom, out * zoom, table1_section(which),
+                                             ReliefOptions{}, &maps));
+    ctx.chosen("map resolution", fmt("%d x %d", out * zoom, out * zoom),
+               close_up ? "3x the texture, so the close-up has one map texel per pixel"
+                        : "one texel per output pixel");
+    RgbImage img(out, out);
+    Vec2 lo{0, 0}, hi{pattern.width, pattern.height};
+    if (close_up) {
+        Vec2 c = (lo + hi) * 0.5f, half = (hi - lo) * (0.5f / 3.0f);
+        lo = c - half;
+        hi = c + half;
+        ctx.chosen("close-up window",
+                   fmt("[%.3f, %.3f] x [%.3f, %.3f]", double(lo.x), double(hi.x), double(lo.y),
+                       double(hi.y)),
+                   "the centre line of the belly, 3x");
+    }
+    tokai_relief::shade_flat_texture(maps, lo, hi, img.view());
+    ctx.note(fmt("%d scales; largest height %.4f pattern units.", pattern.polygon_count(),
+                 double(maps.max_height)));
+    return ctx.save_png(img.view());
+}
+
+}  // namespace
+
+SHITSUKAN_FIGURE(tokai1994_fig13a, "tokai1994", "fig13a", "Convex section (Table 1, fig. 13a)") {
+    return section_plot(ctx, Table1Section::convex);
+}
+SHITSUKAN_FIGURE(tokai1994_fig13b, "tokai1994", "fig13b", "Convex leather texture (fig. 13b)") {
+    return section_texture(ctx, Table1Section::convex, false);
+}
+SHITSUKAN_FIGURE(tokai1994_fig13c, "tokai1994", "fig13c",
+                 "Convex leather texture, close-up (fig. 13c)") {
+    return section_texture(ctx, Table1Section::convex, true);
+}
+SHITSUKAN_FIGURE(tokai1994_fig14a, "tokai1994", "fig14a", "Concave section (Table 1, fig. 14a)") {
+    return section_plot(ctx, Table1Section::concave);
+}
+SHITSUKAN_FIGURE(tokai1994_fig14b, "tokai1994", "fig14b", "Concave leather texture (fig. 14b)") {
+    return section_texture(ctx, Table1Section::concave, false);
+}
+SHITSUKAN_FIGURE(tokai1994_fig14c, "tokai1994", "fig14c",
+                 "Concave leather texture, close-up (fig. 14c)") {
+    return section_texture(ctx, Table1Section::concave, true);
+}
+SHITSUKAN_FIGURE(tokai1994_fig15a, "tokai1994", "fig15a",
+                 "Two-segment section (Table 1, fig. 15a)") {
+    return section_plot(ctx, Table1Section::two_segment);
+}
+SHITSUKAN_FIGURE(tokai1994_fig15b, "tokai1994", "fig15b",
+                 "Two-segment leather texture (fig. 15b)") {
+    return section_texture(ctx, Table1Section::two_segment, false);
+}
+SHITSUKAN_FIGURE(tokai1994_fig15c, "tokai1994", "fig15c",
+                 "Two-segment leather texture, close-up (fig. 15c)") {
+    return section_texture(ctx, Table1Section::two_segment, true);
+}

@@ -1,0 +1,127 @@
+// bench: the leather relief of tokai1994 §3.2 and the fig. 18 frame.
+//
+// 1. The 512 x 512 height + normal map of the fig. 7 pattern (fig. 13 section), per pixel,
+//    against the polygon lookup alone (the label image the maps are built from): what the
+//    relief itself (ray to the edge, Bezier inversion, eq. (4)) costs on top of knowing the
+//    polygon.
+// 2. The fig. 18 handbag frame (512 x 512, 7 patches at 32 x 32 quads + 2 knobs, bump-mapped
+//    Blinn 1977, two point lights) against the same frame shaded without bump mapping.
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "bench.hpp"
+#include "shitsukan/geom/bezier_patch_mesh.hpp"
+#include "shitsukan/leather/maps.hpp"
+#include "shitsukan/leather/products.hpp"
+#include "shitsukan/leather/scale_division.hpp"
+#include "shitsukan/leather/scale_labels.hpp"
+#include "shitsukan/raster/blinn1977.hpp"
+#include "shitsukan/raster/bump_mapping.hpp"
+#include "shitsukan/raster/rasterizer.hpp"
+
+using namespace shitsukan;
+
+namespace {
+
+struct Part {
+    TriangleMesh mesh;
+    std::vector<Vec3> dpdx, dpdy;
+};
+
+struct BagShader {
+    const Camera* camera;
+    const LeatherMaps* maps;  // nullptr: no bump mapping
+    const Part* part;
+    Blinn1977Material material;
+    PointLight lights[2] = {{{-3.5f, 4.0f, 3.5f}, {1.05f, 1.0f, 0.95f}},
+                            {{4.5f, 1.0f, 1.5f}, {0.30f, 0.33f, 0.40f}}};
+    Rgb8 operator()(const Fragment& f) const {
+        Vec3 n = f.front_facing ? f.normal : -f.normal;
+        if (maps && part && f.front_facing) {
+            TangentFrame t = orthonormal_tangent_frame(n, part->dpdx[std::size_t(f.triangle)],
+                                                       part->dpdy[std::size_t(f.triangle)]);
+            Vec2 q{f.uv.x - std::floor(f.uv.x), f.uv.y - std::floor(f.uv.y)};
+            n = perturb_normal(t, normal_at(*maps, q));
+        }
+        Vec3 c = shade_blinn1977(material, f.world_position, n, camera->eye, lights, 2);
+        return Rgb8{to_byte(c.x), to_byte(c.y), to_byte(c.z)};
+    }
+};
+
+}  // namespace
+
+SHITSUKAN_BENCH(leather_maps) {
+    ScalePattern pattern;
+    generate_scale_pattern(ScaleParams{}, &pattern);
+    const int size = 512;
+    std::vector<std::int32_t> labels(std::size_t(size) * size);
+    LeatherMaps maps;
+    const BezierChain section = table1_section(Table1Section::convex);
+    double lookup = bench::ns_per_op([&] {
+        rasterize_scale_labels(pattern, size, size, labels.data());
+        bench::sink(labels[12345]);
+    });
+    double relief = bench::ns_per_op([&] {
+        make_leather_maps(pattern, labels.data(), size, size, section, ReliefOptions{}, &maps);
+        bench::sink(maps.max_height);
+    });
+    const double pixels = double(size) * size;
+    bench::report(
+        "leather height + normal map 512x512 (fig. 7 pattern, fig. 13 section), per "
+        "pixel",
+        relief / pixels, "polygon lookup alone (label image)", lookup / pixels);
+
+    // The fig. 18 frame.
+    std::vector<std::int32_t> big(std::size_t(1536) * 1536);
+    rasterize_scale_labels(pattern, 1536, 1536, big.data());
+    make_leather_maps(pattern, big.data(), 1536, 1536, section, ReliefOptions{}, &maps);
+    Handbag bag = make_handbag();
+    Part parts[3];
+    PatchStripOptions opt;
+    opt.segments_u = opt.segments_v = 32;
+    opt.texture_scale = 0.8f;
+    opt.anchor = 1.5f;  // left, front, right, back: the front's middle
+    opt.texture_origin = {0.5f, 0.12f};
+    const BezierPatch tube[4] = {bag.patches[3], bag.patches[0], bag.patches[1], bag.patches[2]};
+    tessellate_patch_strip(tube, 4, opt, &parts[0].mesh);
+    opt.anchor = 0.0f;
+    tessellate_patch_strip(bag.patches + 4, 1, opt, &parts[1].mesh);
+    tessellate_patch_strip(bag.patches + 5, 2, opt, &parts[2].mesh);
+    for (Part& p : parts) {
+        const TriangleMesh& m = p.mesh;
+        p.dpdx.resize(std::size_t(m.triangle_count()));
+        p.dpdy.resize(std::size_t(m.triangle_count()));
+        for (int t = 0; t < m.triangle_count(); ++t) {
+            const std::uint32_t* i = &m.indices[3 * std::size_t(t)];
+            triangle_texture_tangents(m.positions[i[0]], m.positions[i[1]], m.positions[i[2]],
+                                      m.uvs[i[0]], m.uvs[i[1]], m.uvs[i[2]],
+                                      &p.dpdx[std::size_t(t)], &p.dpdy[std::size_t(t)]);
+        }
+    }
+    TriangleMesh knobs[2];
+    for (int k = 0; k < 2; ++k) make_spherical_segment(bag.clasp[k], 32, 16, &knobs[k]);
+    Camera cam =
+        perspective_camera({2.25f, 1.50f, 2.55f}, {0.04f, 0.64f, 0.0f}, {0, 1, 0}, 30.0f, 512, 512);
+    RgbImage color(512, 512);
+    FloatImage depth(512, 512);
+    FrameBand band = full_frame_band(color.view(), depth.view());
+    auto frame = [&](bool bump) {
+        clear_band(band, Rgb8{206, 210, 214});
+        DrawOptions d;
+        d.cull = CullMode::none;
+        for (const Part& p : parts) {
+            BagShader s{&cam, bump ? &maps : nullptr, &p, Blinn1977Material{}};
+            draw_mesh(cam, band, p.mesh.view(), d, s);
+        }
+        for (const TriangleMesh& k : knobs) {
+            BagShader s{&cam, nullptr, nullptr, Blinn1977Material{}};
+            draw_mesh(cam, band, k.view(), d, s);
+        }
+        bench::sink(color.at(256, 256).r);
+    };
+    double bumped = bench::ns_per_op([&] { frame(true); });
+    double plain = bench::ns_per_op([&] { frame(false); });
+    bench::report("fig. 18 handbag frame 512x512, bump-mapped Blinn 1977, per frame", bumped,
+                  "same frame without bump mapping", plain);
+}
