@@ -299,4 +299,19 @@ TEST_CASE("bad input: a clear status, no crash") {
     holey.polygon_offsets = {0, 4};
     holey.centroids = {{0.25f, 0.5f}};
     CHECK(rasterize_scale_labels(holey, 2, 2, labels.data()).code() == StatusCode::degenerate);
+    // NaN vertices and broken offsets are refused (they were undefined float -> int
+    // conversions and out-of-range reads); a huge polygon covering the image is fine (its row
+    // bounds, 1e30 / pixel, used to overflow the int and leave every pixel unlabelled)
+    ScalePattern bad = holey;
+    bad.vertices[1].x = std::nanf("");
+    CHECK(rasterize_scale_labels(bad, 2, 2, labels.data()).code() == StatusCode::invalid_argument);
+    bad = holey;
+    bad.polygon_offsets = {0, 5};
+    CHECK(rasterize_scale_labels(bad, 2, 2, labels.data()).code() == StatusCode::invalid_argument);
+    ScalePattern huge;
+    huge.vertices = {{-1e30f, -1e30f}, {1e30f, -1e30f}, {0, 1e30f}};
+    huge.polygon_offsets = {0, 3};
+    huge.centroids = {{0, 0}};
+    REQUIRE(rasterize_scale_labels(huge, 2, 2, labels.data()).ok());
+    CHECK(std::count(labels.begin(), labels.end(), 0) == 4);
 }
