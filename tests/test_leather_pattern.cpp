@@ -80,6 +80,16 @@ int count_not_star(const ScalePattern& pat) {
 
 ScaleParams fig07() { return ScaleParams{}; }
 
+// The stage-2 spacing at the left and right edges for the fig. 7 settings.
+double steps_edge_spacing() {
+    Stage2Columns c;
+    REQUIRE(stage2_columns(1, 0.1f, kDefaultEdgeRatio, &c).ok());
+    double s = 1.0;
+    for (std::size_t k = 0; k < c.x.size(); ++k)
+        if (c.x[k] == 0.0 || c.x[k] == 1.0) s = std::min(s, c.spacing[k]);
+    return s;
+}
+
 }  // namespace
 
 TEST_CASE("seed layouts: eq. (1) displacement bounds and the stage-2 spacing law") {
@@ -92,12 +102,12 @@ TEST_CASE("seed layouts: eq. (1) displacement bounds and the stage-2 spacing law
     }
     Stage2Columns c;
     REQUIRE(stage2_columns(1, 0.1f, 0.5f, &c).ok());
-    CHECK(c.x.front() <= 1e-12);
-    CHECK(c.x.back() >= 1.0 - 1e-12);
-    bool on_left = false, on_right = false;  // a column exactly on each edge
+    CHECK(c.x.front() <= 0.0);
+    CHECK(c.x.back() >= 1.0);
+    bool on_left = false, on_right = false;  // a column exactly on each edge, bit for bit
     for (double x : c.x) {
-        on_left = on_left || std::fabs(x) < 1e-12;
-        on_right = on_right || std::fabs(x - 1.0) < 1e-12;
+        on_left = on_left || x == 0.0;
+        on_right = on_right || x == 1.0;
     }
     CHECK(on_left);
     CHECK(on_right);
@@ -137,6 +147,36 @@ TEST_CASE("two-stage division tiles the square, before and after perturbation (f
         CHECK(steps.perturbation.max_offset > 0.0);
         CHECK(steps.perturbation.max_offset <= 2.0 * 0.015);  // sum of the level amplitudes
     }
+}
+
+TEST_CASE("stage 2: no sliver scales at the left and right edges (a = 0.5)") {
+    // A border-column seed moved outward used to leave edge cells 0.0006 wide (1/90 of the
+    // edge spacing). Moved only inward, an edge cell keeps >= s (1 - a) / 2 = s / 4 of width
+    // (checked with 20 % slack for the neighbour's own, slightly larger spacing).
+    double narrowest = 1.0;
+    for (std::uint32_t seed = 1; seed <= 12; ++seed) {
+        ScaleParams prm = ScaleParams{};
+        prm.a = 0.5f;
+        prm.seed = seed;
+        ScaleDivision steps;
+        REQUIRE(divide_scales(prm, &steps).ok());
+        const PlanarSubdivision& c = steps.cells;
+        for (int f = 0; f < c.face_count(); ++f) {
+            double lo = 2.0, hi = -1.0;
+            for (int k = c.face_offsets[std::size_t(f)]; k < c.face_offsets[std::size_t(f) + 1];
+                 ++k) {
+                const double x =
+                    c.vertices[std::size_t(c.face_vertex(c.face_edges[std::size_t(k)]))].x;
+                lo = std::min(lo, x);
+                hi = std::max(hi, x);
+            }
+            if (lo == 0.0 || hi == 1.0) narrowest = std::min(narrowest, hi - lo);
+        }
+    }
+    const double edge_spacing = steps_edge_spacing();
+    MESSAGE("narrowest edge cell at a = 0.5: " << narrowest << " (edge spacing " << edge_spacing
+                                               << ")");
+    CHECK(narrowest >= 0.8 * 0.25 * edge_spacing);
 }
 
 TEST_CASE("single-stage lattice patterns (fig. 3) tile and stay star-shaped, even with large p") {

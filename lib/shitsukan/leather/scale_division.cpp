@@ -35,6 +35,19 @@ void collect_cells(const VoronoiCells& cells, std::vector<Vec2d>* verts, std::ve
     }
 }
 
+// A stage-2 seed on the left or right border column (x = 0 or x = W, stage2_columns puts a
+// column exactly there) moves only inward: |M| of eq. (1) toward the inside (chosen here). Moved
+// outward it would leave the edge scale a sliver (a = 0.5: edge cells 0.0006 wide, 1/90 of the
+// edge spacing); moved inward the border still cuts its cell near the middle, at least
+// s (1 - a) / 2 wide.
+void keep_border_seeds_inside(float width, SeedLayout* row) {
+    for (std::size_t i = 0; i < row->moved.size(); ++i) {
+        const double x0 = row->original[i].x, move = std::fabs(row->moved[i].x - x0);
+        if (x0 == 0.0) row->moved[i].x = x0 + move;
+        if (x0 == double(width)) row->moved[i].x = x0 - move;
+    }
+}
+
 }  // namespace
 
 Status check_scale_params(const ScaleParams& prm) {
@@ -117,6 +130,7 @@ Status divide_scales(const ScaleParams& prm, ScaleDivision* out) {
         SHITSUKAN_TRY(stage2_row_seeds(out->columns, prm.a,
                                        out->stage1_seeds.moved[std::size_t(site)].y, site, prm.seed,
                                        &row, side));
+        keep_border_seeds_inside(prm.width, &row);
         out->stage2_seeds.original.insert(out->stage2_seeds.original.end(), row.original.begin(),
                                           row.original.end());
         out->stage2_seeds.moved.insert(out->stage2_seeds.moved.end(), row.moved.begin(),
