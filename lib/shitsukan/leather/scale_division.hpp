@@ -19,9 +19,10 @@
 //            on the columns of its own half (left or right of the centre line; both when
 //            d = 0), narrowing toward the left and right edges, moved along x (the seeds
 //            on the border columns x = 0 and x = W only inward, chosen: no edge slivers);
-//            Voronoi division clipped to that polygon. The pieces of a stage-1 edge seen from its two
-//            sides are split at each other's end points (T junctions become vertices), so the
-//            final polygons share every edge and form one planar subdivision;
+//            Voronoi division clipped to that polygon. The pieces of a stage-1 edge seen
+//            from its two sides are split at each other's end points (T junctions become
+//            vertices), so the final polygons share every edge and form one planar
+//            subdivision;
 //   processing 4 once on the final subdivision (edge_perturbation.hpp).
 // Deviation (stated): the paper perturbs stage-1 edges before dividing stage 2. Here stage 2
 // divides the straight (convex) stage-1 polygons and every final edge, including the pieces
