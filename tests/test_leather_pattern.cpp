@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <string>
 #include <vector>
 
 #include "shitsukan/core/prng.hpp"
@@ -323,6 +325,36 @@ TEST_CASE("bad input: a clear status, no crash") {
     prm = ScaleParams{};
     prm.width = 0.0f;
     CHECK(!generate_scale_pattern(prm, &pat).ok());
+    // the rest of the parameter block: NaN and out-of-range values, each named in the message
+    auto refused = [&](ScaleParams q) {
+        Status st = generate_scale_pattern(q, &pat);
+        return st.code() == StatusCode::invalid_argument && std::string(st.message()).size() > 0;
+    };
+    prm = ScaleParams{};
+    prm.D = std::nanf("");
+    CHECK(refused(prm));
+    prm = ScaleParams{};
+    prm.d = -0.1f;
+    CHECK(refused(prm));
+    prm.d = std::nanf("");
+    CHECK(refused(prm));
+    prm = ScaleParams{};
+    prm.height = std::numeric_limits<float>::infinity();
+    CHECK(refused(prm));
+    prm = ScaleParams{};
+    prm.edge_ratio = 0.0f;
+    CHECK(refused(prm));
+    prm.edge_ratio = std::nanf("");
+    CHECK(refused(prm));
+    prm = ScaleParams{};
+    prm.perturbation.levels = kMaxPerturbationLevels + 1;
+    CHECK(refused(prm));
+    // the ends of the allowed range of a are accepted
+    for (float a : {0.0f, 1.0f}) {
+        prm = ScaleParams{};
+        prm.a = a;
+        CHECK(generate_scale_pattern(prm, &pat).ok());
+    }
     prm = ScaleParams{};
     prm.D = 1e-6f;
     CHECK(generate_scale_pattern(prm, &pat).code() == StatusCode::too_large);
