@@ -363,6 +363,12 @@ TEST_CASE("bad input: a clear status, no crash") {
     PlanarSubdivision sub;
     Vec2d one{0.5, 0.5};
     CHECK(!divide_single_stage(&one, 1, 0.0f, 1.0f, &sub).ok());
+    REQUIRE(divide_single_stage(&one, 1, 1.0f, 1.0f, &sub).ok());  // a single seed: one square
+    CHECK(sub.face_count() == 1);
+    CHECK(perturb_subdivision(sub, PerturbationParams{}, 1, std::nanf(""), 1.0f, &pat).code() ==
+          StatusCode::invalid_argument);
+    CHECK(perturb_subdivision(sub, PerturbationParams{}, 1, 1.0f, -1.0f, &pat).code() ==
+          StatusCode::invalid_argument);
     std::vector<std::int32_t> labels(4);
     CHECK(!rasterize_scale_labels(pat, 0, 4, labels.data()).ok());
     // a pattern with a hole is refused by the labeller
