@@ -285,3 +285,45 @@ TEST_CASE("planar subdivision: overlaps and T junctions are reported") {
     REQUIRE(build_planar_subdivision(t.data(), toff.data(), 3, &sub).ok());
     CHECK(!outer_edges_on_box(sub, {0, 0}, {2, 2}));  // edge (1,0)-(1,2) has one side only
 }
+
+TEST_CASE("predicates: exact cocircular points far from the origin, and one-ulp moves off them") {
+    // Points (cx + x, cy + y) with x^2 + y^2 = 5^16 exactly (integers): every four of them are
+    // cocircular, but the in-circle terms (~2^80) round in floating point, so the filter cannot
+    // decide and the exact expansion path must return exactly 0. Moving the fourth point one
+    // ulp toward the centre (along x) must put it inside (> 0), away from it outside (< 0).
+    const std::int64_t r = 390625;  // 5^8
+    const double cx = 1234567.25, cy = -7654321.5;
+    std::vector<Vec2d> on;
+    for (std::int64_t x = -r; x <= r; ++x) {
+        const std::int64_t y2 = r * r - x * x;
+        auto y = std::int64_t(std::llround(std::sqrt(double(y2))));
+        while (y * y > y2) --y;
+        while ((y + 1) * (y + 1) <= y2) ++y;
+        if (y * y != y2 || x == 0 || y == 0) continue;  // x == 0: no x-move toward the centre
+        on.push_back({cx + double(x), cy + double(y)});
+        on.push_back({cx + double(x), cy - double(y)});
+    }
+    REQUIRE(on.size() >= 40);
+    auto angle = [&](Vec2d p) { return std::atan2(p.y - cy, p.x - cx); };
+    std::sort(on.begin(), on.end(), [&](Vec2d a, Vec2d b) { return angle(a) < angle(b); });
+    Pcg32 rng(11, 2);
+    int exact_zero = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        int idx[4];
+        for (int& i : idx) i = int(rng.next_u32() % std::uint32_t(on.size()));
+        std::sort(idx, idx + 3);  // increasing angle: a, b, c counter-clockwise
+        if (idx[0] == idx[1] || idx[1] == idx[2]) continue;
+        const Vec2d a = on[std::size_t(idx[0])], b = on[std::size_t(idx[1])],
+                    c = on[std::size_t(idx[2])], d = on[std::size_t(idx[3])];
+        REQUIRE(orient2d(a, b, c) > 0.0);
+        REQUIRE(incircle(a, b, c, d) == 0.0);
+        REQUIRE(incircle_exact(a, b, c, d) == 0.0);
+        ++exact_zero;
+        const Vec2d in{std::nextafter(d.x, cx), d.y},
+            out{std::nextafter(d.x, d.x + (d.x - cx)), d.y};
+        CHECK(incircle(a, b, c, in) > 0.0);
+        CHECK(incircle(a, b, c, out) < 0.0);
+        CHECK(incircle_exact(a, b, c, in) > 0.0);
+    }
+    CHECK(exact_zero > 200);
+}

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <string>
 #include <vector>
 
 #include "shitsukan/core/prng.hpp"
@@ -80,6 +82,16 @@ int count_not_star(const ScalePattern& pat) {
 
 ScaleParams fig07() { return ScaleParams{}; }
 
+// The stage-2 spacing at the left and right edges for the fig. 7 settings.
+double steps_edge_spacing() {
+    Stage2Columns c;
+    REQUIRE(stage2_columns(1, 0.1f, kDefaultEdgeRatio, &c).ok());
+    double s = 1.0;
+    for (std::size_t k = 0; k < c.x.size(); ++k)
+        if (c.x[k] == 0.0 || c.x[k] == 1.0) s = std::min(s, c.spacing[k]);
+    return s;
+}
+
 }  // namespace
 
 TEST_CASE("seed layouts: eq. (1) displacement bounds and the stage-2 spacing law") {
@@ -92,12 +104,12 @@ TEST_CASE("seed layouts: eq. (1) displacement bounds and the stage-2 spacing law
     }
     Stage2Columns c;
     REQUIRE(stage2_columns(1, 0.1f, 0.5f, &c).ok());
-    CHECK(c.x.front() <= 1e-12);
-    CHECK(c.x.back() >= 1.0 - 1e-12);
-    bool on_left = false, on_right = false;  // a column exactly on each edge
+    CHECK(c.x.front() <= 0.0);
+    CHECK(c.x.back() >= 1.0);
+    bool on_left = false, on_right = false;  // a column exactly on each edge, bit for bit
     for (double x : c.x) {
-        on_left = on_left || std::fabs(x) < 1e-12;
-        on_right = on_right || std::fabs(x - 1.0) < 1e-12;
+        on_left = on_left || x == 0.0;
+        on_right = on_right || x == 1.0;
     }
     CHECK(on_left);
     CHECK(on_right);
@@ -137,6 +149,36 @@ TEST_CASE("two-stage division tiles the square, before and after perturbation (f
         CHECK(steps.perturbation.max_offset > 0.0);
         CHECK(steps.perturbation.max_offset <= 2.0 * 0.015);  // sum of the level amplitudes
     }
+}
+
+TEST_CASE("stage 2: no sliver scales at the left and right edges (a = 0.5)") {
+    // A border-column seed moved outward used to leave edge cells 0.0006 wide (1/90 of the
+    // edge spacing). Moved only inward, an edge cell keeps >= s (1 - a) / 2 = s / 4 of width
+    // (checked with 20 % slack for the neighbour's own, slightly larger spacing).
+    double narrowest = 1.0;
+    for (std::uint32_t seed = 1; seed <= 12; ++seed) {
+        ScaleParams prm = ScaleParams{};
+        prm.a = 0.5f;
+        prm.seed = seed;
+        ScaleDivision steps;
+        REQUIRE(divide_scales(prm, &steps).ok());
+        const PlanarSubdivision& c = steps.cells;
+        for (int f = 0; f < c.face_count(); ++f) {
+            double lo = 2.0, hi = -1.0;
+            for (int k = c.face_offsets[std::size_t(f)]; k < c.face_offsets[std::size_t(f) + 1];
+                 ++k) {
+                const double x =
+                    c.vertices[std::size_t(c.face_vertex(c.face_edges[std::size_t(k)]))].x;
+                lo = std::min(lo, x);
+                hi = std::max(hi, x);
+            }
+            if (lo == 0.0 || hi == 1.0) narrowest = std::min(narrowest, hi - lo);
+        }
+    }
+    const double edge_spacing = steps_edge_spacing();
+    MESSAGE("narrowest edge cell at a = 0.5: " << narrowest << " (edge spacing " << edge_spacing
+                                               << ")");
+    CHECK(narrowest >= 0.8 * 0.25 * edge_spacing);
 }
 
 TEST_CASE("single-stage lattice patterns (fig. 3) tile and stay star-shaped, even with large p") {
@@ -283,6 +325,36 @@ TEST_CASE("bad input: a clear status, no crash") {
     prm = ScaleParams{};
     prm.width = 0.0f;
     CHECK(!generate_scale_pattern(prm, &pat).ok());
+    // the rest of the parameter block: NaN and out-of-range values, each named in the message
+    auto refused = [&](ScaleParams q) {
+        Status st = generate_scale_pattern(q, &pat);
+        return st.code() == StatusCode::invalid_argument && std::string(st.message()).size() > 0;
+    };
+    prm = ScaleParams{};
+    prm.D = std::nanf("");
+    CHECK(refused(prm));
+    prm = ScaleParams{};
+    prm.d = -0.1f;
+    CHECK(refused(prm));
+    prm.d = std::nanf("");
+    CHECK(refused(prm));
+    prm = ScaleParams{};
+    prm.height = std::numeric_limits<float>::infinity();
+    CHECK(refused(prm));
+    prm = ScaleParams{};
+    prm.edge_ratio = 0.0f;
+    CHECK(refused(prm));
+    prm.edge_ratio = std::nanf("");
+    CHECK(refused(prm));
+    prm = ScaleParams{};
+    prm.perturbation.levels = kMaxPerturbationLevels + 1;
+    CHECK(refused(prm));
+    // the ends of the allowed range of a are accepted
+    for (float a : {0.0f, 1.0f}) {
+        prm = ScaleParams{};
+        prm.a = a;
+        CHECK(generate_scale_pattern(prm, &pat).ok());
+    }
     prm = ScaleParams{};
     prm.D = 1e-6f;
     CHECK(generate_scale_pattern(prm, &pat).code() == StatusCode::too_large);
@@ -291,6 +363,12 @@ TEST_CASE("bad input: a clear status, no crash") {
     PlanarSubdivision sub;
     Vec2d one{0.5, 0.5};
     CHECK(!divide_single_stage(&one, 1, 0.0f, 1.0f, &sub).ok());
+    REQUIRE(divide_single_stage(&one, 1, 1.0f, 1.0f, &sub).ok());  // a single seed: one square
+    CHECK(sub.face_count() == 1);
+    CHECK(perturb_subdivision(sub, PerturbationParams{}, 1, std::nanf(""), 1.0f, &pat).code() ==
+          StatusCode::invalid_argument);
+    CHECK(perturb_subdivision(sub, PerturbationParams{}, 1, 1.0f, -1.0f, &pat).code() ==
+          StatusCode::invalid_argument);
     std::vector<std::int32_t> labels(4);
     CHECK(!rasterize_scale_labels(pat, 0, 4, labels.data()).ok());
     // a pattern with a hole is refused by the labeller
@@ -299,4 +377,19 @@ TEST_CASE("bad input: a clear status, no crash") {
     holey.polygon_offsets = {0, 4};
     holey.centroids = {{0.25f, 0.5f}};
     CHECK(rasterize_scale_labels(holey, 2, 2, labels.data()).code() == StatusCode::degenerate);
+    // NaN vertices and broken offsets are refused (they were undefined float -> int
+    // conversions and out-of-range reads); a huge polygon covering the image is fine (its row
+    // bounds, 1e30 / pixel, used to overflow the int and leave every pixel unlabelled)
+    ScalePattern bad = holey;
+    bad.vertices[1].x = std::nanf("");
+    CHECK(rasterize_scale_labels(bad, 2, 2, labels.data()).code() == StatusCode::invalid_argument);
+    bad = holey;
+    bad.polygon_offsets = {0, 5};
+    CHECK(rasterize_scale_labels(bad, 2, 2, labels.data()).code() == StatusCode::invalid_argument);
+    ScalePattern huge;
+    huge.vertices = {{-1e30f, -1e30f}, {1e30f, -1e30f}, {0, 1e30f}};
+    huge.polygon_offsets = {0, 3};
+    huge.centroids = {{0, 0}};
+    REQUIRE(rasterize_scale_labels(huge, 2, 2, labels.data()).ok());
+    CHECK(std::count(labels.begin(), labels.end(), 0) == 4);
 }

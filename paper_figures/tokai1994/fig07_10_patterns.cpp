@@ -33,7 +33,8 @@ Status panels_figure(FigureContext& ctx, const std::vector<Panel>& panels, const
     for (std::size_t i = 0; i < panels.size(); ++i) {
         ScaleDivision steps;
         SHITSUKAN_TRY(generate_scale_pattern(panels[i].prm, &patterns[i], &steps));
-        note += fmt(" %s: %d scales.", panels[i].label.c_str(), patterns[i].polygon_count());
+        note += fmt(" %s: %d scales, largest edge offset %.4f.", panels[i].label.c_str(),
+                    patterns[i].polygon_count(), steps.perturbation.max_offset);
     }
     ctx.note(note);
     return save_png_and_svg(ctx, width, height, [&](Canvas& c) {
@@ -132,5 +133,9 @@ SHITSUKAN_FIGURE(tokai_fig10, "tokai1994", "fig10", "Effect of the perturbation 
         panels.push_back(p);
     }
     ctx.chosen("p values", "0, 0.0075, 0.015, 0.03", "the paper's values are not printed");
+    ctx.note(
+        "The tiling bound (edge_perturbation.hpp) caps each level's amplitude by the slope the "
+        "two neighbouring scales allow: the coarse level of a D-sized scale saturates near "
+        "p = 0.016, so p = 0.03 looks almost like p = 0.015 (compare the largest offsets).");
     return panels_figure(ctx, panels, "p (d = 1.0 D, a = 0.25)");
 }

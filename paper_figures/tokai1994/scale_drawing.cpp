@@ -72,6 +72,8 @@ void record_scale_params(FigureContext& ctx, const ScaleParams& prm) {
     ctx.chosen("stage-2 rows", "one row through each stage-1 seed, moved along x by s_k a Rnd",
                "the paper does not say where the rows lie; this puts one scale row in each stage-1 "
                "polygon");
+    ctx.chosen("stage-2 border columns", "seeds on x = 0 and x = W move only inward, by |M|",
+               "moved outward they leave sliver scales along the left and right edges");
     ctx.chosen(
         "perturbation recursion",
         fmt("%d levels, amplitude p decay^(k-1), decay %g, Rnd hashed from the edge's end points",

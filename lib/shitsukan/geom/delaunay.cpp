@@ -31,6 +31,12 @@ std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y) {
     return d;
 }
 
+// The range where every product of the exact predicates stays exact (see delaunay.hpp).
+bool coordinate_in_range(double v) {
+    const double m = std::fabs(v);
+    return m == 0.0 || (m >= kDelaunayMinCoordinate && m <= kDelaunayMaxCoordinate);
+}
+
 struct BoundaryEdge {
     int u, w;          // the edge u -> w as it runs in the cavity triangle (counter-clockwise)
     int outside;       // triangle beyond it, -1 at the frame
@@ -174,12 +180,12 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
                              count);
     double lo_x = points[0].x, hi_x = points[0].x, lo_y = points[0].y, hi_y = points[0].y;
     for (int i = 0; i < count; ++i) {
-        if (!is_finite(points[i]) || std::fabs(points[i].x) > 1e100 ||
-            std::fabs(points[i].y) > 1e100)
-            return Status::error(
-                StatusCode::invalid_argument,
-                "build_delaunay: point %d = (%g, %g) is not finite or beyond 1e100", i, points[i].x,
-                points[i].y);
+        if (!coordinate_in_range(points[i].x) || !coordinate_in_range(points[i].y))
+            return Status::error(StatusCode::invalid_argument,
+                                 "build_delaunay: point %d = (%g, %g): each coordinate must be 0 "
+                                 "or of magnitude in [%g, %g] (exact predicates)",
+                                 i, points[i].x, points[i].y, kDelaunayMinCoordinate,
+                                 kDelaunayMaxCoordinate);
         lo_x = std::min(lo_x, points[i].x);
         hi_x = std::max(hi_x, points[i].x);
         lo_y = std::min(lo_y, points[i].y);
@@ -187,6 +193,11 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
     }
     double data_lo_x = lo_x, data_hi_x = hi_x, data_lo_y = lo_y, data_hi_y = hi_y;
     if (cover_lo.x <= cover_hi.x && cover_lo.y <= cover_hi.y) {
+        for (double c : {cover_lo.x, cover_lo.y, cover_hi.x, cover_hi.y})
+            if (!(std::fabs(c) <= kDelaunayMaxCoordinate))
+                return Status::error(StatusCode::invalid_argument,
+                                     "build_delaunay: the box to cover reaches %g, beyond %g", c,
+                                     kDelaunayMaxCoordinate);
         lo_x = std::min(lo_x, cover_lo.x);
         hi_x = std::max(hi_x, cover_hi.x);
         lo_y = std::min(lo_y, cover_lo.y);

@@ -9,6 +9,11 @@
 //   dt.point_triangle[i]     one triangle incident to point i (-1 for a duplicate point)
 //   dt.duplicate_of[i]       -1, or the smallest index of an identical earlier point
 //
+// Coordinate range: each coordinate is 0 or has magnitude in [1e-50, 1e50] (else a Status).
+// The in-circle determinant is a degree-4 polynomial of coordinate differences; outside this
+// range its products (or their rounding-error terms) overflow or underflow, the "exact" sign
+// is lost and the insertion could not find its cavity.
+//
 // Algorithm (Bowyer 1981 / Watson 1981, incremental): points are inserted in Hilbert-curve
 // order into a frame of 4 points placed 10 bounding-box half-extents from the data's centre,
 // so every input point is interior. Each insertion walks from the last new triangle to the
@@ -28,6 +33,9 @@
 #include "shitsukan/core/vec.hpp"
 
 namespace shitsukan {
+
+constexpr double kDelaunayMinCoordinate = 1e-50;  // smallest non-zero |coordinate|
+constexpr double kDelaunayMaxCoordinate = 1e50;   // largest |coordinate| (points, box)
 
 struct DelaunayTriangle {
     int v[3];  // counter-clockwise

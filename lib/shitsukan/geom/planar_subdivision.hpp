@@ -17,6 +17,8 @@
 // outer_edges_on_box() reports. An edge run twice in the same direction (an overlap) is
 // refused with a Status. Why shared edges: tokai1994 perturbs each edge of the scale pattern
 // once, so the two scales on its sides keep fitting each other (processing 4).
+// Algorithm: one pass over the polygons' edges with two hash maps (vertex bits -> vertex,
+// vertex pair -> edge): O(total vertex count) expected time and memory.
 #pragma once
 
 #include <vector>

@@ -22,6 +22,7 @@
 // the parts of a cell's boundary that run along the region's boundary. A vertex closer than
 // kClipSnapRelative * (region diameter) to an edge's line is moved onto it (chosen here: the
 // rounded lattice vertex 7 * (1/7) misses x = 1 by an ulp and would leave a cell 1e-17 wide).
+// Cost: area, centroid and containment O(n); clipping O(n m) for n cell and m region vertices.
 #pragma once
 
 #include <vector>

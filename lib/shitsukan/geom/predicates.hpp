@@ -5,9 +5,11 @@
 //                                     // 0: collinear
 //   double s = incircle(a, b, c, d);  // a, b, c counter-clockwise: > 0 d inside their circle,
 //                                     // < 0 outside, 0 exactly on it (cocircular)
-// The SIGN is always exact for any finite double inputs (no overflow assumed: |coordinates|
-// below ~1e100); the magnitude is only an approximation. Exact zero is what makes a square
-// or triangular lattice of Voronoi seeds come out with exactly four (six) vertices per cell.
+// The SIGN is exact as long as no product overflows or underflows: with every coordinate 0 or
+// of magnitude in [1e-50, 1e50] (what build_delaunay enforces) the degree-4 in-circle terms
+// and their rounding-error terms stay normal doubles. The magnitude is only an approximation.
+// Exact zero is what makes a square or triangular lattice of Voronoi seeds come out with
+// exactly four (six) vertices per cell.
 //
 // Algorithm: J. R. Shewchuk, "Adaptive Precision Floating-Point Arithmetic and Fast Robust
 // Geometric Predicates" (1997): a floating-point filter with his error bounds answers almost

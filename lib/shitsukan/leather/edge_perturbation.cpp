@@ -79,6 +79,7 @@ void append_polygon(ScalePattern* out, std::vector<Vec2>& poly) {
 
 void midpoint_displacement(Vec2d a, Vec2d b, const PerturbationParams& prm, std::uint32_t seed,
                            double* f, const double* level_cap) {
+    SHITSUKAN_ASSERT(prm.levels >= 0 && prm.levels <= kMaxPerturbationLevels);
     if (lex_less(b, a)) std::swap(a, b);
     const int n = 1 << prm.levels;
     std::uint64_t h = hash_start(seed, kStreamPerturbation);
@@ -107,6 +108,11 @@ Status perturb_subdivision(const PlanarSubdivision& sub, const PerturbationParam
     if (out == nullptr)
         return Status::error(StatusCode::invalid_argument, "perturb_subdivision: out is null");
     SHITSUKAN_TRY(check_params(prm));
+    if (!(width > 0.0f && height > 0.0f) || !is_finite(width) || !is_finite(height))
+        return Status::error(StatusCode::invalid_argument,
+                             "perturb_subdivision: pattern size must be > 0 and finite (got %g x "
+                             "%g)",
+                             double(width), double(height));
     const int faces = sub.face_count();
     // centroid of every (convex) polygon before perturbation: the fan centre of the bound
     std::vector<Vec2d> centre(static_cast<std::size_t>(faces));

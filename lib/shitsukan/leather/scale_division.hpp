@@ -17,10 +17,12 @@
 //            moved along y (seed_layout.hpp), Voronoi division of the rectangle;
 //   stage 2: for each stage-1 polygon, one seed row parallel to x through its (moved) seed,
 //            on the columns of its own half (left or right of the centre line; both when
-//            d = 0), narrowing toward the left and right edges, moved along x; Voronoi
-//            division clipped to that polygon. The pieces of a stage-1 edge seen from its two
-//            sides are split at each other's end points (T junctions become vertices), so the
-//            final polygons share every edge and form one planar subdivision;
+//            d = 0), narrowing toward the left and right edges, moved along x (the seeds
+//            on the border columns x = 0 and x = W only inward, chosen: no edge slivers);
+//            Voronoi division clipped to that polygon. The pieces of a stage-1 edge seen
+//            from its two sides are split at each other's end points (T junctions become
+//            vertices), so the final polygons share every edge and form one planar
+//            subdivision;
 //   processing 4 once on the final subdivision (edge_perturbation.hpp).
 // Deviation (stated): the paper perturbs stage-1 edges before dividing stage 2. Here stage 2
 // divides the straight (convex) stage-1 polygons and every final edge, including the pieces
@@ -30,6 +32,11 @@
 // Parameters (validated, Status on error): width, height > 0; D > 0 (chosen default 0.1: ten
 // rows on the unit square); d >= 0 (default 1.0 D); a in [0, 1]; edge_ratio in (0.05, 1];
 // perturbation.p >= 0. NaN anywhere is refused.
+//
+// Cost: stage 1 is one Voronoi division of n1 ~ 2 H / D seeds, O(n1 log n1); stage 2 one
+// Voronoi division per stage-1 polygon (its row of k ~ W / D seeds), O(N log k) for the N
+// final cells; the T-junction pass sorts the points on each stage-1 edge, O(N log N); memory
+// O(N). Measured: 154 scales in ~1 ms (fig. 7), 50 000 scales (D = 0.005) in ~0.7 s.
 #pragma once
 
 #include <cstdint>

@@ -5,6 +5,15 @@
 #include <vector>
 
 namespace shitsukan {
+namespace {
+
+// Clamped in double before the conversion: a vertex far outside the image (1e30) must not
+// overflow the int.
+int clamp_to_int(double v, int lo, int hi) {
+    return int(std::min(double(hi), std::max(double(lo), v)));
+}
+
+}  // namespace
 
 Status rasterize_scale_labels(const ScalePattern& pattern, int width, int height,
                               std::int32_t* labels) {
@@ -13,10 +22,28 @@ Status rasterize_scale_labels(const ScalePattern& pattern, int width, int height
             StatusCode::invalid_argument,
             "rasterize_scale_labels: image size must be 1..65536 a side (got %d x %d)", width,
             height);
-    if (!(pattern.width > 0.0f && pattern.height > 0.0f))
+    if (!(pattern.width > 0.0f && pattern.height > 0.0f) || !is_finite(pattern.width) ||
+        !is_finite(pattern.height))
         return Status::error(StatusCode::invalid_argument,
                              "rasterize_scale_labels: pattern is %g x %g", double(pattern.width),
                              double(pattern.height));
+    // A NaN or infinite vertex would turn the row and column bounds below into undefined
+    // float -> int conversions.
+    for (std::size_t k = 0; k < pattern.vertices.size(); ++k)
+        if (!is_finite(pattern.vertices[k]))
+            return Status::error(StatusCode::invalid_argument,
+                                 "rasterize_scale_labels: vertex %d = (%g, %g) is not finite",
+                                 int(k), double(pattern.vertices[k].x),
+                                 double(pattern.vertices[k].y));
+    for (std::size_t k = 1; k < pattern.polygon_offsets.size(); ++k)
+        if (pattern.polygon_offsets[0] < 0 ||
+            pattern.polygon_offsets[k] < pattern.polygon_offsets[k - 1] ||
+            std::size_t(pattern.polygon_offsets[k]) > pattern.vertices.size())
+            return Status::error(StatusCode::invalid_argument,
+                                 "rasterize_scale_labels: polygon_offsets[%d] = %d is not in "
+                                 "[offsets[%d], %d]",
+                                 int(k), pattern.polygon_offsets[k], int(k) - 1,
+                                 int(pattern.vertices.size()));
     const std::size_t total = std::size_t(width) * std::size_t(height);
     std::fill(labels, labels + total, -1);
     const double px = double(pattern.width) / width, py = double(pattern.height) / height;
@@ -31,8 +58,8 @@ Status rasterize_scale_labels(const ScalePattern& pattern, int width, int height
             lo = std::min(lo, v[k].y);
             hi = std::max(hi, v[k].y);
         }
-        int j0 = std::max(0, int(std::floor(double(lo) / py - 0.5)));
-        int j1 = std::min(height - 1, int(std::ceil(double(hi) / py)));
+        const int j0 = clamp_to_int(std::floor(double(lo) / py - 0.5), 0, height);
+        const int j1 = clamp_to_int(std::ceil(double(hi) / py), -1, height - 1);
         for (int j = j0; j <= j1; ++j) {
             const double y = (j + 0.5) * py;
             xs.clear();
@@ -46,7 +73,7 @@ Status rasterize_scale_labels(const ScalePattern& pattern, int width, int height
             std::sort(xs.begin(), xs.end());
             for (std::size_t s = 0; s + 1 < xs.size(); s += 2) {
                 // pixels whose centre lies in [xs[s], xs[s + 1])
-                int i = std::max(0, int(std::floor(xs[s] / px - 0.5)));
+                int i = clamp_to_int(std::floor(xs[s] / px - 0.5), 0, width);
                 while (i < width && centre_x(i) < xs[s]) ++i;
                 for (; i < width && centre_x(i) < xs[s + 1]; ++i) {
                     std::int32_t& l = labels[std::size_t(j) * std::size_t(width) + std::size_t(i)];

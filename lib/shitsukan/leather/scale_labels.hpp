@@ -12,6 +12,8 @@
 // end points bit for bit (ScalePattern guarantees it), hence the same crossing x, so every
 // pixel gets exactly one label. A pattern that does not tile (a gap or an overlap at some pixel
 // centre) returns a Status naming the first such pixel.
+// A pattern with a non-finite size or vertex, or polygon_offsets outside its vertices, is
+// refused with a Status before anything is drawn. Cost: O(sum over polygons of rows x edges).
 #pragma once
 
 #include <cstdint>

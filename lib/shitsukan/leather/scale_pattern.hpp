@@ -24,7 +24,9 @@ struct ScalePattern {
     std::vector<int> polygon_offsets;  // polygon i = vertices[offsets[i] .. offsets[i + 1])
     std::vector<Vec2> centroids;       // one per polygon
 
-    int polygon_count() const { return polygon_offsets.empty() ? 0 : int(polygon_offsets.size()) - 1; }
+    int polygon_count() const {
+        return polygon_offsets.empty() ? 0 : int(polygon_offsets.size()) - 1;
+    }
     const Vec2* polygon(int i, int* count) const {
         *count = polygon_offsets[std::size_t(i) + 1] - polygon_offsets[std::size_t(i)];
         return vertices.data() + polygon_offsets[std::size_t(i)];

@@ -124,6 +124,7 @@ Status stage2_columns(float width, float D, float edge_ratio, Stage2Columns* out
         t[k] *= stretch;
         s[k] *= stretch;
     }
+    t[nearest] = xc;  // exactly: (xc / t) * t can miss xc by an ulp, leaving x = 1e-17
     out->x.clear();
     out->spacing.clear();
     out->index.clear();

@@ -24,11 +24,12 @@
 // On each side the first column lies half a spacing from the centre line (x = W/2 ± s(0)/2),
 // the next ones step outward by s evaluated at the middle of each step, until one column
 // lies beyond each edge; then all distances (and spacings) are stretched by one common factor
-// (a few percent) so that a column lies exactly on each edge: the edge scales are cut through
-// their middle instead of leaving slivers. The centre line gets no column: it is where the
-// left and right stage-1 polygons meet (the joint pattern), so scales end there instead of
-// being cut in two. In stage 2, eq. (1) uses the local spacing s_k as "D", so a narrow column
-// moves proportionally less.
+// (a few percent) so that a column lies exactly on each edge (x = 0 and x = W bit for bit):
+// the edge scales are cut through their middle instead of leaving slivers (divide_scales
+// moves the seeds of these two columns only inward, for the same reason). The centre line
+// gets no column: it is where the left and right stage-1 polygons meet (the joint pattern),
+// so scales end there instead of being cut in two. In stage 2, eq. (1) uses the local
+// spacing s_k as "D", so a narrow column moves proportionally less.
 #pragma once
 
 #include <cstdint>
