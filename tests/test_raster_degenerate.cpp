@@ -154,6 +154,17 @@ TEST_CASE("bad buffers, meshes, shaders and matrices: a clear Status, nothing dr
         CHECK(!s.ok());
         CHECK(mentions(s, "camera"));
     }
+    SUBCASE("a band starting near INT_MAX: refused, no int overflow in the row check") {
+        RgbImage color(32, 8);
+        FloatImage depth(32, 8);
+        const int y0 = std::numeric_limits<int>::max() - 2;
+        FrameBand band = make_band(color.view(), depth.view(), y0, 32, 32);
+        Status s = validate_band(cam, band);
+        CHECK(s.code() == StatusCode::invalid_argument);
+        CHECK(mentions(s, "outside the frame rows"));
+        CHECK(mentions(s, "2147483653)"));  // y0 + 8, printed without wrapping
+        CHECK(!draw_mesh(cam, band, good.view(), DrawOptions{}, white, nullptr).ok());
+    }
     SUBCASE("out-of-range index: refused before anything is drawn") {
         TriangleMesh m = good;
         m.indices = {0, 1, 2, 0, 1, 7};

@@ -66,10 +66,13 @@ Status validate_band(const Camera& camera, const FrameBand& band) {
         return Status::error(StatusCode::invalid_argument,
                              "band is %d pixels wide; a band spans the whole frame width %d",
                              band.color.width, band.frame_width);
-    if (band.y0 < 0 || band.y0 + band.color.height > band.frame_height)
+    // Written as a difference: y0 + height could overflow int for a y0 near INT_MAX.
+    if (band.y0 < 0 || band.y0 > band.frame_height ||
+        band.color.height > band.frame_height - band.y0)
         return Status::error(StatusCode::invalid_argument,
-                             "band rows [%d, %d) are outside the frame rows [0, %d)", band.y0,
-                             band.y0 + band.color.height, band.frame_height);
+                             "band rows [%d, %lld) are outside the frame rows [0, %d)", band.y0,
+                             static_cast<long long>(band.y0) + band.color.height,
+                             band.frame_height);
     return Status::success();
 }
 

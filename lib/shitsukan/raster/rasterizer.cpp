@@ -204,7 +204,7 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
     // out (the top-left rule for horizontal edges), intersected with the band.
     i64 row_begin = ceil_div(v0->y - kHalfPixel, kSubpixel);
     i64 row_end = ceil_div(v2->y - kHalfPixel, kSubpixel);
-    i64 band_begin = band.y0, band_end = band.y0 + band.color.height;
+    i64 band_begin = band.y0, band_end = i64(band.y0) + band.color.height;
     if (row_begin < band_begin) row_begin = band_begin;
     if (row_end > band_end) row_end = band_end;
     if (row_begin >= row_end) return false;
