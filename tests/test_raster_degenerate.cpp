@@ -10,6 +10,7 @@
 #include <string>
 
 #include "raster_test_scenes.hpp"
+#include "shitsukan/raster/wireframe.hpp"
 
 using namespace shitsukan;
 using namespace raster_test;
@@ -164,6 +165,29 @@ TEST_CASE("bad buffers, meshes, shaders and matrices: a clear Status, nothing dr
         CHECK(mentions(s, "outside the frame rows"));
         CHECK(mentions(s, "2147483653)"));  // y0 + 8, printed without wrapping
         CHECK(!draw_mesh(cam, band, good.view(), DrawOptions{}, white, nullptr).ok());
+    }
+    SUBCASE("a stride below the width (or negative) is refused, by draw_edges too") {
+        // Room for exactly 32 x 32 pixels: a short stride would write past it otherwise.
+        Frame f;
+        TriangleMesh m = good;
+        WireEdge edges[3];
+        int n = 0;
+        REQUIRE(collect_edges(m.view(), edges, 3, &n).ok());
+        for (int stride : {31, 16, 0, -32}) {
+            for (int which = 0; which < 2; ++which) {
+                FrameBand band = f.band;
+                (which == 0 ? band.color.stride : band.depth.stride) = stride;
+                std::string view = which == 0 ? "colour" : "depth";
+                INFO("stride " << stride << " on the " << view << " view");
+                Status s = validate_band(cam, band);
+                CHECK(s.code() == StatusCode::invalid_argument);
+                CHECK(mentions(s, "stride"));
+                CHECK(!draw_mesh(cam, band, m.view(), DrawOptions{}, white, nullptr).ok());
+                CHECK(!draw_edges(cam, band, m.view(), edges, n, WireOptions{}).ok());
+            }
+        }
+        CHECK(f.lit() == 0);
+        CHECK(validate_band(cam, f.band).ok());
     }
     SUBCASE("out-of-range index: refused before anything is drawn") {
         TriangleMesh m = good;

@@ -58,6 +58,13 @@ Status validate_band(const Camera& camera, const FrameBand& band) {
                              "band colour buffer is %d x %d but its depth buffer is %d x %d",
                              band.color.width, band.color.height, band.depth.width,
                              band.depth.height);
+    // Rows are pixels + y·stride: a stride below the width would make rows overlap and the
+    // last one run past the caller's buffer.
+    if (band.color.stride < band.color.width || band.depth.stride < band.depth.width)
+        return Status::error(StatusCode::invalid_argument,
+                             "band strides must be >= the width %d (colour stride %d, depth "
+                             "stride %d)",
+                             band.color.width, band.color.stride, band.depth.stride);
     if (band.frame_width != camera.width || band.frame_height != camera.height)
         return Status::error(StatusCode::invalid_argument,
                              "band belongs to a %d x %d frame but the camera's frame is %d x %d",
