@@ -1,4 +1,6 @@
 // small-device: yes (no allocation, no exceptions)
+#include <cstddef>
+#include <cstdint>
 #include <limits>
 
 #include "shitsukan/raster/rasterizer.hpp"
@@ -93,13 +95,15 @@ Status validate_mesh(const MeshView& mesh) {
         return Status::error(StatusCode::invalid_argument,
                              "mesh has %d triangles but %s", mesh.triangle_count,
                              mesh.indices == nullptr ? "no index array" : "no vertices");
-    long n = long(mesh.triangle_count) * 3;
-    for (long i = 0; i < n; ++i)
+    // size_t: 3·triangle_count can exceed INT_MAX (and a 32-bit long).
+    const std::size_t n = 3 * std::size_t(mesh.triangle_count);
+    for (std::size_t i = 0; i < n; ++i)
         if (mesh.indices[i] >= std::uint32_t(mesh.vertex_count))
             return Status::error(StatusCode::invalid_argument,
-                                 "triangle %ld corner %ld has index %u, out of range for %d "
+                                 "triangle %lld corner %d has index %u, out of range for %d "
                                  "vertices",
-                                 i / 3, i % 3, unsigned(mesh.indices[i]), mesh.vertex_count);
+                                 static_cast<long long>(i / 3), int(i % 3),
+                                 unsigned(mesh.indices[i]), mesh.vertex_count);
     return Status::success();
 }
 

@@ -14,6 +14,7 @@
 // Every per-pixel value is a function of the pixel and the triangle only (nothing is
 // stepped incrementally from the top of the triangle or of the band), so any band of rows
 // gives the same bits as the full frame.
+#include <cstddef>
 #include <cstdint>
 
 #include "shitsukan/raster/clip.hpp"
@@ -309,7 +310,7 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
         // ---- 1. Fetch the three corners, into clip space ----
         SourceTriangle src;
         src.index = t;
-        src.corner_index = mesh.indices + 3 * t;
+        src.corner_index = mesh.indices + 3 * std::size_t(t);  // no int overflow
         ClipVertex corners[3];
         bool finite = true;
         for (int k = 0; k < 3; ++k) {

@@ -2,6 +2,8 @@
 #include "shitsukan/raster/wireframe.hpp"
 
 #include <algorithm>
+#include <cstddef>
+#include <cstdint>
 #include <cmath>
 
 #include "shitsukan/raster/clip.hpp"
@@ -104,16 +106,26 @@ Status collect_edges(const MeshView& mesh, WireEdge* edges, int capacity, int* c
     if (count == nullptr)
         return Status::error(StatusCode::invalid_argument, "collect_edges: count is null");
     *count = 0;
-    SHITSUKAN_TRY(validate_mesh(mesh));
-    if (edges == nullptr || capacity < 3 * mesh.triangle_count)
+    // The room is checked first, from the counts alone, in 64 bits (3·triangle_count can
+    // exceed INT_MAX): validate_mesh reads every index, so it must not run on a count the
+    // arrays cannot back.
+    if (mesh.triangle_count < 0 || capacity < 0)
+        return Status::error(StatusCode::invalid_argument,
+                             "collect_edges: %d triangles, room for %d edges; counts must be "
+                             ">= 0", mesh.triangle_count, capacity);
+    const std::int64_t needed = 3 * std::int64_t(mesh.triangle_count);
+    if ((edges == nullptr && needed > 0) || std::int64_t(capacity) < needed)
         return Status::error(StatusCode::buffer_too_small,
-                             "collect_edges: room for %d edges, %d triangles need %d",
-                             edges ? capacity : 0, mesh.triangle_count, 3 * mesh.triangle_count);
+                             "collect_edges: room for %d edges, %d triangles need %lld",
+                             edges ? capacity : 0, mesh.triangle_count,
+                             static_cast<long long>(needed));
+    SHITSUKAN_TRY(validate_mesh(mesh));
     // Every triangle side, its lower end (by position) first.
     int n = 0;
     for (int t = 0; t < mesh.triangle_count; ++t)
         for (int k = 0; k < 3; ++k) {
-            std::uint32_t i = mesh.indices[3 * t + k], j = mesh.indices[3 * t + (k + 1) % 3];
+            const std::uint32_t* corner = mesh.indices + 3 * std::size_t(t);
+            std::uint32_t i = corner[k], j = corner[(k + 1) % 3];
             Vec3 p = mesh.positions[i], q = mesh.positions[j];
             if (!is_finite(p) || !is_finite(q) || p == q) continue;
             edges[n++] = less_position(p, q) ? WireEdge{i, j} : WireEdge{j, i};
