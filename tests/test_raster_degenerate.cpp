@@ -80,6 +80,42 @@ TEST_CASE("zero-area, NaN and inf triangles are skipped and counted, the rest is
     CHECK(st2.fragments_shaded == 0);
 }
 
+TEST_CASE("a corner with w_clip == 0 (at the eye) is not divided by: rejected, not NaN") {
+    // A valid camera at the origin looking down -z, and a projective (invertible) model
+    // matrix taking the object origin to the homogeneous point (0, 0, 0, -1): the eye. Its
+    // clip coordinates are (0, 0, z, 0) with no clipping-plane outcode, so only the w test
+    // keeps it out of the fast path's divide. The other corners are ordinary points in front.
+    Camera cam = perspective_camera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60.0f, 32, 32);
+    DrawOptions opt;
+    opt.model = Mat4::identity();
+    opt.model.m[3][2] = -1.0f;  // w_model = -z - 1
+    opt.model.m[3][3] = -1.0f;
+    opt.cull = CullMode::none;
+    TriangleMesh m;
+    m.positions = {{0, 0, 0}, {-1, -1, -3}, {1, -1, -3}};
+    m.indices = {0, 1, 2};
+    Vec4 clip0 = cam.projection * (cam.view * (opt.model * Vec4{0, 0, 0, 1}));
+    REQUIRE(clip0.w == 0.0f);
+    REQUIRE(clip0.x == 0.0f);
+    REQUIRE(clip0.y == 0.0f);
+    Frame f;
+    RasterStats stats;
+    CHECK(draw_mesh(cam, f.band, m.view(), opt, white, nullptr, &stats).ok());
+    CHECK(stats.triangles_rejected == 1);  // its plane passes through the eye: edge-on
+    CHECK(stats.fragments_shaded == 0);
+    CHECK(f.lit() == 0);
+    // The wireframe drops the two edges ending at the eye and draws the third.
+    WireEdge edges[3];
+    int n = 0;
+    REQUIRE(collect_edges(m.view(), edges, 3, &n).ok());
+    WireOptions w;
+    w.model = opt.model;
+    long pixels = 0;
+    CHECK(draw_edges(cam, f.band, m.view(), edges, n, w, &pixels).ok());
+    CHECK(pixels > 0);
+    CHECK(pixels == f.lit());
+}
+
 TEST_CASE("huge but finite coordinates are clipped by the guard band, not overflowed") {
     // 1e5: far beyond the guard band (about 10 units at this distance); the guard-band cut
     // points are still precise in float, so the triangle covers the whole screen.

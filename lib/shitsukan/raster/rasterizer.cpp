@@ -16,6 +16,7 @@
 // gives the same bits as the full frame.
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 #include "shitsukan/raster/clip.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
@@ -91,9 +92,20 @@ inline i64 first_column_at_or_right_of(const ScreenVertex& e0, const ScreenVerte
 
 inline Vec3d to_double(Vec3 v) { return {double(v.x), double(v.y), double(v.z)}; }
 
-inline i64 to_fixed(float v) {
+// Smallest w_clip divided by: 1/w stays finite (FLT_MIN = 2^-126, so 1/w <= 2^126).
+constexpr float kMinClipW = std::numeric_limits<float>::min();
+// Largest |fixed-point coordinate| accepted (chosen here: 2^28, i.e. 2^20 pixels). Inside the
+// guard band a coordinate is at most 4.5·kMaxFrameSize pixels (< 2^17), so this only refuses
+// values that went wrong; it keeps every product of the edge tests below 2^60.
+constexpr float kMaxFixed = 268435456.0f;
+
+// v·256 rounded half away from zero. false (and nothing stored) for NaN or a value beyond
+// kMaxFixed: converting those to an integer would be undefined behaviour.
+inline bool to_fixed(float v, i64* out) {
     float s = v * float(kSubpixel);
-    return i64(s < 0.0f ? s - 0.5f : s + 0.5f);  // round half away from zero
+    if (!(s > -kMaxFixed && s < kMaxFixed)) return false;
+    *out = i64(s < 0.0f ? s - 0.5f : s + 0.5f);
+    return true;
 }
 
 // One square root and one division per vector: this runs twice per fragment.
@@ -276,16 +288,20 @@ inline bool finite_clip(Vec4 p) {
 }
 
 // The divide and the viewport mapping, as clip_to_screen (camera.cpp) does it, keeping 1/w.
-ScreenVertex to_screen(const Camera& camera, const ClipVertex& v) {
-    ScreenVertex r;
+// false when the corner cannot be mapped: w below kMinClipW (at or behind the eye: only a
+// vertex on the eye plane or a custom projection gets here) or a screen position out of
+// range.
+bool to_screen(const Camera& camera, const ClipVertex& v, ScreenVertex* r) {
+    if (!(v.clip.w >= kMinClipW)) return false;
     float inv_w = 1.0f / v.clip.w;
     float nx = v.clip.x * inv_w, ny = v.clip.y * inv_w, nz = v.clip.z * inv_w;
-    r.x = to_fixed((nx * 0.5f + 0.5f) * float(camera.width));
-    r.y = to_fixed((0.5f - ny * 0.5f) * float(camera.height));
-    r.z = nz * 0.5f + 0.5f;
-    r.inv_w = inv_w;
-    r.bary = v.bary;
-    return r;
+    if (!to_fixed((nx * 0.5f + 0.5f) * float(camera.width), &r->x) ||
+        !to_fixed((0.5f - ny * 0.5f) * float(camera.height), &r->y))
+        return false;
+    r->z = nz * 0.5f + 0.5f;
+    r->inv_w = inv_w;
+    r->bary = v.bary;
+    return true;
 }
 
 }  // namespace
@@ -338,10 +354,20 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
         unsigned c0 = clip_outcode(corners[0].clip), c1 = clip_outcode(corners[1].clip),
                  c2 = clip_outcode(corners[2].clip);
         if (c0 & c1 & c2 & kOutsideBits) continue;  // wholly beyond one side of the view
-        if (((c0 | c1 | c2) & kClipPlaneBits) == 0 && finite_clip(corners[0].clip) &&
-            finite_clip(corners[1].clip) && finite_clip(corners[2].clip)) {
-            // ---- 3. Divide and snap (w > 0 here: every corner is in front of the near plane)
-            for (int k = 0; k < 3; ++k) s[k] = to_screen(camera, corners[k]);
+        // The fast path needs every corner strictly in front of the eye (w >= kMinClipW), not
+        // only inside the clip planes: a corner with w == 0 (at the eye) has outcode 0 when
+        // x = y = 0, and dividing by it would give NaN.
+        bool fast = ((c0 | c1 | c2) & kClipPlaneBits) == 0;
+        for (int k = 0; k < 3 && fast; ++k)
+            fast = finite_clip(corners[k].clip) && corners[k].clip.w >= kMinClipW;
+        if (fast) {
+            // ---- 3. Divide and snap ----
+            bool usable = true;
+            for (int k = 0; k < 3; ++k) usable = to_screen(camera, corners[k], &s[k]) && usable;
+            if (!usable) {
+                ++local.triangles_rejected;
+                continue;
+            }
             count = 3;
         } else {
             ClipPolygon poly;
@@ -355,10 +381,11 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
             // ---- 3. Divide and snap each corner of the clipped polygon ----
             bool usable = true;
             for (int k = 0; k < poly.count; ++k) {
-                // After near clipping w > 0 for the projections this library makes; a custom
-                // projection could still give w <= 0: such a triangle cannot be drawn.
-                if (!(poly.v[k].clip.w > 0.0f)) usable = false;
-                s[k] = to_screen(camera, poly.v[k]);
+                // After near clipping w > 0 for the cameras this library makes; a corner on
+                // the eye plane (w == 0, e.g. through a projective model matrix) or a custom
+                // projection can still give w <= 0: such a triangle cannot be drawn (its
+                // plane passes through the eye, or it wraps around behind it).
+                usable = to_screen(camera, poly.v[k], &s[k]) && usable;
             }
             if (!usable) {
                 ++local.triangles_rejected;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <cmath>
 
 #include "shitsukan/raster/clip.hpp"
@@ -77,8 +78,10 @@ void draw_line(LineContext& ctx, Vec3 a, Vec3 b) {
         float tb = (float(band.y0 + band.color.height) - a.y) / dy;
         float xa = a.x + dx * std::min(ta, tb), xb = a.x + dx * std::max(ta, tb);
         float xlo = std::min(xa, xb), xhi = std::max(xa, xb);
-        if (xlo > -1e6f) first = std::max(first, long(std::floor(xlo)) - 1);
-        if (xhi < 1e6f) end = std::min(end, long(std::ceil(xhi)) + 2);
+        // Clamped before the conversion (a nearly horizontal line gives huge or inf values;
+        // NaN fails both tests): the limits only need to lie outside [0, kMaxFrameSize].
+        if (xlo > -1e6f) first = std::max(first, long(std::floor(std::min(xlo, 1e6f))) - 1);
+        if (xhi < 1e6f) end = std::min(end, long(std::ceil(std::max(xhi, -1e6f))) + 2);
     }
     first = std::max(first, 0L);
     end = std::min(end, limit);
@@ -174,8 +177,16 @@ Status draw_edges(const Camera& camera, const FrameBand& band, const MeshView& m
         if (!is_finite(p) || !is_finite(q)) continue;
         Vec4 a = mvp * Vec4{p.x, p.y, p.z, 1.0f};
         Vec4 b = mvp * Vec4{q.x, q.y, q.z, 1.0f};
-        if (!clip_segment(&a, &b) || !(a.w > 0.0f) || !(b.w > 0.0f)) continue;
-        draw_line(ctx, clip_to_screen(camera, a), clip_to_screen(camera, b));
+        // w >= FLT_MIN keeps 1/w finite; after the guard band the ends lie within a few
+        // screens, so the bound below only refuses values that went wrong (NaN included),
+        // and every float -> integer conversion in draw_line stays in range.
+        const float min_w = std::numeric_limits<float>::min(), max_screen = 1.0e7f;
+        if (!clip_segment(&a, &b) || !(a.w >= min_w) || !(b.w >= min_w)) continue;
+        Vec3 sa = clip_to_screen(camera, a), sb = clip_to_screen(camera, b);
+        if (!(std::fabs(sa.x) < max_screen && std::fabs(sa.y) < max_screen &&
+              std::fabs(sb.x) < max_screen && std::fabs(sb.y) < max_screen))
+            continue;
+        draw_line(ctx, sa, sb);
     }
     if (pixels_written) *pixels_written += ctx.pixels;
     return Status::success();
