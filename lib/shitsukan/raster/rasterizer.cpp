@@ -312,6 +312,7 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
     // ---- Check everything before drawing anything ----
     if (shader == nullptr)
         return Status::error(StatusCode::invalid_argument, "draw_mesh: the shader is null");
+    SHITSUKAN_TRY(validate_camera(camera));
     SHITSUKAN_TRY(validate_band(camera, band));
     SHITSUKAN_TRY(validate_mesh(mesh));
     Mat4 normal_matrix;

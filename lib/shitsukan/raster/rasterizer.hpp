@@ -94,8 +94,9 @@ FrameBand make_band(const RgbView& color, const FloatView& depth, int y0, int fr
                     int frame_height);
 void clear_band(const FrameBand& band, Rgb8 background);
 
-// The checks draw_mesh() (and draw_wireframe()) run before drawing anything, for callers
-// that want them up front: buffer sizes and the band's place in the camera's frame; counts,
+// The checks draw_mesh() (and draw_edges()) run before drawing anything, for callers
+// that want them up front: the camera (validate_camera, camera.hpp); buffer sizes and strides
+// and the band's place in the camera's frame; counts,
 // pointers and every index of the mesh; a finite, invertible model matrix (and its normal
 // matrix, the inverse transpose).
 Status validate_band(const Camera& camera, const FrameBand& band);
@@ -104,8 +105,9 @@ Status validate_model(const Mat4& model, Mat4* normal_matrix);
 
 // Draws the mesh into the band. Shades only fragments that pass the depth test
 // (early-z: each pixel's front layer is shaded exactly once for a closed mesh when drawn
-// front-to-back; later nearer fragments overwrite). Returns invalid_argument for a band whose
-// buffers disagree in size, a mesh with out-of-range indices, etc. Degenerate triangles
+// front-to-back; later nearer fragments overwrite). Returns invalid_argument for a camera
+// that fails validate_camera, a band whose buffers disagree in size, a mesh with out-of-range
+// indices, etc. Degenerate triangles
 // (zero area, NaN/inf) are skipped and counted, not an error.
 Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
                  const DrawOptions& options, FragmentShader shader, void* user,

@@ -153,6 +153,7 @@ Status collect_edges(const MeshView& mesh, WireEdge* edges, int capacity, int* c
 Status draw_edges(const Camera& camera, const FrameBand& band, const MeshView& mesh,
                   const WireEdge* edges, int count, const WireOptions& options,
                   long* pixels_written) {
+    SHITSUKAN_TRY(validate_camera(camera));
     SHITSUKAN_TRY(validate_band(camera, band));
     if (count < 0 || (count > 0 && (edges == nullptr || mesh.positions == nullptr)))
         return Status::error(StatusCode::invalid_argument,
