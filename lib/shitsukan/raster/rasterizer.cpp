@@ -4,10 +4,10 @@
 //   1. fetch its three corners and take them to clip space; skip degenerate ones,
 //   2. clip in homogeneous space when an outcode asks for it (clip.hpp),
 //   3. divide by w and snap to 1/256 pixel,
-//   4. per triangle of the (fan-triangulated) polygon: cull by the sign of the area, then,
-//      if it touches the band, fetch the remaining vertex attributes (world position,
-//      normals, uv, colour) and walk the scanlines of the band: per row, the span between
-//      the left and right edge
+//   4. decide the facing once for the triangle and cull; then per triangle of the
+//      (fan-triangulated) polygon, if it touches the band, fetch the remaining vertex
+//      attributes (world position, normals, uv, colour) and walk the scanlines of the band:
+//      per row, the span between the left and right edge
 //      follows from exact integer arithmetic (top-left rule), per pixel the depth is tested
 //      before the shader is called (early z), and attributes are interpolated
 //      perspective-correctly.
@@ -68,7 +68,6 @@ struct ScreenVertex {  // no default member values: arrays of these are not zero
 struct DrawContext {
     MeshContext mesh;
     const FrameBand* band;
-    CullMode cull;
     FragmentShader shader;
     void* user;
     long fragments = 0;
@@ -192,18 +191,32 @@ void interpolate(const SourceTriangle& t, Vec3 b, Fragment* f) {
     f->color = p.color + dq.color * b.y + dr.color * b.z;
 }
 
-// Rasterizes one sub-triangle into the band. Returns true when it passed culling and
-// touches the band's rows.
+// Twice the signed area of a snapped triangle, in (1/256 pixel)^2. Screen y points down, so
+// a counter-clockwise (front) triangle of the world has a negative area here.
+inline i64 snapped_area2(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+    return (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+}
+
+// The orientation of the original triangle in homogeneous clip space: det of the rows
+// (x, y, w) of its three corners, in double. A piece of the clipped polygon has corners
+// B·C (B: their barycentrics, det B > 0 since clipping keeps the order), so its own
+// determinant is det B · det C, and with all its w > 0 its screen orientation is the sign of
+// det C: one answer for every piece, whatever snapping does to a sliver. Positive = counter-
+// clockwise in NDC (y up) = front.
+inline double clip_orientation(const ClipVertex corners[3]) {
+    double x0 = corners[0].clip.x, y0 = corners[0].clip.y, w0 = corners[0].clip.w;
+    double x1 = corners[1].clip.x, y1 = corners[1].clip.y, w1 = corners[1].clip.w;
+    double x2 = corners[2].clip.x, y2 = corners[2].clip.y, w2 = corners[2].clip.w;
+    return x0 * (y1 * w2 - y2 * w1) - y0 * (x1 * w2 - x2 * w1) + w0 * (x1 * y2 - x2 * y1);
+}
+
+// Rasterizes one sub-triangle into the band, with the facing decided for its whole source
+// triangle. Returns true when it touches the band's rows.
 bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& a,
-                     const ScreenVertex& b, const ScreenVertex& c) {
+                     const ScreenVertex& b, const ScreenVertex& c, bool front) {
     const FrameBand& band = *ctx.band;
-    // Twice the signed area, in (1/256 pixel)^2. Screen y points down, so a counter-
-    // clockwise (front) triangle of the world has a negative area here.
-    i64 area2 = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
-    if (area2 == 0) return false;
-    bool front = area2 < 0;
-    if ((ctx.cull == CullMode::back && !front) || (ctx.cull == CullMode::front && front))
-        return false;
+    i64 area2 = snapped_area2(a, b, c);
+    if (area2 == 0) return false;  // covers no pixel centre
 
     // Sort the corners by y: v0 top, v1 middle, v2 bottom.
     const ScreenVertex* v0 = &a;
@@ -319,7 +332,7 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
     SHITSUKAN_TRY(validate_model(options.model, &normal_matrix));
 
     const Mat4 mvp = camera.projection * (camera.view * options.model);
-    DrawContext ctx{{&mesh, &options.model, &normal_matrix}, &band, options.cull, shader, user, 0};
+    DrawContext ctx{{&mesh, &options.model, &normal_matrix}, &band, shader, user, 0};
     RasterStats local;
     local.triangles_in = mesh.triangle_count;
 
@@ -352,6 +365,7 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
         // ---- 2. Clip in homogeneous space (most triangles need not: outcodes tell) ----
         ScreenVertex s[kMaxClipVertices];
         int count = 0;
+        bool clipped = false;  // went through clip_triangle (near plane or guard band)
         unsigned c0 = clip_outcode(corners[0].clip), c1 = clip_outcode(corners[1].clip),
                  c2 = clip_outcode(corners[2].clip);
         if (c0 & c1 & c2 & kOutsideBits) continue;  // wholly beyond one side of the view
@@ -379,6 +393,7 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
             }
             if (clip.outside) continue;
             if (clip.clipped_near) ++local.triangles_clipped;
+            clipped = true;
             // ---- 3. Divide and snap each corner of the clipped polygon ----
             bool usable = true;
             for (int k = 0; k < poly.count; ++k) {
@@ -395,10 +410,32 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
             count = poly.count;
         }
 
-        // ---- 4. Cull and walk each triangle of the (fan-triangulated) polygon ----
+        // ---- 4. Cull (once for the whole triangle) and walk each piece of the fan ----
+        // Unclipped: the sign of the snapped area, so that the snapped triangles of a closed
+        // mesh still pair up exactly (as many front as back ones over every pixel). Clipped:
+        // the clip-space orientation, which all pieces share (a sliver's snapped area may
+        // flip sign), or failing that (edge-on) the whole polygon's snapped area.
+        bool front;
+        if (!clipped) {
+            i64 area2 = snapped_area2(s[0], s[1], s[2]);
+            if (area2 == 0) continue;
+            front = area2 < 0;
+        } else {
+            double orientation = clip_orientation(corners);
+            if (orientation == 0.0) {
+                i64 area2 = 0;
+                for (int k = 1; k + 1 < count; ++k) area2 += snapped_area2(s[0], s[k], s[k + 1]);
+                if (area2 == 0) continue;
+                orientation = area2 < 0 ? 1.0 : -1.0;
+            }
+            front = orientation > 0.0;
+        }
+        if ((options.cull == CullMode::back && !front) ||
+            (options.cull == CullMode::front && front))
+            continue;
         bool drawn = false;
         for (int k = 1; k + 1 < count; ++k)
-            drawn = raster_triangle(ctx, src, s[0], s[k], s[k + 1]) || drawn;
+            drawn = raster_triangle(ctx, src, s[0], s[k], s[k + 1], front) || drawn;
         if (drawn) ++local.triangles_drawn;
     }
 

@@ -24,8 +24,10 @@
 //     vertex at w <= 0 is clipped, never dropped whole and never wrapped around); a guard
 //     band 8x the view volume clips huge triangles (raster/clip.hpp). The clipped polygon is
 //     drawn as a fan; its pieces tile it exactly (same fill rule).
-//   - Facing: decided per drawn triangle from the sign of its snapped screen area;
-//     CullMode::back (the default) skips clockwise-on-screen triangles.
+//   - Facing: decided once per mesh triangle: from the sign of its snapped screen area, or,
+//     when it was clipped, from the orientation of its clip-space corners (which every piece
+//     of the clipped polygon shares, so a near-plane sliver is never culled or labelled apart
+//     from the rest). CullMode::back (the default) skips clockwise-on-screen triangles.
 //   - Interpolation: object position, normal, uv and colour are perspective-correct
 //     (attributes / w interpolated linearly in screen space, then divided by 1/w).
 //   - Bands: a FrameBand is the rows [y0, y0 + color.height) of a frame of
