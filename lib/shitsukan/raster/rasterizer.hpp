@@ -1,7 +1,8 @@
 // shitsukan/raster/rasterizer.hpp — the tiny scanline rasterizer (CONTRACT; see below).
 //
 // Manual
-//   RgbImage color(512, 512); FloatImage depth(512, 512);
+//   RgbImage color(512, 512); FloatImage depth(512, 512);   // image/image.hpp (host), or any
+//                                                           // caller memory as RgbView/FloatView
 //   FrameBand band = full_frame_band(color.view(), depth.view());   // or any band of rows
 //   clear_band(band, Rgb8{0, 0, 0});
 //   DrawOptions opt;  opt.model = Mat4::rotate_y(0.3f);  opt.cull = CullMode::back;
@@ -41,7 +42,7 @@
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/core/vec.hpp"
 #include "shitsukan/geom/mesh_view.hpp"
-#include "shitsukan/image/image.hpp"
+#include "shitsukan/image/image_view.hpp"
 #include "shitsukan/raster/camera.hpp"
 
 namespace shitsukan {
