@@ -107,11 +107,13 @@ Status validate_mesh(const MeshView& mesh);
 Status validate_model(const Mat4& model, Mat4* normal_matrix);
 
 // Draws the mesh into the band. Shades only fragments that pass the depth test
-// (early-z: each pixel's front layer is shaded exactly once for a closed mesh when drawn
-// front-to-back; later nearer fragments overwrite). Returns invalid_argument for a camera
-// that fails validate_camera, a band whose buffers disagree in size, a mesh with out-of-range
-// indices, etc. Degenerate triangles
-// (zero area, NaN/inf) are skipped and counted, not an error.
+// (early z: a pixel is shaded again only by a fragment nearer than all before it, and its
+// final colour and depth come from the nearest fragment; for a closed convex mesh with back
+// faces culled that is exactly one shading per covered pixel, while a non-convex one (a
+// torus) can shade a pixel once per front-facing layer that arrives nearer).
+// Returns invalid_argument for a camera that fails validate_camera, a band whose buffers
+// disagree in size, a mesh with out-of-range indices, etc. Degenerate triangles (zero area,
+// NaN/inf) are skipped and counted, not an error.
 Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
                  const DrawOptions& options, FragmentShader shader, void* user,
                  RasterStats* stats = nullptr);
