@@ -11,6 +11,7 @@
 #include <cstring>
 
 #include "shitsukan/geom/mesh_builders.hpp"
+#include "shitsukan/image/image.hpp"
 #include "shitsukan/image/image_io.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
 #include "shitsukan/raster/shading.hpp"

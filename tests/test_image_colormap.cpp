@@ -7,6 +7,7 @@
 
 #include "shitsukan/image/colormap.hpp"
 #include "shitsukan/image/float_convert.hpp"
+#include "shitsukan/image/image.hpp"
 
 using namespace shitsukan;
 

@@ -180,3 +180,70 @@ TEST_CASE("near-plane clipping never draws a wrapped-around image of the hidden 
     CHECK(above == 0);
     CHECK(below > 100);
 }
+
+namespace {
+
+// One triangle drawn with the given culling: the pixels written and how many fragments
+// said front_facing.
+struct Facing {
+    int pixels = 0, front = 0;
+};
+Facing draw_facing(const Camera& cam, const MeshView& mesh, CullMode cull) {
+    Facing r;
+    RgbImage color(cam.width, cam.height);
+    FloatImage depth(cam.width, cam.height);
+    FrameBand band = full_frame_band(color.view(), depth.view());
+    clear_band(band, Rgb8{0, 0, 0});
+    auto count = [&](const Fragment& f) {
+        ++r.pixels;
+        r.front += f.front_facing;
+        return Rgb8{255, 255, 255};
+    };
+    DrawOptions opt;
+    opt.cull = cull;
+    CHECK(draw_mesh(cam, band, mesh, opt, count).ok());
+    return r;
+}
+
+}  // namespace
+
+TEST_CASE("facing is decided once per mesh triangle: near-plane slivers are not flipped apart") {
+    // A corner just behind the near plane: the two cut points lie within a small fraction of
+    // a pixel of each other, so the fan piece between them is a sliver whose snapped area
+    // can change sign. The whole visible part must still be front or back as one: the same
+    // front_facing on every fragment, culled all or nothing, and the facing the triangle
+    // really has (its normal against the direction to the eye).
+    Camera cam = perspective_camera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60.0f, 64, 64);
+    Pcg32 rng(20261121);
+    int mixed = 0, split_culls = 0, wrong = 0, drawn = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        float za = rng.uniform(-4.0f, -0.3f), zb = rng.uniform(-4.0f, -0.3f);
+        Vec3 a{rng.signed_unit() * -za * 0.5f, rng.signed_unit() * -za * 0.5f, za};
+        Vec3 b{rng.signed_unit() * -zb * 0.5f, rng.signed_unit() * -zb * 0.5f, zb};
+        float behind = std::pow(10.0f, rng.uniform(-8.0f, -5.0f));  // inside the near plane
+        Vec3 c{rng.signed_unit() * 0.02f, rng.signed_unit() * 0.02f, -0.05f + behind};
+        if (rng.uniform() < 0.5f) std::swap(a, b);
+        TriangleMesh m;
+        m.positions = {a, b, c};
+        m.indices = {0, 1, 2};
+        Facing none = draw_facing(cam, m.view(), CullMode::none);
+        if (none.pixels == 0) continue;
+        ++drawn;
+        Facing back = draw_facing(cam, m.view(), CullMode::back);    // keeps front faces
+        Facing front = draw_facing(cam, m.view(), CullMode::front);  // keeps back faces
+        bool is_front = none.front == none.pixels;
+        mixed += none.front != 0 && !is_front;
+        split_culls += back.pixels != (is_front ? none.pixels : 0) ||
+                       front.pixels != (is_front ? 0 : none.pixels);
+        // The eye is at the origin: front when the normal points towards it.
+        Vec3d n = cross(Vec3d{b.x - a.x, b.y - a.y, b.z - a.z},
+                        Vec3d{c.x - a.x, c.y - a.y, c.z - a.z});
+        double towards_eye = -(n.x * a.x + n.y * a.y + n.z * a.z);
+        if (std::fabs(towards_eye) > 1e-6 * std::sqrt(length_squared(n)))
+            wrong += (towards_eye > 0) != is_front;
+    }
+    CHECK(drawn > 1000);
+    CHECK(mixed == 0);
+    CHECK(split_culls == 0);
+    CHECK(wrong == 0);
+}

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "raster_test_scenes.hpp"
+#include "shitsukan/raster/wireframe.hpp"
 
 using namespace shitsukan;
 using namespace raster_test;
@@ -77,6 +78,42 @@ TEST_CASE("zero-area, NaN and inf triangles are skipped and counted, the rest is
     CHECK(g.lit() == 0);
     CHECK(st2.triangles_rejected == 5);
     CHECK(st2.fragments_shaded == 0);
+}
+
+TEST_CASE("a corner with w_clip == 0 (at the eye) is not divided by: rejected, not NaN") {
+    // A valid camera at the origin looking down -z, and a projective (invertible) model
+    // matrix taking the object origin to the homogeneous point (0, 0, 0, -1): the eye. Its
+    // clip coordinates are (0, 0, z, 0) with no clipping-plane outcode, so only the w test
+    // keeps it out of the fast path's divide. The other corners are ordinary points in front.
+    Camera cam = perspective_camera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60.0f, 32, 32);
+    DrawOptions opt;
+    opt.model = Mat4::identity();
+    opt.model.m[3][2] = -1.0f;  // w_model = -z - 1
+    opt.model.m[3][3] = -1.0f;
+    opt.cull = CullMode::none;
+    TriangleMesh m;
+    m.positions = {{0, 0, 0}, {-1, -1, -3}, {1, -1, -3}};
+    m.indices = {0, 1, 2};
+    Vec4 clip0 = cam.projection * (cam.view * (opt.model * Vec4{0, 0, 0, 1}));
+    REQUIRE(clip0.w == 0.0f);
+    REQUIRE(clip0.x == 0.0f);
+    REQUIRE(clip0.y == 0.0f);
+    Frame f;
+    RasterStats stats;
+    CHECK(draw_mesh(cam, f.band, m.view(), opt, white, nullptr, &stats).ok());
+    CHECK(stats.triangles_rejected == 1);  // its plane passes through the eye: edge-on
+    CHECK(stats.fragments_shaded == 0);
+    CHECK(f.lit() == 0);
+    // The wireframe drops the two edges ending at the eye and draws the third.
+    WireEdge edges[3];
+    int n = 0;
+    REQUIRE(collect_edges(m.view(), edges, 3, &n).ok());
+    WireOptions w;
+    w.model = opt.model;
+    long pixels = 0;
+    CHECK(draw_edges(cam, f.band, m.view(), edges, n, w, &pixels).ok());
+    CHECK(pixels > 0);
+    CHECK(pixels == f.lit());
 }
 
 TEST_CASE("huge but finite coordinates are clipped by the guard band, not overflowed") {
@@ -153,6 +190,40 @@ TEST_CASE("bad buffers, meshes, shaders and matrices: a clear Status, nothing dr
                       DrawOptions{}, white, nullptr);
         CHECK(!s.ok());
         CHECK(mentions(s, "camera"));
+    }
+    SUBCASE("a band starting near INT_MAX: refused, no int overflow in the row check") {
+        RgbImage color(32, 8);
+        FloatImage depth(32, 8);
+        const int y0 = std::numeric_limits<int>::max() - 2;
+        FrameBand band = make_band(color.view(), depth.view(), y0, 32, 32);
+        Status s = validate_band(cam, band);
+        CHECK(s.code() == StatusCode::invalid_argument);
+        CHECK(mentions(s, "outside the frame rows"));
+        CHECK(mentions(s, "2147483653)"));  // y0 + 8, printed without wrapping
+        CHECK(!draw_mesh(cam, band, good.view(), DrawOptions{}, white, nullptr).ok());
+    }
+    SUBCASE("a stride below the width (or negative) is refused, by draw_edges too") {
+        // Room for exactly 32 x 32 pixels: a short stride would write past it otherwise.
+        Frame f;
+        TriangleMesh m = good;
+        WireEdge edges[3];
+        int n = 0;
+        REQUIRE(collect_edges(m.view(), edges, 3, &n).ok());
+        for (int stride : {31, 16, 0, -32}) {
+            for (int which = 0; which < 2; ++which) {
+                FrameBand band = f.band;
+                (which == 0 ? band.color.stride : band.depth.stride) = stride;
+                std::string view = which == 0 ? "colour" : "depth";
+                INFO("stride " << stride << " on the " << view << " view");
+                Status s = validate_band(cam, band);
+                CHECK(s.code() == StatusCode::invalid_argument);
+                CHECK(mentions(s, "stride"));
+                CHECK(!draw_mesh(cam, band, m.view(), DrawOptions{}, white, nullptr).ok());
+                CHECK(!draw_edges(cam, band, m.view(), edges, n, WireOptions{}).ok());
+            }
+        }
+        CHECK(f.lit() == 0);
+        CHECK(validate_band(cam, f.band).ok());
     }
     SUBCASE("out-of-range index: refused before anything is drawn") {
         TriangleMesh m = good;

@@ -57,6 +57,28 @@ TEST_CASE("collect_edges: each shared edge once, also across duplicated corner v
     CHECK(!collect_edges(tri.view(), three, 3, &n).ok());
 }
 
+TEST_CASE("collect_edges: 3·triangle_count beyond INT_MAX is refused before any index is read") {
+    // Only one triangle's indices exist: a count that the arrays cannot back must be refused
+    // from the counts alone (3 · 800 000 000 overflows int).
+    const Vec3 positions[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    const std::uint32_t indices[3] = {0, 1, 2};
+    MeshView mesh;
+    mesh.positions = positions;
+    mesh.indices = indices;
+    mesh.vertex_count = 3;
+    mesh.triangle_count = 800000000;
+    WireEdge room[16];
+    int n = -1;
+    Status s = collect_edges(mesh, room, 16, &n);
+    CHECK(s.code() == StatusCode::buffer_too_small);
+    CHECK(std::strstr(s.message(), "need 2400000000") != nullptr);
+    CHECK(n == 0);
+    CHECK(collect_edges(mesh, room, -1, &n).code() == StatusCode::invalid_argument);
+    mesh.triangle_count = 1;  // the same arrays with the true count are fine
+    CHECK(collect_edges(mesh, room, 16, &n).ok());
+    CHECK(n == 3);
+}
+
 TEST_CASE("a line lights one pixel per column at the centres in [start, end)") {
     Camera cam = pixel_camera();
     TriangleMesh seg;

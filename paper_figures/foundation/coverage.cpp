@@ -12,6 +12,7 @@
 #include "shitsukan/core/hash.hpp"
 #include "shitsukan/core/prng.hpp"
 #include "shitsukan/geom/mesh.hpp"
+#include "shitsukan/image/image.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
 #include "shitsukan/raster/wireframe.hpp"
 

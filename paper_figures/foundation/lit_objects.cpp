@@ -5,6 +5,7 @@
 // They exercise the camera, the rasterizer, the shading helpers and the mesh builders.
 #include "driver/figure.hpp"
 #include "shitsukan/geom/mesh_builders.hpp"
+#include "shitsukan/image/image.hpp"
 #include "shitsukan/raster/gouraud.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
 #include "shitsukan/raster/shading.hpp"

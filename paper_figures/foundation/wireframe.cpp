@@ -5,6 +5,7 @@
 
 #include "driver/figure.hpp"
 #include "shitsukan/geom/mesh_builders.hpp"
+#include "shitsukan/image/image.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
 #include "shitsukan/raster/wireframe.hpp"
 

@@ -17,7 +17,7 @@
 // No allocation; usable on a small device.
 #pragma once
 
-#include "shitsukan/image/image.hpp"
+#include "shitsukan/image/image_view.hpp"
 
 namespace shitsukan {
 

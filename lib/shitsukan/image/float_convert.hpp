@@ -20,7 +20,7 @@
 
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/image/colormap.hpp"
-#include "shitsukan/image/image.hpp"
+#include "shitsukan/image/image_view.hpp"
 
 namespace shitsukan {
 

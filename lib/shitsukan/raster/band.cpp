@@ -1,4 +1,6 @@
 // small-device: yes (no allocation, no exceptions)
+#include <cstddef>
+#include <cstdint>
 #include <limits>
 
 #include "shitsukan/raster/rasterizer.hpp"
@@ -58,6 +60,13 @@ Status validate_band(const Camera& camera, const FrameBand& band) {
                              "band colour buffer is %d x %d but its depth buffer is %d x %d",
                              band.color.width, band.color.height, band.depth.width,
                              band.depth.height);
+    // Rows are pixels + y·stride: a stride below the width would make rows overlap and the
+    // last one run past the caller's buffer.
+    if (band.color.stride < band.color.width || band.depth.stride < band.depth.width)
+        return Status::error(StatusCode::invalid_argument,
+                             "band strides must be >= the width %d (colour stride %d, depth "
+                             "stride %d)",
+                             band.color.width, band.color.stride, band.depth.stride);
     if (band.frame_width != camera.width || band.frame_height != camera.height)
         return Status::error(StatusCode::invalid_argument,
                              "band belongs to a %d x %d frame but the camera's frame is %d x %d",
@@ -66,10 +75,13 @@ Status validate_band(const Camera& camera, const FrameBand& band) {
         return Status::error(StatusCode::invalid_argument,
                              "band is %d pixels wide; a band spans the whole frame width %d",
                              band.color.width, band.frame_width);
-    if (band.y0 < 0 || band.y0 + band.color.height > band.frame_height)
+    // Written as a difference: y0 + height could overflow int for a y0 near INT_MAX.
+    if (band.y0 < 0 || band.y0 > band.frame_height ||
+        band.color.height > band.frame_height - band.y0)
         return Status::error(StatusCode::invalid_argument,
-                             "band rows [%d, %d) are outside the frame rows [0, %d)", band.y0,
-                             band.y0 + band.color.height, band.frame_height);
+                             "band rows [%d, %lld) are outside the frame rows [0, %d)", band.y0,
+                             static_cast<long long>(band.y0) + band.color.height,
+                             band.frame_height);
     return Status::success();
 }
 
@@ -83,13 +95,15 @@ Status validate_mesh(const MeshView& mesh) {
         return Status::error(StatusCode::invalid_argument,
                              "mesh has %d triangles but %s", mesh.triangle_count,
                              mesh.indices == nullptr ? "no index array" : "no vertices");
-    long n = long(mesh.triangle_count) * 3;
-    for (long i = 0; i < n; ++i)
+    // size_t: 3·triangle_count can exceed INT_MAX (and a 32-bit long).
+    const std::size_t n = 3 * std::size_t(mesh.triangle_count);
+    for (std::size_t i = 0; i < n; ++i)
         if (mesh.indices[i] >= std::uint32_t(mesh.vertex_count))
             return Status::error(StatusCode::invalid_argument,
-                                 "triangle %ld corner %ld has index %u, out of range for %d "
+                                 "triangle %lld corner %d has index %u, out of range for %d "
                                  "vertices",
-                                 i / 3, i % 3, unsigned(mesh.indices[i]), mesh.vertex_count);
+                                 static_cast<long long>(i / 3), int(i % 3),
+                                 unsigned(mesh.indices[i]), mesh.vertex_count);
     return Status::success();
 }
 

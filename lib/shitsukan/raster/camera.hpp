@@ -10,9 +10,13 @@
 //   clip_to_screen(cam, clip) -> the same mapping from homogeneous clip coordinates (w > 0);
 //   the rasterizer maps its vertices with the same operations.
 //   Ranges: fov_y_degrees in (0, 180), 0 < near_plane < far_plane, half_height > 0,
-//   width, height >= 1. These are not validated here; draw_mesh() checks the camera.
+//   width, height >= 1, everything finite, eye != target, up not parallel to target - eye.
+//   perspective_camera / orthographic_camera do not check them; make_perspective_camera /
+//   make_orthographic_camera do (a Status naming the bad value), and draw_mesh() /
+//   draw_edges() refuse a camera that fails validate_camera().
 #pragma once
 
+#include "shitsukan/core/status.hpp"
 #include "shitsukan/core/vec.hpp"
 
 namespace shitsukan {
@@ -30,6 +34,25 @@ Camera perspective_camera(Vec3 eye, Vec3 target, Vec3 up, float fov_y_degrees, i
                           int height, float near_plane = 0.05f, float far_plane = 100.0f);
 Camera orthographic_camera(Vec3 eye, Vec3 target, Vec3 up, float half_height, int width,
                            int height, float near_plane = 0.05f, float far_plane = 100.0f);
+// Checked builders: the very camera perspective_camera / orthographic_camera make (same
+// bits), or invalid_argument naming the offending value (then *out is left unchanged).
+Status make_perspective_camera(Vec3 eye, Vec3 target, Vec3 up, float fov_y_degrees, int width,
+                               int height, float near_plane, float far_plane, Camera* out);
+Status make_orthographic_camera(Vec3 eye, Vec3 target, Vec3 up, float half_height, int width,
+                                int height, float near_plane, float far_plane, Camera* out);
+
+// Is this a camera the rasterizer can use? A frame of at least 1 x 1 pixels; finite view,
+// projection and eye; a view that is a rotation (rows of its 3x3 part orthonormal within
+// kCameraTolerance, determinant +1: no mirror) plus a translation; a projection of the kind
+// the flag says — perspective: last row (0, 0, -1, 0), or orthographic: (0, 0, 0, 1) — with
+// positive x and y scales (no mirror), no x/y terms in its z row, and depth growing with the
+// distance from a near plane in front of the eye (perspective) up to a far plane beyond it.
+// Catches what the unchecked builders make of bad input (eye == target, up parallel to the
+// view direction, fov outside (0, 180), near <= 0, far <= near, NaN/inf), except a fov
+// beyond 360 degrees, which tan() cannot tell from its value modulo 360.
+Status validate_camera(const Camera& camera);
+constexpr float kCameraTolerance = 1e-3f;  // chosen here: float look_at is good to ~1e-6
+
 Vec3 project(const Camera& camera, Vec3 world_point);
 Vec3 clip_to_screen(const Camera& camera, Vec4 clip);
 

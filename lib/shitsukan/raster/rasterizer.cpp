@@ -4,17 +4,19 @@
 //   1. fetch its three corners and take them to clip space; skip degenerate ones,
 //   2. clip in homogeneous space when an outcode asks for it (clip.hpp),
 //   3. divide by w and snap to 1/256 pixel,
-//   4. per triangle of the (fan-triangulated) polygon: cull by the sign of the area, then,
-//      if it touches the band, fetch the remaining vertex attributes (world position,
-//      normals, uv, colour) and walk the scanlines of the band: per row, the span between
-//      the left and right edge
+//   4. decide the facing once for the triangle and cull; then per triangle of the
+//      (fan-triangulated) polygon, if it touches the band, fetch the remaining vertex
+//      attributes (world position, normals, uv, colour) and walk the scanlines of the band:
+//      per row, the span between the left and right edge
 //      follows from exact integer arithmetic (top-left rule), per pixel the depth is tested
 //      before the shader is called (early z), and attributes are interpolated
 //      perspective-correctly.
 // Every per-pixel value is a function of the pixel and the triangle only (nothing is
 // stepped incrementally from the top of the triangle or of the band), so any band of rows
 // gives the same bits as the full frame.
+#include <cstddef>
 #include <cstdint>
+#include <limits>
 
 #include "shitsukan/raster/clip.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
@@ -66,7 +68,6 @@ struct ScreenVertex {  // no default member values: arrays of these are not zero
 struct DrawContext {
     MeshContext mesh;
     const FrameBand* band;
-    CullMode cull;
     FragmentShader shader;
     void* user;
     long fragments = 0;
@@ -90,9 +91,20 @@ inline i64 first_column_at_or_right_of(const ScreenVertex& e0, const ScreenVerte
 
 inline Vec3d to_double(Vec3 v) { return {double(v.x), double(v.y), double(v.z)}; }
 
-inline i64 to_fixed(float v) {
+// Smallest w_clip divided by: 1/w stays finite (FLT_MIN = 2^-126, so 1/w <= 2^126).
+constexpr float kMinClipW = std::numeric_limits<float>::min();
+// Largest |fixed-point coordinate| accepted (chosen here: 2^28, i.e. 2^20 pixels). Inside the
+// guard band a coordinate is at most 4.5·kMaxFrameSize pixels (< 2^17), so this only refuses
+// values that went wrong; it keeps every product of the edge tests below 2^60.
+constexpr float kMaxFixed = 268435456.0f;
+
+// v·256 rounded half away from zero. false (and nothing stored) for NaN or a value beyond
+// kMaxFixed: converting those to an integer would be undefined behaviour.
+inline bool to_fixed(float v, i64* out) {
     float s = v * float(kSubpixel);
-    return i64(s < 0.0f ? s - 0.5f : s + 0.5f);  // round half away from zero
+    if (!(s > -kMaxFixed && s < kMaxFixed)) return false;
+    *out = i64(s < 0.0f ? s - 0.5f : s + 0.5f);
+    return true;
 }
 
 // One square root and one division per vector: this runs twice per fragment.
@@ -179,18 +191,32 @@ void interpolate(const SourceTriangle& t, Vec3 b, Fragment* f) {
     f->color = p.color + dq.color * b.y + dr.color * b.z;
 }
 
-// Rasterizes one sub-triangle into the band. Returns true when it passed culling and
-// touches the band's rows.
+// Twice the signed area of a snapped triangle, in (1/256 pixel)^2. Screen y points down, so
+// a counter-clockwise (front) triangle of the world has a negative area here.
+inline i64 snapped_area2(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+    return (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+}
+
+// The orientation of the original triangle in homogeneous clip space: det of the rows
+// (x, y, w) of its three corners, in double. A piece of the clipped polygon has corners
+// B·C (B: their barycentrics, det B > 0 since clipping keeps the order), so its own
+// determinant is det B · det C, and with all its w > 0 its screen orientation is the sign of
+// det C: one answer for every piece, whatever snapping does to a sliver. Positive = counter-
+// clockwise in NDC (y up) = front.
+inline double clip_orientation(const ClipVertex corners[3]) {
+    double x0 = corners[0].clip.x, y0 = corners[0].clip.y, w0 = corners[0].clip.w;
+    double x1 = corners[1].clip.x, y1 = corners[1].clip.y, w1 = corners[1].clip.w;
+    double x2 = corners[2].clip.x, y2 = corners[2].clip.y, w2 = corners[2].clip.w;
+    return x0 * (y1 * w2 - y2 * w1) - y0 * (x1 * w2 - x2 * w1) + w0 * (x1 * y2 - x2 * y1);
+}
+
+// Rasterizes one sub-triangle into the band, with the facing decided for its whole source
+// triangle. Returns true when it touches the band's rows.
 bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& a,
-                     const ScreenVertex& b, const ScreenVertex& c) {
+                     const ScreenVertex& b, const ScreenVertex& c, bool front) {
     const FrameBand& band = *ctx.band;
-    // Twice the signed area, in (1/256 pixel)^2. Screen y points down, so a counter-
-    // clockwise (front) triangle of the world has a negative area here.
-    i64 area2 = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
-    if (area2 == 0) return false;
-    bool front = area2 < 0;
-    if ((ctx.cull == CullMode::back && !front) || (ctx.cull == CullMode::front && front))
-        return false;
+    i64 area2 = snapped_area2(a, b, c);
+    if (area2 == 0) return false;  // covers no pixel centre
 
     // Sort the corners by y: v0 top, v1 middle, v2 bottom.
     const ScreenVertex* v0 = &a;
@@ -204,7 +230,7 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
     // out (the top-left rule for horizontal edges), intersected with the band.
     i64 row_begin = ceil_div(v0->y - kHalfPixel, kSubpixel);
     i64 row_end = ceil_div(v2->y - kHalfPixel, kSubpixel);
-    i64 band_begin = band.y0, band_end = band.y0 + band.color.height;
+    i64 band_begin = band.y0, band_end = i64(band.y0) + band.color.height;
     if (row_begin < band_begin) row_begin = band_begin;
     if (row_end > band_end) row_end = band_end;
     if (row_begin >= row_end) return false;
@@ -275,16 +301,20 @@ inline bool finite_clip(Vec4 p) {
 }
 
 // The divide and the viewport mapping, as clip_to_screen (camera.cpp) does it, keeping 1/w.
-ScreenVertex to_screen(const Camera& camera, const ClipVertex& v) {
-    ScreenVertex r;
+// false when the corner cannot be mapped: w below kMinClipW (at or behind the eye: only a
+// vertex on the eye plane or a custom projection gets here) or a screen position out of
+// range.
+bool to_screen(const Camera& camera, const ClipVertex& v, ScreenVertex* r) {
+    if (!(v.clip.w >= kMinClipW)) return false;
     float inv_w = 1.0f / v.clip.w;
     float nx = v.clip.x * inv_w, ny = v.clip.y * inv_w, nz = v.clip.z * inv_w;
-    r.x = to_fixed((nx * 0.5f + 0.5f) * float(camera.width));
-    r.y = to_fixed((0.5f - ny * 0.5f) * float(camera.height));
-    r.z = nz * 0.5f + 0.5f;
-    r.inv_w = inv_w;
-    r.bary = v.bary;
-    return r;
+    if (!to_fixed((nx * 0.5f + 0.5f) * float(camera.width), &r->x) ||
+        !to_fixed((0.5f - ny * 0.5f) * float(camera.height), &r->y))
+        return false;
+    r->z = nz * 0.5f + 0.5f;
+    r->inv_w = inv_w;
+    r->bary = v.bary;
+    return true;
 }
 
 }  // namespace
@@ -295,13 +325,14 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
     // ---- Check everything before drawing anything ----
     if (shader == nullptr)
         return Status::error(StatusCode::invalid_argument, "draw_mesh: the shader is null");
+    SHITSUKAN_TRY(validate_camera(camera));
     SHITSUKAN_TRY(validate_band(camera, band));
     SHITSUKAN_TRY(validate_mesh(mesh));
     Mat4 normal_matrix;
     SHITSUKAN_TRY(validate_model(options.model, &normal_matrix));
 
     const Mat4 mvp = camera.projection * (camera.view * options.model);
-    DrawContext ctx{{&mesh, &options.model, &normal_matrix}, &band, options.cull, shader, user, 0};
+    DrawContext ctx{{&mesh, &options.model, &normal_matrix}, &band, shader, user, 0};
     RasterStats local;
     local.triangles_in = mesh.triangle_count;
 
@@ -309,7 +340,7 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
         // ---- 1. Fetch the three corners, into clip space ----
         SourceTriangle src;
         src.index = t;
-        src.corner_index = mesh.indices + 3 * t;
+        src.corner_index = mesh.indices + 3 * std::size_t(t);  // no int overflow
         ClipVertex corners[3];
         bool finite = true;
         for (int k = 0; k < 3; ++k) {
@@ -334,13 +365,24 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
         // ---- 2. Clip in homogeneous space (most triangles need not: outcodes tell) ----
         ScreenVertex s[kMaxClipVertices];
         int count = 0;
+        bool clipped = false;  // went through clip_triangle (near plane or guard band)
         unsigned c0 = clip_outcode(corners[0].clip), c1 = clip_outcode(corners[1].clip),
                  c2 = clip_outcode(corners[2].clip);
         if (c0 & c1 & c2 & kOutsideBits) continue;  // wholly beyond one side of the view
-        if (((c0 | c1 | c2) & kClipPlaneBits) == 0 && finite_clip(corners[0].clip) &&
-            finite_clip(corners[1].clip) && finite_clip(corners[2].clip)) {
-            // ---- 3. Divide and snap (w > 0 here: every corner is in front of the near plane)
-            for (int k = 0; k < 3; ++k) s[k] = to_screen(camera, corners[k]);
+        // The fast path needs every corner strictly in front of the eye (w >= kMinClipW), not
+        // only inside the clip planes: a corner with w == 0 (at the eye) has outcode 0 when
+        // x = y = 0, and dividing by it would give NaN.
+        bool fast = ((c0 | c1 | c2) & kClipPlaneBits) == 0;
+        for (int k = 0; k < 3 && fast; ++k)
+            fast = finite_clip(corners[k].clip) && corners[k].clip.w >= kMinClipW;
+        if (fast) {
+            // ---- 3. Divide and snap ----
+            bool usable = true;
+            for (int k = 0; k < 3; ++k) usable = to_screen(camera, corners[k], &s[k]) && usable;
+            if (!usable) {
+                ++local.triangles_rejected;
+                continue;
+            }
             count = 3;
         } else {
             ClipPolygon poly;
@@ -351,13 +393,15 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
             }
             if (clip.outside) continue;
             if (clip.clipped_near) ++local.triangles_clipped;
+            clipped = true;
             // ---- 3. Divide and snap each corner of the clipped polygon ----
             bool usable = true;
             for (int k = 0; k < poly.count; ++k) {
-                // After near clipping w > 0 for the projections this library makes; a custom
-                // projection could still give w <= 0: such a triangle cannot be drawn.
-                if (!(poly.v[k].clip.w > 0.0f)) usable = false;
-                s[k] = to_screen(camera, poly.v[k]);
+                // After near clipping w > 0 for the cameras this library makes; a corner on
+                // the eye plane (w == 0, e.g. through a projective model matrix) or a custom
+                // projection can still give w <= 0: such a triangle cannot be drawn (its
+                // plane passes through the eye, or it wraps around behind it).
+                usable = to_screen(camera, poly.v[k], &s[k]) && usable;
             }
             if (!usable) {
                 ++local.triangles_rejected;
@@ -366,10 +410,32 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
             count = poly.count;
         }
 
-        // ---- 4. Cull and walk each triangle of the (fan-triangulated) polygon ----
+        // ---- 4. Cull (once for the whole triangle) and walk each piece of the fan ----
+        // Unclipped: the sign of the snapped area, so that the snapped triangles of a closed
+        // mesh still pair up exactly (as many front as back ones over every pixel). Clipped:
+        // the clip-space orientation, which all pieces share (a sliver's snapped area may
+        // flip sign), or failing that (edge-on) the whole polygon's snapped area.
+        bool front;
+        if (!clipped) {
+            i64 area2 = snapped_area2(s[0], s[1], s[2]);
+            if (area2 == 0) continue;
+            front = area2 < 0;
+        } else {
+            double orientation = clip_orientation(corners);
+            if (orientation == 0.0) {
+                i64 area2 = 0;
+                for (int k = 1; k + 1 < count; ++k) area2 += snapped_area2(s[0], s[k], s[k + 1]);
+                if (area2 == 0) continue;
+                orientation = area2 < 0 ? 1.0 : -1.0;
+            }
+            front = orientation > 0.0;
+        }
+        if ((options.cull == CullMode::back && !front) ||
+            (options.cull == CullMode::front && front))
+            continue;
         bool drawn = false;
         for (int k = 1; k + 1 < count; ++k)
-            drawn = raster_triangle(ctx, src, s[0], s[k], s[k + 1]) || drawn;
+            drawn = raster_triangle(ctx, src, s[0], s[k], s[k + 1], front) || drawn;
         if (drawn) ++local.triangles_drawn;
     }
 

@@ -1,7 +1,8 @@
 // shitsukan/raster/rasterizer.hpp — the tiny scanline rasterizer (CONTRACT; see below).
 //
 // Manual
-//   RgbImage color(512, 512); FloatImage depth(512, 512);
+//   RgbImage color(512, 512); FloatImage depth(512, 512);   // image/image.hpp (host), or any
+//                                                           // caller memory as RgbView/FloatView
 //   FrameBand band = full_frame_band(color.view(), depth.view());   // or any band of rows
 //   clear_band(band, Rgb8{0, 0, 0});
 //   DrawOptions opt;  opt.model = Mat4::rotate_y(0.3f);  opt.cull = CullMode::back;
@@ -24,8 +25,10 @@
 //     vertex at w <= 0 is clipped, never dropped whole and never wrapped around); a guard
 //     band 8x the view volume clips huge triangles (raster/clip.hpp). The clipped polygon is
 //     drawn as a fan; its pieces tile it exactly (same fill rule).
-//   - Facing: decided per drawn triangle from the sign of its snapped screen area;
-//     CullMode::back (the default) skips clockwise-on-screen triangles.
+//   - Facing: decided once per mesh triangle: from the sign of its snapped screen area, or,
+//     when it was clipped, from the orientation of its clip-space corners (which every piece
+//     of the clipped polygon shares, so a near-plane sliver is never culled or labelled apart
+//     from the rest). CullMode::back (the default) skips clockwise-on-screen triangles.
 //   - Interpolation: object position, normal, uv and colour are perspective-correct
 //     (attributes / w interpolated linearly in screen space, then divided by 1/w).
 //   - Bands: a FrameBand is the rows [y0, y0 + color.height) of a frame of
@@ -39,7 +42,7 @@
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/core/vec.hpp"
 #include "shitsukan/geom/mesh_view.hpp"
-#include "shitsukan/image/image.hpp"
+#include "shitsukan/image/image_view.hpp"
 #include "shitsukan/raster/camera.hpp"
 
 namespace shitsukan {
@@ -94,8 +97,9 @@ FrameBand make_band(const RgbView& color, const FloatView& depth, int y0, int fr
                     int frame_height);
 void clear_band(const FrameBand& band, Rgb8 background);
 
-// The checks draw_mesh() (and draw_wireframe()) run before drawing anything, for callers
-// that want them up front: buffer sizes and the band's place in the camera's frame; counts,
+// The checks draw_mesh() (and draw_edges()) run before drawing anything, for callers
+// that want them up front: the camera (validate_camera, camera.hpp); buffer sizes and strides
+// and the band's place in the camera's frame; counts,
 // pointers and every index of the mesh; a finite, invertible model matrix (and its normal
 // matrix, the inverse transpose).
 Status validate_band(const Camera& camera, const FrameBand& band);
@@ -103,10 +107,13 @@ Status validate_mesh(const MeshView& mesh);
 Status validate_model(const Mat4& model, Mat4* normal_matrix);
 
 // Draws the mesh into the band. Shades only fragments that pass the depth test
-// (early-z: each pixel's front layer is shaded exactly once for a closed mesh when drawn
-// front-to-back; later nearer fragments overwrite). Returns invalid_argument for a band whose
-// buffers disagree in size, a mesh with out-of-range indices, etc. Degenerate triangles
-// (zero area, NaN/inf) are skipped and counted, not an error.
+// (early z: a pixel is shaded again only by a fragment nearer than all before it, and its
+// final colour and depth come from the nearest fragment; for a closed convex mesh with back
+// faces culled that is exactly one shading per covered pixel, while a non-convex one (a
+// torus) can shade a pixel once per front-facing layer that arrives nearer).
+// Returns invalid_argument for a camera that fails validate_camera, a band whose buffers
+// disagree in size, a mesh with out-of-range indices, etc. Degenerate triangles (zero area,
+// NaN/inf) are skipped and counted, not an error.
 Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
                  const DrawOptions& options, FragmentShader shader, void* user,
                  RasterStats* stats = nullptr);

@@ -2,6 +2,9 @@
 #include "shitsukan/raster/wireframe.hpp"
 
 #include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <cmath>
 
 #include "shitsukan/raster/clip.hpp"
@@ -75,8 +78,10 @@ void draw_line(LineContext& ctx, Vec3 a, Vec3 b) {
         float tb = (float(band.y0 + band.color.height) - a.y) / dy;
         float xa = a.x + dx * std::min(ta, tb), xb = a.x + dx * std::max(ta, tb);
         float xlo = std::min(xa, xb), xhi = std::max(xa, xb);
-        if (xlo > -1e6f) first = std::max(first, long(std::floor(xlo)) - 1);
-        if (xhi < 1e6f) end = std::min(end, long(std::ceil(xhi)) + 2);
+        // Clamped before the conversion (a nearly horizontal line gives huge or inf values;
+        // NaN fails both tests): the limits only need to lie outside [0, kMaxFrameSize].
+        if (xlo > -1e6f) first = std::max(first, long(std::floor(std::min(xlo, 1e6f))) - 1);
+        if (xhi < 1e6f) end = std::min(end, long(std::ceil(std::max(xhi, -1e6f))) + 2);
     }
     first = std::max(first, 0L);
     end = std::min(end, limit);
@@ -104,16 +109,26 @@ Status collect_edges(const MeshView& mesh, WireEdge* edges, int capacity, int* c
     if (count == nullptr)
         return Status::error(StatusCode::invalid_argument, "collect_edges: count is null");
     *count = 0;
-    SHITSUKAN_TRY(validate_mesh(mesh));
-    if (edges == nullptr || capacity < 3 * mesh.triangle_count)
+    // The room is checked first, from the counts alone, in 64 bits (3·triangle_count can
+    // exceed INT_MAX): validate_mesh reads every index, so it must not run on a count the
+    // arrays cannot back.
+    if (mesh.triangle_count < 0 || capacity < 0)
+        return Status::error(StatusCode::invalid_argument,
+                             "collect_edges: %d triangles, room for %d edges; counts must be "
+                             ">= 0", mesh.triangle_count, capacity);
+    const std::int64_t needed = 3 * std::int64_t(mesh.triangle_count);
+    if ((edges == nullptr && needed > 0) || std::int64_t(capacity) < needed)
         return Status::error(StatusCode::buffer_too_small,
-                             "collect_edges: room for %d edges, %d triangles need %d",
-                             edges ? capacity : 0, mesh.triangle_count, 3 * mesh.triangle_count);
+                             "collect_edges: room for %d edges, %d triangles need %lld",
+                             edges ? capacity : 0, mesh.triangle_count,
+                             static_cast<long long>(needed));
+    SHITSUKAN_TRY(validate_mesh(mesh));
     // Every triangle side, its lower end (by position) first.
     int n = 0;
     for (int t = 0; t < mesh.triangle_count; ++t)
         for (int k = 0; k < 3; ++k) {
-            std::uint32_t i = mesh.indices[3 * t + k], j = mesh.indices[3 * t + (k + 1) % 3];
+            const std::uint32_t* corner = mesh.indices + 3 * std::size_t(t);
+            std::uint32_t i = corner[k], j = corner[(k + 1) % 3];
             Vec3 p = mesh.positions[i], q = mesh.positions[j];
             if (!is_finite(p) || !is_finite(q) || p == q) continue;
             edges[n++] = less_position(p, q) ? WireEdge{i, j} : WireEdge{j, i};
@@ -138,6 +153,7 @@ Status collect_edges(const MeshView& mesh, WireEdge* edges, int capacity, int* c
 Status draw_edges(const Camera& camera, const FrameBand& band, const MeshView& mesh,
                   const WireEdge* edges, int count, const WireOptions& options,
                   long* pixels_written) {
+    SHITSUKAN_TRY(validate_camera(camera));
     SHITSUKAN_TRY(validate_band(camera, band));
     if (count < 0 || (count > 0 && (edges == nullptr || mesh.positions == nullptr)))
         return Status::error(StatusCode::invalid_argument,
@@ -162,8 +178,16 @@ Status draw_edges(const Camera& camera, const FrameBand& band, const MeshView& m
         if (!is_finite(p) || !is_finite(q)) continue;
         Vec4 a = mvp * Vec4{p.x, p.y, p.z, 1.0f};
         Vec4 b = mvp * Vec4{q.x, q.y, q.z, 1.0f};
-        if (!clip_segment(&a, &b) || !(a.w > 0.0f) || !(b.w > 0.0f)) continue;
-        draw_line(ctx, clip_to_screen(camera, a), clip_to_screen(camera, b));
+        // w >= FLT_MIN keeps 1/w finite; after the guard band the ends lie within a few
+        // screens, so the bound below only refuses values that went wrong (NaN included),
+        // and every float -> integer conversion in draw_line stays in range.
+        const float min_w = std::numeric_limits<float>::min(), max_screen = 1.0e7f;
+        if (!clip_segment(&a, &b) || !(a.w >= min_w) || !(b.w >= min_w)) continue;
+        Vec3 sa = clip_to_screen(camera, a), sb = clip_to_screen(camera, b);
+        if (!(std::fabs(sa.x) < max_screen && std::fabs(sa.y) < max_screen &&
+              std::fabs(sb.x) < max_screen && std::fabs(sb.y) < max_screen))
+            continue;
+        draw_line(ctx, sa, sb);
     }
     if (pixels_written) *pixels_written += ctx.pixels;
     return Status::success();
