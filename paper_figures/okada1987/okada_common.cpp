@@ -229,13 +229,14 @@ Status build_scene(const std::string& name, bool quick, Scene* out) {
         SHITSUKAN_TRY(make_revolution(profile.data(), int(profile.size()), seg, &mesh));
         fit_to_cube(&mesh, 0.92f);
         add_piece(out, mesh);
-        out->eye = {3.4f, 3.4f, 4.6f};
+        out->eye = {2.5f, 2.5f, 3.4f};
     } else if (name == "nagoya") {
         SHITSUKAN_TRY(make_block_text("NAGOYA", 1.0f, 0.45f, &mesh));
         fit_to_cube(&mesh, 0.95f);
         add_piece(out, mesh);
-        out->eye = {0.0f, 1.0f, 2.6f};
-        out->fov_degrees = 42.0f;
+        out->eye = {0.0f, 1.2f, 2.25f};
+        out->target = {0.0f, -0.04f, 0.0f};
+        out->fov_degrees = 44.0f;
     } else if (name == "cup") {
         const Vec2d profile[] = {{0.0, -0.9},  {0.52, -0.9}, {0.58, -0.84}, {0.62, 0.2},
                                  {0.66, 0.88}, {0.66, 0.92}, {0.60, 0.92},  {0.56, 0.2},
