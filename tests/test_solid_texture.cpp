@@ -8,6 +8,7 @@
 #include <cstring>
 #include <string>
 
+#include "shitsukan/core/prng.hpp"
 #include "shitsukan/solid/solid.hpp"
 
 using namespace shitsukan;
@@ -47,6 +48,33 @@ TEST_CASE("trilinear D(P): exact at nodes, linear along edges, continuous across
     // The weights of eq. (6) sum to 1: a constant lattice interpolates to the constant.
     const float ones[8] = {2.5f, 2.5f, 2.5f, 2.5f, 2.5f, 2.5f, 2.5f, 2.5f};
     CHECK(trilinear_corners(ones, 0.3f, 0.7f, 0.1f) == doctest::Approx(2.5f).epsilon(1e-6));
+}
+
+TEST_CASE("trilinear_corners is eq. (6) itself: sum of D_i times the opposite box volume V_i") {
+    // The library evaluates eq. (6) factored (lerps along x, y, z); here it is written out
+    // literally, in double: V_i = product over the axes of the extent of the box opposite P_i.
+    Pcg32 rng(1987u, 6u);
+    for (int t = 0; t < 2000; ++t) {
+        float d[8];
+        for (float& v : d) v = rng.uniform(-3.0f, 3.0f);
+        const float f[3] = {rng.uniform(0.0f, 1.0f), rng.uniform(0.0f, 1.0f),
+                            rng.uniform(0.0f, 1.0f)};
+        double literal = 0.0;
+        for (int corner = 0; corner < 8; ++corner) {
+            double volume = 1.0;  // box between P_x and the corner opposite P_i
+            for (int axis = 0; axis < 3; ++axis)
+                volume *= ((corner >> axis) & 1) ? double(f[axis]) : 1.0 - double(f[axis]);
+            literal += double(d[corner]) * volume;
+        }
+        // float rounding of a handful of operations on values up to 3: well under 1e-5.
+        CHECK(std::fabs(double(trilinear_corners(d, f[0], f[1], f[2])) - literal) < 1e-5);
+    }
+    // Exactly the corner value when the fractions are 0 or 1 (the node is returned unchanged).
+    const float d[8] = {0.1f, 0.7f, -0.3f, 1.9f, 2.2f, -1.1f, 0.3f, 0.9f};
+    for (int corner = 0; corner < 8; ++corner)
+        CHECK(same_bits(trilinear_corners(d, float(corner & 1), float((corner >> 1) & 1),
+                                          float((corner >> 2) & 1)),
+                        d[corner]));
 }
 
 TEST_CASE("turbulence outside the lattice: clamped, or refused by the checked form") {
