@@ -17,6 +17,9 @@
 // small-device: yes (no allocation)
 #pragma once
 
+#include <cstddef>
+
+#include "shitsukan/core/assert.hpp"
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/core/vec.hpp"
 #include "shitsukan/solid/fractal_lattice.hpp"
@@ -63,8 +66,24 @@ inline bool inside_lattice(Vec3 p, int R) {
 
 Status check_lattice_point(Vec3 p, int R);  // invalid_argument for NaN/inf, out_of_range outside
 
-// D(P) from a Type I array.
-float turbulence(const LatticeView& lattice, Vec3 p);
+// D(P) from a Type I array: the unit cell holding P, its eight nodes P_i (fig. 6) in the
+// order i + 2j + 4k, then eq. (6). Inline: a renderer calls it once per pixel, and the call
+// itself would cost as much as a fifth of the lookup.
+inline float turbulence(const LatticeView& lattice, Vec3 p) {
+    SHITSUKAN_ASSERT(lattice.values != nullptr && lattice.side >= 2);
+    const int cells = lattice.side - 1;
+    int ix, iy, iz;
+    float fx, fy, fz;
+    split_lattice_coordinate(p.x, cells, &ix, &fx);
+    split_lattice_coordinate(p.y, cells, &iy, &fy);
+    split_lattice_coordinate(p.z, cells, &iz, &fz);
+    const std::size_t side = std::size_t(lattice.side), plane = side * side;
+    const float* base = lattice.values + (std::size_t(iz) * side + std::size_t(iy)) * side +
+                        std::size_t(ix);
+    const float d[8] = {base[0],     base[1],         base[side],         base[side + 1],
+                        base[plane], base[plane + 1], base[plane + side], base[plane + side + 1]};
+    return trilinear_corners(d, fx, fy, fz);
+}
 Status turbulence_checked(const LatticeView& lattice, Vec3 p, float* out);
 
 }  // namespace shitsukan
