@@ -8,6 +8,8 @@
 #include <cstring>
 #include <string>
 
+#include <unistd.h>  // getpid, truncate (POSIX: the test files only)
+
 #include "shitsukan/core/prng.hpp"
 #include "shitsukan/solid/solid.hpp"
 
@@ -171,8 +173,10 @@ TEST_CASE("colour lookup eq. (12) interpolates I_min..I_max and clamps G'") {
 
 TEST_CASE("lattice file: save and load round trip, header and budget") {
     const FractalLattice& lattice = test_lattice();
+    // One file per process: several worktrees run their tests at the same time.
     const char* tmp = std::getenv("TMPDIR");
-    std::string path = std::string(tmp ? tmp : "/tmp") + "/shitsukan_test_lattice.shl";
+    std::string path = std::string(tmp ? tmp : "/tmp") + "/shitsukan_test_lattice_" +
+                       std::to_string(long(getpid())) + ".shl";
     REQUIRE(save_lattice(path, lattice).ok());
     FractalLattice back;
     REQUIRE(load_lattice(path, &back).ok());
@@ -189,6 +193,34 @@ TEST_CASE("lattice file: save and load round trip, header and budget") {
     FractalLattice small;
     Status s = load_lattice(path, &small, 1000);
     CHECK(s.code() == StatusCode::too_large);
+    // Damaged files: a status naming the problem, never a crash or a half-filled lattice.
+    auto rewrite = [&](long offset, const void* bytes, std::size_t count) {
+        std::FILE* g = std::fopen(path.c_str(), "r+b");
+        REQUIRE(g != nullptr);
+        std::fseek(g, offset, SEEK_SET);
+        std::fwrite(bytes, 1, count, g);
+        std::fclose(g);
+    };
+    const unsigned char noise_256[4] = {0, 1, 0, 0};  // little-endian 256: no such source
+    rewrite(20, noise_256, 4);
+    s = load_lattice(path, &small);
+    CHECK(s.code() == StatusCode::io_error);
+    CHECK(std::string(s.message()).find("noise source 256") != std::string::npos);
+    CHECK(small.empty());
+    const unsigned char r_99[4] = {99, 0, 0, 0};  // R = 99: beyond Type I
+    rewrite(20, "\0\0\0\0", 4);
+    rewrite(8, r_99, 4);
+    CHECK(load_lattice(path, &small).code() == StatusCode::invalid_argument);
+    rewrite(0, "SHKLAT02", 8);
+    s = load_lattice(path, &small);
+    CHECK(s.code() == StatusCode::io_error);
+    CHECK(std::string(s.message()).find("not a lattice file") != std::string::npos);
+    REQUIRE(save_lattice(path, lattice).ok());
+    REQUIRE(truncate(path.c_str(), 56 + 1000) == 0);  // header + 250 of the 65^3 values
+    s = load_lattice(path, &small);
+    CHECK(s.code() == StatusCode::io_error);
+    CHECK(std::string(s.message()).find("truncated") != std::string::npos);
+    CHECK(small.empty());
     std::remove(path.c_str());
     CHECK(load_lattice(path, &back).code() == StatusCode::io_error);
     FractalParams big;
