@@ -61,8 +61,17 @@ void record_lattice(figures::FigureContext& ctx) {
 }
 
 void record_material(figures::FigureContext& ctx, Material m, float k) {
-    if (m == Material::marble_single) {
+    if (m == Material::marble_single)
         ctx.given("k", fmt("%g", double(k)), "okada1989 §4-4 (marble 16)");
+    else if (m == Material::marble)
+        ctx.given("k", fmt("%g", double(k)), "okada1987 §4.4 (marble 16; fig. 12a 0..30)");
+    else
+        ctx.given("k", fmt("%g", double(k)), "okada1987 §4.4 (wood 1.6; fig. 12b 0..6)");
+    record_material(ctx, m);
+}
+
+void record_material(figures::FigureContext& ctx, Material m) {
+    if (m == Material::marble_single) {
         ctx.given("G", "one trapezoid with exponential skirts, u = (0, 0, 1)",
                   "okada1989 eqs. (8), (9)");
         ctx.chosen("stripe (lattice units)",
@@ -73,7 +82,6 @@ void record_material(figures::FigureContext& ctx, Material m, float k) {
         ctx.chosen("I_max (limestone)", "(238, 234, 226)", "warm white");
         ctx.chosen("I_min (impurity)", "(62, 74, 80)", "dark grey-green");
     } else if (m == Material::marble) {
-        ctx.given("k", fmt("%g", double(k)), "okada1987 §4.4 (marble 16; fig. 12a 0..30)");
         ctx.given("G", "sum of trapezoids with exponential skirts, u = (0, 0, 1)",
                   "okada1987 eqs. (8), (9)");
         std::string s;
@@ -86,7 +94,6 @@ void record_material(figures::FigureContext& ctx, Material m, float k) {
         ctx.chosen("I_max (limestone)", "(238, 234, 226)", "warm white");
         ctx.chosen("I_min (impurity)", "(62, 74, 80)", "dark grey-green veins");
     } else {
-        ctx.given("k", fmt("%g", double(k)), "okada1987 §4.4 (wood 1.6; fig. 12b 0..6)");
         ctx.given("G", "sin(k2·r), radial u (eq. 11)", "okada1987 eqs. (10), (11)");
         ctx.chosen("k2", fmt("%g (rings every %.1f lattice units)", double(kWoodK2),
                              2.0 * 3.14159265 / double(kWoodK2)),
