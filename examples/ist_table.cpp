@@ -160,8 +160,10 @@ int main(int argc, char** argv) {
             ist_digits_format(a, first, left, sizeof left);
             ist_digits_format(image, first, right, sizeof right);
             // A unit-IST on one base interval is written with its digits only, as in fig 3.
-            const char* l = connected || axis.base_intervals > 1 ? left : std::strchr(left, '.') + 1;
-            const char* r = connected || axis.base_intervals > 1 ? right : std::strchr(right, '.') + 1;
+            const char* l =
+                connected || axis.base_intervals > 1 ? left : std::strchr(left, '.') + 1;
+            const char* r =
+                connected || axis.base_intervals > 1 ? right : std::strchr(right, '.') + 1;
             std::printf("%s %s\n", l, r);
         }
     }

@@ -129,7 +129,8 @@ TEST_CASE("fig 2, u^0 -> u^1: fifths from the centre and thirds from the others,
     for (const Piece& p : pieces)
         if (p.start >= 0.2 - 1e-12 && p.end <= 0.4 + 1e-12) in1.push_back(p);
     REQUIRE(in1.size() == 3);
-    std::sort(in1.begin(), in1.end(), [](const Piece& a, const Piece& b) { return a.start < b.start; });
+    std::sort(in1.begin(), in1.end(),
+              [](const Piece& a, const Piece& b) { return a.start < b.start; });
     CHECK(in1[0].source_base == 0);
     CHECK(in1[1].source_base == 1);
     CHECK(in1[2].source_base == 2);

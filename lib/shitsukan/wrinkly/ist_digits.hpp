@@ -13,7 +13,8 @@
 // alpha_i, i = 1..K (digit[0] is unused so the indices read like the paper).
 //
 // The transformation is K iterations of (appendix A.1, A.2)
-//   internal shuffle, eq. (22)/(25): alpha_k moves to the front:  a_1..a_K -> a_k a_1..a_{k-1} a_{k+1}..
+//   internal shuffle, eq. (22)/(25): alpha_k moves to the front:
+//       a_1 .. a_K -> a_k a_1 .. a_{k-1} a_{k+1} .. a_K
 //   external shuffle, eq. (26) for the fully-connected table, generalised to any table:
 //       g = alpha_1;  alpha_0 <- alpha_0 + offset[g];  alpha_1 <- slot[g]
 //       (a cyclic axis wraps alpha_0 modulo B; a translation axis skips a move past an end)
