@@ -427,6 +427,18 @@ TEST_CASE("IST bad input: clear status, no crash") {
     CHECK_FALSE(ist_digits_forward_checked(axis, d, &e).ok());
     d.base = 0;
     CHECK(ist_digits_forward_checked(axis, d, &e).ok());
+    // Formatting an unchecked string: no read past the digit table or the digit array, no
+    // signed overflow of the label, truncation to the buffer.
+    IstDigits wild;
+    wild.base = 2147483000;
+    wild.count = 1000;  // more than the kIstMaxIterations digits the array holds
+    for (int i = 1; i <= kIstMaxIterations; ++i) wild.digit[i] = std::uint8_t(i == 2 ? 200 : 7);
+    char text[128];
+    const std::string printed = ist_digits_format(wild, 1000, text, sizeof text);
+    CHECK(printed.substr(0, 13) == "2147484000.7?");
+    CHECK(printed.size() == 11 + std::size_t(kIstMaxIterations));
+    char tiny[4];
+    CHECK(std::string(ist_digits_format(wild, 0, tiny, sizeof tiny)) == "214");
 }
 
 TEST_CASE("connected IST with an exchange table is an involution, on both kinds of axis") {

@@ -187,11 +187,15 @@ Status ist_digits_inverse_checked(const IstAxis& axis, const IstDigits& in, IstD
 
 const char* ist_digits_format(const IstDigits& alpha, int base_label, char* buf, int size) {
     SHITSUKAN_ASSERT(buf != nullptr && size > 0);
-    static const char kDigitChars[] = "0123456789abcdefghijklmnopqrstuv";
-    int used = std::snprintf(buf, std::size_t(size), "%d.", alpha.base + base_label);
+    static const char kDigitChars[] = "0123456789abcdefghijklmnopqrstuv";  // N <= kIstMaxN
+    // The string may come from a user (not checked): a label sum that would overflow an int,
+    // a digit that is not base-32 ('?') or more digits than the array holds are all printable.
+    int used = std::snprintf(buf, std::size_t(size), "%lld.",
+                             static_cast<long long>(alpha.base) + base_label);
     if (used < 0) used = 0;
-    for (int i = 1; i <= alpha.count && used < size - 1; ++i)
-        buf[used++] = kDigitChars[alpha.digit[i]];
+    const int count = alpha.count < kIstMaxIterations ? alpha.count : kIstMaxIterations;
+    for (int i = 1; i <= count && used < size - 1; ++i)
+        buf[used++] = alpha.digit[i] < kIstMaxN ? kDigitChars[alpha.digit[i]] : '?';
     if (used > size - 1) used = size - 1;
     buf[used] = '\0';
     return buf;

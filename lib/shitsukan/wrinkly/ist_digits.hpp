@@ -71,7 +71,8 @@ Status ist_digits_forward_checked(const IstAxis& axis, const IstDigits& in, IstD
 Status ist_digits_inverse_checked(const IstAxis& axis, const IstDigits& in, IstDigits* out);
 
 // "b.a1a2..aK" (digits 0-9 then a-v for N > 10) into buf of size bytes, base_label added to
-// alpha_0 (the paper's figures start at 4 or 6). Returns buf; truncates safely.
+// alpha_0 (the paper's figures start at 4 or 6). Returns buf; truncates safely, and prints
+// '?' for a digit outside 0..31 (an unchecked string never reads past the digit table).
 const char* ist_digits_format(const IstDigits& alpha, int base_label, char* buf, int size);
 
 }  // namespace shitsukan
