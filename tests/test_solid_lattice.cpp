@@ -243,6 +243,27 @@ TEST_CASE("bad lattice parameters get a clear status") {
     p.R = 25;
     TypeIIILattice t3;
     CHECK(t3.init(p).code() == StatusCode::invalid_argument);
+    // Type II: R beyond its 21-bit packing, and nodes outside the lattice.
+    TypeIILattice t2;
+    p.R = kTypeIIMaxDepth + 1;
+    s = t2.init(p);
+    CHECK(s.code() == StatusCode::invalid_argument);
+    CHECK(std::string(s.message()).find("got 21") != std::string::npos);
+    float out = 0.0f;
+    CHECK(t2.node_value_checked(0, 0, 0, &out).code() == StatusCode::invalid_argument);  // no init
+    p.R = 3;
+    REQUIRE(t2.init(p).ok());
+    s = t2.node_value_checked(9, 0, 0, &out);
+    CHECK(s.code() == StatusCode::out_of_range);
+    CHECK(std::string(s.message()).find("(9, 0, 0)") != std::string::npos);
+    CHECK(t2.node_value_checked(0, -1, 0, &out).code() == StatusCode::out_of_range);
+    CHECK(t2.node_value_checked(8, 8, 8, &out).ok());
+    CHECK(out == p.corners[7]);
+    // Type III before init.
+    TypeIIILattice fresh;
+    CHECK(fresh.node_value_checked(0, 0, 0, &out).code() == StatusCode::invalid_argument);
+    CHECK(fresh.turbulence_checked(Vec3{0.0f, 0.0f, 0.0f}, &out).code() ==
+          StatusCode::invalid_argument);
 }
 
 TEST_CASE("quadtree lattice (okada1987 §2.1): midpoints and centres, level by level") {

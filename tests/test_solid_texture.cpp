@@ -121,6 +121,13 @@ TEST_CASE("marble eq. (8): trapezoid with exponential skirt, sum of stripes, pix
     CHECK(!validate_marble(MarbleParams{nullptr, 0, 16.0f}).ok());
     MarbleStripe nan_c{std::nanf(""), 1.0f, 1.0f};
     CHECK(!validate_marble(MarbleParams{&nan_c, 1, 16.0f}).ok());
+    CHECK(validate_marble(MarbleParams{two, 2, std::nanf("")}).code() ==
+          StatusCode::invalid_argument);
+    MarbleStripe inf_w{10.0f, INFINITY, 1.0f};
+    CHECK(!validate_marble(MarbleParams{&inf_w, 1, 16.0f}).ok());
+    Status bad2 = validate_marble(MarbleParams{two, -3, 16.0f});
+    CHECK(bad2.code() == StatusCode::invalid_argument);
+    CHECK(std::string(bad2.message()).find("got -3") != std::string::npos);
 }
 
 TEST_CASE("wood eqs. (10), (11): radial sine, radial displacement, r = 0") {
@@ -159,6 +166,12 @@ TEST_CASE("wood eqs. (10), (11): radial sine, radial displacement, r = 0") {
     w.k2 = 1.0f;
     w.x0 = INFINITY;
     CHECK(!validate_wood(w).ok());
+    w.x0 = 10.0f;
+    w.k = std::nanf("");
+    CHECK(validate_wood(w).code() == StatusCode::invalid_argument);
+    w.k = 1.6f;
+    w.k2 = -0.5f;
+    CHECK(std::string(validate_wood(w).message()).find("-0.5") != std::string::npos);
 }
 
 TEST_CASE("colour lookup eq. (12) interpolates I_min..I_max and clamps G'") {
