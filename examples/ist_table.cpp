@@ -126,10 +126,14 @@ int main(int argc, char** argv) {
         return 1;
     }
     const std::uint64_t count = ist_sub_interval_count(axis);
-    const std::uint64_t total = count * std::uint64_t(axis.base_intervals);
-    if (total > 1000000u) {
-        std::fprintf(stderr, "ist_table: %llu lines is too many to print; lower N, K or B\n",
-                     static_cast<unsigned long long>(total));
+    const std::uint64_t kMaxLines = 1000000u;
+    // count (up to 2^53) times B (up to 2^20) can wrap a 64-bit integer: compare by division.
+    if (count > kMaxLines / std::uint64_t(axis.base_intervals)) {
+        std::fprintf(stderr,
+                     "ist_table: N^K = %llu sub-intervals times %d base intervals is too many "
+                     "lines to print (limit %llu); lower N, K or B\n",
+                     static_cast<unsigned long long>(count), axis.base_intervals,
+                     static_cast<unsigned long long>(kMaxLines));
         return 1;
     }
     const bool connected = axis.kind != IstKind::unit;
@@ -156,8 +160,10 @@ int main(int argc, char** argv) {
             ist_digits_format(a, first, left, sizeof left);
             ist_digits_format(image, first, right, sizeof right);
             // A unit-IST on one base interval is written with its digits only, as in fig 3.
-            const char* l = connected || axis.base_intervals > 1 ? left : std::strchr(left, '.') + 1;
-            const char* r = connected || axis.base_intervals > 1 ? right : std::strchr(right, '.') + 1;
+            const char* l =
+                connected || axis.base_intervals > 1 ? left : std::strchr(left, '.') + 1;
+            const char* r =
+                connected || axis.base_intervals > 1 ? right : std::strchr(right, '.') + 1;
             std::printf("%s %s\n", l, r);
         }
     }

@@ -243,6 +243,27 @@ TEST_CASE("bad lattice parameters get a clear status") {
     p.R = 25;
     TypeIIILattice t3;
     CHECK(t3.init(p).code() == StatusCode::invalid_argument);
+    // Type II: R beyond its 21-bit packing, and nodes outside the lattice.
+    TypeIILattice t2;
+    p.R = kTypeIIMaxDepth + 1;
+    s = t2.init(p);
+    CHECK(s.code() == StatusCode::invalid_argument);
+    CHECK(std::string(s.message()).find("got 21") != std::string::npos);
+    float out = 0.0f;
+    CHECK(t2.node_value_checked(0, 0, 0, &out).code() == StatusCode::invalid_argument);  // no init
+    p.R = 3;
+    REQUIRE(t2.init(p).ok());
+    s = t2.node_value_checked(9, 0, 0, &out);
+    CHECK(s.code() == StatusCode::out_of_range);
+    CHECK(std::string(s.message()).find("(9, 0, 0)") != std::string::npos);
+    CHECK(t2.node_value_checked(0, -1, 0, &out).code() == StatusCode::out_of_range);
+    CHECK(t2.node_value_checked(8, 8, 8, &out).ok());
+    CHECK(out == p.corners[7]);
+    // Type III before init.
+    TypeIIILattice fresh;
+    CHECK(fresh.node_value_checked(0, 0, 0, &out).code() == StatusCode::invalid_argument);
+    CHECK(fresh.turbulence_checked(Vec3{0.0f, 0.0f, 0.0f}, &out).code() ==
+          StatusCode::invalid_argument);
 }
 
 TEST_CASE("quadtree lattice (okada1987 §2.1): midpoints and centres, level by level") {
@@ -286,4 +307,40 @@ TEST_CASE("tiny lattices (R = 0, 1, 2): the three types still agree") {
         const Vec3 mid{0.5f * float(last), 0.25f * float(last), 0.75f * float(last)};
         CHECK(same_bits(turbulence(v, mid), t3.turbulence(mid)));
     }
+}
+
+TEST_CASE("eqs. (1)-(4) by hand on an R = 2 lattice: face centres from the EDGE MIDPOINTS") {
+    // Written out from the paper without the library's node helpers: g of node (x, y, z) is
+    // hash_gaussian(seed, 0, x, y, z) (hash noise), L_r^(n) = exp(-(n-1)·beta).
+    FractalParams p;
+    p.R = 2;
+    p.beta = 0.7f;
+    for (int i = 0; i < 8; ++i) p.corners[i] = float(i * i) * 0.5f - 3.0f;  // unequal corners
+    LatticeView v;
+    std::vector<float> values = build_type1(p, &v);
+    auto g = [&](int x, int y, int z) { return double(hash_gaussian(p.seed, 0, x, y, z)); };
+    auto at = [&](int x, int y, int z) { return double(v.at(x, y, z)); };
+    const double tol = 1e-5;
+    for (int n = 1; n <= 2; ++n) {
+        const int h = 1 << (2 - n);  // half spacing of level n
+        const double L = std::exp(-double(n - 1) * double(p.beta));  // eq. (2)
+        // eq. (1): the edge midpoint (h, 0, 0) from its two ends.
+        CHECK(at(h, 0, 0) == doctest::Approx((at(0, 0, 0) + at(2 * h, 0, 0)) / 2 +
+                                             g(h, 0, 0) * L).epsilon(tol));
+        // eq. (3): the face centre (h, h, 0) from the four edge midpoints of the same level.
+        const double edges = (at(0, h, 0) + at(2 * h, h, 0) + at(h, 0, 0) + at(h, 2 * h, 0)) / 4;
+        CHECK(at(h, h, 0) == doctest::Approx(edges + g(h, h, 0) * L).epsilon(tol));
+        // ... which is not the mean of the face's corners (the trap of the reading notes).
+        const double corners =
+            (at(0, 0, 0) + at(2 * h, 0, 0) + at(0, 2 * h, 0) + at(2 * h, 2 * h, 0)) / 4;
+        CHECK(std::fabs(corners - edges) > 1e-3);
+        // eq. (4): the cube centre (h, h, h) from the six face centres.
+        const double faces = (at(0, h, h) + at(2 * h, h, h) + at(h, 0, h) + at(h, 2 * h, h) +
+                              at(h, h, 0) + at(h, h, 2 * h)) / 6;
+        CHECK(at(h, h, h) == doctest::Approx(faces + g(h, h, h) * L).epsilon(tol));
+    }
+    // The amplitudes themselves: level 1 is 1, each level e^-beta of the one before.
+    CHECK(level_amplitude(1, 0.7f) == 1.0f);
+    CHECK(level_amplitude(2, 0.7f) == doctest::Approx(std::exp(-0.7)).epsilon(1e-6));
+    CHECK(level_amplitude(6, 0.7f) == doctest::Approx(std::exp(-3.5)).epsilon(1e-6));
 }

@@ -8,6 +8,9 @@
 #include <cstring>
 #include <string>
 
+#include <unistd.h>  // getpid, truncate (POSIX: the test files only)
+
+#include "shitsukan/core/prng.hpp"
 #include "shitsukan/solid/solid.hpp"
 
 using namespace shitsukan;
@@ -47,6 +50,33 @@ TEST_CASE("trilinear D(P): exact at nodes, linear along edges, continuous across
     // The weights of eq. (6) sum to 1: a constant lattice interpolates to the constant.
     const float ones[8] = {2.5f, 2.5f, 2.5f, 2.5f, 2.5f, 2.5f, 2.5f, 2.5f};
     CHECK(trilinear_corners(ones, 0.3f, 0.7f, 0.1f) == doctest::Approx(2.5f).epsilon(1e-6));
+}
+
+TEST_CASE("trilinear_corners is eq. (6) itself: sum of D_i times the opposite box volume V_i") {
+    // The library evaluates eq. (6) factored (lerps along x, y, z); here it is written out
+    // literally, in double: V_i = product over the axes of the extent of the box opposite P_i.
+    Pcg32 rng(1987u, 6u);
+    for (int t = 0; t < 2000; ++t) {
+        float d[8];
+        for (float& v : d) v = rng.uniform(-3.0f, 3.0f);
+        const float f[3] = {rng.uniform(0.0f, 1.0f), rng.uniform(0.0f, 1.0f),
+                            rng.uniform(0.0f, 1.0f)};
+        double literal = 0.0;
+        for (int corner = 0; corner < 8; ++corner) {
+            double volume = 1.0;  // box between P_x and the corner opposite P_i
+            for (int axis = 0; axis < 3; ++axis)
+                volume *= ((corner >> axis) & 1) ? double(f[axis]) : 1.0 - double(f[axis]);
+            literal += double(d[corner]) * volume;
+        }
+        // float rounding of a handful of operations on values up to 3: well under 1e-5.
+        CHECK(std::fabs(double(trilinear_corners(d, f[0], f[1], f[2])) - literal) < 1e-5);
+    }
+    // Exactly the corner value when the fractions are 0 or 1 (the node is returned unchanged).
+    const float d[8] = {0.1f, 0.7f, -0.3f, 1.9f, 2.2f, -1.1f, 0.3f, 0.9f};
+    for (int corner = 0; corner < 8; ++corner)
+        CHECK(same_bits(trilinear_corners(d, float(corner & 1), float((corner >> 1) & 1),
+                                          float((corner >> 2) & 1)),
+                        d[corner]));
 }
 
 TEST_CASE("turbulence outside the lattice: clamped, or refused by the checked form") {
@@ -91,6 +121,13 @@ TEST_CASE("marble eq. (8): trapezoid with exponential skirt, sum of stripes, pix
     CHECK(!validate_marble(MarbleParams{nullptr, 0, 16.0f}).ok());
     MarbleStripe nan_c{std::nanf(""), 1.0f, 1.0f};
     CHECK(!validate_marble(MarbleParams{&nan_c, 1, 16.0f}).ok());
+    CHECK(validate_marble(MarbleParams{two, 2, std::nanf("")}).code() ==
+          StatusCode::invalid_argument);
+    MarbleStripe inf_w{10.0f, INFINITY, 1.0f};
+    CHECK(!validate_marble(MarbleParams{&inf_w, 1, 16.0f}).ok());
+    Status bad2 = validate_marble(MarbleParams{two, -3, 16.0f});
+    CHECK(bad2.code() == StatusCode::invalid_argument);
+    CHECK(std::string(bad2.message()).find("got -3") != std::string::npos);
 }
 
 TEST_CASE("wood eqs. (10), (11): radial sine, radial displacement, r = 0") {
@@ -129,6 +166,12 @@ TEST_CASE("wood eqs. (10), (11): radial sine, radial displacement, r = 0") {
     w.k2 = 1.0f;
     w.x0 = INFINITY;
     CHECK(!validate_wood(w).ok());
+    w.x0 = 10.0f;
+    w.k = std::nanf("");
+    CHECK(validate_wood(w).code() == StatusCode::invalid_argument);
+    w.k = 1.6f;
+    w.k2 = -0.5f;
+    CHECK(std::string(validate_wood(w).message()).find("-0.5") != std::string::npos);
 }
 
 TEST_CASE("colour lookup eq. (12) interpolates I_min..I_max and clamps G'") {
@@ -143,8 +186,10 @@ TEST_CASE("colour lookup eq. (12) interpolates I_min..I_max and clamps G'") {
 
 TEST_CASE("lattice file: save and load round trip, header and budget") {
     const FractalLattice& lattice = test_lattice();
+    // One file per process: several worktrees run their tests at the same time.
     const char* tmp = std::getenv("TMPDIR");
-    std::string path = std::string(tmp ? tmp : "/tmp") + "/shitsukan_test_lattice.shl";
+    std::string path = std::string(tmp ? tmp : "/tmp") + "/shitsukan_test_lattice_" +
+                       std::to_string(long(getpid())) + ".shl";
     REQUIRE(save_lattice(path, lattice).ok());
     FractalLattice back;
     REQUIRE(load_lattice(path, &back).ok());
@@ -161,6 +206,34 @@ TEST_CASE("lattice file: save and load round trip, header and budget") {
     FractalLattice small;
     Status s = load_lattice(path, &small, 1000);
     CHECK(s.code() == StatusCode::too_large);
+    // Damaged files: a status naming the problem, never a crash or a half-filled lattice.
+    auto rewrite = [&](long offset, const void* bytes, std::size_t count) {
+        std::FILE* g = std::fopen(path.c_str(), "r+b");
+        REQUIRE(g != nullptr);
+        std::fseek(g, offset, SEEK_SET);
+        std::fwrite(bytes, 1, count, g);
+        std::fclose(g);
+    };
+    const unsigned char noise_256[4] = {0, 1, 0, 0};  // little-endian 256: no such source
+    rewrite(20, noise_256, 4);
+    s = load_lattice(path, &small);
+    CHECK(s.code() == StatusCode::io_error);
+    CHECK(std::string(s.message()).find("noise source 256") != std::string::npos);
+    CHECK(small.empty());
+    const unsigned char r_99[4] = {99, 0, 0, 0};  // R = 99: beyond Type I
+    rewrite(20, "\0\0\0\0", 4);
+    rewrite(8, r_99, 4);
+    CHECK(load_lattice(path, &small).code() == StatusCode::invalid_argument);
+    rewrite(0, "SHKLAT02", 8);
+    s = load_lattice(path, &small);
+    CHECK(s.code() == StatusCode::io_error);
+    CHECK(std::string(s.message()).find("not a lattice file") != std::string::npos);
+    REQUIRE(save_lattice(path, lattice).ok());
+    REQUIRE(truncate(path.c_str(), 56 + 1000) == 0);  // header + 250 of the 65^3 values
+    s = load_lattice(path, &small);
+    CHECK(s.code() == StatusCode::io_error);
+    CHECK(std::string(s.message()).find("truncated") != std::string::npos);
+    CHECK(small.empty());
     std::remove(path.c_str());
     CHECK(load_lattice(path, &back).code() == StatusCode::io_error);
     FractalParams big;

@@ -63,7 +63,8 @@ std::string describe(const IstAxis& a) {
            " slots=" + [&] {
                std::string s;
                for (int g = 0; g < a.shuffle.n; ++g)
-                   s += std::to_string(a.shuffle.offset[g]) + "/" + std::to_string(a.shuffle.slot[g]) + " ";
+                   s += std::to_string(a.shuffle.offset[g]) + "/" +
+                        std::to_string(a.shuffle.slot[g]) + " ";
                return s;
            }();
 }
@@ -98,7 +99,8 @@ void check_sub_interval(const IstAxis& axis, int base, std::uint64_t index) {
 
 }  // namespace
 
-TEST_CASE("IST exhaustive: formula == procedure at every sub-interval, N in {1,2,3,4,5,7}, K <= 4") {
+TEST_CASE(
+    "IST exhaustive: formula == procedure at every sub-interval, N in {1,2,3,4,5,7}, K <= 4") {
     for (int n : {1, 2, 3, 4, 5, 7}) {
         for (int k = 0; k <= 4; ++k) {
             for (const IstAxis& axis : axes_for(n, k)) {
@@ -305,7 +307,8 @@ TEST_CASE("real forms eqs. (9), (10), (14): offset kept, continuous inside, u = 
             ist_digits_forward(*axis, last, &image);
             double expected_end = midpoint(*axis, image.base, ist_digits_index(*axis, image), 1.0);
             CHECK(ist_forward_double(*axis, 1.0) == doctest::Approx(expected_end).epsilon(1e-12));
-            CHECK(ist_procedure_forward(*axis, 1.0) == doctest::Approx(expected_end).epsilon(1e-12));
+            CHECK(ist_procedure_forward(*axis, 1.0) ==
+                  doctest::Approx(expected_end).epsilon(1e-12));
             // u = 0: the first sub-interval, offset 0 ([u_a, u_b) holds u_a).
             IstDigits first, first_image;
             ist_digits_from_index(*axis, 0, 0, &first);
@@ -424,6 +427,18 @@ TEST_CASE("IST bad input: clear status, no crash") {
     CHECK_FALSE(ist_digits_forward_checked(axis, d, &e).ok());
     d.base = 0;
     CHECK(ist_digits_forward_checked(axis, d, &e).ok());
+    // Formatting an unchecked string: no read past the digit table or the digit array, no
+    // signed overflow of the label, truncation to the buffer.
+    IstDigits wild;
+    wild.base = 2147483000;
+    wild.count = 1000;  // more than the kIstMaxIterations digits the array holds
+    for (int i = 1; i <= kIstMaxIterations; ++i) wild.digit[i] = std::uint8_t(i == 2 ? 200 : 7);
+    char text[128];
+    const std::string printed = ist_digits_format(wild, 1000, text, sizeof text);
+    CHECK(printed.substr(0, 13) == "2147484000.7?");
+    CHECK(printed.size() == 11 + std::size_t(kIstMaxIterations));
+    char tiny[4];
+    CHECK(std::string(ist_digits_format(wild, 0, tiny, sizeof tiny)) == "214");
 }
 
 TEST_CASE("connected IST with an exchange table is an involution, on both kinds of axis") {
@@ -498,12 +513,12 @@ TEST_CASE("procedure steps == digit steps at every u^k and u^{k.5} (eqs. 25, 26)
                         for (int k = 1; k <= 3; ++k) {
                             ist_internal_shuffle(axis, k, &alpha);  // -> u^{(k-1).5}
                             ist_divide_and_shuffle_internally(axis, nullptr, &p);
-                            REQUIRE(p.u == doctest::Approx(midpoint(axis, alpha.base,
-                                                                    ist_digits_index(axis, alpha))));
+                            REQUIRE(p.u == doctest::Approx(midpoint(
+                                               axis, alpha.base, ist_digits_index(axis, alpha))));
                             ist_external_shuffle(axis, &alpha);  // -> u^k
                             ist_shuffle_externally(axis, nullptr, &p);
-                            REQUIRE(p.u == doctest::Approx(midpoint(axis, alpha.base,
-                                                                    ist_digits_index(axis, alpha))));
+                            REQUIRE(p.u == doctest::Approx(midpoint(
+                                               axis, alpha.base, ist_digits_index(axis, alpha))));
                             REQUIRE(p.base == alpha.base);
                         }
                     }

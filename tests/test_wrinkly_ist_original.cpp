@@ -129,7 +129,8 @@ TEST_CASE("fig 2, u^0 -> u^1: fifths from the centre and thirds from the others,
     for (const Piece& p : pieces)
         if (p.start >= 0.2 - 1e-12 && p.end <= 0.4 + 1e-12) in1.push_back(p);
     REQUIRE(in1.size() == 3);
-    std::sort(in1.begin(), in1.end(), [](const Piece& a, const Piece& b) { return a.start < b.start; });
+    std::sort(in1.begin(), in1.end(),
+              [](const Piece& a, const Piece& b) { return a.start < b.start; });
     CHECK(in1[0].source_base == 0);
     CHECK(in1[1].source_base == 1);
     CHECK(in1[2].source_base == 2);
@@ -168,4 +169,21 @@ TEST_CASE("original IST bad input") {
         double u = rng.uniform_double();
         CHECK(std::fabs(ist_original_inverse(ist, ist_original_forward(ist, u)) - u) < 1e-9);
     }
+    // The checked forms: a status for a bad description or u, never an assert.
+    double out = -1.0;
+    CHECK(ist_original_forward_checked(ist, 0.37, &out).ok());
+    CHECK(out == ist_original_forward(ist, 0.37));
+    double back = -1.0;
+    CHECK(ist_original_inverse_checked(ist, out, &back).ok());
+    CHECK(std::fabs(back - 0.37) < 1e-9);
+    s = ist_original_forward_checked(ist, 1.25, &out);
+    CHECK(s.code() == StatusCode::out_of_range);
+    CHECK(std::string(s.message()).find("1.25") != std::string::npos);
+    CHECK(ist_original_inverse_checked(ist, std::nan(""), &out).code() ==
+          StatusCode::out_of_range);
+    const int too_many[3] = {1, 16, 1};  // 2 M + 1 = 33 parts: past kIstMaxCrossing
+    ist.crossing = too_many;
+    s = ist_original_forward_checked(ist, 0.5, &out);
+    CHECK(s.code() == StatusCode::invalid_argument);
+    CHECK(std::string(s.message()).find("M_1") != std::string::npos);
 }

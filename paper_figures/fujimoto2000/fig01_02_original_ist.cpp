@@ -50,15 +50,17 @@ SHITSUKAN_FIGURE(fig01_original_ist, "fujimoto2000", "fig01",
     d.follow = [](const DiagramPiece& p) { return p.origin_base == 6; };
     d.title = "fig 1  original IST with M = 1 (u^0 -> u^3)";
     DiagramLayout layout;
-    ctx.note("Each box is a sub-interval, coloured by its base interval of origin (lighter = "
-             "further left inside it) and numbered base.digits (base-3 digits, most significant "
-             "first). Lines follow the parts of base interval 6. On u^2 the ranges "
-             "{3.22 .. 7.00}, {4.22 .. 8.00}, {5.22 .. 9.00} of §2.1(2) fill base intervals 5, 6, 7.");
+    ctx.note(
+        "Each box is a sub-interval, coloured by its base interval of origin (lighter = "
+        "further left inside it) and numbered base.digits (base-3 digits, most significant "
+        "first). Lines follow the parts of base interval 6. On u^2 the ranges "
+        "{3.22 .. 7.00}, {4.22 .. 8.00}, {5.22 .. 9.00} of §2.1(2) fill base intervals 5, 6, 7.");
     return render(ctx, d, layout, ctx.quick() ? 1400 : 2000);
 }
 
-SHITSUKAN_FIGURE(fig02_original_ist_unequal, "fujimoto2000", "fig02",
-                 "Original IST with M_i = 2 for the centre base interval, 1 elsewhere: u^0 -> u^1") {
+SHITSUKAN_FIGURE(
+    fig02_original_ist_unequal, "fujimoto2000", "fig02",
+    "Original IST with M_i = 2 for the centre base interval, 1 elsewhere: u^0 -> u^1") {
     ctx.given("M_i", "2 for the centre base interval, 1 for the others", "fig 2 caption");
     ctx.given("iterations", "u^0 -> u^1 only", "fig 2 caption");
     ctx.chosen("axis", "13 base intervals 0..12, cyclic, window 4..8, centre 6",

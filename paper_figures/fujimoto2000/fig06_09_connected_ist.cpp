@@ -203,7 +203,8 @@ SHITSUKAN_FIGURE(fig09_translation_ends, "fujimoto2000", "fig09",
         DiagramRow row = diagram_row(d.ist, fmt("u^%d", k), k, DiagramStage{k, false});
         if (k < k_max) row.tick_depth = k + 1;
         d.rows.push_back(row);
-        if (k < k_max) d.rows.push_back(diagram_row(d.ist, fmt("u^%d.5", k), k + 1, DiagramStage{k, true}));
+        if (k < k_max)
+            d.rows.push_back(diagram_row(d.ist, fmt("u^%d.5", k), k + 1, DiagramStage{k, true}));
     }
     d.follow = [](const DiagramPiece& p) {
         if (p.origin_base != 0 && p.origin_base != 4) return false;

@@ -46,7 +46,8 @@ int shift_copy_level(std::uint64_t index, int n) {
     return level;
 }
 
-const Rgb8 kLevelColour[4] = {Rgb8{0, 0, 0}, Rgb8{220, 40, 40}, Rgb8{30, 150, 60}, Rgb8{40, 80, 220}};
+const Rgb8 kLevelColour[4] = {Rgb8{0, 0, 0}, Rgb8{220, 40, 40}, Rgb8{30, 150, 60},
+                              Rgb8{40, 80, 220}};
 
 struct ScalePlotInput {
     IstAxis axis;
@@ -109,8 +110,8 @@ Status scale_plot(FigureContext& ctx, const ScalePlotInput& in) {
 
     // The jumps in the order of alpha^0 (eq. 5 -> eq. 6).
     for (std::uint64_t i = 0; i + 1 < count; ++i)
-        canvas.line(p.at(double(i), ys[std::size_t(i)]), p.at(double(i + 1), ys[std::size_t(i + 1)]),
-                    arrow, 0.8f);
+        canvas.line(p.at(double(i), ys[std::size_t(i)]),
+                    p.at(double(i + 1), ys[std::size_t(i + 1)]), arrow, 0.8f);
     // Groups G1 (a point), G2 (N points), G3 (N^2 points): outlined.
     for (int g = 1; g <= 3 && g <= k; ++g) {
         std::uint64_t members = 1;

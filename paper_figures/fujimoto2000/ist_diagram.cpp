@@ -23,7 +23,9 @@ Rgb8 hsv(double h, double s, double v) {
         case 4: r = x; b = c; break;
         default: r = c; b = x; break;
     }
-    auto q = [](double t) { return std::uint8_t(std::lround(255.0 * (t < 0 ? 0 : t > 1 ? 1 : t))); };
+    auto q = [](double t) {
+        return std::uint8_t(std::lround(255.0 * (t < 0 ? 0 : t > 1 ? 1 : t)));
+    };
     return Rgb8{q(r + m), q(g + m), q(b + m)};
 }
 
@@ -144,7 +146,9 @@ void draw_ist_diagram(Canvas& canvas, const IstDiagram& d, const DiagramLayout& 
     auto x_of = [&](double u) {
         return float(layout.left + (u - d.window0) / (d.window1 - d.window0) * layout.width);
     };
-    auto y_of = [&](std::size_t r) { return layout.top + float(r) * (layout.row_height + layout.gap); };
+    auto y_of = [&](std::size_t r) {
+        return layout.top + float(r) * (layout.row_height + layout.gap);
+    };
     const float x_min = layout.left, x_max = layout.left + layout.width;
     if (!d.title.empty()) canvas.text({layout.left, layout.top - 66.0f}, d.title, black, 2);
 
@@ -186,11 +190,13 @@ void draw_ist_diagram(Canvas& canvas, const IstDiagram& d, const DiagramLayout& 
                 int lines = 1 + int(tail.size());
                 if (text_width(head, 1) + 2 > w || lines * 9 > h) continue;
                 float ty = y + 0.5f * (h - float(lines * 9));
-                canvas.text({std::floor(x0 + 0.5f * (w - float(text_width(head, 1)))), std::floor(ty)},
-                            head, ink, 1);
+                canvas.text(
+                    {std::floor(x0 + 0.5f * (w - float(text_width(head, 1)))), std::floor(ty)},
+                    head, ink, 1);
                 for (std::size_t i = 0; i < tail.size(); ++i)
-                    canvas.text({std::floor(x0 + 0.5f * (w - 5.0f)), std::floor(ty + 9.0f * float(i + 1))},
-                                std::string(1, tail[i]), ink, 1);
+                    canvas.text(
+                        {std::floor(x0 + 0.5f * (w - 5.0f)), std::floor(ty + 9.0f * float(i + 1))},
+                        std::string(1, tail[i]), ink, 1);
             }
         }
         canvas.rect_outline({x_min, y}, {layout.width, h}, black, 1.0f);
@@ -216,8 +222,8 @@ void draw_ist_diagram(Canvas& canvas, const IstDiagram& d, const DiagramLayout& 
             if (x1 <= x_min || x0 >= x_max) continue;
             std::string label = std::to_string(b + d.first_label);
             float cx = 0.5f * ((x0 < x_min ? x_min : x0) + (x1 > x_max ? x_max : x1));
-            canvas.text({std::floor(cx - 0.5f * float(text_width(label, 2))), y_of(0) - 26.0f}, label,
-                        black, 2);
+            canvas.text({std::floor(cx - 0.5f * float(text_width(label, 2))), y_of(0) - 26.0f},
+                        label, black, 2);
         }
     }
     // Moves: the u^0 midpoint of each followed piece, from one axis to the next.

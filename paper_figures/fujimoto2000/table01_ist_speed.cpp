@@ -17,9 +17,12 @@ namespace {
 
 // Table 1 of the paper, microseconds per coordinate: [N index][K - 1] = {procedure, formula}.
 const double kPaper[3][6][2] = {
-    {{115.45, 1.55}, {224.60, 2.48}, {333.73, 2.88}, {443.06, 3.30}, {552.22, 3.71}, {661.49, 4.16}},
-    {{130.54, 1.55}, {254.85, 2.52}, {379.11, 2.90}, {503.61, 3.30}, {627.94, 3.71}, {752.34, 4.16}},
-    {{151.55, 1.55}, {296.85, 2.52}, {442.10, 2.89}, {587.53, 3.29}, {732.84, 3.70}, {878.18, 4.16}},
+    {{115.45, 1.55}, {224.60, 2.48}, {333.73, 2.88},    // N = 3, K = 1..3
+     {443.06, 3.30}, {552.22, 3.71}, {661.49, 4.16}},   //        K = 4..6
+    {{130.54, 1.55}, {254.85, 2.52}, {379.11, 2.90},    // N = 5
+     {503.61, 3.30}, {627.94, 3.71}, {752.34, 4.16}},
+    {{151.55, 1.55}, {296.85, 2.52}, {442.10, 2.89},    // N = 7
+     {587.53, 3.29}, {732.84, 3.70}, {878.18, 4.16}},
 };
 
 template <class F>
@@ -53,7 +56,8 @@ SHITSUKAN_FIGURE(table01_ist_speed, "fujimoto2000", "table01",
                             "lay out the groups arriving in the destination",
                "§2.1 simulated on a real u as ref. 13 did; a second column times the leaner "
                "div / in-shf / ex-shf procedure of §2.2 (ist_procedure_forward)");
-    ctx.chosen("timing", ctx.quick() ? "fastest of 20 chunks of 1000" : "fastest of 200 chunks of 5000",
+    ctx.chosen("timing",
+               ctx.quick() ? "fastest of 20 chunks of 1000" : "fastest of 200 chunks of 5000",
                "the three methods take turns on each chunk; the fastest chunk is the least "
                "disturbed by the other processes of a shared machine");
     ctx.chosen("formula", "ist_forward (float): eq. (9) split, eq. (12) on the digits, eq. (14)",
@@ -65,11 +69,13 @@ SHITSUKAN_FIGURE(table01_ist_speed, "fujimoto2000", "table01",
 
     std::string md;
     md += "# fujimoto2000 Table 1 — time per coordinate (microseconds)\n\n";
-    md += fmt("%d pseudo-random coordinates per cell (timed in chunks of %d, fastest chunk), fully-connected IST on %d base intervals "
-              "(cyclic). *procedure* = original IST of §2.1 simulated step by step on a real u "
-              "(ist_original_forward), *div/in/ex* = the §2.2 procedure (ist_procedure_forward), "
-              "*formula* = eq. (14) (ist_forward). Paper: Origin2000, MIPS R10000 250 MHz.\n\n",
-              coordinates, chunk, base_intervals);
+    md +=
+        fmt("%d pseudo-random coordinates per cell (timed in chunks of %d, fastest chunk), "
+            "fully-connected IST on %d base intervals "
+            "(cyclic). *procedure* = original IST of §2.1 simulated step by step on a real u "
+            "(ist_original_forward), *div/in/ex* = the §2.2 procedure (ist_procedure_forward), "
+            "*formula* = eq. (14) (ist_forward). Paper: Origin2000, MIPS R10000 250 MHz.\n\n",
+            coordinates, chunk, base_intervals);
     md += "| N | K | paper procedure | paper formula | paper ratio | procedure | div/in/ex | "
           "formula | ratio procedure/formula | ratio div/in/ex/formula |\n";
     md += "|---|---|---|---|---|---|---|---|---|---|\n";
@@ -103,8 +109,10 @@ SHITSUKAN_FIGURE(table01_ist_speed, "fujimoto2000", "table01",
                         sum_q += ist_procedure_forward(axis, double(u[std::size_t(i)]));
                 }));
                 t_form = std::fmin(t_form, share * seconds_for([&] {
-                    for (int i = c0; i < c1; ++i) sum_f += double(ist_forward(axis, u[std::size_t(i)]));
-                }));
+                                               for (int i = c0; i < c1; ++i)
+                                                   sum_f +=
+                                                       double(ist_forward(axis, u[std::size_t(i)]));
+                                           }));
             }
             g_sink = g_sink + sum_p + sum_q + sum_f;
             // The three must agree (the same transformation): a cheap guard on the timing run.
@@ -125,9 +133,10 @@ SHITSUKAN_FIGURE(table01_ist_speed, "fujimoto2000", "table01",
                          n, k, p, q, f);
         }
     }
-    md += "\nShape to compare: in the paper the procedure grows linearly in K (about 110-146 us per "
-          "iteration) and with N, while the formula grows slowly (1.55 -> 4.16 us) and not "
-          "with N, so the ratio grows with K (74 -> 159 at N = 3).\n";
+    md +=
+        "\nShape to compare: in the paper the procedure grows linearly in K (about 110-146 us per "
+        "iteration) and with N, while the formula grows slowly (1.55 -> 4.16 us) and not "
+        "with N, so the ratio grows with K (74 -> 159 at N = 3).\n";
     md += fmt("Measured here, procedure/formula from K = 1 to K = 6: N = 3 %.1f -> %.1f, "
               "N = 5 %.1f -> %.1f, N = 7 %.1f -> %.1f.\n",
               ratio_k1[0], ratio_k6[0], ratio_k1[1], ratio_k6[1], ratio_k1[2], ratio_k6[2]);

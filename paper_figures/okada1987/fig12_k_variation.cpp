@@ -23,7 +23,7 @@ Status render_k_grid(Material m, float k_step, int tile, RgbImage* out) {
         for (int y = 0; y < tile; ++y)
             for (int x = 0; x < tile; ++x) out->at(ox + x, oy + y) = cell.at(x, y);
         canvas.text({float(ox + 4), float(oy + 4)}, fmt("k = %g", double(k)), Rgb8{255, 255, 255},
-                    tile >= 100 ? 1 : 1);
+                    1);
     }
     return Status::success();
 }
@@ -33,7 +33,7 @@ Status render_k_grid(Material m, float k_step, int tile, RgbImage* out) {
 namespace {
 Status k_figure(figures::FigureContext& ctx, okada::Material m, float k_step) {
     okada::record_lattice(ctx);
-    okada::record_material(ctx, m, k_step);
+    okada::record_material(ctx, m);  // k is the 16 values below, not one
     ctx.given("k", m == okada::Material::marble ? "0, 2, ..., 30" : "0, 0.4, ..., 6.0",
               "okada1987 §4.4, fig. 12");
     ctx.chosen("layout", "4 x 4 cubes, k increasing left to right, top to bottom",

@@ -61,8 +61,17 @@ void record_lattice(figures::FigureContext& ctx) {
 }
 
 void record_material(figures::FigureContext& ctx, Material m, float k) {
-    if (m == Material::marble_single) {
+    if (m == Material::marble_single)
         ctx.given("k", fmt("%g", double(k)), "okada1989 §4-4 (marble 16)");
+    else if (m == Material::marble)
+        ctx.given("k", fmt("%g", double(k)), "okada1987 §4.4 (marble 16; fig. 12a 0..30)");
+    else
+        ctx.given("k", fmt("%g", double(k)), "okada1987 §4.4 (wood 1.6; fig. 12b 0..6)");
+    record_material(ctx, m);
+}
+
+void record_material(figures::FigureContext& ctx, Material m) {
+    if (m == Material::marble_single) {
         ctx.given("G", "one trapezoid with exponential skirts, u = (0, 0, 1)",
                   "okada1989 eqs. (8), (9)");
         ctx.chosen("stripe (lattice units)",
@@ -73,7 +82,6 @@ void record_material(figures::FigureContext& ctx, Material m, float k) {
         ctx.chosen("I_max (limestone)", "(238, 234, 226)", "warm white");
         ctx.chosen("I_min (impurity)", "(62, 74, 80)", "dark grey-green");
     } else if (m == Material::marble) {
-        ctx.given("k", fmt("%g", double(k)), "okada1987 §4.4 (marble 16; fig. 12a 0..30)");
         ctx.given("G", "sum of trapezoids with exponential skirts, u = (0, 0, 1)",
                   "okada1987 eqs. (8), (9)");
         std::string s;
@@ -86,7 +94,6 @@ void record_material(figures::FigureContext& ctx, Material m, float k) {
         ctx.chosen("I_max (limestone)", "(238, 234, 226)", "warm white");
         ctx.chosen("I_min (impurity)", "(62, 74, 80)", "dark grey-green veins");
     } else {
-        ctx.given("k", fmt("%g", double(k)), "okada1987 §4.4 (wood 1.6; fig. 12b 0..6)");
         ctx.given("G", "sin(k2·r), radial u (eq. 11)", "okada1987 eqs. (10), (11)");
         ctx.chosen("k2", fmt("%g (rings every %.1f lattice units)", double(kWoodK2),
                              2.0 * 3.14159265 / double(kWoodK2)),
@@ -229,13 +236,14 @@ Status build_scene(const std::string& name, bool quick, Scene* out) {
         SHITSUKAN_TRY(make_revolution(profile.data(), int(profile.size()), seg, &mesh));
         fit_to_cube(&mesh, 0.92f);
         add_piece(out, mesh);
-        out->eye = {3.4f, 3.4f, 4.6f};
+        out->eye = {2.5f, 2.5f, 3.4f};
     } else if (name == "nagoya") {
         SHITSUKAN_TRY(make_block_text("NAGOYA", 1.0f, 0.45f, &mesh));
         fit_to_cube(&mesh, 0.95f);
         add_piece(out, mesh);
-        out->eye = {0.0f, 1.0f, 2.6f};
-        out->fov_degrees = 42.0f;
+        out->eye = {0.0f, 1.2f, 2.25f};
+        out->target = {0.0f, -0.04f, 0.0f};
+        out->fov_degrees = 44.0f;
     } else if (name == "cup") {
         const Vec2d profile[] = {{0.0, -0.9},  {0.52, -0.9}, {0.58, -0.84}, {0.62, 0.2},
                                  {0.66, 0.88}, {0.66, 0.92}, {0.60, 0.92},  {0.56, 0.2},

@@ -62,7 +62,10 @@ const FractalLattice& shared_lattice();
 double shared_lattice_build_seconds();  // wall time of the one build in this process
 
 void record_lattice(figures::FigureContext& ctx);
+// k (given) and then everything record_material(ctx, m) records.
 void record_material(figures::FigureContext& ctx, Material m, float k);
+// The original function G, its stripes or rings, G' and the colours I_min / I_max (not k).
+void record_material(figures::FigureContext& ctx, Material m);
 void record_camera(figures::FigureContext& ctx, const std::string& description);
 
 // Object space -> lattice coordinates (see the top of this file).

@@ -108,7 +108,15 @@ Status load_lattice(const std::string& path, FractalLattice* out, std::uint64_t 
     p.R = int(get_u32(header + 8));
     p.beta = bits_float(get_u32(header + 12));
     p.seed = get_u32(header + 16);
-    p.noise = NoiseSource(get_u32(header + 20) & 0xffu);
+    // The whole 32-bit field must name a source: masking it to a byte would read 256 as 0.
+    const std::uint32_t noise = get_u32(header + 20);
+    if (noise > std::uint32_t(NoiseSource::sequential)) {
+        std::fclose(f);
+        return Status::error(StatusCode::io_error,
+                             "load_lattice: %s names an unknown noise source %lu", path.c_str(),
+                             static_cast<unsigned long>(noise));
+    }
+    p.noise = NoiseSource(noise);
     for (int i = 0; i < 8; ++i) p.corners[i] = bits_float(get_u32(header + 24 + 4 * i));
     Status s = validate_fractal_params(p, kTypeIMaxDepth);
     if (s.ok()) s = check_budget(p.R, budget_bytes);

@@ -18,23 +18,6 @@ Status check_lattice_point(Vec3 p, int R) {
     return Status::success();
 }
 
-float turbulence(const LatticeView& lattice, Vec3 p) {
-    SHITSUKAN_ASSERT(lattice.values != nullptr && lattice.side >= 2);
-    const int cells = lattice.side - 1;
-    int ix, iy, iz;
-    float fx, fy, fz;
-    split_lattice_coordinate(p.x, cells, &ix, &fx);
-    split_lattice_coordinate(p.y, cells, &iy, &fy);
-    split_lattice_coordinate(p.z, cells, &iz, &fz);
-    // The eight nodes P_i around P (fig. 6), in the order i + 2j + 4k.
-    const std::size_t side = std::size_t(lattice.side), plane = side * side;
-    const float* base = lattice.values + (std::size_t(iz) * side + std::size_t(iy)) * side +
-                        std::size_t(ix);
-    const float d[8] = {base[0],     base[1],         base[side],         base[side + 1],
-                        base[plane], base[plane + 1], base[plane + side], base[plane + side + 1]};
-    return trilinear_corners(d, fx, fy, fz);
-}
-
 Status turbulence_checked(const LatticeView& lattice, Vec3 p, float* out) {
     if (lattice.values == nullptr || out == nullptr)
         return Status::error(StatusCode::invalid_argument,

@@ -123,7 +123,8 @@ void ist_scale_reverse_fully_connected(int n, const IstDigits& in, IstDigits* ou
     for (int j = 1; j <= in.count; ++j) base += int(in.digit[j]) - m;
     out->base = base;
     out->count = in.count;
-    for (int i = 1; i <= in.count; ++i) out->digit[i] = std::uint8_t(n - 1 - in.digit[in.count - i + 1]);
+    for (int i = 1; i <= in.count; ++i)
+        out->digit[i] = std::uint8_t(n - 1 - in.digit[in.count - i + 1]);
 }
 
 void ist_digits_forward(const IstAxis& axis, const IstDigits& in, IstDigits* out) {
@@ -186,10 +187,15 @@ Status ist_digits_inverse_checked(const IstAxis& axis, const IstDigits& in, IstD
 
 const char* ist_digits_format(const IstDigits& alpha, int base_label, char* buf, int size) {
     SHITSUKAN_ASSERT(buf != nullptr && size > 0);
-    static const char kDigitChars[] = "0123456789abcdefghijklmnopqrstuv";
-    int used = std::snprintf(buf, std::size_t(size), "%d.", alpha.base + base_label);
+    static const char kDigitChars[] = "0123456789abcdefghijklmnopqrstuv";  // N <= kIstMaxN
+    // The string may come from a user (not checked): a label sum that would overflow an int,
+    // a digit that is not base-32 ('?') or more digits than the array holds are all printable.
+    int used = std::snprintf(buf, std::size_t(size), "%lld.",
+                             static_cast<long long>(alpha.base) + base_label);
     if (used < 0) used = 0;
-    for (int i = 1; i <= alpha.count && used < size - 1; ++i) buf[used++] = kDigitChars[alpha.digit[i]];
+    const int count = alpha.count < kIstMaxIterations ? alpha.count : kIstMaxIterations;
+    for (int i = 1; i <= count && used < size - 1; ++i)
+        buf[used++] = alpha.digit[i] < kIstMaxN ? kDigitChars[alpha.digit[i]] : '?';
     if (used > size - 1) used = size - 1;
     buf[used] = '\0';
     return buf;

@@ -13,7 +13,8 @@
 // alpha_i, i = 1..K (digit[0] is unused so the indices read like the paper).
 //
 // The transformation is K iterations of (appendix A.1, A.2)
-//   internal shuffle, eq. (22)/(25): alpha_k moves to the front:  a_1..a_K -> a_k a_1..a_{k-1} a_{k+1}..
+//   internal shuffle, eq. (22)/(25): alpha_k moves to the front:
+//       a_1 .. a_K -> a_k a_1 .. a_{k-1} a_{k+1} .. a_K
 //   external shuffle, eq. (26) for the fully-connected table, generalised to any table:
 //       g = alpha_1;  alpha_0 <- alpha_0 + offset[g];  alpha_1 <- slot[g]
 //       (a cyclic axis wraps alpha_0 modulo B; a translation axis skips a move past an end)
@@ -70,7 +71,8 @@ Status ist_digits_forward_checked(const IstAxis& axis, const IstDigits& in, IstD
 Status ist_digits_inverse_checked(const IstAxis& axis, const IstDigits& in, IstDigits* out);
 
 // "b.a1a2..aK" (digits 0-9 then a-v for N > 10) into buf of size bytes, base_label added to
-// alpha_0 (the paper's figures start at 4 or 6). Returns buf; truncates safely.
+// alpha_0 (the paper's figures start at 4 or 6). Returns buf; truncates safely, and prints
+// '?' for a digit outside 0..31 (an unchecked string never reads past the digit table).
 const char* ist_digits_format(const IstDigits& alpha, int base_label, char* buf, int size);
 
 }  // namespace shitsukan

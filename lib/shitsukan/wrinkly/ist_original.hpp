@@ -9,6 +9,7 @@
 //   if (!ist_original_check(ist)) ...               // Status with the offending value
 //   double v = ist_original_forward(ist, 0.37);     // u^0 -> u^K, eq. (1)
 //   double u = ist_original_inverse(ist, v);
+//   Status s = ist_original_forward_checked(ist, user_u, &v);   // checks ist and u too
 //
 // One iteration (§2.1(1)), on the sub-interval [start, end) that holds u in base interval i:
 //   1) it is divided into 2 M_i + 1 equal parts;
@@ -61,5 +62,10 @@ double ist_original_forward(const IstOriginal& ist, double u);
 // point must be known; it is found by following the point back to u^0 and forward again, so
 // the inverse costs O(K^2) steps.
 double ist_original_inverse(const IstOriginal& ist, double u);
+
+// For user input: check the description (ist_original_check) and u in [0, 1] first, and
+// return the status instead of clamping u or asserting on a bad M_i.
+Status ist_original_forward_checked(const IstOriginal& ist, double u, double* out);
+Status ist_original_inverse_checked(const IstOriginal& ist, double u, double* out);
 
 }  // namespace shitsukan

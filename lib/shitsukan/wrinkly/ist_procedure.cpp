@@ -136,7 +136,8 @@ void ist_shuffle_externally(const IstAxis& axis, const double* edges, IstPoint* 
     const double w_b = width(axis, edges, b);
     // 3) ex-shf: the point sits in slot g of base b (the group placed there by in-shf).
     const double slot_width = w_b / double(n);
-    const int g = part_holding(point->start + 0.5 * (point->end - point->start), x_b, slot_width, n);
+    const int g =
+        part_holding(point->start + 0.5 * (point->end - point->start), x_b, slot_width, n);
     int to = 0, slot = 0;
     destination(axis, b, g, &to, &slot);
     const double x_to = edge(axis, edges, to);
