@@ -25,19 +25,20 @@ extern volatile double g_sink;
 template <class T>
 inline void sink(T v) { g_sink = g_sink + double(v); }
 
-// Nanoseconds per call of fn: calls fn in growing batches until min_seconds pass, repeats
-// three times and keeps the fastest batch (the least disturbed by the other core).
+// Nanoseconds per call of fn: calls fn in growing batches until a round lasts min_seconds/7,
+// runs seven rounds and keeps the fastest (the least disturbed by other processes: on a
+// shared machine the slow rounds measure the neighbours, not the code).
 template <class F>
 double ns_per_op(F&& fn) {
     using clock = std::chrono::steady_clock;
     double best = 1e300;
-    for (int rep = 0; rep < 3; ++rep) {
+    for (int rep = 0; rep < 7; ++rep) {
         long n = 1;
         for (;;) {
             auto t0 = clock::now();
             for (long i = 0; i < n; ++i) fn();
             double s = std::chrono::duration<double>(clock::now() - t0).count();
-            if (s >= g_min_seconds / 3 || n > (1L << 40)) {
+            if (s >= g_min_seconds / 7 || n > (1L << 40)) {
                 double per = s * 1e9 / double(n);
                 if (per < best) best = per;
                 break;
