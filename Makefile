@@ -14,6 +14,7 @@ PREFIX   ?= /usr/local
 BUILD    := build
 JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 FIGURES_ARGS ?=
+BENCH_ARGS ?=
 
 # DESIGN.md: same inputs, same bits -> no FMA contraction, no fast-math.
 WARN     := -Wall -Wextra -Wpedantic
@@ -98,7 +99,7 @@ examples: deps
 
 bench: bench-deps
 	@$(MAKE) --no-print-directory -j$(JOBS) $(BUILD)/bench
-	$(BUILD)/bench
+	$(BUILD)/bench $(BENCH_ARGS)
 
 # Small-device core: compile with -fno-exceptions -fno-rtti and refuse any allocation.
 check-small: $(SMALL_OBJS)

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bench.hpp"
+#include "shitsukan/image/image.hpp"
 #include "shitsukan/geom/bezier_patch_mesh.hpp"
 #include "shitsukan/leather/maps.hpp"
 #include "shitsukan/leather/products.hpp"

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "bench.hpp"
+#include "shitsukan/image/image.hpp"
 #include "shitsukan/core/hash.hpp"
 #include "shitsukan/core/scalar.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
