@@ -132,6 +132,11 @@ Status sample_hierarchy(const WrSurface& surface, const HierarchicalOptions& o,
                              "jitter deviations must be finite and >= 0 (got %g, %g, %g)",
                              double(o.jitter_height), double(o.jitter_color),
                              double(o.jitter_transparency));
+    if (o.levels > surface.max_level())
+        return Status::error(StatusCode::invalid_argument,
+                             "levels K = %d exceeds the IST steps the surface's axes hold (%d): "
+                             "build them with make_wr_ist_axis(..., max_level >= K, ...)",
+                             o.levels, surface.max_level());
     const WrAxis& au = surface.axis_u();
     const WrAxis& av = surface.axis_v();
     for (int k = 1; k <= o.levels; ++k) {

@@ -25,8 +25,8 @@
 //     transparency get + jitter·g per channel (clamped to [0, 1]); g ~ N(0,1) from the
 //     coordinate hash of (sample i, j, step k), so it does not depend on evaluation order.
 //   - Colour and transparency sums are divided by the weights used (they stay in [0, 1]).
-// Ranges: levels (K) in 0..kMaxWrLevel, jitters >= 0, sample count per step at most
-// kMaxHierarchicalSamples (too_large otherwise).
+// Ranges: levels (K) in 0..surface.max_level() (<= kMaxWrLevel), jitters >= 0, sample count per
+// step at most kMaxHierarchicalSamples (too_large otherwise).
 #pragma once
 
 #include <cstdint>
