@@ -38,16 +38,12 @@ WrControlMesh fig14_mesh() {
                                   {0.30f, 0.48f, 0.40f, 0.18f},
                                   {0.18f, 0.44f, 0.50f, 0.30f},
                                   {0.04f, 0.22f, 0.34f, 0.16f}};
-    WrControlMesh m = make_control_mesh(4, 4);
-    for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c) {
-            WrControlPoint& p = m.at(c, r);
-            const bool inner = c > 0 && c < 3 && r > 0 && r < 3;
-            p.position = {-1.2f + 0.8f * float(c), inner ? 0.35f : 0.0f, 1.2f - 0.8f * float(r)};
-            p.height = h[r][c];
-            p.color = column_color(float(c) / 3.0f);
-        }
-    return m;
+    return square_control_mesh(4, 1.2f, [](int c, int r, float, float, WrControlPoint& p) {
+        const bool inner = c > 0 && c < 3 && r > 0 && r < 3;
+        p.position.y = inner ? 0.35f : 0.0f;
+        p.height = h[r][c];
+        p.color = column_color(float(c) / 3.0f);
+    });
 }
 
 // fig. 15 (chosen): 11 x 11 B-spline control points (8 x 8 knot spans = base intervals) on
@@ -55,18 +51,12 @@ WrControlMesh fig14_mesh() {
 // (seed 15), colour by column.
 WrControlMesh fig15_mesh() {
     const int n = 11;
-    WrControlMesh m = make_control_mesh(n, n);
-    for (int r = 0; r < n; ++r)
-        for (int c = 0; c < n; ++c) {
-            WrControlPoint& p = m.at(c, r);
-            const float x = -1.5f + 3.0f * float(c) / float(n - 1);
-            const float z = 1.5f - 3.0f * float(r) / float(n - 1);
-            p.position = {x, 0.35f * (1.0f - (x * x + z * z) / 4.5f), z};
-            p.height = 0.25f + 0.12f * std::sin(1.7f * float(c) + 0.9f * float(r)) +
-                       0.16f * (hash_uniform(15, 0, c, r) - 0.5f);
-            p.color = column_color(float(c) / float(n - 1));
-        }
-    return m;
+    return square_control_mesh(n, 1.5f, [&](int c, int r, float x, float z, WrControlPoint& p) {
+        p.position.y = 0.35f * (1.0f - (x * x + z * z) / 4.5f);
+        p.height = 0.25f + 0.12f * std::sin(1.7f * float(c) + 0.9f * float(r)) +
+                   0.16f * (hash_uniform(15, 0, c, r) - 0.5f);
+        p.color = column_color(float(c) / float(n - 1));
+    });
 }
 
 struct SurfaceFigure {

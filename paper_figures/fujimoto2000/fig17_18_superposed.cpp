@@ -32,34 +32,21 @@ WrControlMesh fig17_mesh() {
                                   {0.30f, 1.10f, 0.80f, 0.20f},
                                   {0.20f, 0.85f, 1.20f, 0.45f},
                                   {0.05f, 0.30f, 0.45f, 0.10f}};
-    WrControlMesh m = make_control_mesh(4, 4);
-    for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c) {
-            WrControlPoint& p = m.at(c, r);
-            p.position = {-1.2f + 0.8f * float(c), 0.0f, 1.2f - 0.8f * float(r)};
-            p.height = h[r][c];
-            p.color = height_color(p.height, 1.2f);
-        }
-    return m;
+    return square_control_mesh(4, 1.2f, [](int c, int r, float, float, WrControlPoint& p) {
+        p.height = h[r][c];
+        p.color = height_color(p.height, 1.2f);
+    });
 }
 
 // fig. 18 (chosen): 11 x 11 B-spline points on [-1.5, 1.5]^2 (8 x 8 spans), flat; a winding
 // mountain range through the middle (heights up to 0.7) with a hashed variation (seed 18).
 WrControlMesh fig18_mesh() {
-    const int n = 11;
-    WrControlMesh m = make_control_mesh(n, n);
-    for (int r = 0; r < n; ++r)
-        for (int c = 0; c < n; ++c) {
-            WrControlPoint& p = m.at(c, r);
-            const float x = -1.5f + 3.0f * float(c) / float(n - 1);
-            const float z = 1.5f - 3.0f * float(r) / float(n - 1);
-            const float d = z + 0.1f - 0.35f * std::sin(1.6f * x);  // distance from a winding ridge
-            p.position = {x, 0.0f, z};
-            p.height = 0.05f +
-                       0.55f * std::exp(-3.0f * d * d) * (0.65f + 0.6f * hash_uniform(18, 0, c, r));
-            p.color = height_color(p.height, 0.65f);
-        }
-    return m;
+    return square_control_mesh(11, 1.5f, [](int c, int r, float x, float z, WrControlPoint& p) {
+        const float d = z + 0.1f - 0.35f * std::sin(1.6f * x);  // distance from a winding ridge
+        p.height =
+            0.05f + 0.55f * std::exp(-3.0f * d * d) * (0.65f + 0.6f * hash_uniform(18, 0, c, r));
+        p.color = height_color(p.height, 0.65f);
+    });
 }
 
 struct SuperFigure {
