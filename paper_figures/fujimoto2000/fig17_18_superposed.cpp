@@ -147,45 +147,20 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, int panel) {
 
 }  // namespace
 
-SHITSUKAN_FIGURE(fig17a1_panel, "fujimoto2000", "fig17a1",
-                 "Superposed IST-Bezier: (a-1) control mesh with heights h_i") {
-    return run_panel(ctx, kFig17, 1);
-}
-SHITSUKAN_FIGURE(fig17a2_panel, "fujimoto2000", "fig17a2",
-                 "Superposed IST-Bezier: (a-2) conventional Bezier surface") {
-    return run_panel(ctx, kFig17, 2);
-}
-SHITSUKAN_FIGURE(fig17a3_panel, "fujimoto2000", "fig17a3",
-                 "Superposed IST-Bezier: (a-3) WR surface, eq. (15)") {
-    return run_panel(ctx, kFig17, 3);
-}
-SHITSUKAN_FIGURE(fig17a4_panel, "fujimoto2000", "fig17a4",
-                 "Superposed IST-Bezier: (a-4) superposed, small delta (smooth)") {
-    return run_panel(ctx, kFig17, 4);
-}
-SHITSUKAN_FIGURE(fig17a5_panel, "fujimoto2000", "fig17a5",
-                 "Superposed IST-Bezier: (a-5) superposed, large delta (rough)") {
-    return run_panel(ctx, kFig17, 5);
-}
-SHITSUKAN_FIGURE(fig18b1_panel, "fujimoto2000", "fig18b1",
-                 "Superposed IST-B-spline: (b-1) control mesh with heights h_i") {
-    return run_panel(ctx, kFig18, 1);
-}
-SHITSUKAN_FIGURE(fig18b2_panel, "fujimoto2000", "fig18b2",
-                 "Superposed IST-B-spline: (b-2) conventional B-spline surface") {
-    return run_panel(ctx, kFig18, 2);
-}
-SHITSUKAN_FIGURE(fig18b3_panel, "fujimoto2000", "fig18b3",
-                 "Superposed IST-B-spline: (b-3) WR surface, eq. (15)") {
-    return run_panel(ctx, kFig18, 3);
-}
-SHITSUKAN_FIGURE(fig18b4_panel, "fujimoto2000", "fig18b4",
-                 "Superposed IST-B-spline: (b-4) superposed, small delta (smooth)") {
-    return run_panel(ctx, kFig18, 4);
-}
-SHITSUKAN_FIGURE(fig18b5_panel, "fujimoto2000", "fig18b5",
-                 "Superposed IST-B-spline: (b-5) superposed, large delta (rough)") {
-    return run_panel(ctx, kFig18, 5);
-}
+#define SUPER_PANEL(fig, row, i, figure, caption)                                  \
+    SHITSUKAN_FIGURE(fig##row##i##_panel, "fujimoto2000", #fig #row #i, caption) { \
+        return run_panel(ctx, figure, i);                                          \
+    }
+
+SUPER_PANEL(fig17, a, 1, kFig17, "Superposed IST-Bezier: (a-1) control mesh with heights h_i")
+SUPER_PANEL(fig17, a, 2, kFig17, "Superposed IST-Bezier: (a-2) conventional Bezier surface")
+SUPER_PANEL(fig17, a, 3, kFig17, "Superposed IST-Bezier: (a-3) WR surface, eq. (15)")
+SUPER_PANEL(fig17, a, 4, kFig17, "Superposed IST-Bezier: (a-4) superposed, small delta (smooth)")
+SUPER_PANEL(fig17, a, 5, kFig17, "Superposed IST-Bezier: (a-5) superposed, large delta (rough)")
+SUPER_PANEL(fig18, b, 1, kFig18, "Superposed IST-B-spline: (b-1) control mesh with heights h_i")
+SUPER_PANEL(fig18, b, 2, kFig18, "Superposed IST-B-spline: (b-2) conventional B-spline surface")
+SUPER_PANEL(fig18, b, 3, kFig18, "Superposed IST-B-spline: (b-3) WR surface, eq. (15)")
+SUPER_PANEL(fig18, b, 4, kFig18, "Superposed IST-B-spline: (b-4) superposed, small delta (smooth)")
+SUPER_PANEL(fig18, b, 5, kFig18, "Superposed IST-B-spline: (b-5) superposed, large delta (rough)")
 
 }  // namespace shitsukan::fujimoto2000
