@@ -5,6 +5,7 @@
 
 #include <array>
 #include <chrono>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -104,6 +105,17 @@ inline double seconds_since(Clock::time_point t0) {
 // min:sec beside our seconds, one column pair per panel.
 std::string stage_table(const std::vector<std::string>& names, const std::vector<StageTimes>& ours,
                         const std::vector<std::array<const char*, 4>>& paper);
+
+// One column pair of Tables 3-4: a panel label ("(a-2)") and the paper's sam., pol., ren., total.
+struct PaperTimes {
+    const char* label;
+    std::array<const char*, 4> paper;
+};
+// stage_table for the panels of a composite figure (figs. 22, 23): our times of each row from
+// `times` (label -> times, as the composite's builder filled them); rows missing there are
+// taken from what an earlier run recorded under `figure` + label (record_stage_times).
+std::string stage_table(const std::string& figure, const std::vector<PaperTimes>& rows,
+                        const std::map<std::string, StageTimes>& times);
 
 // Blit a panel label ("(a-1)") in the top-left corner.
 void label_panel(RgbView target, const std::string& text, Rgb8 color);
