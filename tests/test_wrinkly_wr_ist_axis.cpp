@@ -212,3 +212,32 @@ TEST_CASE("K beyond the IST steps the axes hold is a status, not an abort") {
     CHECK(!s.set_axes(bad, av.axis()));
     CHECK(identity_axis(3).max_level == kMaxWrLevel);
 }
+
+TEST_CASE(
+    "NaN or out-of-range (u, v) read the surface at the clamped parameter, never out of bounds") {
+    // The manuals say parameters are clamped to [0, 1]; NaN used to pass clamp() unchanged and
+    // became int(NaN) as a knot-span index (a read far outside the control grid).
+    WrControlMesh m = flat_mesh(7, 7);
+    WrSurface s;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    IstAxis iu;
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_u(), IstEnds::translation, &iu));
+    WrIstAxis a;
+    REQUIRE(make_wr_ist_axis(iu, 2, &a));
+    REQUIRE(s.set_axes(a.axis(), a.axis()));
+    HierarchicalOptions o;
+    o.levels = 2;
+    o.interpolation = SampleInterpolation::hermite;
+    HierarchicalSampling hs;
+    REQUIRE(sample_hierarchy(s, o, &hs));
+    const float nan = std::nanf("");
+    const float inf = INFINITY;
+    CHECK(length(s.wr_point(nan, 0.5f, 2) - s.wr_point(0.0f, 0.5f, 2)) < 1e-6f);
+    CHECK(length(s.wr_point(0.5f, nan, 2) - s.wr_point(0.5f, 0.0f, 2)) < 1e-6f);
+    CHECK(length(s.wr_point(inf, -inf, 2) - s.wr_point(1.0f, 0.0f, 2)) < 1e-6f);
+    CHECK(length(s.wr_point(-3.0f, 7.0f, 1) - s.wr_point(0.0f, 1.0f, 1)) < 1e-6f);
+    const SuperposedSample p = superposed_sampled(s, hs, nan, 0.3f);
+    const SuperposedSample q = superposed_sampled(s, hs, 0.0f, 0.3f);
+    CHECK(length(p.position - q.position) < 1e-6f);
+    CHECK(length(p.attributes.color - q.attributes.color) < 1e-6f);
+}

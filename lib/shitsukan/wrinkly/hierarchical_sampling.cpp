@@ -36,7 +36,7 @@ void sample_interpolation_weights(const float* x, int n, float u, SampleInterpol
     SHITSUKAN_ASSERT(n >= 2);
     // Interval [x_i, x_{i+1}] holding u (binary search: the end intervals are half as wide).
     int lo = 0, hi = n - 1;
-    u = clamp(u, x[0], x[n - 1]);
+    u = u >= x[0] ? (u <= x[n - 1] ? u : x[n - 1]) : x[0];  // clamped; NaN -> x[0]
     while (hi - lo > 1) {
         const int mid = (lo + hi) / 2;
         if (x[mid] <= u)

@@ -91,15 +91,22 @@ WrAttributes WrSurface::attributes(float u, float v) const {
     return r;
 }
 
+namespace {
+
+// u clamped to [0, 1]; NaN -> 0 (the IST formulas turn the parameter into interval indices).
+float unit_parameter(float u) { return u >= 0.0f ? (u <= 1.0f ? u : 1.0f) : 0.0f; }
+
+}  // namespace
+
 float WrSurface::inverse_u(float u, int k) const {
     SHITSUKAN_ASSERT(k >= 0 && k <= axis_u_.max_level);
-    const float s = clamp(u, 0.0f, 1.0f) * float(spans_u_);
+    const float s = unit_parameter(u) * float(spans_u_);
     return clamp(axis_u_.inverse_at(s, k) / float(spans_u_), 0.0f, 1.0f);
 }
 
 float WrSurface::inverse_v(float v, int k) const {
     SHITSUKAN_ASSERT(k >= 0 && k <= axis_v_.max_level);
-    const float s = clamp(v, 0.0f, 1.0f) * float(spans_v_);
+    const float s = unit_parameter(v) * float(spans_v_);
     return clamp(axis_v_.inverse_at(s, k) / float(spans_v_), 0.0f, 1.0f);
 }
 

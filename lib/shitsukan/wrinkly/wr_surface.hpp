@@ -17,8 +17,9 @@
 //   WrAttributes a = s.attributes(u, v); // H(u, v), colour, transparency, displacement vector
 //   WrAttributes w = s.wr_attributes(u, v, K);   // the same at ((F_U^K)^{-1}(u), (F_V^K)^{-1}(v))
 //   Vec3 r = s.wr_point(u, v, K);        // eq. (15)
-// u, v in [0, 1] over the whole surface (clamped). K in 0..s.max_level() (0 = plain surface;
-// the axes' max_level: kMaxWrLevel for identity axes, what make_wr_ist_axis was given for ISTs).
+// u, v in [0, 1] over the whole surface (clamped; NaN counts as 0). K in 0..s.max_level() (0 =
+// plain surface; the axes' max_level: kMaxWrLevel for identity axes, what make_wr_ist_axis was
+// given for ISTs).
 #pragma once
 
 #include <vector>
