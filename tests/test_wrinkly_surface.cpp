@@ -218,6 +218,14 @@ TEST_CASE("bad input gives a clear status, never a crash") {
     m = test_mesh(7, 6);
     m.at(1, 1).position.y = std::nanf("");
     CHECK(!make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    // a huge grid is refused before anything is allocated (was a 65536^2-point resize)
+    m = make_control_mesh(1 << 16, 1 << 16);
+    CHECK(m.points.empty());
+    st = make_wr_surface(m, SurfaceBasis::bspline, 3, &s);
+    CHECK(!st);
+    CHECK(std::string(st.message()).find("limit") != std::string::npos);
+    CHECK(make_control_mesh(-3, 5).points.empty());
+    CHECK(!make_wr_surface(make_control_mesh(-3, 5), SurfaceBasis::bspline, 3, &s));
     m = test_mesh(7, 6);
     m.at(1, 1).transparency = 1.5f;
     CHECK(!make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
