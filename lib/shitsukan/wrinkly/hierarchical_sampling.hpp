@@ -96,7 +96,8 @@ Status sample_hierarchy(const WrSurface& surface, const HierarchicalOptions& opt
 
 // eq. (20) at (u, v). tail_tolerance (world units, >= 0): stop before step k once
 // delta^k·max|h_i| — a bound on everything still to be added — is below it (the adaptive end
-// of the sum, §4.2); 0 = add every sampled step.
+// of the sum, §4.2); 0 = add every sampled step. With jitter_height > 0 the samples may exceed
+// max|h_i| by the factor (1 + jitter_height·g), so the bound is then approximate.
 SuperposedSample superposed_sampled(const WrSurface& surface, const HierarchicalSampling& hs,
                                     float u, float v, float tail_tolerance = 0);
 
