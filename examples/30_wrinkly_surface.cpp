@@ -45,7 +45,8 @@ int main() {
     WrIstAxis axis;
     s = make_wr_ist_axis(ist, 3, &axis);
     if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
-    surface.set_axes(axis.axis(), axis.axis());
+    s = surface.set_axes(axis.axis(), axis.axis());  // spans_u == spans_v: one axis serves both
+    if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
 
     // 3. Polygonise eq. (15) with K = 3: vertices at the midpoints of the 4·27 small intervals.
     WrTessellationOptions o;

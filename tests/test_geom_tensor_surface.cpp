@@ -63,3 +63,25 @@ TEST_CASE("tensor grid validation rejects bad sizes and NaN") {
     CHECK(!s);
     CHECK(s.code() == StatusCode::invalid_argument);
 }
+
+TEST_CASE("parameters outside [0, 1] are clamped and NaN counts as 0 (no span index from NaN)") {
+    std::vector<float> g = wavy_grid(7, 5);
+    const TensorGrid bs{g.data(), 7, 5, 3};
+    std::vector<float> gb = wavy_grid(4, 4);
+    const TensorGrid bz{gb.data(), 4, 4, 3};
+    for (SurfaceBasis basis : {SurfaceBasis::bspline, SurfaceBasis::bezier}) {
+        const TensorGrid& grid = basis == SurfaceBasis::bspline ? bs : bz;
+        float a[3], b[3];
+        evaluate_tensor_surface(basis, 3, grid, std::nanf(""), 0.4f, a);
+        evaluate_tensor_surface(basis, 3, grid, 0.0f, 0.4f, b);
+        for (int c = 0; c < 3; ++c) CHECK(a[c] == b[c]);
+        evaluate_tensor_surface(basis, 3, grid, 5.0f, -INFINITY, a);
+        evaluate_tensor_surface(basis, 3, grid, 1.0f, 0.0f, b);
+        for (int c = 0; c < 3; ++c) CHECK(a[c] == b[c]);
+    }
+    int span = -1;
+    float t = -1;
+    tensor_locate(4, std::nanf(""), &span, &t);
+    CHECK(span == 0);
+    CHECK(t == 0.0f);
+}

@@ -218,6 +218,14 @@ TEST_CASE("bad input gives a clear status, never a crash") {
     m = test_mesh(7, 6);
     m.at(1, 1).position.y = std::nanf("");
     CHECK(!make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    // a huge grid is refused before anything is allocated (was a 65536^2-point resize)
+    m = make_control_mesh(1 << 16, 1 << 16);
+    CHECK(m.points.empty());
+    st = make_wr_surface(m, SurfaceBasis::bspline, 3, &s);
+    CHECK(!st);
+    CHECK(std::string(st.message()).find("limit") != std::string::npos);
+    CHECK(make_control_mesh(-3, 5).points.empty());
+    CHECK(!make_wr_surface(make_control_mesh(-3, 5), SurfaceBasis::bspline, 3, &s));
     m = test_mesh(7, 6);
     m.at(1, 1).transparency = 1.5f;
     CHECK(!make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
@@ -240,4 +248,63 @@ TEST_CASE("bad input gives a clear status, never a crash") {
     to.u0 = 0.6f;
     to.u1 = 0.4f;
     CHECK(!tessellate_wr_surface(s, nullptr, to, &wm));
+}
+
+TEST_CASE(
+    "constant h_i and c_i: eqs. (16) and (20) add up to h·(1 - delta^(K+1)), colour stays c") {
+    // Whatever the IST moves, a constant H is moved onto itself, so every step contributes
+    // W^k·h and the truncated sum is h·sum_k W^k (eq. 18); the averaged colour is c itself.
+    WrControlMesh m = test_mesh(7, 6);
+    for (WrControlPoint& p : m.points) {
+        p.height = 0.3f;
+        p.color = {0.2f, 0.6f, 0.9f};
+        p.delta = 0.6f;
+    }
+    WrSurface s;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    WrAxis au = identity_axis(s.spans_u(), 3), av = identity_axis(s.spans_v(), 3);
+    au.inverse = reflect_inverse;
+    av.inverse = reflect_inverse;
+    REQUIRE(s.set_axes(au, av));
+    HierarchicalOptions o;
+    o.levels = 3;
+    o.interpolation = SampleInterpolation::hermite;
+    HierarchicalSampling hs;
+    REQUIRE(sample_hierarchy(s, o, &hs));
+    const float expect = 0.3f * (1.0f - std::pow(0.6f, 4.0f));
+    for (float u : {0.0f, 0.13f, 0.5f, 0.87f})
+        for (float v : {0.07f, 0.61f, 1.0f}) {
+            const WrAttributes d = superposed_attributes_direct(s, u, v, 3);
+            const SuperposedSample h = superposed_sampled(s, hs, u, v);
+            CHECK(d.height == doctest::Approx(expect).epsilon(1e-4));
+            CHECK(h.attributes.height == doctest::Approx(expect).epsilon(1e-4));
+            CHECK(h.levels_used == 3);
+            CHECK(length(h.attributes.color - Vec3{0.2f, 0.6f, 0.9f}) < 1e-4f);
+            // eq. (20): displaced along the unit base normal N(u, v)
+            CHECK(length(h.position - (h.base.position + h.base.normal * h.attributes.height)) <
+                  1e-4f);
+        }
+}
+
+TEST_CASE("tessellated normals face the side of N(u, v) = dP/du x dP/dv") {
+    // Flat control mesh in the x-y plane (u along +x, v along +y): N = +z everywhere, and the
+    // displaced grid's normals must keep that side (not flip with the triangle winding).
+    WrControlMesh m = test_mesh(7, 6);
+    for (WrControlPoint& p : m.points) p.position.z = 0;
+    WrSurface s;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    CHECK(s.base_point(0.4f, 0.6f).normal.z == doctest::Approx(1.0f));
+    WrTessellationOptions o;
+    o.form = WrSurfaceForm::plain;
+    o.grid_level = 1;
+    WrMesh wm;
+    REQUIRE(tessellate_wr_surface(s, nullptr, o, &wm));
+    for (const Vec3& n : wm.mesh.normals) CHECK(n.z > 0.3f);
+    // and the triangles wind counter-clockwise seen from +z (their face normal is +z too)
+    for (int t = 0; t < wm.mesh.triangle_count(); t += 7) {
+        const Vec3 a = wm.mesh.positions[wm.mesh.indices[std::size_t(3 * t)]];
+        const Vec3 b = wm.mesh.positions[wm.mesh.indices[std::size_t(3 * t + 1)]];
+        const Vec3 c = wm.mesh.positions[wm.mesh.indices[std::size_t(3 * t + 2)]];
+        CHECK(cross(b - a, c - a).z > 0);
+    }
 }

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <string>
 
 #include "shitsukan/wrinkly/hierarchical_sampling.hpp"
 #include "shitsukan/wrinkly/ist_formula.hpp"
@@ -172,4 +173,71 @@ TEST_CASE("adaptive levels grow with the projected size and stop at the cap") {
     // The rest of the sum after K steps projects below the tolerance (unless capped).
     if (small.sum_levels < 6)
         CHECK(std::pow(0.6, small.sum_levels + 1) * s.max_abs_height() * 10.0 < 0.5);
+}
+
+TEST_CASE("K beyond the IST steps the axes hold is a status, not an abort") {
+    // The axes hold F^0 .. F^2; asking eq. (15) or eq. (20) for K = 3 used to reach
+    // WrIstAxis::inverse with k = 3 and trip its assertion.
+    WrControlMesh m = flat_mesh(7, 7);
+    WrSurface s;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    IstAxis iu, iv;
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_u(), IstEnds::translation, &iu));
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_v(), IstEnds::translation, &iv));
+    WrIstAxis au, av;
+    REQUIRE(make_wr_ist_axis(iu, 2, &au));
+    REQUIRE(make_wr_ist_axis(iv, 2, &av));
+    REQUIRE(s.set_axes(au.axis(), av.axis()));
+    CHECK(s.max_level() == 2);
+    HierarchicalOptions o;
+    o.levels = 3;
+    HierarchicalSampling hs;
+    const Status st = sample_hierarchy(s, o, &hs);
+    CHECK(!st);
+    CHECK(std::string(st.message()).find("K = 3") != std::string::npos);
+    o.levels = 2;
+    CHECK(sample_hierarchy(s, o, &hs));
+    WrTessellationOptions to;
+    to.grid_level = 1;
+    WrMesh wm;
+    for (WrSurfaceForm f : {WrSurfaceForm::wr, WrSurfaceForm::superposed_direct}) {
+        to.form = f;
+        to.levels = 3;
+        CHECK(!tessellate_wr_surface(s, nullptr, to, &wm));
+        to.levels = 2;
+        CHECK(tessellate_wr_surface(s, nullptr, to, &wm));
+    }
+    WrAxis bad = au.axis();
+    bad.max_level = -1;
+    CHECK(!s.set_axes(bad, av.axis()));
+    CHECK(identity_axis(3).max_level == kMaxWrLevel);
+}
+
+TEST_CASE(
+    "NaN or out-of-range (u, v) read the surface at the clamped parameter, never out of bounds") {
+    // The manuals say parameters are clamped to [0, 1]; NaN used to pass clamp() unchanged and
+    // became int(NaN) as a knot-span index (a read far outside the control grid).
+    WrControlMesh m = flat_mesh(7, 7);
+    WrSurface s;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    IstAxis iu;
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_u(), IstEnds::translation, &iu));
+    WrIstAxis a;
+    REQUIRE(make_wr_ist_axis(iu, 2, &a));
+    REQUIRE(s.set_axes(a.axis(), a.axis()));
+    HierarchicalOptions o;
+    o.levels = 2;
+    o.interpolation = SampleInterpolation::hermite;
+    HierarchicalSampling hs;
+    REQUIRE(sample_hierarchy(s, o, &hs));
+    const float nan = std::nanf("");
+    const float inf = INFINITY;
+    CHECK(length(s.wr_point(nan, 0.5f, 2) - s.wr_point(0.0f, 0.5f, 2)) < 1e-6f);
+    CHECK(length(s.wr_point(0.5f, nan, 2) - s.wr_point(0.5f, 0.0f, 2)) < 1e-6f);
+    CHECK(length(s.wr_point(inf, -inf, 2) - s.wr_point(1.0f, 0.0f, 2)) < 1e-6f);
+    CHECK(length(s.wr_point(-3.0f, 7.0f, 1) - s.wr_point(0.0f, 1.0f, 1)) < 1e-6f);
+    const SuperposedSample p = superposed_sampled(s, hs, nan, 0.3f);
+    const SuperposedSample q = superposed_sampled(s, hs, 0.0f, 0.3f);
+    CHECK(length(p.position - q.position) < 1e-6f);
+    CHECK(length(p.attributes.color - q.attributes.color) < 1e-6f);
 }

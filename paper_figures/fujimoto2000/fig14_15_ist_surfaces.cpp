@@ -8,9 +8,22 @@
 // and §3.2 can be checked: colours run red (left column) -> green -> blue (right column), the
 // heights vary over the mesh. What to look for: (d)(e)(f) repeat the structure of (b) one
 // IST step deeper (self-similarity). With the fully-connected IST (fig. 15) the zooms stay
-// red at the left and blue at the right (locality, §2.2.2(2)); with the unit-IST (fig. 14) a
-// colour reaches every part of the surface, since eq. (7) reverses the digits and sends the
-// finest digit of u to the coarsest digit of F^{-1}(u) (the global influence of §2.2.1(3)).
+// red at the left and blue at the right (locality, §2.2.2(2)).
+// fig. 14 and the §3.2 sentence "the more to the left the redder, the more to the right the
+// bluer", which the paper states for both figures: the unit-IST is the digit reversal of
+// eqs. (7)-(8) (fig. 3 builds it step by step; F^{-1} = F), so the third of (b) whose first
+// N-ary digit is d reads H and the colour in the small intervals whose K-th (finest) digit is
+// d: every N-th small interval, spread over the whole patch. That is the unit-IST's own
+// "locality" (§2.2.1(2): groups told apart by a constant number difference): the left, centre
+// and right thirds read from places shifted by d·N^-K only. At K = 2 that is still a visible
+// tendency (the left third reads [0, 1/9) + j/3, the right [2/9, 1/3) + j/3); at the K of these
+// panels (3, zooms 4) it is a shift of at most 2/81 and the three zooms look alike, all colours
+// in each (measured mean red minus blue of the thirds: about +0.08, +0.07, -0.02; fig. 15:
+// +0.42, +0.04, -0.37). We found no reading of eqs. (2), (7), (8) and fig. 3 that gives the strong
+// tendency the sentence suggests, and §2.2.1(3) and §3.2 themselves call the unit-IST's and the
+// IST-Bezier surface's influence global; so fig. 14 is left as the equations make it, and each
+// zoom's note prints the measured mean colour of its third (for fig. 15 too) so the contrast
+// can be read in numbers.
 #include <cmath>
 
 #include "driver/figure.hpp"
@@ -38,16 +51,12 @@ WrControlMesh fig14_mesh() {
                                   {0.30f, 0.48f, 0.40f, 0.18f},
                                   {0.18f, 0.44f, 0.50f, 0.30f},
                                   {0.04f, 0.22f, 0.34f, 0.16f}};
-    WrControlMesh m = make_control_mesh(4, 4);
-    for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c) {
-            WrControlPoint& p = m.at(c, r);
-            const bool inner = c > 0 && c < 3 && r > 0 && r < 3;
-            p.position = {-1.2f + 0.8f * float(c), inner ? 0.35f : 0.0f, 1.2f - 0.8f * float(r)};
-            p.height = h[r][c];
-            p.color = column_color(float(c) / 3.0f);
-        }
-    return m;
+    return square_control_mesh(4, 1.2f, [](int c, int r, float, float, WrControlPoint& p) {
+        const bool inner = c > 0 && c < 3 && r > 0 && r < 3;
+        p.position.y = inner ? 0.35f : 0.0f;
+        p.height = h[r][c];
+        p.color = column_color(float(c) / 3.0f);
+    });
 }
 
 // fig. 15 (chosen): 11 x 11 B-spline control points (8 x 8 knot spans = base intervals) on
@@ -55,18 +64,12 @@ WrControlMesh fig14_mesh() {
 // (seed 15), colour by column.
 WrControlMesh fig15_mesh() {
     const int n = 11;
-    WrControlMesh m = make_control_mesh(n, n);
-    for (int r = 0; r < n; ++r)
-        for (int c = 0; c < n; ++c) {
-            WrControlPoint& p = m.at(c, r);
-            const float x = -1.5f + 3.0f * float(c) / float(n - 1);
-            const float z = 1.5f - 3.0f * float(r) / float(n - 1);
-            p.position = {x, 0.35f * (1.0f - (x * x + z * z) / 4.5f), z};
-            p.height = 0.25f + 0.12f * std::sin(1.7f * float(c) + 0.9f * float(r)) +
-                       0.16f * (hash_uniform(15, 0, c, r) - 0.5f);
-            p.color = column_color(float(c) / float(n - 1));
-        }
-    return m;
+    return square_control_mesh(n, 1.5f, [&](int c, int r, float x, float z, WrControlPoint& p) {
+        p.position.y = 0.35f * (1.0f - (x * x + z * z) / 4.5f);
+        p.height = 0.25f + 0.12f * std::sin(1.7f * float(c) + 0.9f * float(r)) +
+                   0.16f * (hash_uniform(15, 0, c, r) - 0.5f);
+        p.color = column_color(float(c) / float(n - 1));
+    });
 }
 
 struct SurfaceFigure {
@@ -150,10 +153,14 @@ Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
                    "caption: 3x magnification of the left end, centre, right end");
         ctx.note(f.basis == SurfaceBasis::bezier
                      ? "Look for: the same structure as (b) one IST step finer (self-similarity). "
-                       "The unit-IST reverses the digits of u (eq. 7), so the colour of every "
-                       "column reaches every part of the surface: red, green and blue appear in "
-                       "all three zooms (the global influence of the Bezier/unit-IST pair, "
-                       "§2.2.1(3), §3.2), unlike fig. 15."
+                       "Unlike the paper's sentence (§3.2: red to the left, blue to the right), "
+                       "red, green and blue appear in all three zooms: the unit-IST reverses the "
+                       "N-ary digits of u (eqs. 7-8), so a third whose first digit is d reads "
+                       "the heights and colours of the small intervals whose finest digit is d, "
+                       "spread over the whole patch; the thirds differ only by a shift of "
+                       "d·N^-K in where they read (2/81 here), the unit-IST's weak 'locality' "
+                       "of §2.2.1(2). §2.2.1(3) and §3.2 call this pair's influence global; "
+                       "compare the mean colours with fig. 15's."
                      : "Look for: the same structure as (b) one IST step finer (self-similarity), "
                        "red at the left end, green in the centre, blue at the right end: the "
                        "fully-connected IST moves a height or colour at most K base intervals "
@@ -172,6 +179,21 @@ Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
     const auto t1 = Clock::now();
     RasterStats stats;
     SHITSUKAN_TRY(render_opaque(camera, wm.mesh, img.view(), shading, &stats));
+    if (panel >= 'd') {
+        // Measured, so the locality claim of §3.2 can be checked in numbers, not only by eye:
+        // the mean vertex colour over this third of the surface (u within 1/6 of uc).
+        const float uc = panel == 'd' ? 1.0f / 6.0f : (panel == 'e' ? 0.5f : 5.0f / 6.0f);
+        Vec3 sum{0, 0, 0};
+        int count = 0;
+        for (std::size_t i = 0; i < wm.mesh.uvs.size(); ++i)
+            if (std::fabs(wm.mesh.uvs[i].x - uc) <= 1.0f / 6.0f) {
+                sum += wm.mesh.colors[i];
+                ++count;
+            }
+        const Vec3 mean = count > 0 ? sum / float(count) : sum;
+        ctx.note(fmt("Mean vertex colour of this third (r, g, b) = (%.2f, %.2f, %.2f).",
+                     double(mean.x), double(mean.y), double(mean.z)));
+    }
     ctx.note(fmt("%d triangles; tessellation %.2f s, rendering %.2f s.", wm.mesh.triangle_count(),
                  t_tess, seconds_since(t1)));
     if (panel == 'b' && !quick) SHITSUKAN_TRY(write_obj(ctx.path(".obj").c_str(), wm.mesh));

@@ -23,19 +23,12 @@ using figures::fmt;
 // Chosen: 8 x 8 control points on [-1.5, 1.5]^2 (5 x 5 spans), a saddle-free dome 0.3 high,
 // heights 0.05..0.40 (smooth pattern + hashed variation, seed 16), neutral colour.
 WrControlMesh fig16_mesh() {
-    const int n = 8;
-    WrControlMesh m = make_control_mesh(n, n);
-    for (int r = 0; r < n; ++r)
-        for (int c = 0; c < n; ++c) {
-            WrControlPoint& p = m.at(c, r);
-            const float x = -1.5f + 3.0f * float(c) / float(n - 1);
-            const float z = 1.5f - 3.0f * float(r) / float(n - 1);
-            p.position = {x, 0.3f * (1.0f - (x * x + z * z) / 4.5f), z};
-            p.height = 0.22f + 0.1f * std::sin(1.3f * float(c) - 0.8f * float(r)) +
-                       0.14f * (hash_uniform(16, 0, c, r) - 0.5f);
-            p.color = {0.85f, 0.82f, 0.74f};
-        }
-    return m;
+    return square_control_mesh(8, 1.5f, [](int c, int r, float x, float z, WrControlPoint& p) {
+        p.position.y = 0.3f * (1.0f - (x * x + z * z) / 4.5f);
+        p.height = 0.22f + 0.1f * std::sin(1.3f * float(c) - 0.8f * float(r)) +
+                   0.14f * (hash_uniform(16, 0, c, r) - 0.5f);
+        p.color = {0.85f, 0.82f, 0.74f};
+    });
 }
 
 const Shot kShot{{0.0f, 3.4f, 2.8f}, {0.0f, 0.1f, 0.1f}, {0, 1, 0}, 34.0f};

@@ -32,34 +32,21 @@ WrControlMesh fig17_mesh() {
                                   {0.30f, 1.10f, 0.80f, 0.20f},
                                   {0.20f, 0.85f, 1.20f, 0.45f},
                                   {0.05f, 0.30f, 0.45f, 0.10f}};
-    WrControlMesh m = make_control_mesh(4, 4);
-    for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c) {
-            WrControlPoint& p = m.at(c, r);
-            p.position = {-1.2f + 0.8f * float(c), 0.0f, 1.2f - 0.8f * float(r)};
-            p.height = h[r][c];
-            p.color = height_color(p.height, 1.2f);
-        }
-    return m;
+    return square_control_mesh(4, 1.2f, [](int c, int r, float, float, WrControlPoint& p) {
+        p.height = h[r][c];
+        p.color = height_color(p.height, 1.2f);
+    });
 }
 
 // fig. 18 (chosen): 11 x 11 B-spline points on [-1.5, 1.5]^2 (8 x 8 spans), flat; a winding
 // mountain range through the middle (heights up to 0.7) with a hashed variation (seed 18).
 WrControlMesh fig18_mesh() {
-    const int n = 11;
-    WrControlMesh m = make_control_mesh(n, n);
-    for (int r = 0; r < n; ++r)
-        for (int c = 0; c < n; ++c) {
-            WrControlPoint& p = m.at(c, r);
-            const float x = -1.5f + 3.0f * float(c) / float(n - 1);
-            const float z = 1.5f - 3.0f * float(r) / float(n - 1);
-            const float d = z + 0.1f - 0.35f * std::sin(1.6f * x);  // distance from a winding ridge
-            p.position = {x, 0.0f, z};
-            p.height = 0.05f +
-                       0.55f * std::exp(-3.0f * d * d) * (0.65f + 0.6f * hash_uniform(18, 0, c, r));
-            p.color = height_color(p.height, 0.65f);
-        }
-    return m;
+    return square_control_mesh(11, 1.5f, [](int c, int r, float x, float z, WrControlPoint& p) {
+        const float d = z + 0.1f - 0.35f * std::sin(1.6f * x);  // distance from a winding ridge
+        p.height =
+            0.05f + 0.55f * std::exp(-3.0f * d * d) * (0.65f + 0.6f * hash_uniform(18, 0, c, r));
+        p.color = height_color(p.height, 0.65f);
+    });
 }
 
 struct SuperFigure {
@@ -160,45 +147,20 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, int panel) {
 
 }  // namespace
 
-SHITSUKAN_FIGURE(fig17a1_panel, "fujimoto2000", "fig17a1",
-                 "Superposed IST-Bezier: (a-1) control mesh with heights h_i") {
-    return run_panel(ctx, kFig17, 1);
-}
-SHITSUKAN_FIGURE(fig17a2_panel, "fujimoto2000", "fig17a2",
-                 "Superposed IST-Bezier: (a-2) conventional Bezier surface") {
-    return run_panel(ctx, kFig17, 2);
-}
-SHITSUKAN_FIGURE(fig17a3_panel, "fujimoto2000", "fig17a3",
-                 "Superposed IST-Bezier: (a-3) WR surface, eq. (15)") {
-    return run_panel(ctx, kFig17, 3);
-}
-SHITSUKAN_FIGURE(fig17a4_panel, "fujimoto2000", "fig17a4",
-                 "Superposed IST-Bezier: (a-4) superposed, small delta (smooth)") {
-    return run_panel(ctx, kFig17, 4);
-}
-SHITSUKAN_FIGURE(fig17a5_panel, "fujimoto2000", "fig17a5",
-                 "Superposed IST-Bezier: (a-5) superposed, large delta (rough)") {
-    return run_panel(ctx, kFig17, 5);
-}
-SHITSUKAN_FIGURE(fig18b1_panel, "fujimoto2000", "fig18b1",
-                 "Superposed IST-B-spline: (b-1) control mesh with heights h_i") {
-    return run_panel(ctx, kFig18, 1);
-}
-SHITSUKAN_FIGURE(fig18b2_panel, "fujimoto2000", "fig18b2",
-                 "Superposed IST-B-spline: (b-2) conventional B-spline surface") {
-    return run_panel(ctx, kFig18, 2);
-}
-SHITSUKAN_FIGURE(fig18b3_panel, "fujimoto2000", "fig18b3",
-                 "Superposed IST-B-spline: (b-3) WR surface, eq. (15)") {
-    return run_panel(ctx, kFig18, 3);
-}
-SHITSUKAN_FIGURE(fig18b4_panel, "fujimoto2000", "fig18b4",
-                 "Superposed IST-B-spline: (b-4) superposed, small delta (smooth)") {
-    return run_panel(ctx, kFig18, 4);
-}
-SHITSUKAN_FIGURE(fig18b5_panel, "fujimoto2000", "fig18b5",
-                 "Superposed IST-B-spline: (b-5) superposed, large delta (rough)") {
-    return run_panel(ctx, kFig18, 5);
-}
+#define SUPER_PANEL(fig, row, i, figure, caption)                                  \
+    SHITSUKAN_FIGURE(fig##row##i##_panel, "fujimoto2000", #fig #row #i, caption) { \
+        return run_panel(ctx, figure, i);                                          \
+    }
+
+SUPER_PANEL(fig17, a, 1, kFig17, "Superposed IST-Bezier: (a-1) control mesh with heights h_i")
+SUPER_PANEL(fig17, a, 2, kFig17, "Superposed IST-Bezier: (a-2) conventional Bezier surface")
+SUPER_PANEL(fig17, a, 3, kFig17, "Superposed IST-Bezier: (a-3) WR surface, eq. (15)")
+SUPER_PANEL(fig17, a, 4, kFig17, "Superposed IST-Bezier: (a-4) superposed, small delta (smooth)")
+SUPER_PANEL(fig17, a, 5, kFig17, "Superposed IST-Bezier: (a-5) superposed, large delta (rough)")
+SUPER_PANEL(fig18, b, 1, kFig18, "Superposed IST-B-spline: (b-1) control mesh with heights h_i")
+SUPER_PANEL(fig18, b, 2, kFig18, "Superposed IST-B-spline: (b-2) conventional B-spline surface")
+SUPER_PANEL(fig18, b, 3, kFig18, "Superposed IST-B-spline: (b-3) WR surface, eq. (15)")
+SUPER_PANEL(fig18, b, 4, kFig18, "Superposed IST-B-spline: (b-4) superposed, small delta (smooth)")
+SUPER_PANEL(fig18, b, 5, kFig18, "Superposed IST-B-spline: (b-5) superposed, large delta (rough)")
 
 }  // namespace shitsukan::fujimoto2000

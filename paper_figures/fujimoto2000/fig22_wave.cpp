@@ -177,34 +177,20 @@ SHITSUKAN_FIGURE(
 SHITSUKAN_FIGURE(
     table03_times, "fujimoto2000", "table03",
     "Execution times of fig. 22 (1200 x 600): paper (Origin2000, min:sec) vs. this library") {
-    struct Row {
-        const char* label;
-        std::array<const char*, 4> paper;
-    };
-    const Row rows[] = {{"(z)", {"4:23", "0:52", "1:27", "6:42"}},
-                        {"(a-1)", {"4:50", "0:52", "161:24", "167:06"}},
-                        {"(a-2)", {"10:43", "0:53", "1:32", "13:08"}},
-                        {"(a-3)", {"10:42", "0:52", "2:46", "14:20"}},
-                        {"(a-4)", {"10:43", "0:52", "6:46", "18:21"}},
-                        {"(b-1)", {"4:53", "0:52", "74:53", "80:38"}},
-                        {"(b-2)", {"10:47", "0:52", "1:28", "13:07"}},
-                        {"(b-3)", {"10:48", "0:52", "2:07", "13:47"}},
-                        {"(b-4)", {"10:47", "0:52", "4:09", "15:48"}}};
+    const std::vector<PaperTimes> rows = {{"(z)", {"4:23", "0:52", "1:27", "6:42"}},
+                                          {"(a-1)", {"4:50", "0:52", "161:24", "167:06"}},
+                                          {"(a-2)", {"10:43", "0:53", "1:32", "13:08"}},
+                                          {"(a-3)", {"10:42", "0:52", "2:46", "14:20"}},
+                                          {"(a-4)", {"10:43", "0:52", "6:46", "18:21"}},
+                                          {"(b-1)", {"4:53", "0:52", "74:53", "80:38"}},
+                                          {"(b-2)", {"10:47", "0:52", "1:28", "13:07"}},
+                                          {"(b-3)", {"10:48", "0:52", "2:07", "13:47"}},
+                                          {"(b-4)", {"10:47", "0:52", "4:09", "15:48"}}};
     std::map<std::string, StageTimes> times;
     StageTimes probe;
     if (!find_stage_times("fig22(z)", &probe) || probe.quick != ctx.quick()) {
         RgbImage img;
         SHITSUKAN_TRY(build_fig22(ctx.quick(), &img, &times));
-    } else {
-        for (const Row& r : rows) find_stage_times(std::string("fig22") + r.label, &times[r.label]);
-    }
-    std::vector<std::string> names;
-    std::vector<StageTimes> ours;
-    std::vector<std::array<const char*, 4>> paper;
-    for (const Row& r : rows) {
-        names.push_back(r.label);
-        ours.push_back(times[r.label]);
-        paper.push_back(r.paper);
     }
     ctx.given("paper times", "Table 3 (Origin2000, R10000 250 MHz)", "Table 3");
     ctx.chosen("stage mapping",
@@ -214,7 +200,7 @@ SHITSUKAN_FIGURE(
     return ctx.save_markdown(
         "# Table 3: execution times of fig. 22 (panels of 300 x 200 in a "
         "1200 x 600 image)\n\n" +
-        stage_table(names, ours, paper) +
+        stage_table("fig22", rows, times) +
         (ctx.quick() ? "\n(quick run: small images, not comparable)\n" : "") +
         "\nPaper: Origin2000, min:sec, each panel rendered on its own. Ours: "
         "seconds for a 300 x 200 panel.\n");

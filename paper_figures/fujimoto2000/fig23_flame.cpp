@@ -194,11 +194,7 @@ SHITSUKAN_FIGURE(
 SHITSUKAN_FIGURE(
     table04_times, "fujimoto2000", "table04",
     "Execution times of fig. 23 (1200 x 1200): paper (Origin2000, min:sec) vs. this library") {
-    struct Row {
-        const char* label;
-        std::array<const char*, 4> paper;
-    };
-    const Row rows[] = {
+    const std::vector<PaperTimes> rows = {
         {"(a-2)", {"0:11", "0:02", "0:29", "0:42"}}, {"(a-3)", {"0:32", "0:02", "0:51", "1:25"}},
         {"(b-2)", {"0:11", "0:02", "0:34", "0:47"}}, {"(b-3)", {"0:32", "0:02", "1:10", "1:44"}},
         {"(c-2)", {"0:11", "0:02", "0:38", "0:51"}}, {"(c-3)", {"0:32", "0:02", "1:07", "1:41"}}};
@@ -207,16 +203,6 @@ SHITSUKAN_FIGURE(
     if (!find_stage_times("fig23(a-2)", &probe) || probe.quick != ctx.quick()) {
         RgbImage img;
         SHITSUKAN_TRY(build_fig23(ctx.quick(), &img, &times, nullptr));
-    } else {
-        for (const Row& r : rows) find_stage_times(std::string("fig23") + r.label, &times[r.label]);
-    }
-    std::vector<std::string> names;
-    std::vector<StageTimes> ours;
-    std::vector<std::array<const char*, 4>> paper;
-    for (const Row& r : rows) {
-        names.push_back(r.label);
-        ours.push_back(times[r.label]);
-        paper.push_back(r.paper);
     }
     ctx.given("paper times", "Table 4 (Origin2000, R10000 250 MHz)", "Table 4");
     ctx.chosen("stage mapping",
@@ -226,7 +212,7 @@ SHITSUKAN_FIGURE(
     return ctx.save_markdown(
         "# Table 4: execution times of fig. 23 (panels of 400 x 450 in a "
         "1200 x 1200 image)\n\n" +
-        stage_table(names, ours, paper) +
+        stage_table("fig23", rows, times) +
         (ctx.quick() ? "\n(quick run: small images, not comparable)\n" : "") +
         "\nPaper: Origin2000, min:sec. Ours: seconds per 400 x 450 panel.\n");
 }

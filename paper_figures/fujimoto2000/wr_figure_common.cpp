@@ -234,6 +234,25 @@ std::string stage_table(const std::vector<std::string>& names, const std::vector
     return md;
 }
 
+std::string stage_table(const std::string& figure, const std::vector<PaperTimes>& rows,
+                        const std::map<std::string, StageTimes>& times) {
+    std::vector<std::string> names;
+    std::vector<StageTimes> ours;
+    std::vector<std::array<const char*, 4>> paper;
+    for (const PaperTimes& r : rows) {
+        StageTimes t;
+        const auto it = times.find(r.label);
+        if (it != times.end())
+            t = it->second;
+        else
+            find_stage_times(figure + r.label, &t);
+        names.push_back(r.label);
+        ours.push_back(t);
+        paper.push_back(r.paper);
+    }
+    return stage_table(names, ours, paper);
+}
+
 void label_panel(RgbView target, const std::string& text, Rgb8 color) {
     RasterCanvas canvas(target);
     const int scale = target.width >= 400 ? 2 : 1;

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <chrono>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -46,7 +47,7 @@ Status render_opaque(const Camera& camera, const TriangleMesh& mesh, RgbView tar
 // Transparent (fig. 23): triangles sorted back to front by their centroid depth, drawn with the
 // Z-buffer, each fragment blended over what is there: out = (1 - t)·c + t·dst with the
 // interpolated transparency t. Shading is mostly emissive (flames give light): colour x (0.85 +
-// 0.25 Lambert). The background is not cleared when `clear` is false (panels drawn on a composite).
+// 0.25 Lambert). The target is cleared to the background first.
 Status render_transparent(const Camera& camera, const WrMesh& mesh, RgbView target,
                           const Shading& shading, RasterStats* stats = nullptr);
 
@@ -55,11 +56,27 @@ Status render_transparent(const Camera& camera, const WrMesh& mesh, RgbView targ
 void draw_control_mesh(RgbView target, const Camera& camera, const WrControlMesh& mesh,
                        const WrSurface& surface, bool sticks, Rgb8 background);
 
+// The layout of every chosen control mesh of figs. 14-18: n x n points over [-half, half]^2 in
+// the x-z plane (column c along +x, row r from the back z = +half to the front), each placed
+// at (x, 0, z) and then handed to shape(c, r, x, z, point) to set its height, colour and y.
+template <class Shape> WrControlMesh square_control_mesh(int n, float half, Shape shape) {
+    WrControlMesh m = make_control_mesh(n, n);
+    for (int r = 0; r < n; ++r)
+        for (int c = 0; c < n; ++c) {
+            const float x = -half + 2.0f * half * float(c) / float(n - 1);
+            const float z = half - 2.0f * half * float(r) / float(n - 1);
+            WrControlPoint& p = m.at(c, r);
+            p.position = {x, 0.0f, z};
+            shape(c, r, x, z, p);
+        }
+    return m;
+}
+
 // Distinct colours for base interval (i, j) (figs. 16b, 22y, 23x).
 Vec3 span_color(int i, int j);
 // Colours every vertex by the base interval its parameter comes from at step k:
-// span_color(floor(B_u·(F_U^k)^{-1}(u)), floor(B_v·(F_V^k)^{-1}(v))), times `mix` of the
-// original colour. k = 0: the span the vertex lies in (fig. 16b).
+// span_color(floor(B_u·(F_U^k)^{-1}(u)), floor(B_v·(F_V^k)^{-1}(v))) (the original colour is
+// replaced). k = 0: the span the vertex lies in (fig. 16b).
 void color_by_source_span(WrMesh* mesh, const WrSurface& surface, int k);
 
 // Axis helpers: an IST-carrying WrAxis that stays alive with the figure.
@@ -88,6 +105,17 @@ inline double seconds_since(Clock::time_point t0) {
 // min:sec beside our seconds, one column pair per panel.
 std::string stage_table(const std::vector<std::string>& names, const std::vector<StageTimes>& ours,
                         const std::vector<std::array<const char*, 4>>& paper);
+
+// One column pair of Tables 3-4: a panel label ("(a-2)") and the paper's sam., pol., ren., total.
+struct PaperTimes {
+    const char* label;
+    std::array<const char*, 4> paper;
+};
+// stage_table for the panels of a composite figure (figs. 22, 23): our times of each row from
+// `times` (label -> times, as the composite's builder filled them); rows missing there are
+// taken from what an earlier run recorded under `figure` + label (record_stage_times).
+std::string stage_table(const std::string& figure, const std::vector<PaperTimes>& rows,
+                        const std::map<std::string, StageTimes>& times);
 
 // Blit a panel label ("(a-1)") in the top-left corner.
 void label_panel(RgbView target, const std::string& text, Rgb8 color);

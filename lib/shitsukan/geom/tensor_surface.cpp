@@ -44,8 +44,15 @@ Status validate_tensor_grid(SurfaceBasis basis, int degree, const TensorGrid& gr
     return Status::success();
 }
 
+namespace {
+
+// u clamped to [0, 1]; NaN -> 0 (clamp() lets NaN through, and int(NaN) is no span index).
+float unit_parameter(float u) { return u >= 0.0f ? (u <= 1.0f ? u : 1.0f) : 0.0f; }
+
+}  // namespace
+
 void tensor_locate(int spans, float u, int* span, float* t) {
-    float s = clamp(u, 0.0f, 1.0f) * float(spans);
+    float s = unit_parameter(u) * float(spans);
     int i = int(s);
     if (i > spans - 1) i = spans - 1;  // u = 1 belongs to the last span
     *span = i;
@@ -61,8 +68,8 @@ void evaluate_tensor_surface(SurfaceBasis basis, int degree, const TensorGrid& g
     int su = 0, sv = 0;
     float scale_u = 1.0f, scale_v = 1.0f;  // d(local t)/d(global u)
     if (basis == SurfaceBasis::bezier) {
-        bernstein_basis(degree, clamp(u, 0.0f, 1.0f), bu, dbu);
-        bernstein_basis(degree, clamp(v, 0.0f, 1.0f), bv, dbv);
+        bernstein_basis(degree, unit_parameter(u), bu, dbu);
+        bernstein_basis(degree, unit_parameter(v), bv, dbv);
     } else {
         const int spans_u = grid.cols - degree, spans_v = grid.rows - degree;
         float tu = 0, tv = 0;

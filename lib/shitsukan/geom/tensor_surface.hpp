@@ -16,7 +16,7 @@
 //            (rows - degree along v). The global parameter u in [0, 1] is mapped to
 //            s = u·span_count; span = floor(s) (the last span owns s = span_count), t = s - span.
 // Derivatives pu, pv (optional, nullptr to skip) are with respect to the global u and v.
-// Degrees 1..kMaxBasisDegree. Parameters outside [0, 1] are clamped.
+// Degrees 1..kMaxBasisDegree. Parameters outside [0, 1] are clamped (NaN counts as 0).
 #pragma once
 
 #include <cstdint>

@@ -9,7 +9,8 @@ WrControlMesh make_control_mesh(int cols, int rows) {
     WrControlMesh m;
     m.cols = cols > 0 ? cols : 0;
     m.rows = rows > 0 ? rows : 0;
-    m.points.resize(std::size_t(m.cols) * std::size_t(m.rows));
+    if (long(m.cols) * long(m.rows) <= kMaxWrControlPoints)
+        m.points.resize(std::size_t(m.cols) * std::size_t(m.rows));
     return m;
 }
 
@@ -17,6 +18,11 @@ Status validate_control_mesh(const WrControlMesh& mesh, SurfaceBasis basis, int 
     if (degree < 1 || degree > kMaxBasisDegree)
         return Status::error(StatusCode::invalid_argument, "degree n must be in 1..%d (got %d)",
                              kMaxBasisDegree, degree);
+    if (long(mesh.cols) * long(mesh.rows) > kMaxWrControlPoints)
+        return Status::error(
+            StatusCode::too_large,
+            "control mesh of %d x %d points is larger than the limit of %ld points", mesh.cols,
+            mesh.rows, kMaxWrControlPoints);
     if (mesh.cols < 1 || mesh.rows < 1 ||
         mesh.points.size() != std::size_t(mesh.cols) * std::size_t(mesh.rows))
         return Status::error(StatusCode::invalid_argument,

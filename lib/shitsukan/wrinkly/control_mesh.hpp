@@ -43,6 +43,11 @@ struct WrControlMesh {
     }
 };
 
+constexpr long kMaxWrControlPoints = 1L << 20;  // cols·rows (about 50 MB of points)
+
+// A cols x rows grid of default points. Sizes below 1 give an empty mesh and more than
+// kMaxWrControlPoints points leave `points` empty (nothing is allocated): either way
+// validate_control_mesh then reports the size.
 WrControlMesh make_control_mesh(int cols, int rows);
 
 // Checks the grid shape against the base surface (the paper restricts WR surfaces to square

@@ -36,7 +36,7 @@ void sample_interpolation_weights(const float* x, int n, float u, SampleInterpol
     SHITSUKAN_ASSERT(n >= 2);
     // Interval [x_i, x_{i+1}] holding u (binary search: the end intervals are half as wide).
     int lo = 0, hi = n - 1;
-    u = clamp(u, x[0], x[n - 1]);
+    u = u >= x[0] ? (u <= x[n - 1] ? u : x[n - 1]) : x[0];  // clamped; NaN -> x[0]
     while (hi - lo > 1) {
         const int mid = (lo + hi) / 2;
         if (x[mid] <= u)
@@ -132,6 +132,11 @@ Status sample_hierarchy(const WrSurface& surface, const HierarchicalOptions& o,
                              "jitter deviations must be finite and >= 0 (got %g, %g, %g)",
                              double(o.jitter_height), double(o.jitter_color),
                              double(o.jitter_transparency));
+    if (o.levels > surface.max_level())
+        return Status::error(StatusCode::invalid_argument,
+                             "levels K = %d exceeds the IST steps the surface's axes hold (%d): "
+                             "build them with make_wr_ist_axis(..., max_level >= K, ...)",
+                             o.levels, surface.max_level());
     const WrAxis& au = surface.axis_u();
     const WrAxis& av = surface.axis_v();
     for (int k = 1; k <= o.levels; ++k) {

@@ -25,8 +25,8 @@
 //     transparency get + jitter·g per channel (clamped to [0, 1]); g ~ N(0,1) from the
 //     coordinate hash of (sample i, j, step k), so it does not depend on evaluation order.
 //   - Colour and transparency sums are divided by the weights used (they stay in [0, 1]).
-// Ranges: levels (K) in 0..kMaxWrLevel, jitters >= 0, sample count per step at most
-// kMaxHierarchicalSamples (too_large otherwise).
+// Ranges: levels (K) in 0..surface.max_level() (<= kMaxWrLevel), jitters >= 0, sample count per
+// step at most kMaxHierarchicalSamples (too_large otherwise).
 #pragma once
 
 #include <cstdint>
@@ -96,7 +96,8 @@ Status sample_hierarchy(const WrSurface& surface, const HierarchicalOptions& opt
 
 // eq. (20) at (u, v). tail_tolerance (world units, >= 0): stop before step k once
 // delta^k·max|h_i| — a bound on everything still to be added — is below it (the adaptive end
-// of the sum, §4.2); 0 = add every sampled step.
+// of the sum, §4.2); 0 = add every sampled step. With jitter_height > 0 the samples may exceed
+// max|h_i| by the factor (1 + jitter_height·g), so the bound is then approximate.
 SuperposedSample superposed_sampled(const WrSurface& surface, const HierarchicalSampling& hs,
                                     float u, float v, float tail_tolerance = 0);
 

@@ -5,7 +5,7 @@
 //   WrAxis identity = identity_axis(5);            // 5 base intervals, no shuffle
 //   float s0 = identity.inverse_at(2.37f, 3);      // = 2.37
 //   WrAxis a = ...;                                 // from an IST (wr_ist_axis.hpp)
-//   float s = a.inverse_at(s_k, k);                 // (F^k)^{-1}(s_k), k = 0..kMaxWrLevel
+//   float s = a.inverse_at(s_k, k);                 // (F^k)^{-1}(s_k), k = 0..a.max_level
 //
 // Coordinates are in base-interval units: s in [0, base_intervals], base interval i =
 // [i, i+1). For the IST-Bezier surface there is one base interval (the whole patch, §3.2);
@@ -22,6 +22,8 @@ constexpr int kMaxWrLevel = 12;  // deepest IST step k a surface evaluates
 struct WrAxis {
     int base_intervals = 1;
     int division = 1;  // N; 1 = no shuffle (fig. 4a)
+    // Deepest step k that `inverse` can evaluate (a WrIstAxis holds F^0 .. F^max_level).
+    int max_level = kMaxWrLevel;
     // (F^k)^{-1}(s); nullptr = the identity. `context` is passed back unchanged.
     float (*inverse)(const void* context, float s, int k) = nullptr;
     const void* context = nullptr;

@@ -33,6 +33,7 @@ WrAxis WrIstAxis::axis() const {
     SHITSUKAN_ASSERT(!steps_.empty());
     w.base_intervals = steps_[0].base_intervals;
     w.division = steps_[0].n;
+    w.max_level = max_level();
     w.inverse = &WrIstAxis::inverse;
     w.context = this;
     return w;

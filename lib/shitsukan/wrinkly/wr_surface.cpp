@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "shitsukan/core/assert.hpp"
 #include "shitsukan/core/scalar.hpp"
 
 namespace shitsukan {
@@ -41,6 +42,11 @@ Status WrSurface::set_axes(const WrAxis& u, const WrAxis& v) {
                              "IST base intervals (%d, %d) must equal the surface's parameter spans "
                              "(%d, %d) (fujimoto2000 §3.2)",
                              u.base_intervals, v.base_intervals, spans_u_, spans_v_);
+    if (u.max_level < 0 || u.max_level > kMaxWrLevel || v.max_level < 0 ||
+        v.max_level > kMaxWrLevel)
+        return Status::error(StatusCode::invalid_argument,
+                             "axis max levels must be in 0..%d (got %d, %d)", kMaxWrLevel,
+                             u.max_level, v.max_level);
     if (u.division < 1 || v.division < 1)
         return Status::error(StatusCode::invalid_argument,
                              "IST division numbers must be >= 1 (got %d, %d)", u.division,
@@ -85,13 +91,22 @@ WrAttributes WrSurface::attributes(float u, float v) const {
     return r;
 }
 
+namespace {
+
+// u clamped to [0, 1]; NaN -> 0 (the IST formulas turn the parameter into interval indices).
+float unit_parameter(float u) { return u >= 0.0f ? (u <= 1.0f ? u : 1.0f) : 0.0f; }
+
+}  // namespace
+
 float WrSurface::inverse_u(float u, int k) const {
-    const float s = clamp(u, 0.0f, 1.0f) * float(spans_u_);
+    SHITSUKAN_ASSERT(k >= 0 && k <= axis_u_.max_level);
+    const float s = unit_parameter(u) * float(spans_u_);
     return clamp(axis_u_.inverse_at(s, k) / float(spans_u_), 0.0f, 1.0f);
 }
 
 float WrSurface::inverse_v(float v, int k) const {
-    const float s = clamp(v, 0.0f, 1.0f) * float(spans_v_);
+    SHITSUKAN_ASSERT(k >= 0 && k <= axis_v_.max_level);
+    const float s = unit_parameter(v) * float(spans_v_);
     return clamp(axis_v_.inverse_at(s, k) / float(spans_v_), 0.0f, 1.0f);
 }
 

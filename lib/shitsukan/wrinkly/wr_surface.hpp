@@ -17,7 +17,9 @@
 //   WrAttributes a = s.attributes(u, v); // H(u, v), colour, transparency, displacement vector
 //   WrAttributes w = s.wr_attributes(u, v, K);   // the same at ((F_U^K)^{-1}(u), (F_V^K)^{-1}(v))
 //   Vec3 r = s.wr_point(u, v, K);        // eq. (15)
-// u, v in [0, 1] over the whole surface (clamped). K in 0..kMaxWrLevel (0 = plain surface).
+// u, v in [0, 1] over the whole surface (clamped; NaN counts as 0). K in 0..s.max_level() (0 =
+// plain surface; the axes' max_level: kMaxWrLevel for identity axes, what make_wr_ist_axis was
+// given for ISTs).
 #pragma once
 
 #include <vector>
@@ -64,6 +66,11 @@ public:
     DisplacementMode displacement() const { return mode_; }
     void set_displacement(DisplacementMode mode) { mode_ = mode; }
     float max_abs_height() const { return max_abs_height_; }  // max_i |h_i|: bounds |H|
+    // Deepest IST step k both axes can evaluate: the k of wr_point, wr_attributes, inverse_u/v
+    // must be in 0..max_level() (sample_hierarchy and tessellate_wr_surface check it).
+    int max_level() const {
+        return axis_u_.max_level < axis_v_.max_level ? axis_u_.max_level : axis_v_.max_level;
+    }
 
     // The axes' base intervals must equal the knot spans (1 for Bezier), §3.2.
     Status set_axes(const WrAxis& u, const WrAxis& v);

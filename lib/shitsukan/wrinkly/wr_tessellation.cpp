@@ -29,6 +29,12 @@ Status evaluate_wr_grid(const WrSurface& surface, const HierarchicalSampling* sa
         return Status::error(StatusCode::invalid_argument,
                              "levels K and grid level L must be in 0..%d (got %d, %d)", kMaxWrLevel,
                              o.levels, o.grid_level);
+    if ((o.form == WrSurfaceForm::wr || o.form == WrSurfaceForm::superposed_direct) &&
+        o.levels > surface.max_level())
+        return Status::error(StatusCode::invalid_argument,
+                             "levels K = %d exceeds the IST steps the surface's axes hold (%d): "
+                             "build them with make_wr_ist_axis(..., max_level >= K, ...)",
+                             o.levels, surface.max_level());
     if (o.subdivisions < 1 || o.subdivisions > 64)
         return Status::error(StatusCode::invalid_argument, "subdivisions must be in 1..64 (got %d)",
                              o.subdivisions);

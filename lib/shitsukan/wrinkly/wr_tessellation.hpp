@@ -19,8 +19,8 @@
 //   - the vertex grid level L is the first whose cells project to at most `cell_pixels`;
 //   - the superposition stops, per vertex, once the rest of the sum, delta(u,v)^k·max|h|,
 //     projects below `tolerance_pixels` (WrTessellationOptions::tail_tolerance, world units).
-// Ranges: levels 0..kMaxWrLevel, grid_level 0..kMaxWrLevel, subdivisions 1..64,
-// 0 <= u0 < u1 <= 1 (same for v), at most kMaxWrVertices vertices.
+// Ranges: levels 0..surface.max_level() (<= kMaxWrLevel), grid_level 0..kMaxWrLevel,
+// subdivisions 1..64, 0 <= u0 < u1 <= 1 (same for v), at most kMaxWrVertices vertices.
 #pragma once
 
 #include <vector>
