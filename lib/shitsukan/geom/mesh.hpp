@@ -43,7 +43,8 @@ struct TriangleMesh {
     MeshView view() const {
         MeshView v;
         v.positions = positions.empty() ? nullptr : positions.data();
-        v.normals = normals.size() == positions.size() && !normals.empty() ? normals.data() : nullptr;
+        v.normals =
+            normals.size() == positions.size() && !normals.empty() ? normals.data() : nullptr;
         v.uvs = uvs.size() == positions.size() && !uvs.empty() ? uvs.data() : nullptr;
         v.colors = colors.size() == positions.size() && !colors.empty() ? colors.data() : nullptr;
         v.vertex_count = int(positions.size());

@@ -17,8 +17,7 @@
 namespace shitsukan {
 
 // Host-side owning image. Sizes are clamped at 0; width·height must fit in memory.
-template <class P>
-class Image {
+template <class P> class Image {
 public:
     Image() = default;
     Image(int width, int height, P value = P{}) { resize(width, height, value); }
@@ -27,12 +26,16 @@ public:
         height_ = height > 0 ? height : 0;
         data_.assign(std::size_t(width_) * std::size_t(height_), value);
     }
-    ImageView<P> view() { return ImageView<P>{data_.empty() ? nullptr : data_.data(), width_, height_, width_}; }
+    ImageView<P> view() {
+        return ImageView<P>{data_.empty() ? nullptr : data_.data(), width_, height_, width_};
+    }
     ImageView<const P> const_view() const {
         return ImageView<const P>{data_.empty() ? nullptr : data_.data(), width_, height_, width_};
     }
     P& at(int x, int y) { return view().at(x, y); }
-    const P& at(int x, int y) const { return data_[std::size_t(y) * std::size_t(width_) + std::size_t(x)]; }
+    const P& at(int x, int y) const {
+        return data_[std::size_t(y) * std::size_t(width_) + std::size_t(x)];
+    }
     int width() const { return width_; }
     int height() const { return height_; }
     P* data() { return data_.data(); }

@@ -49,7 +49,11 @@ Status write_png(const char* path, const GrayView& image) {
     return Status::success();
 }
 
-Status write_ppm(const char* path, const RgbView& image) { return write_netpbm(path, image, "P6", 3); }
-Status write_pgm(const char* path, const GrayView& image) { return write_netpbm(path, image, "P5", 1); }
+Status write_ppm(const char* path, const RgbView& image) {
+    return write_netpbm(path, image, "P6", 3);
+}
+Status write_pgm(const char* path, const GrayView& image) {
+    return write_netpbm(path, image, "P5", 1);
+}
 
 }  // namespace shitsukan

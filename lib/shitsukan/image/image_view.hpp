@@ -25,8 +25,7 @@ struct Rgb8 {
 inline bool operator==(Rgb8 a, Rgb8 b) { return a.r == b.r && a.g == b.g && a.b == b.b; }
 inline bool operator!=(Rgb8 a, Rgb8 b) { return !(a == b); }
 
-template <class P>
-struct ImageView {
+template <class P> struct ImageView {
     P* pixels = nullptr;
     int width = 0;
     int height = 0;
@@ -44,12 +43,19 @@ struct ImageView {
     }
     // The rectangle [x0, x0+w) x [y0, y0+h), clipped to this view.
     ImageView subview(int x0, int y0, int w, int h) const {
-        if (x0 < 0) { w += x0; x0 = 0; }
-        if (y0 < 0) { h += y0; y0 = 0; }
+        if (x0 < 0) {
+            w += x0;
+            x0 = 0;
+        }
+        if (y0 < 0) {
+            h += y0;
+            y0 = 0;
+        }
         if (x0 + w > width) w = width - x0;
         if (y0 + h > height) h = height - y0;
         if (w <= 0 || h <= 0 || empty()) return ImageView{};
-        return ImageView{pixels + std::size_t(y0) * std::size_t(stride) + std::size_t(x0), w, h, stride};
+        return ImageView{pixels + std::size_t(y0) * std::size_t(stride) + std::size_t(x0), w, h,
+                         stride};
     }
 };
 
@@ -58,8 +64,7 @@ using GrayView = ImageView<std::uint8_t>;
 using Gray16View = ImageView<std::uint16_t>;
 using FloatView = ImageView<float>;
 
-template <class P>
-void fill(const ImageView<P>& view, P value) {
+template <class P> void fill(const ImageView<P>& view, P value) {
     for (int y = 0; y < view.height; ++y) {
         P* r = view.row(y);
         for (int x = 0; x < view.width; ++x) r[x] = value;
