@@ -287,6 +287,34 @@ TEST_CASE("relief maps: bad input gets a clear status") {
     BezierChain nan_section = s;
     nan_section.segments[0].p[2].y = NAN;
     CHECK(!make_leather_maps(p, labels.data(), 8, 8, nan_section, ReliefOptions{}, &maps).ok());
+    // A hand-filled pattern: offsets past the vertices, going backwards, or NaN coordinates
+    // are refused before anything reads through them (the sanitizer build would catch a read).
+    ScalePattern torn = p;
+    torn.polygon_offsets.back() += 8;
+    Status so = make_leather_maps(torn, labels.data(), 8, 8, s, ReliefOptions{}, &maps);
+    CHECK(so.code() == StatusCode::invalid_argument);
+    CHECK(std::strstr(so.message(), "polygon_offsets") != nullptr);
+    ScalePattern backwards_offsets = p;
+    std::swap(backwards_offsets.polygon_offsets[1], backwards_offsets.polygon_offsets[2]);
+    Status sw =
+        make_leather_maps(backwards_offsets, labels.data(), 8, 8, s, ReliefOptions{}, &maps);
+    CHECK(!sw.ok());
+    CHECK(std::strstr(sw.message(), "vertices") != nullptr);
+    ScalePattern nan_vertex = p;
+    nan_vertex.vertices[5].x = NAN;
+    Status sv = make_leather_maps(nan_vertex, labels.data(), 8, 8, s, ReliefOptions{}, &maps);
+    CHECK(std::strstr(sv.message(), "vertex 5") != nullptr);
+    ScalePattern nan_centroid = p;
+    nan_centroid.centroids[2].y = NAN;
+    Status sc = make_leather_maps(nan_centroid, labels.data(), 8, 8, s, ReliefOptions{}, &maps);
+    CHECK(std::strstr(sc.message(), "centroid of polygon 2") != nullptr);
+    // An infinite height (finite options can still overflow) encodes as 0, not as UB.
+    REQUIRE(make_leather_maps(p, labels.data(), 8, 8, s, ReliefOptions{}, &maps).ok());
+    maps.heights[3] = INFINITY;
+    maps.max_height = INFINITY;
+    std::vector<std::uint16_t> h16(64, 7);
+    encode_height16(maps, h16.data());
+    for (std::uint16_t v : h16) CHECK(v == 0);  // every height times 65535 / inf
 }
 
 TEST_CASE("relief: the angular index finds the same edge point as the full scan") {
