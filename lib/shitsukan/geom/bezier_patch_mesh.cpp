@@ -33,6 +33,15 @@ Status tessellate_patch_strip(const BezierPatch* patches, int count,
         return Status::error(StatusCode::invalid_argument,
                              "patch strip: segments must be 1..1024 (got %d x %d)",
                              options.segments_u, options.segments_v);
+    // columns · rows vertices, indexed by int and uint32: refuse a strip that would overflow.
+    const long long vertices = (static_cast<long long>(count) * options.segments_u + 1) *
+                               (static_cast<long long>(options.segments_v) + 1);
+    if (vertices > kMaxStripVertices)
+        return Status::error(StatusCode::invalid_argument,
+                             "patch strip: %d patches of %d x %d segments make %lld vertices "
+                             "(at most %lld)",
+                             count, options.segments_u, options.segments_v, vertices,
+                             kMaxStripVertices);
     if (options.chords < 1 || options.chords > 1024)
         return Status::error(StatusCode::invalid_argument,
                              "patch strip: chords must be 1..1024 (got %d)", options.chords);
