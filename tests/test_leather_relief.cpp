@@ -12,6 +12,7 @@
 
 #include "shitsukan/core/prng.hpp"
 
+#include "shitsukan/geom/polygon.hpp"
 #include "shitsukan/leather/maps.hpp"
 #include "shitsukan/leather/relief.hpp"
 #include "shitsukan/leather/scale_division.hpp"
@@ -22,17 +23,9 @@ namespace {
 
 void add_polygon(ScalePattern* p, const std::vector<Vec2>& poly) {
     if (p->polygon_offsets.empty()) p->polygon_offsets.push_back(0);
-    Vec2 c{0, 0};
-    float a = 0;
-    for (std::size_t i = 0; i < poly.size(); ++i) {
-        Vec2 u = poly[i], v = poly[(i + 1) % poly.size()];
-        float w = cross(u, v);
-        a += w;
-        c = c + (u + v) * w;
-    }
     p->vertices.insert(p->vertices.end(), poly.begin(), poly.end());
     p->polygon_offsets.push_back(int(p->vertices.size()));
-    p->centroids.push_back(c / (3.0f * a));
+    p->centroids.push_back(to_float(polygon_centroid(poly.data(), int(poly.size()))));
 }
 
 // k x k squares tiling [0, 1]^2, counter-clockwise.
