@@ -245,6 +245,31 @@ TEST_CASE("relief maps: exports (16-bit height, RGB normal map, relief mesh)") {
             for (int c = 0; c < 3; ++c)
                 CHECK(std::fabs(float(px[c]) - (n[c] + 1.0f) * 127.5f) <= 0.5f);
         }
+    // The encoding is OpenGL's (+y green, the tangent-space convention of glTF and Blender),
+    // not DirectX's (-y): on a raised scale the slope toward the image top (pattern +y) has
+    // green above 128, the slope toward the right red above 128, and z is never below 128.
+    {
+        ScalePattern one = square_pattern(1);
+        const int n = 64;
+        std::vector<int> one_labels = brute_force_labels(one, n, n);
+        LeatherMaps m1;
+        REQUIRE(make_leather_maps(one, one_labels.data(), n, n,
+                                  table1_section(Table1Section::convex), ReliefOptions{}, &m1)
+                    .ok());
+        std::vector<std::uint8_t> px(std::size_t(3 * n * n));
+        encode_normal_rgb(m1, px.data());
+        auto at = [&](int col, int row) { return &px[std::size_t(3 * (row * n + col))]; };
+        const int near_edge = n * 42 / 100;  // rho ~ 0.85: on the falling flank of fig. 13a
+        const std::uint8_t* top = at(n / 2, n / 2 - near_edge);
+        const std::uint8_t* bottom = at(n / 2, n / 2 + near_edge);
+        const std::uint8_t* right = at(n / 2 + near_edge, n / 2);
+        CHECK(top[1] > 150);
+        CHECK(bottom[1] < 105);
+        CHECK(std::abs(int(top[0]) - 128) <= 1);
+        CHECK(right[0] > 150);
+        CHECK(std::abs(int(right[1]) - 128) <= 1);
+        for (std::size_t k = 2; k < px.size(); k += 3) CHECK(px[k] >= 128);
+    }
     TriangleMesh mesh;
     REQUIRE(make_relief_mesh(maps, 2, 1.0f, &mesh).ok());
     CHECK(mesh.vertex_count() == 16 * 8);
