@@ -122,13 +122,13 @@ Status leather_maps(const ScalePattern& pattern, int w, int h, const BezierChain
 }
 
 void shade_flat_texture(const LeatherMaps& maps, Vec2 lo, Vec2 hi, const RgbView& out,
-                        const Blinn1977Material& m) {
+                        const Blinn1977Material& m, float key_height) {
     Vec2 size = hi - lo;
     float span = std::fmax(size.x, size.y);
     // Two point lights: a key light high at the upper left, a fill light low at the right
     // (chosen here), at distances proportional to the window so a close-up is lit alike.
     PointLight lights[2] = {
-        {{lo.x - 0.5f * span, hi.y + 0.5f * span, 0.55f * span}, {1.1f, 1.05f, 1.0f}},
+        {{lo.x - 0.5f * span, hi.y + 0.5f * span, key_height * span}, {1.1f, 1.05f, 1.0f}},
         {{hi.x + 0.9f * span, lo.y + 0.1f * span, 0.5f * span}, {0.30f, 0.32f, 0.38f}},
     };
     for (int j = 0; j < out.height; ++j) {
