@@ -99,6 +99,11 @@ TEST_CASE("bezier patch: collapsed edges and NaN control points get a clear stat
     PatchStripOptions bad;
     bad.texture_scale = NAN;
     CHECK(!tessellate_patch_strip(&p, 1, bad, &m).ok());
+    bad = PatchStripOptions{};
+    bad.texture_origin.y = NAN;  // the message names the origin, not the (valid) scale
+    Status so = tessellate_patch_strip(&p, 1, bad, &m);
+    CHECK(so.code() == StatusCode::invalid_argument);
+    CHECK(std::strstr(so.message(), "texture_origin") != nullptr);
     // A long, finely divided strip whose vertex count would not fit the indices is refused
     // before anything is tessellated (70 joined patches at 1024 x 1024: 73 million vertices).
     std::vector<BezierPatch> chain;

@@ -49,11 +49,14 @@ Status tessellate_patch_strip(const BezierPatch* patches, int count,
         return Status::error(StatusCode::invalid_argument,
                              "patch strip: anchor must be in [0, %d] (got %g)", count,
                              double(options.anchor));
-    if (!(options.texture_scale > 0.0f) || !is_finite(options.texture_scale) ||
-        !is_finite(options.texture_origin))
+    if (!(options.texture_scale > 0.0f) || !is_finite(options.texture_scale))
         return Status::error(StatusCode::invalid_argument,
                              "patch strip: texture_scale must be finite and > 0 (got %g)",
                              double(options.texture_scale));
+    if (!is_finite(options.texture_origin))
+        return Status::error(StatusCode::invalid_argument,
+                             "patch strip: texture_origin must be finite (got (%g, %g))",
+                             double(options.texture_origin.x), double(options.texture_origin.y));
     Vec3 lo = patches[0].p[0][0], hi = lo;
     for (int k = 0; k < count; ++k) {
         Status s = validate_patch(patches[k]);
