@@ -151,17 +151,11 @@ void scene_lights(PointLight out[2]) {
 
 Rgb8 background_color() { return Rgb8{206, 210, 214}; }
 
-void compute_texture_tangents(BumpSurface* s) {
-    const TriangleMesh& m = s->mesh;
-    s->dpdx.assign(std::size_t(m.triangle_count()), Vec3{});
-    s->dpdy.assign(std::size_t(m.triangle_count()), Vec3{});
-    for (int t = 0; t < m.triangle_count(); ++t) {
-        std::uint32_t a = m.indices[3 * std::size_t(t)], b = m.indices[3 * std::size_t(t) + 1],
-                      c = m.indices[3 * std::size_t(t) + 2];
-        triangle_texture_tangents(m.positions[a], m.positions[b], m.positions[c], m.uvs[a],
-                                  m.uvs[b], m.uvs[c], &s->dpdx[std::size_t(t)],
-                                  &s->dpdy[std::size_t(t)]);
-    }
+Status compute_texture_tangents(BumpSurface* s) {
+    const int n = s->mesh.triangle_count();
+    s->dpdx.assign(std::size_t(n), Vec3{});
+    s->dpdy.assign(std::size_t(n), Vec3{});
+    return mesh_texture_tangents(s->mesh.view(), s->dpdx.data(), s->dpdy.data(), n);
 }
 
 namespace {

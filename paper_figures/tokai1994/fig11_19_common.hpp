@@ -65,7 +65,7 @@ struct BumpSurface {
     TriangleMesh mesh;
     std::vector<Vec3> dpdx, dpdy;
 };
-void compute_texture_tangents(BumpSurface* surface);
+Status compute_texture_tangents(BumpSurface* surface);
 
 // Texture lookup with mirrored repetition outside the pattern rectangle (the normal's x or y
 // is negated in a mirrored copy, so the bumps stay consistent).
