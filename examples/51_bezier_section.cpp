@@ -23,9 +23,12 @@ int main() {
         for (int k = 0; k <= 10; ++k) {
             float r = 0.1f * float(k);
             SectionSample q = section_at_r(section, r);  // z(r), and eq. (3) at that t
-            float slope = q.dr != 0.0f ? q.dz / q.dr : 0.0f;
+            // Past the last control point section_at_r clamps to the end point (with the
+            // end's eq. (3) tangent); the relief continues flat there, the groove floor.
+            bool floor = r > section_r_last(section);
+            float slope = !floor && q.dr != 0.0f ? q.dz / q.dr : 0.0f;
             std::printf("  %.1f  %.3f  %.4f  %+.3f%s\n", double(r), double(q.t), double(q.z),
-                        double(slope), r > section_r_last(section) ? "  (groove floor)" : "");
+                        double(slope), floor ? "  (groove floor)" : "");
         }
     }
     // A section that turns back in r is refused with the reason.

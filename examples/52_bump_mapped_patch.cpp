@@ -84,13 +84,10 @@ int main() {
     opt.texture_scale = 0.6f;  // the pattern square covers the patch about once
     TriangleMesh mesh;
     if (!(s = tessellate_patch_strip(&patch, 1, opt, &mesh))) return fail(s);
+    // dP/dx, dP/dy of the texture, once per triangle (raster/bump_mapping.hpp).
     std::vector<Vec3> dpdx(std::size_t(mesh.triangle_count())), dpdy(dpdx.size());
-    for (int t = 0; t < mesh.triangle_count(); ++t) {
-        const std::uint32_t* k = &mesh.indices[3 * std::size_t(t)];
-        triangle_texture_tangents(mesh.positions[k[0]], mesh.positions[k[1]], mesh.positions[k[2]],
-                                  mesh.uvs[k[0]], mesh.uvs[k[1]], mesh.uvs[k[2]],
-                                  &dpdx[std::size_t(t)], &dpdy[std::size_t(t)]);
-    }
+    if (!(s = mesh_texture_tangents(mesh.view(), dpdx.data(), dpdy.data(), int(dpdx.size()))))
+        return fail(s);
 
     // 3. Render twice, side by side.
     RgbImage image(640, 320);

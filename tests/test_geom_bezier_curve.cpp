@@ -151,3 +151,28 @@ TEST_CASE("bezier: bad sections get a clear status, no crash") {
         CHECK(st.code() == StatusCode::degenerate);
     }
 }
+
+TEST_CASE("bezier: a vertical segment makes a step in z(r) (§3.2: discontinuous sections)") {
+    // §3.2: joining several curves "handles more complex shapes, including discontinuous
+    // sections". A segment with constant r (a = b = c = 0 in validate_section) is a cliff:
+    // z jumps there, and section_at_r never inverts r(t) on it (r0 == r3: no division).
+    BezierChain s;
+    s.segments[0] = {{{0.0f, 0.2f}, {0.2f, 0.2f}, {0.4f, 0.2f}, {0.5f, 0.2f}}};
+    s.segments[1] = {{{0.5f, 0.2f}, {0.5f, 0.16f}, {0.5f, 0.13f}, {0.5f, 0.1f}}};  // the cliff
+    s.segments[2] = {{{0.5f, 0.1f}, {0.7f, 0.1f}, {0.85f, 0.05f}, {0.9f, 0.0f}}};
+    s.count = 3;
+    REQUIRE(validate_section(s).ok());
+    SectionSample before = section_at_r(s, 0.5f - 1e-4f), at = section_at_r(s, 0.5f);
+    SectionSample after = section_at_r(s, 0.5f + 1e-4f);
+    CHECK(before.segment == 0);
+    CHECK(at.segment == 0);  // the shared end point belongs to the first segment
+    CHECK(after.segment == 2);
+    CHECK(before.z == doctest::Approx(0.2f).epsilon(1e-4));
+    CHECK(after.z == doctest::Approx(0.1f).epsilon(1e-3));
+    for (int k = 0; k <= 100; ++k) {
+        SectionSample q = section_at_r(s, 0.9f * float(k) / 100.0f);
+        CHECK(std::isfinite(q.z));
+        CHECK(std::isfinite(q.t));
+        CHECK(q.segment != 1);
+    }
+}

@@ -99,6 +99,25 @@ TEST_CASE("bezier patch: collapsed edges and NaN control points get a clear stat
     PatchStripOptions bad;
     bad.texture_scale = NAN;
     CHECK(!tessellate_patch_strip(&p, 1, bad, &m).ok());
+    bad = PatchStripOptions{};
+    bad.texture_origin.y = NAN;  // the message names the origin, not the (valid) scale
+    Status so = tessellate_patch_strip(&p, 1, bad, &m);
+    CHECK(so.code() == StatusCode::invalid_argument);
+    CHECK(std::strstr(so.message(), "texture_origin") != nullptr);
+    // A long, finely divided strip whose vertex count would not fit the indices is refused
+    // before anything is tessellated (70 joined patches at 1024 x 1024: 73 million vertices).
+    std::vector<BezierPatch> chain;
+    for (int k = 0; k < 70; ++k) {
+        chain.push_back(wavy_patch(float(k), 1.0f));
+        std::size_t i = std::size_t(k);
+        if (k > 0)
+            for (int j = 0; j < 4; ++j) chain[i].p[0][j] = chain[i - 1].p[3][j];
+    }
+    PatchStripOptions fine;
+    fine.segments_u = fine.segments_v = 1024;
+    Status sv = tessellate_patch_strip(chain.data(), 70, fine, &m);
+    CHECK(sv.code() == StatusCode::invalid_argument);
+    CHECK(std::strstr(sv.message(), "vertices") != nullptr);
 }
 
 TEST_CASE("patch strip: the arc-length mapping gives near-uniform texel density (§4)") {

@@ -12,6 +12,7 @@
 
 #include "shitsukan/core/prng.hpp"
 
+#include "shitsukan/geom/polygon.hpp"
 #include "shitsukan/leather/maps.hpp"
 #include "shitsukan/leather/relief.hpp"
 #include "shitsukan/leather/scale_division.hpp"
@@ -22,17 +23,9 @@ namespace {
 
 void add_polygon(ScalePattern* p, const std::vector<Vec2>& poly) {
     if (p->polygon_offsets.empty()) p->polygon_offsets.push_back(0);
-    Vec2 c{0, 0};
-    float a = 0;
-    for (std::size_t i = 0; i < poly.size(); ++i) {
-        Vec2 u = poly[i], v = poly[(i + 1) % poly.size()];
-        float w = cross(u, v);
-        a += w;
-        c = c + (u + v) * w;
-    }
     p->vertices.insert(p->vertices.end(), poly.begin(), poly.end());
     p->polygon_offsets.push_back(int(p->vertices.size()));
-    p->centroids.push_back(c / (3.0f * a));
+    p->centroids.push_back(to_float(polygon_centroid(poly.data(), int(poly.size()))));
 }
 
 // k x k squares tiling [0, 1]^2, counter-clockwise.
@@ -252,6 +245,31 @@ TEST_CASE("relief maps: exports (16-bit height, RGB normal map, relief mesh)") {
             for (int c = 0; c < 3; ++c)
                 CHECK(std::fabs(float(px[c]) - (n[c] + 1.0f) * 127.5f) <= 0.5f);
         }
+    // The encoding is OpenGL's (+y green, the tangent-space convention of glTF and Blender),
+    // not DirectX's (-y): on a raised scale the slope toward the image top (pattern +y) has
+    // green above 128, the slope toward the right red above 128, and z is never below 128.
+    {
+        ScalePattern one = square_pattern(1);
+        const int n = 64;
+        std::vector<int> one_labels = brute_force_labels(one, n, n);
+        LeatherMaps m1;
+        REQUIRE(make_leather_maps(one, one_labels.data(), n, n,
+                                  table1_section(Table1Section::convex), ReliefOptions{}, &m1)
+                    .ok());
+        std::vector<std::uint8_t> px(std::size_t(3 * n * n));
+        encode_normal_rgb(m1, px.data());
+        auto at = [&](int col, int row) { return &px[std::size_t(3 * (row * n + col))]; };
+        const int near_edge = n * 42 / 100;  // rho ~ 0.85: on the falling flank of fig. 13a
+        const std::uint8_t* top = at(n / 2, n / 2 - near_edge);
+        const std::uint8_t* bottom = at(n / 2, n / 2 + near_edge);
+        const std::uint8_t* right = at(n / 2 + near_edge, n / 2);
+        CHECK(top[1] > 150);
+        CHECK(bottom[1] < 105);
+        CHECK(std::abs(int(top[0]) - 128) <= 1);
+        CHECK(right[0] > 150);
+        CHECK(std::abs(int(right[1]) - 128) <= 1);
+        for (std::size_t k = 2; k < px.size(); k += 3) CHECK(px[k] >= 128);
+    }
     TriangleMesh mesh;
     REQUIRE(make_relief_mesh(maps, 2, 1.0f, &mesh).ok());
     CHECK(mesh.vertex_count() == 16 * 8);
@@ -287,6 +305,34 @@ TEST_CASE("relief maps: bad input gets a clear status") {
     BezierChain nan_section = s;
     nan_section.segments[0].p[2].y = NAN;
     CHECK(!make_leather_maps(p, labels.data(), 8, 8, nan_section, ReliefOptions{}, &maps).ok());
+    // A hand-filled pattern: offsets past the vertices, going backwards, or NaN coordinates
+    // are refused before anything reads through them (the sanitizer build would catch a read).
+    ScalePattern torn = p;
+    torn.polygon_offsets.back() += 8;
+    Status so = make_leather_maps(torn, labels.data(), 8, 8, s, ReliefOptions{}, &maps);
+    CHECK(so.code() == StatusCode::invalid_argument);
+    CHECK(std::strstr(so.message(), "polygon_offsets") != nullptr);
+    ScalePattern backwards_offsets = p;
+    std::swap(backwards_offsets.polygon_offsets[1], backwards_offsets.polygon_offsets[2]);
+    Status sw =
+        make_leather_maps(backwards_offsets, labels.data(), 8, 8, s, ReliefOptions{}, &maps);
+    CHECK(!sw.ok());
+    CHECK(std::strstr(sw.message(), "vertices") != nullptr);
+    ScalePattern nan_vertex = p;
+    nan_vertex.vertices[5].x = NAN;
+    Status sv = make_leather_maps(nan_vertex, labels.data(), 8, 8, s, ReliefOptions{}, &maps);
+    CHECK(std::strstr(sv.message(), "vertex 5") != nullptr);
+    ScalePattern nan_centroid = p;
+    nan_centroid.centroids[2].y = NAN;
+    Status sc = make_leather_maps(nan_centroid, labels.data(), 8, 8, s, ReliefOptions{}, &maps);
+    CHECK(std::strstr(sc.message(), "centroid of polygon 2") != nullptr);
+    // An infinite height (finite options can still overflow) encodes as 0, not as UB.
+    REQUIRE(make_leather_maps(p, labels.data(), 8, 8, s, ReliefOptions{}, &maps).ok());
+    maps.heights[3] = INFINITY;
+    maps.max_height = INFINITY;
+    std::vector<std::uint16_t> h16(64, 7);
+    encode_height16(maps, h16.data());
+    for (std::uint16_t v : h16) CHECK(v == 0);  // every height times 65535 / inf
 }
 
 TEST_CASE("relief: the angular index finds the same edge point as the full scan") {

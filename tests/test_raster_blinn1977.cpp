@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstring>
 #include <initializer_list>
 
 #include "shitsukan/core/prng.hpp"
@@ -99,4 +100,37 @@ TEST_CASE("bump mapping: texture tangents, an orthonormal frame, and the perturb
     TangentFrame degenerate = orthonormal_tangent_frame({0, 0, 1}, {0, 0, 2}, {0, 1, 0});
     CHECK(std::fabs(dot(degenerate.t, degenerate.n)) < 1e-6f);
     CHECK(length(degenerate.t) == doctest::Approx(1.0f));
+}
+
+TEST_CASE("bump mapping: mesh_texture_tangents = triangle_texture_tangents per triangle") {
+    // Two triangles of the plane z = 0 with texture = 2·(x, y), and a third with no texture area.
+    const Vec3 p[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    const Vec2 uv[4] = {{0, 0}, {2, 0}, {2, 2}, {2, 2}};
+    const std::uint32_t idx[9] = {0, 1, 2, 0, 2, 3, 1, 2, 3};
+    MeshView m;
+    m.positions = p;
+    m.uvs = uv;
+    m.vertex_count = 4;
+    m.indices = idx;
+    m.triangle_count = 3;
+    Vec3 dx[3], dy[3];
+    REQUIRE(mesh_texture_tangents(m, dx, dy, 3).ok());
+    CHECK(length(dx[0] - Vec3{0.5f, 0, 0}) < 1e-6f);
+    CHECK(length(dy[0] - Vec3{0, 0.5f, 0}) < 1e-6f);
+    Vec3 ex, ey;
+    triangle_texture_tangents(p[1], p[2], p[3], uv[1], uv[2], uv[3], &ex, &ey);
+    CHECK(length(dx[2] - ex) == 0.0f);  // both 0: that texture triangle has no area
+    CHECK(length(dy[2] - ey) == 0.0f);
+    // Bad input: too small buffers, no uvs, an index past the vertices.
+    CHECK(mesh_texture_tangents(m, dx, dy, 2).code() == StatusCode::invalid_argument);
+    MeshView no_uv = m;
+    no_uv.uvs = nullptr;
+    CHECK(!mesh_texture_tangents(no_uv, dx, dy, 3).ok());
+    const std::uint32_t bad_idx[3] = {0, 1, 7};
+    MeshView bad = m;
+    bad.indices = bad_idx;
+    bad.triangle_count = 1;
+    Status s = mesh_texture_tangents(bad, dx, dy, 3);
+    CHECK(!s.ok());
+    CHECK(std::strstr(s.message(), "vertex 7") != nullptr);
 }

@@ -122,13 +122,13 @@ Status leather_maps(const ScalePattern& pattern, int w, int h, const BezierChain
 }
 
 void shade_flat_texture(const LeatherMaps& maps, Vec2 lo, Vec2 hi, const RgbView& out,
-                        const Blinn1977Material& m) {
+                        const Blinn1977Material& m, float key_height) {
     Vec2 size = hi - lo;
     float span = std::fmax(size.x, size.y);
     // Two point lights: a key light high at the upper left, a fill light low at the right
     // (chosen here), at distances proportional to the window so a close-up is lit alike.
     PointLight lights[2] = {
-        {{lo.x - 0.5f * span, hi.y + 0.5f * span, 0.55f * span}, {1.1f, 1.05f, 1.0f}},
+        {{lo.x - 0.5f * span, hi.y + 0.5f * span, key_height * span}, {1.1f, 1.05f, 1.0f}},
         {{hi.x + 0.9f * span, lo.y + 0.1f * span, 0.5f * span}, {0.30f, 0.32f, 0.38f}},
     };
     for (int j = 0; j < out.height; ++j) {
@@ -151,17 +151,11 @@ void scene_lights(PointLight out[2]) {
 
 Rgb8 background_color() { return Rgb8{206, 210, 214}; }
 
-void compute_texture_tangents(BumpSurface* s) {
-    const TriangleMesh& m = s->mesh;
-    s->dpdx.assign(std::size_t(m.triangle_count()), Vec3{});
-    s->dpdy.assign(std::size_t(m.triangle_count()), Vec3{});
-    for (int t = 0; t < m.triangle_count(); ++t) {
-        std::uint32_t a = m.indices[3 * std::size_t(t)], b = m.indices[3 * std::size_t(t) + 1],
-                      c = m.indices[3 * std::size_t(t) + 2];
-        triangle_texture_tangents(m.positions[a], m.positions[b], m.positions[c], m.uvs[a],
-                                  m.uvs[b], m.uvs[c], &s->dpdx[std::size_t(t)],
-                                  &s->dpdy[std::size_t(t)]);
-    }
+Status compute_texture_tangents(BumpSurface* s) {
+    const int n = s->mesh.triangle_count();
+    s->dpdx.assign(std::size_t(n), Vec3{});
+    s->dpdy.assign(std::size_t(n), Vec3{});
+    return mesh_texture_tangents(s->mesh.view(), s->dpdx.data(), s->dpdy.data(), n);
 }
 
 namespace {

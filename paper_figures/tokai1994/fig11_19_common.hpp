@@ -45,9 +45,13 @@ Status leather_maps(const ScalePattern& pattern, int w, int h, const BezierChain
 
 // The leather texture seen from straight above (figs. 13b-15b, 19): every pixel of `out`
 // shows the pattern rectangle [x0, x1] x [y0, y1] (image top = y1), shaded by Blinn 1977 with
-// the map's normal and the two lights placed relative to that window.
+// the map's normal and the two lights placed relative to that window. key_height is the key
+// light's height above the texture in window spans (kDefaultKeyHeight: about 21 degrees above
+// the window's centre); a lower, grazing key light brings out shallow slopes.
+constexpr float kDefaultKeyHeight = 0.55f;
 void shade_flat_texture(const LeatherMaps& maps, Vec2 lo, Vec2 hi, const RgbView& out,
-                        const Blinn1977Material& material = leather_material());
+                        const Blinn1977Material& material = leather_material(),
+                        float key_height = kDefaultKeyHeight);
 
 // ---- 3D scenes (figs. 16-19) ----
 
@@ -61,7 +65,7 @@ struct BumpSurface {
     TriangleMesh mesh;
     std::vector<Vec3> dpdx, dpdy;
 };
-void compute_texture_tangents(BumpSurface* surface);
+Status compute_texture_tangents(BumpSurface* surface);
 
 // Texture lookup with mirrored repetition outside the pattern rectangle (the normal's x or y
 // is negated in a mirrored copy, so the bumps stay consistent).

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "driver/figure.hpp"
+#include "shitsukan/geom/polygon.hpp"
 #include "shitsukan/image/canvas.hpp"
 #include "shitsukan/leather/relief.hpp"
 #include "tokai1994/fig11_19_common.hpp"
@@ -21,16 +22,7 @@ SHITSUKAN_FIGURE(tokai1994_fig12, "tokai1994", "fig12",
     const Vec2 poly[7] = {{0.10f, 0.18f}, {0.55f, 0.08f}, {0.88f, 0.30f}, {0.84f, 0.62f},
                           {0.90f, 0.85f}, {0.40f, 0.92f}, {0.12f, 0.60f}};
     const int n = 7;
-    Vec2 m{0, 0};
-    {  // area centroid
-        float a = 0;
-        for (int i = 0; i < n; ++i) {
-            float c = cross(poly[i], poly[(i + 1) % n]);
-            a += c;
-            m = m + (poly[i] + poly[(i + 1) % n]) * c;
-        }
-        m = m / (3.0f * a);
-    }
+    const Vec2 m = to_float(polygon_centroid(poly, n));  // fig. 12's m: the area centroid
     const BezierChain section = table1_section(Table1Section::convex);
     const ReliefOptions opt;
     ctx.given("section", "fig. 13(a): (0.0, 0.1) (0.51, 0.1) (0.75, 0.13) (0.92, 0.0)", "Table 1");

@@ -50,9 +50,9 @@ Status build_handbag(int segments, HandbagScene* scene) {
     opt.segments_v = segments / 2 > 4 ? segments / 2 : 4;
     SHITSUKAN_TRY(tessellate_patch_strip(bag.patches + bag.handle_first, bag.handle_count, opt,
                                          &scene->handle.mesh));
-    tokai_relief::compute_texture_tangents(&scene->body);
-    tokai_relief::compute_texture_tangents(&scene->bottom);
-    tokai_relief::compute_texture_tangents(&scene->handle);
+    SHITSUKAN_TRY(tokai_relief::compute_texture_tangents(&scene->body));
+    SHITSUKAN_TRY(tokai_relief::compute_texture_tangents(&scene->bottom));
+    SHITSUKAN_TRY(tokai_relief::compute_texture_tangents(&scene->handle));
     for (int k = 0; k < 2; ++k)
         SHITSUKAN_TRY(
             make_spherical_segment(bag.clasp[k], segments, segments / 2, &scene->knobs[k]));

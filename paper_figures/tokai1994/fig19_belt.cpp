@@ -39,7 +39,7 @@ SHITSUKAN_FIGURE(
     opt.segments_u = 24;
     opt.segments_v = 4;
     SHITSUKAN_TRY(tessellate_patch_strip(patches.data(), int(patches.size()), opt, &belt.mesh));
-    tokai_relief::compute_texture_tangents(&belt);
+    SHITSUKAN_TRY(tokai_relief::compute_texture_tangents(&belt));
     float length = 0.0f, width = 0.0f;
     for (Vec2 t : belt.mesh.uvs) {
         length = std::max(length, t.x);

@@ -90,15 +90,10 @@ SHITSUKAN_BENCH(leather_maps) {
     tessellate_patch_strip(bag.patches + 4, 1, opt, &parts[1].mesh);
     tessellate_patch_strip(bag.patches + 5, 2, opt, &parts[2].mesh);
     for (Part& p : parts) {
-        const TriangleMesh& m = p.mesh;
-        p.dpdx.resize(std::size_t(m.triangle_count()));
-        p.dpdy.resize(std::size_t(m.triangle_count()));
-        for (int t = 0; t < m.triangle_count(); ++t) {
-            const std::uint32_t* i = &m.indices[3 * std::size_t(t)];
-            triangle_texture_tangents(m.positions[i[0]], m.positions[i[1]], m.positions[i[2]],
-                                      m.uvs[i[0]], m.uvs[i[1]], m.uvs[i[2]],
-                                      &p.dpdx[std::size_t(t)], &p.dpdy[std::size_t(t)]);
-        }
+        const int n = p.mesh.triangle_count();
+        p.dpdx.resize(std::size_t(n));
+        p.dpdy.resize(std::size_t(n));
+        mesh_texture_tangents(p.mesh.view(), p.dpdx.data(), p.dpdy.data(), n);
     }
     TriangleMesh knobs[2];
     for (int k = 0; k < 2; ++k) make_spherical_segment(bag.clasp[k], 32, 16, &knobs[k]);

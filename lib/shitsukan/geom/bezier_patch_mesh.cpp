@@ -33,6 +33,15 @@ Status tessellate_patch_strip(const BezierPatch* patches, int count,
         return Status::error(StatusCode::invalid_argument,
                              "patch strip: segments must be 1..1024 (got %d x %d)",
                              options.segments_u, options.segments_v);
+    // columns · rows vertices, indexed by int and uint32: refuse a strip that would overflow.
+    const long long vertices = (static_cast<long long>(count) * options.segments_u + 1) *
+                               (static_cast<long long>(options.segments_v) + 1);
+    if (vertices > kMaxStripVertices)
+        return Status::error(StatusCode::invalid_argument,
+                             "patch strip: %d patches of %d x %d segments make %lld vertices "
+                             "(at most %lld)",
+                             count, options.segments_u, options.segments_v, vertices,
+                             kMaxStripVertices);
     if (options.chords < 1 || options.chords > 1024)
         return Status::error(StatusCode::invalid_argument,
                              "patch strip: chords must be 1..1024 (got %d)", options.chords);
@@ -40,11 +49,14 @@ Status tessellate_patch_strip(const BezierPatch* patches, int count,
         return Status::error(StatusCode::invalid_argument,
                              "patch strip: anchor must be in [0, %d] (got %g)", count,
                              double(options.anchor));
-    if (!(options.texture_scale > 0.0f) || !is_finite(options.texture_scale) ||
-        !is_finite(options.texture_origin))
+    if (!(options.texture_scale > 0.0f) || !is_finite(options.texture_scale))
         return Status::error(StatusCode::invalid_argument,
                              "patch strip: texture_scale must be finite and > 0 (got %g)",
                              double(options.texture_scale));
+    if (!is_finite(options.texture_origin))
+        return Status::error(StatusCode::invalid_argument,
+                             "patch strip: texture_origin must be finite (got (%g, %g))",
+                             double(options.texture_origin.x), double(options.texture_origin.y));
     Vec3 lo = patches[0].p[0][0], hi = lo;
     for (int k = 0; k < count; ++k) {
         Status s = validate_patch(patches[k]);

@@ -48,9 +48,11 @@ struct PatchStripOptions {
     float anchor = 0.0f;
 };
 
-// invalid_argument for count < 1, sizes outside range, a non-finite or non-positive scale,
-// patches that fail validate_patch (the message names the patch), or neighbours that do not
-// share their edge (max gap > 1e-4 of the strip's size).
+constexpr long long kMaxStripVertices = 1LL << 26;  // keeps int / uint32 indices exact
+
+// invalid_argument for count < 1, sizes outside range, more than kMaxStripVertices vertices,
+// a non-finite or non-positive scale, patches that fail validate_patch (the message names the
+// patch), or neighbours that do not share their edge (max gap > 1e-4 of the strip's size).
 Status tessellate_patch_strip(const BezierPatch* patches, int count,
                               const PatchStripOptions& options, TriangleMesh* out);
 

@@ -20,6 +20,23 @@ Status make_leather_maps(const ScalePattern& pattern, const int* labels, int wid
         return Status::error(StatusCode::invalid_argument,
                              "leather maps: the pattern has %d polygons and %d centroids", polygons,
                              int(pattern.centroids.size()));
+    // The pattern is plain data a caller may fill by hand: check the offsets before
+    // pattern.polygon() reads through them, and the coordinates before they reach the relief.
+    if (pattern.polygon_offsets.front() != 0 ||
+        std::size_t(pattern.polygon_offsets.back()) != pattern.vertices.size())
+        return Status::error(StatusCode::invalid_argument,
+                             "leather maps: polygon_offsets must run from 0 to the vertex count "
+                             "%d (got %d .. %d)",
+                             int(pattern.vertices.size()), pattern.polygon_offsets.front(),
+                             pattern.polygon_offsets.back());
+    for (std::size_t v = 0; v < pattern.vertices.size(); ++v)
+        if (!is_finite(pattern.vertices[v]))
+            return Status::error(StatusCode::invalid_argument,
+                                 "leather maps: vertex %d of the pattern is not finite", int(v));
+    for (int i = 0; i < polygons; ++i)
+        if (!is_finite(pattern.centroids[std::size_t(i)]))
+            return Status::error(StatusCode::invalid_argument,
+                                 "leather maps: the centroid of polygon %d is not finite", i);
     if (!(pattern.width > 0) || !(pattern.height > 0))
         return Status::error(StatusCode::invalid_argument,
                              "leather maps: pattern size must be > 0 (got %g x %g)",
@@ -27,8 +44,9 @@ Status make_leather_maps(const ScalePattern& pattern, const int* labels, int wid
     SHITSUKAN_TRY(validate_section(section));
     SHITSUKAN_TRY(validate_relief_options(options));
     for (int i = 0; i < polygons; ++i) {
-        int n;
-        pattern.polygon(i, &n);
+        // Offsets that go backwards give n < 3 here too, before anything reads through them.
+        std::size_t k = std::size_t(i);
+        int n = pattern.polygon_offsets[k + 1] - pattern.polygon_offsets[k];
         if (n < 3)
             return Status::error(StatusCode::invalid_argument,
                                  "leather maps: polygon %d has %d vertices (need >= 3)", i, n);
@@ -139,7 +157,9 @@ void encode_height16(const LeatherMaps& maps, std::uint16_t* out, float max_heig
     for (int j = 0; j < maps.height; ++j) {
         std::uint16_t* row = out + std::size_t(maps.height - 1 - j) * std::size_t(maps.width);
         for (int i = 0; i < maps.width; ++i) {
-            float v = clamp(maps.at_height(i, j) * scale, 0.0f, 65535.0f);
+            // NaN (an infinite max_height times 0) must not reach the cast: that is UB.
+            float v = maps.at_height(i, j) * scale;
+            v = v >= 0.0f ? std::fmin(v, 65535.0f) : 0.0f;
             row[i] = std::uint16_t(v + 0.5f);
         }
     }

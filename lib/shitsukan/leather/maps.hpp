@@ -17,7 +17,8 @@
 //   Pixel (i, j) of the maps is the pattern point ((i + 0.5)·W/w, (j + 0.5)·H/h): row 0 is
 //   y = 0 (pattern y up, as the paper's x-y plane). labels[j·w + i] is the polygon id of that
 //   point, or -1 for "no polygon" (treated as groove floor: height 0, normal up).
-//   Heights are in pattern units (section z times the ray length |p - m|, see relief.hpp).
+//   Heights are in pattern units: section z times the scale's size S = 2·area / perimeter
+//   (divided by edge_r, times height_scale; see relief.hpp step 3).
 //   Normals are in the pattern frame (x, y, z up), unit length.
 //   Exports flip rows so the image's top row is the largest y (image "up" = +y), and the
 //   normal map uses the common OpenGL-style encoding rgb = (n + 1)/2 · 255 with green = +y.

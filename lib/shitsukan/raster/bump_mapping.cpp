@@ -22,6 +22,29 @@ bool triangle_texture_tangents(Vec3 p0, Vec3 p1, Vec3 p2, Vec2 t0, Vec2 t1, Vec2
     return true;
 }
 
+Status mesh_texture_tangents(const MeshView& mesh, Vec3* dpdx, Vec3* dpdy, int capacity) {
+    if (mesh.uvs == nullptr || mesh.positions == nullptr ||
+        (mesh.indices == nullptr && mesh.triangle_count > 0))
+        return Status::error(StatusCode::invalid_argument,
+                             "texture tangents: the mesh needs positions, uvs and indices");
+    if (dpdx == nullptr || dpdy == nullptr || capacity < mesh.triangle_count)
+        return Status::error(StatusCode::invalid_argument,
+                             "texture tangents: buffers hold %d triangles, the mesh has %d",
+                             capacity, mesh.triangle_count);
+    for (int t = 0; t < mesh.triangle_count; ++t) {
+        const std::uint32_t* k = mesh.indices + 3 * t;
+        for (int c = 0; c < 3; ++c)
+            if (k[c] >= std::uint32_t(mesh.vertex_count))
+                return Status::error(StatusCode::invalid_argument,
+                                     "texture tangents: triangle %d uses vertex %u of %d", t,
+                                     unsigned(k[c]), mesh.vertex_count);
+        triangle_texture_tangents(mesh.positions[k[0]], mesh.positions[k[1]],
+                                  mesh.positions[k[2]], mesh.uvs[k[0]], mesh.uvs[k[1]],
+                                  mesh.uvs[k[2]], &dpdx[t], &dpdy[t]);
+    }
+    return Status::success();
+}
+
 TangentFrame orthonormal_tangent_frame(Vec3 n, Vec3 dpdx, Vec3 dpdy) {
     TangentFrame f;
     f.n = normalize(n);

@@ -4,6 +4,8 @@
 // Manual
 //   Vec3 dpdx, dpdy;                                   // once per triangle
 //   triangle_texture_tangents(p0, p1, p2, uv0, uv1, uv2, &dpdx, &dpdy);
+//   // or for a whole mesh, into caller buffers of mesh.triangle_count entries:
+//   Status s = mesh_texture_tangents(mesh.view(), dpdx_buf, dpdy_buf, capacity);
 //   TangentFrame f = orthonormal_tangent_frame(interpolated_normal, dpdx, dpdy);
 //   Vec3 n = perturb_normal(f, leather_normal);       // leather_normal in the texture frame
 //
@@ -18,7 +20,9 @@
 // Small-device: float, no allocation.
 #pragma once
 
+#include "shitsukan/core/status.hpp"
 #include "shitsukan/core/vec.hpp"
+#include "shitsukan/geom/mesh_view.hpp"
 
 namespace shitsukan {
 
@@ -32,6 +36,11 @@ struct TangentFrame {
 // (and sets both to 0) when the texture triangle has no area.
 bool triangle_texture_tangents(Vec3 p0, Vec3 p1, Vec3 p2, Vec2 t0, Vec2 t1, Vec2 t2, Vec3* dpdx,
                                Vec3* dpdy);
+
+// triangle_texture_tangents for every triangle of a mesh (dpdx[t], dpdy[t] for triangle t;
+// 0 where the texture triangle has no area). invalid_argument when the mesh has no uvs, an
+// index is out of range, or capacity < mesh.triangle_count.
+Status mesh_texture_tangents(const MeshView& mesh, Vec3* dpdx, Vec3* dpdy, int capacity);
 
 // Gram-Schmidt: t = (dpdx - (dpdx·n) n)/|.|, b = sign · n x t with sign = sign(dpdy · (n x t)).
 // Falls back to any frame around n when dpdx is zero or parallel to n.
