@@ -3,8 +3,8 @@
 // Manual
 //   double inverse_normal_cdf(double p);   p in (0, 1) -> z with Phi(z) = p
 //   float  gaussian_from_bits(uint64_t b);  53 random bits -> one N(0,1) draw
-// Why not std::normal_distribution: its algorithm is implementation-defined, so the same
-// seed gives different numbers under libstdc++, libc++ and MSVC. Why not Box-Muller: it
+// Why not the C++ library's normal distribution: its algorithm is implementation-defined, so
+// the same seed gives different numbers under libstdc++, libc++ and MSVC. Why not Box-Muller: it
 // consumes two uniforms and keeps state. The inverse CDF maps one uniform to one Gaussian,
 // needs no rejection loop (so a hash of a lattice node gives its Gaussian directly), and is
 // monotone. Algorithm: P. J. Acklam's rational approximation (relative error < 1.15e-9),
