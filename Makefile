@@ -54,8 +54,15 @@ LIBRARY    := $(BUILD)/libshitsukan.a
 
 .PHONY: all test test-sanitize figures examples bench check-small install deps bench-deps clean
 
+# The top-level targets run one at a time (each builds in parallel inside its own sub-make), so
+# `make -j test figures` cannot build the library twice at once.
+SUBMAKE := $(MAKE) --no-print-directory SHITSUKAN_SUBMAKE=1 -j$(JOBS)
+ifndef SHITSUKAN_SUBMAKE
+.NOTPARALLEL:
+endif
+
 all: deps
-	@$(MAKE) --no-print-directory -j$(JOBS) $(LIBRARY) $(EXAMPLES) $(BUILD)/paper_figures
+	@$(SUBMAKE) $(LIBRARY) $(EXAMPLES) $(BUILD)/paper_figures
 
 # ---- packages: installed when missing (apt-get as root), otherwise named ----
 REQUIRED := /usr/include/doctest/doctest.h:doctest-dev /usr/include/stb/stb_image_write.h:libstb-dev
@@ -81,24 +88,24 @@ bench-deps: deps
 
 # ---- the two set-up commands ----
 test: deps
-	@$(MAKE) --no-print-directory -j$(JOBS) $(BUILD)/tests
+	@$(SUBMAKE) $(BUILD)/tests
 	$(BUILD)/tests
 
 figures: deps
-	@$(MAKE) --no-print-directory -j$(JOBS) $(BUILD)/paper_figures
+	@$(SUBMAKE) $(BUILD)/paper_figures
 	$(BUILD)/paper_figures $(FIGURES_ARGS)
 
 test-sanitize: deps
-	@$(MAKE) --no-print-directory -j$(JOBS) $(BUILD)/tests-sanitize
+	@$(SUBMAKE) $(BUILD)/tests-sanitize
 	ASAN_OPTIONS=$(ASAN_OPTIONS) UBSAN_OPTIONS=print_stacktrace=1 $(BUILD)/tests-sanitize
 
 examples: deps
-	@$(MAKE) --no-print-directory -j$(JOBS) $(EXAMPLES)
+	@$(SUBMAKE) $(EXAMPLES)
 	@mkdir -p $(BUILD)/examples/out
 	@for e in $(EXAMPLES); do echo "== $$e"; (cd $(BUILD)/examples/out && ../$$(basename $$e)) || exit 1; done
 
 bench: bench-deps
-	@$(MAKE) --no-print-directory -j$(JOBS) $(BUILD)/bench
+	@$(SUBMAKE) $(BUILD)/bench
 	$(BUILD)/bench $(BENCH_ARGS)
 
 # Small-device core: compile with -fno-exceptions -fno-rtti and refuse any allocation.
