@@ -108,12 +108,19 @@ bench: bench-deps
 	@$(SUBMAKE) $(BUILD)/bench
 	$(BUILD)/bench $(BENCH_ARGS)
 
-# Small-device core: compile with -fno-exceptions -fno-rtti and refuse any allocation.
+# Small-device core: compile with -fno-exceptions -fno-rtti, refuse any allocation, and refuse
+# headers that bring in std containers or strings (a microcontroller toolchain may lack them).
 check-small: $(SMALL_OBJS)
 	@bad=$$(nm -C --undefined-only $(SMALL_OBJS) 2>/dev/null | \
 	  grep -E ' (operator new|operator delete|malloc|calloc|realloc|free|__cxa_throw|__cxa_allocate_exception)' | sort -u); \
 	if [ -n "$$bad" ]; then echo "check-small: allocation or exceptions in small-device files:"; echo "$$bad"; exit 1; fi; \
-	echo "check-small: $(words $(SMALL_OBJS)) files compile with -fno-exceptions -fno-rtti and allocate nothing"
+	for f in $(SMALL_SRCS); do \
+	  h=$$($(CXX) $(CPPFLAGS) -std=c++17 -M $$f | tr ' ' '\n' | \
+	      grep -E '/bits/(stl_vector|basic_string|unique_ptr|stl_map|stl_list|stl_deque|hashtable)\.h' | sort -u); \
+	  if [ -n "$$h" ]; then echo "check-small: $$f includes host containers:"; echo "$$h"; exit 1; fi; \
+	done; \
+	echo "check-small: $(words $(SMALL_OBJS)) files compile with -fno-exceptions -fno-rtti, allocate nothing"; \
+	echo "check-small: and include no std containers or strings (not even through headers)"
 
 # ---- linking ----
 $(LIBRARY): $(LIB_OBJS)

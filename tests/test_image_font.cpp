@@ -4,6 +4,7 @@
 #include <cstring>
 #include <string>
 
+#include "shitsukan/image/canvas.hpp"  // the std::string overloads
 #include "shitsukan/image/font.hpp"
 
 using namespace shitsukan;

@@ -39,9 +39,18 @@
 
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/core/vec.hpp"
+#include "shitsukan/image/font.hpp"
 #include "shitsukan/image/image.hpp"
 
 namespace shitsukan {
+
+// Text metrics of the built-in font (font.hpp) for std::string, as Canvas::text takes.
+inline int text_width(const std::string& text, int scale = 1) {
+    return text_width(text.c_str(), scale);
+}
+inline int text_block_height(const std::string& text, int scale = 1) {
+    return text_block_height(text.c_str(), scale);
+}
 
 enum class MarkerShape { dot, circle, square, cross, plus, triangle };
 

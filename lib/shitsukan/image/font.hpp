@@ -20,7 +20,6 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
 
 #include "shitsukan/core/assert.hpp"
 
@@ -61,11 +60,7 @@ std::uint32_t next_codepoint(const char** cursor, const char* end);
 int text_width(const char* text, int scale = 1);
 int text_height(int scale = 1);
 int text_block_height(const char* text, int scale = 1);
-inline int text_width(const std::string& text, int scale = 1) {
-    return text_width(text.c_str(), scale);
-}
-inline int text_block_height(const std::string& text, int scale = 1) {
-    return text_block_height(text.c_str(), scale);
-}
+// (std::string overloads of text_width / text_block_height are in canvas.hpp: this header
+// stays free of the host library for small-device builds.)
 
 }  // namespace shitsukan
