@@ -16,12 +16,6 @@ using namespace shitsukan;
 
 namespace {
 
-const FractalLattice& bench_lattice() {
-    static FractalLattice lattice;
-    if (lattice.empty()) (void)lattice.build(FractalParams());
-    return lattice;
-}
-
 // Scattered points inside the 65^3 lattice (lattice units). The peers see the same points
 // divided by 8 (a frequency where their octaves are busy; the cost does not depend on it).
 std::vector<Vec3> scattered_points(int n) {
@@ -44,6 +38,28 @@ std::vector<Vec3> slice_points() {
 
 float stb_fbm(Vec3 p) { return stb_perlin_fbm_noise3(p.x / 8, p.y / 8, p.z / 8, 2.0f, 0.5f, 6); }
 
+// Nanoseconds per point of sample(p), summed over every point (the sum keeps the work alive).
+template <class F> double ns_per_point(const std::vector<Vec3>& pts, F sample) {
+    return bench::ns_per_op([&] {
+               double s = 0;
+               for (const Vec3& p : pts) s += double(sample(p));
+               bench::sink(s);
+           }) /
+           double(pts.size());
+}
+
+// A failed set-up must not print a timing: it would measure nothing.
+bool set_up(const Status& s, const char* what) {
+    if (!s) bench::info(what, std::string("set-up failed: ") + s.message());
+    return s.ok();
+}
+
+const FractalLattice& bench_lattice() {
+    static FractalLattice lattice;
+    if (lattice.empty()) set_up(lattice.build(FractalParams()), "65^3 Type I lattice");
+    return lattice;
+}
+
 }  // namespace
 
 SHITSUKAN_BENCH(solid_type1_sample) {
@@ -51,22 +67,10 @@ SHITSUKAN_BENCH(solid_type1_sample) {
     const std::vector<Vec3> pts = scattered_points(4096);
     noise::module::Perlin perlin;
     perlin.SetOctaveCount(6);
-    const double n = double(pts.size());
-    double ours = bench::ns_per_op([&] {
-        float s = 0;
-        for (const Vec3& p : pts) s += turbulence(v, p);
-        bench::sink(s);
-    }) / n;
-    double stb = bench::ns_per_op([&] {
-        float s = 0;
-        for (const Vec3& p : pts) s += stb_fbm(p);
-        bench::sink(s);
-    }) / n;
-    double libnoise = bench::ns_per_op([&] {
-        double s = 0;
-        for (const Vec3& p : pts) s += perlin.GetValue(p.x / 8, p.y / 8, p.z / 8);
-        bench::sink(s);
-    }) / n;
+    double ours = ns_per_point(pts, [&](Vec3 p) { return turbulence(v, p); });
+    double stb = ns_per_point(pts, stb_fbm);
+    double libnoise =
+        ns_per_point(pts, [&](Vec3 p) { return perlin.GetValue(p.x / 8, p.y / 8, p.z / 8); });
     bench::report("D(P) Type I per sample, scattered points (goal ratio >= 15)", ours,
                   "stb_perlin fbm-6", stb);
     bench::report("D(P) Type I per sample, scattered points", ours, "libnoise Perlin-6", libnoise);
@@ -76,45 +80,27 @@ SHITSUKAN_BENCH(solid_type3_slice) {
     const std::vector<Vec3> pts = slice_points();
     FractalParams params;
     TypeIIILattice t3;
-    (void)t3.init(params);
+    FractalParams deep;
+    deep.R = 20;
+    TypeIIILattice t20;
+    if (!set_up(t3.init(params), "D(P) Type III") ||
+        !set_up(t20.init(deep), "D(P) Type III R = 20"))
+        return;
     noise::module::Perlin perlin;
     perlin.SetOctaveCount(6);
-    const double n = double(pts.size());
-    double ours = bench::ns_per_op([&] {
-        float s = 0;
-        for (const Vec3& p : pts) s += t3.turbulence(p);
-        bench::sink(s);
-    }) / n;
-    double stb = bench::ns_per_op([&] {
-        float s = 0;
-        for (const Vec3& p : pts) s += stb_fbm(p);
-        bench::sink(s);
-    }) / n;
-    double libnoise = bench::ns_per_op([&] {
-        double s = 0;
-        for (const Vec3& p : pts) s += perlin.GetValue(p.x / 8, p.y / 8, p.z / 8);
-        bench::sink(s);
-    }) / n;
     const LatticeView v = bench_lattice().view();
-    double type1 = bench::ns_per_op([&] {
-        float s = 0;
-        for (const Vec3& p : pts) s += turbulence(v, p);
-        bench::sink(s);
-    }) / n;
+    double ours = ns_per_point(pts, [&](Vec3 p) { return t3.turbulence(p); });
+    double stb = ns_per_point(pts, stb_fbm);
+    double libnoise =
+        ns_per_point(pts, [&](Vec3 p) { return perlin.GetValue(p.x / 8, p.y / 8, p.z / 8); });
+    double type1 = ns_per_point(pts, [&](Vec3 p) { return turbulence(v, p); });
+    // The same slice, 1/8 cell per pixel, deep inside the 1,048,577^3 lattice.
+    const Vec3 deep_offset{300000.0f, 200000.0f, 400000.0f};
+    double ours20 = ns_per_point(pts, [&](Vec3 p) { return t20.turbulence(p + deep_offset); });
     bench::report("D(P) Type I per sample, 512x512 slice", type1, "stb_perlin fbm-6", stb);
     bench::report("D(P) Type III per sample, 512x512 slice (goal ratio >= 1)", ours,
                   "stb_perlin fbm-6", stb);
     bench::report("D(P) Type III per sample, 512x512 slice", ours, "libnoise Perlin-6", libnoise);
-    FractalParams deep;
-    deep.R = 20;
-    TypeIIILattice t20;
-    (void)t20.init(deep);
-    double ours20 = bench::ns_per_op([&] {
-        float s = 0;
-        // The same slice, 1/8 cell per pixel, deep inside the 1,048,577^3 lattice.
-        for (const Vec3& p : pts) s += t20.turbulence(p + Vec3{300000.0f, 200000.0f, 400000.0f});
-        bench::sink(s);
-    }) / n;
     bench::report("D(P) Type III R = 20 per sample, 512x512 slice", ours20, "stb_perlin fbm-6",
                   stb);
 }
@@ -123,6 +109,9 @@ SHITSUKAN_BENCH(solid_lattice_build) {
     FractalParams params;
     std::vector<float> values(65 * 65 * 65);
     LatticeView v;
+    if (!set_up(build_fractal_lattice(params, values.data(), values.size() * sizeof(float), &v),
+                "65^3 lattice build"))
+        return;
     double build = bench::ns_per_op([&] {
         (void)build_fractal_lattice(params, values.data(), values.size() * sizeof(float), &v);
         bench::sink(values[1000]);
@@ -133,8 +122,8 @@ SHITSUKAN_BENCH(solid_lattice_build) {
         for (int i = 0; i < 65 * 65 * 65 - 8; ++i) s += rng.gaussian();
         bench::sink(s);
     });
-    bench::report("65^3 lattice build, whole (goal ratio >= 0.5)", build,
-                  "274617 Pcg32 Gaussians", draws);
+    bench::report("65^3 lattice build, whole (goal ratio >= 0.5)", build, "274617 Pcg32 Gaussians",
+                  draws);
 }
 
 SHITSUKAN_BENCH(solid_type3_memory) {
@@ -142,7 +131,7 @@ SHITSUKAN_BENCH(solid_type3_memory) {
         FractalParams p;
         p.R = R;
         TypeIIILattice t3;
-        (void)t3.init(p);
+        if (!set_up(t3.init(p), "Type III memory")) return;
         bench::info("Type III memory R = " + std::to_string(R),
                     "ancestry " + std::to_string(t3.ancestry_bytes()) + " bytes, whole object " +
                         std::to_string(TypeIIILattice::object_bytes()) +
