@@ -105,6 +105,10 @@ TEST_CASE("coordinate hash: same value in any call order, different per coordina
     CHECK(hash_coords(11u, 0u, 1, 2, 3) != hash_coords(12u, 0u, 1, 2, 3));
     CHECK(hash_coords(11u, 0u, 1, 2, 3) != hash_coords(11u, 0u, 2, 1, 3));
     CHECK(hash_coords(11u, 0u, -1, 0, 0) != hash_coords(11u, 0u, 1, 0, 0));
+    // A precomputed start gives the same hash as computing it per call.
+    const std::uint64_t start = hash_start(11u, 0u);
+    for (int i = -5; i <= 5; ++i)
+        CHECK(hash_coords_from(start, i, 2 * i, -3 * i) == hash_coords(11u, 0u, i, 2 * i, -3 * i));
 }
 
 TEST_CASE("coordinate hash: uniform and Gaussian statistics over a lattice") {

@@ -38,12 +38,18 @@ inline std::uint64_t hash_add(std::uint64_t h, std::uint64_t word) {
     return mix64(h ^ (word * 0xd6e8feb86659fd93ULL + 0x9e3779b97f4a7c15ULL));
 }
 
-inline std::uint64_t hash_coords(std::uint32_t seed, std::uint32_t stream, std::int32_t x,
-                                 std::int32_t y = 0, std::int32_t z = 0) {
-    std::uint64_t h = hash_start(seed, stream);
-    h = hash_add(h, std::uint32_t(x));
+// The coordinates' hash from a precomputed start = hash_start(seed, stream): callers drawing
+// millions of numbers with one seed (a lattice) compute the start once.
+inline std::uint64_t hash_coords_from(std::uint64_t start, std::int32_t x, std::int32_t y = 0,
+                                      std::int32_t z = 0) {
+    std::uint64_t h = hash_add(start, std::uint32_t(x));
     h = hash_add(h, std::uint32_t(y));
     return hash_add(h, std::uint32_t(z));
+}
+
+inline std::uint64_t hash_coords(std::uint32_t seed, std::uint32_t stream, std::int32_t x,
+                                 std::int32_t y = 0, std::int32_t z = 0) {
+    return hash_coords_from(hash_start(seed, stream), x, y, z);
 }
 
 inline float uniform_from_bits(std::uint64_t bits) {

@@ -59,9 +59,7 @@ inline float node_gaussian(std::uint32_t seed, std::int32_t x, std::int32_t y, s
 // node_gaussian_from(hash_start(seed, kLatticeStream), x, y, z) == node_gaussian(seed, x, y, z).
 inline float node_gaussian_from(std::uint64_t start, std::int32_t x, std::int32_t y,
                                 std::int32_t z) {
-    std::uint64_t h = hash_add(start, std::uint32_t(x));
-    h = hash_add(h, std::uint32_t(y));
-    return gaussian_from_bits(hash_add(h, std::uint32_t(z)));
+    return gaussian_from_bits(hash_coords_from(start, x, y, z));
 }
 
 // okada1987 eq. (1): D_e = (D_v1 + D_v2)/2 + g·L_r, the edge midpoint from its two ends.
