@@ -1,0 +1,169 @@
+// The bark's crack network as CSV and SVG, the deformed trunk as a mesh (see bark_export.hpp).
+#include "shitsukan/bark/bark_export.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "shitsukan/bark/crack_drawing.hpp"
+#include "shitsukan/core/scalar.hpp"
+
+namespace shitsukan {
+
+namespace {
+
+struct File {
+    std::FILE* f = nullptr;
+    explicit File(const std::string& path) : f(std::fopen(path.c_str(), "wb")) {}
+    ~File() {
+        if (f) std::fclose(f);
+    }
+    Status close(const std::string& path) {
+        const bool bad = std::ferror(f) != 0;
+        const bool closed = std::fclose(f) == 0;
+        f = nullptr;
+        if (bad || !closed)
+            return Status::error(StatusCode::io_error, "bark export: writing %s failed",
+                                 path.c_str());
+        return Status::success();
+    }
+};
+
+Status open_error(const std::string& path) {
+    return Status::error(StatusCode::io_error, "bark export: cannot open %s for writing",
+                         path.c_str());
+}
+
+Status check_time(const BarkCylinder& bark, float t, const Vec3* W) {
+    if (!W || bark.net.W.size() != bark.net.X.size())
+        return Status::error(StatusCode::invalid_argument, "bark export: no displacement field");
+    if (!(is_finite(t) && t >= 0.0f))
+        return Status::error(StatusCode::invalid_argument, "bark export: time must be >= 0 "
+                                                           "(got %g)", double(t));
+    return Status::success();
+}
+
+}  // namespace
+
+Status write_bark_csv(const BarkCylinder& bark, float t, const Vec3* W, const char* prefix) {
+    SHITSUKAN_TRY(check_time(bark, t, W));
+    if (!prefix) return Status::error(StatusCode::invalid_argument, "write_bark_csv: no prefix");
+    const SpringNetwork& net = bark.net;
+    {
+        const std::string path = std::string(prefix) + "_nodes.csv";
+        File f(path);
+        if (!f.f) return open_error(path);
+        std::fprintf(f.f, "id,c,r,u_cm,z_cm,area_cm2\n");
+        for (int p = 0; p < net.node_count(); ++p) {
+            const Vec3 x = node_position(bark, std::uint32_t(p), t, W);
+            std::fprintf(f.f, "%d,%d,%d,%.6f,%.6f,%.6g\n", p, bark.column_of(p), bark.row_of(p),
+                         double(x.x), double(x.y), double(bark.node_area[std::size_t(p)]));
+        }
+        SHITSUKAN_TRY(f.close(path));
+    }
+    {
+        const std::string path = std::string(prefix) + "_springs.csv";
+        File f(path);
+        if (!f.f) return open_error(path);
+        std::fprintf(f.f, "id,i,j,c,r,dir,family,l0_cm,eps_c,t_break,width_cm\n");
+        for (std::size_t s = 0; s < net.springs.size(); ++s) {
+            const BarkSpring& sp = net.springs[s];
+            const bool broken = !intact_at(sp, t);
+            const float width = broken ? crack_ribbon(bark, std::uint32_t(s), t, W).width : 0.0f;
+            std::fprintf(f.f, "%zu,%u,%u,%u,%u,%u,%d,%.6g,%.6g,%.6g,%.6g\n", s, sp.i, sp.j,
+                         unsigned(sp.key >> 32), unsigned((sp.key >> 2) & 0x3fffffffu),
+                         unsigned(sp.key & 3u), int(sp.family), double(sp.l0), double(sp.eps_c),
+                         broken ? double(sp.t_break) : -1.0, double(width));
+        }
+        SHITSUKAN_TRY(f.close(path));
+    }
+    const std::string path = std::string(prefix) + "_triangles.csv";
+    File f(path);
+    if (!f.f) return open_error(path);
+    std::fprintf(f.f, "id,a,b,c,s_ab,s_bc,s_ca\n");
+    for (std::size_t i = 0; i < bark.triangles.size(); ++i) {
+        const ConnectionTriangle& tri = bark.triangles[i];
+        std::fprintf(f.f, "%zu,%u,%u,%u,%u,%u,%u\n", i, tri.node[0], tri.node[1], tri.node[2],
+                     tri.spring[0], tri.spring[1], tri.spring[2]);
+    }
+    return f.close(path);
+}
+
+Status write_crack_svg(const BarkCylinder& bark, float t, const Vec3* W, const char* path,
+                       float px_per_cm) {
+    SHITSUKAN_TRY(check_time(bark, t, W));
+    if (!path) return Status::error(StatusCode::invalid_argument, "write_crack_svg: no path");
+    if (!(is_finite(px_per_cm) && px_per_cm > 0.0f && px_per_cm <= 10000.0f))
+        return Status::error(StatusCode::invalid_argument,
+                             "write_crack_svg: px_per_cm must be in (0, 10000] (got %g)",
+                             double(px_per_cm));
+    const float C = bark.circumference * (1.0f + hoop_strain(bark.params, t));
+    const float H = bark.H0 * (1.0f + axial_strain(bark.params, t));
+    const double s = px_per_cm, w = double(C) * s, h = double(H) * s;
+    File f(path);
+    if (!f.f) return open_error(path);
+    std::fprintf(f.f,
+                 "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.1f\" height=\"%.1f\" "
+                 "viewBox=\"0 0 %.3f %.3f\">\n"
+                 "<!-- hirota1998: unrolled bark at t = %g s; u to the right, z up; cracks as "
+                 "Fig. 4 (width l - l0) -->\n<rect width=\"100%%\" height=\"100%%\" "
+                 "fill=\"#1c140e\"/>\n<g fill=\"#b08a62\">\n",
+                 w, h, w, h, double(t));
+    auto point = [&](Vec3 p) {
+        std::fprintf(f.f, "%.2f,%.2f ", double(p.x) * s, h - double(p.y) * s);
+    };
+    for (const ConnectionTriangle& tri : bark.triangles) {
+        std::fprintf(f.f, "<polygon points=\"");
+        for (int k = 0; k < 3; ++k) point(corner_position(bark, tri.corner[k], tri.node[k], t, W));
+        std::fprintf(f.f, "\"/>\n");
+    }
+    std::fprintf(f.f, "</g>\n<g fill=\"#1c140e\">\n");
+    std::vector<CrackRibbon> cracks;
+    SHITSUKAN_TRY(crack_ribbons(bark, t, W, &cracks));
+    for (const CrackRibbon& r : cracks) {
+        Vec3 quads[2][4];
+        ribbon_quads(r, quads);
+        for (auto& quad : quads) {
+            std::fprintf(f.f, "<polygon points=\"");
+            for (const Vec3& p : quad) point(p);
+            std::fprintf(f.f, "\"/>\n");
+        }
+    }
+    std::fprintf(f.f, "</g>\n</svg>\n");
+    return f.close(path);
+}
+
+Status make_trunk_mesh(const BarkCylinder& bark, float t, const Vec3* W, TriangleMesh* out) {
+    SHITSUKAN_TRY(check_time(bark, t, W));
+    if (!out) return Status::error(StatusCode::invalid_argument, "make_trunk_mesh: out is null");
+    *out = TriangleMesh{};
+    const int N_R = bark.params.N_R, N_H = bark.params.N_H, n = N_R * N_H;
+    const float R = bark.R0 + bark.params.delta_r * t;
+    const float C = bark.circumference * (1.0f + hoop_strain(bark.params, t));
+    const float H = bark.H0 * (1.0f + axial_strain(bark.params, t));
+    auto add = [&](Vec3 x) {  // unrolled (u, z) -> the trunk
+        const float angle = x.x / R;
+        const Vec3 radial{std::sin(angle), 0.0f, std::cos(angle)};
+        return out->add_vertex({R * radial.x, x.y, R * radial.z}, radial, {x.x / C, x.y / H});
+    };
+    for (int p = 0; p < n; ++p) add(node_position(bark, std::uint32_t(p), t, W));
+    for (int r = 0; r < N_H; ++r) {  // column 0 again, one circumference on: closes the seam
+        Vec3 x = node_position(bark, std::uint32_t(bark.node(0, r)), t, W);
+        x.x += C;
+        add(x);
+    }
+    for (const ConnectionTriangle& tri : bark.triangles) {
+        std::uint32_t v[3];
+        for (int k = 0; k < 3; ++k) {
+            const bool across = tri.corner[k].x > bark.net.X[tri.node[k]].x + 0.5f * bark.circumference;
+            v[k] = across ? std::uint32_t(n + bark.row_of(int(tri.node[k]))) : tri.node[k];
+        }
+        // The lattice triangles are clockwise in (u, z); seen from outside (u right, z up)
+        // counter-clockwise is the front: reverse.
+        out->add_triangle(v[0], v[2], v[1]);
+    }
+    return Status::success();
+}
+
+}  // namespace shitsukan

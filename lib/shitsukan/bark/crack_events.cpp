@@ -1,0 +1,161 @@
+// hirota1998 §3: event-driven growth and cracking (see crack_events.hpp).
+#include "shitsukan/bark/crack_events.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "shitsukan/core/hash.hpp"
+#include "shitsukan/core/scalar.hpp"
+
+namespace shitsukan {
+
+namespace {
+
+constexpr float kNever = std::numeric_limits<float>::infinity();
+
+// A min-tree over springs: leaf s holds t_s; an inner node the index of its smaller child
+// (ties: smaller canonical key). O(1) minimum, O(log n) update.
+class EventTree {
+public:
+    explicit EventTree(const SpringNetwork& net) : net_(net) {
+        n_ = int(net.springs.size());
+        size_ = 1;
+        while (size_ < n_) size_ *= 2;
+        time_.assign(std::size_t(n_) + 1, kNever);  // slot n_: the empty leaf
+        node_.assign(std::size_t(2 * size_), std::uint32_t(n_));
+        for (int s = 0; s < n_; ++s) node_[std::size_t(size_ + s)] = std::uint32_t(s);
+    }
+    void set_all(const float* times) {
+        for (int s = 0; s < n_; ++s) time_[std::size_t(s)] = times[s];
+        for (int v = size_ - 1; v >= 1; --v) node_[v] = better(node_[2 * v], node_[2 * v + 1]);
+    }
+    void set(std::uint32_t s, float t) {
+        time_[s] = t;
+        for (int v = (size_ + int(s)) / 2; v >= 1; v /= 2)
+            node_[v] = better(node_[2 * v], node_[2 * v + 1]);
+    }
+    std::uint32_t top() const { return node_[1]; }
+    float time(std::uint32_t s) const { return time_[s]; }
+
+private:
+    std::uint32_t better(std::uint32_t a, std::uint32_t b) const {
+        if (time_[a] < time_[b]) return a;
+        if (time_[b] < time_[a]) return b;
+        if (a == std::uint32_t(n_)) return b;
+        if (b == std::uint32_t(n_)) return a;
+        return net_.springs[a].key <= net_.springs[b].key ? a : b;
+    }
+    const SpringNetwork& net_;
+    int n_ = 0, size_ = 1;
+    std::vector<float> time_;
+    std::vector<std::uint32_t> node_;
+};
+
+// t_s = eps_c / E_s for an intact spring in tension, never otherwise.
+float break_time(const SpringNetwork& net, std::uint32_t s) {
+    const BarkSpring& sp = net.springs[s];
+    if (!sp.intact()) return kNever;
+    const float E = strain_rate(net, s);
+    return E > 0.0f ? sp.eps_c / E : kNever;
+}
+
+void record_snapshot(const SpringNetwork& net, float t, int breaks, CrackRun* out) {
+    CrackSnapshot snap;
+    snap.t = t;
+    snap.break_count = breaks;
+    snap.W = net.W;
+    out->snapshots.push_back(std::move(snap));
+}
+
+}  // namespace
+
+Status run_cracking(SpringNetwork& net, float T, float tol, const CrackRunOptions& options,
+                    CrackRun* out) {
+    if (!out) return Status::error(StatusCode::invalid_argument, "run_cracking: out is null");
+    if (!(is_finite(T) && T > 0.0f) || !(is_finite(tol) && tol > 0.0f))
+        return Status::error(StatusCode::invalid_argument,
+                             "run_cracking: T and the tolerance must be > 0 (got %g, %g)",
+                             double(T), double(tol));
+    if (options.snapshot_count < 0 || (options.snapshot_count > 0 && !options.snapshot_times))
+        return Status::error(StatusCode::invalid_argument,
+                             "run_cracking: %d snapshot times but no array",
+                             options.snapshot_count);
+    for (int i = 0; i < options.snapshot_count; ++i) {
+        const float ts = options.snapshot_times[i];
+        if (!(is_finite(ts) && ts > 0.0f && ts <= T) ||
+            (i > 0 && !(ts > options.snapshot_times[i - 1])))
+            return Status::error(StatusCode::invalid_argument,
+                                 "run_cracking: snapshot times must ascend in (0, T = %g] "
+                                 "(time %d is %g)",
+                                 double(T), i, double(ts));
+    }
+    *out = CrackRun{};
+    out->tolerance = tol;
+    const std::uint64_t updates0 = net.updates;
+
+    // The intact network's equilibrium at unit growth (free edges make W != 0 from the start).
+    SHITSUKAN_TRY(solve_full(net, tol, 100000));
+
+    EventTree tree(net);
+    {
+        std::vector<float> times(net.springs.size());
+        for (std::size_t s = 0; s < times.size(); ++s)
+            times[s] = break_time(net, std::uint32_t(s));
+        tree.set_all(times.data());
+    }
+    std::vector<std::uint32_t> touched;
+    int next_snapshot = 0;
+    float t = 0.0f, last_progress = 0.0f;
+    for (;;) {
+        const std::uint32_t s = tree.top();
+        const float ts = tree.time(s);
+        if (!(ts <= T)) break;
+        if (ts < t) ++out->cascade_breaks;  // already past its threshold: breaks now
+        t = std::max(t, ts);
+        while (next_snapshot < options.snapshot_count &&
+               options.snapshot_times[next_snapshot] < t)
+            record_snapshot(net, options.snapshot_times[next_snapshot++],
+                            int(out->breaks.size()), out);
+
+        // Break it, re-solve the neighbourhood, update the events of the springs that moved.
+        break_spring(net, s, t);
+        out->breaks.push_back({s, t});
+        tree.set(s, kNever);
+        const BarkSpring& sp = net.springs[s];
+        const std::uint32_t seeds[2] = {std::min(sp.i, sp.j), std::max(sp.i, sp.j)};
+        touched.clear();
+        SHITSUKAN_TRY(relax(net, seeds, 2, tol, &touched));
+        for (std::uint32_t p : touched)
+            for (std::uint32_t e = net.adj_begin[p]; e < net.adj_begin[p + 1]; ++e)
+                if (net.adj[e].k > 0.0f) tree.set(net.adj[e].s, break_time(net, net.adj[e].s));
+
+        if (options.progress && t - last_progress >= 0.05f * T) {
+            last_progress = t;
+            options.progress(t / T, options.progress_user);
+        }
+    }
+    while (next_snapshot < options.snapshot_count)
+        record_snapshot(net, options.snapshot_times[next_snapshot++], int(out->breaks.size()),
+                        out);
+    if (options.progress) options.progress(1.0f, options.progress_user);
+    out->node_updates = net.updates - updates0;
+    return Status::success();
+}
+
+Status grow_and_crack(BarkCylinder& bark, const CrackRunOptions& options, CrackRun* out) {
+    float g_max = 0.0f;
+    for (const BarkSpring& s : bark.net.springs) g_max = std::max(g_max, std::fabs(s.growth_rate));
+    // Relaxation tolerance (MODEL.md §3.3): tau·L0·max g_s, in cm per unit time of W.
+    const float tol = bark.params.tolerance * bark.params.species.L0 * g_max;
+    return run_cracking(bark.net, bark.params.T, tol, options, out);
+}
+
+std::uint64_t break_sequence_hash(const SpringNetwork& net, const CrackRun& run, int count) {
+    std::uint64_t h = hash_start(0x68697230u, 1998);  // "hir0"
+    const int n = std::min(count, int(run.breaks.size()));
+    for (int i = 0; i < n; ++i) h = hash_add(h, net.springs[run.breaks[i].spring].key);
+    return hash_add(h, std::uint64_t(n));
+}
+
+}  // namespace shitsukan

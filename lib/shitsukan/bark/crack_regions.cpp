@@ -1,0 +1,169 @@
+// hirota1998 Table 3: regions bounded by cracks and the crack spacings (see crack_regions.hpp).
+#include "shitsukan/bark/crack_regions.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shitsukan {
+
+namespace {
+
+int find_root(std::vector<std::int32_t>& parent, int a) {
+    while (parent[std::size_t(a)] != a) {
+        parent[std::size_t(a)] = parent[std::size_t(parent[std::size_t(a)])];
+        a = parent[std::size_t(a)];
+    }
+    return a;
+}
+
+// Seam-free displacement from node p to node q along spring s at time t.
+Vec3 spring_offset(const BarkCylinder& bark, const BarkSpring& sp, std::uint32_t p, float t,
+                   const Vec3* W) {
+    const Vec3 d = sp.n * sp.l0;  // reference i -> j, seam-corrected by construction
+    const Vec3 grown = cylinder_anchor(bark, d, t);
+    Vec3 off = grown + (W[sp.j] - W[sp.i]) * t;
+    return p == sp.i ? off : -off;
+}
+
+}  // namespace
+
+void strong_springs(const BarkCylinder& bark, float t, std::vector<std::uint8_t>* strong) {
+    const auto& springs = bark.net.springs;
+    strong->assign(springs.size(), 0);
+    for (const ConnectionTriangle& tri : bark.triangles) {
+        bool intact = true;
+        for (std::uint32_t s : tri.spring) intact = intact && intact_at(springs[s], t);
+        if (intact)
+            for (std::uint32_t s : tri.spring) (*strong)[s] = 1;
+    }
+}
+
+Status measure_regions(const BarkCylinder& bark, float t, const Vec3* W, RegionReport* out,
+                       int min_nodes) {
+    if (!out || !W)
+        return Status::error(StatusCode::invalid_argument, "measure_regions: null argument");
+    if (!(is_finite(t) && t >= 0.0f))
+        return Status::error(StatusCode::invalid_argument,
+                             "measure_regions: time must be >= 0 (got %g)", double(t));
+    *out = RegionReport{};
+    const SpringNetwork& net = bark.net;
+    const int n = net.node_count();
+    std::vector<std::uint8_t> strong;
+    strong_springs(bark, t, &strong);
+
+    // Step 2: components over strong springs (union-find; roots are the smallest node).
+    std::vector<std::int32_t> parent(static_cast<std::size_t>(n));
+    for (int p = 0; p < n; ++p) parent[std::size_t(p)] = p;
+    for (std::size_t s = 0; s < net.springs.size(); ++s) {
+        if (!strong[s]) continue;
+        int a = find_root(parent, int(net.springs[s].i)), b = find_root(parent, int(net.springs[s].j));
+        if (a != b) parent[std::size_t(std::max(a, b))] = std::min(a, b);
+    }
+    std::vector<std::int32_t> component(static_cast<std::size_t>(n), -1), size;
+    for (int p = 0; p < n; ++p) {
+        const int root = find_root(parent, p);
+        if (component[std::size_t(root)] < 0) {
+            component[std::size_t(root)] = std::int32_t(size.size());
+            size.push_back(0);
+        }
+        component[std::size_t(p)] = component[std::size_t(root)];
+        ++size[std::size_t(component[std::size_t(p)])];
+    }
+    out->components = int(size.size());
+
+    // Step 3: extents by a walk over strong springs carrying the unrolled position.
+    const float et = hoop_strain(bark.params, t), ez = axial_strain(bark.params, t);
+    const float C = bark.circumference * (1.0f + et);
+    const float cell_w = bark.a_h * (1.0f + et), cell_h = bark.params.species.L0 * (1.0f + ez);
+    const float full = (float(bark.params.N_H) - 1.5f) * cell_h;
+    std::vector<Vec3> pos(static_cast<std::size_t>(n));
+    std::vector<std::uint8_t> seen(static_cast<std::size_t>(n), 0);
+    std::vector<std::uint32_t> stack;
+    std::vector<std::int32_t> region_of_component(size.size(), -1);
+    for (int start = 0; start < n; ++start) {
+        if (seen[std::size_t(start)]) continue;
+        const int comp = component[std::size_t(start)];
+        BarkRegion region;
+        region.nodes = size[std::size_t(comp)];
+        pos[std::size_t(start)] = node_position(bark, std::uint32_t(start), t, W);
+        seen[std::size_t(start)] = 1;
+        stack.assign(1, std::uint32_t(start));
+        Vec3 lo = pos[std::size_t(start)], hi = lo;
+        while (!stack.empty()) {
+            const std::uint32_t p = stack.back();
+            stack.pop_back();
+            for (std::uint32_t e = net.adj_begin[p]; e < net.adj_begin[p + 1]; ++e) {
+                const std::uint32_t s = net.adj[e].s, q = net.adj[e].q;
+                if (!strong[s]) continue;
+                const Vec3 x = pos[p] + spring_offset(bark, net.springs[s], p, t, W);
+                if (seen[q]) {
+                    if (std::fabs(x.x - pos[q].x) > 0.5f * C) region.wraps = true;
+                    continue;
+                }
+                seen[q] = 1;
+                pos[q] = x;
+                lo = vmin(lo, x), hi = vmax(hi, x);
+                stack.push_back(q);
+            }
+        }
+        if (region.nodes < min_nodes) continue;
+        region.width = region.wraps ? C : std::min(C, hi.x - lo.x + cell_w);
+        region.height = hi.y - lo.y + cell_h;
+        region.full_height = hi.y - lo.y >= full;
+        region_of_component[std::size_t(comp)] = std::int32_t(out->regions.size());
+        out->regions.push_back(region);
+    }
+    out->label.resize(static_cast<std::size_t>(n));
+    for (int p = 0; p < n; ++p)
+        out->label[std::size_t(p)] = region_of_component[std::size_t(component[std::size_t(p)])];
+
+    // Step 4: Table 3's mean and max, width and height separately.
+    double sw = 0, sh = 0;
+    for (const BarkRegion& r : out->regions) {
+        sw += r.width, sh += r.height;
+        out->max_width = std::max(out->max_width, r.width);
+        out->max_height = std::max(out->max_height, r.height);
+        out->wrapped += r.wraps, out->full_height += r.full_height;
+    }
+    if (!out->regions.empty()) {
+        out->mean_width = float(sw / double(out->regions.size()));
+        out->mean_height = float(sh / double(out->regions.size()));
+    }
+
+    // Intercepts: changes of component around each ring and along each column.
+    const int N_R = bark.params.N_R, N_H = bark.params.N_H;
+    double iw = 0, ih = 0;
+    int nw = 0, nh = 0;
+    for (int r = 0; r < N_H; ++r) {
+        std::vector<int> cuts;
+        for (int c = 0; c < N_R; ++c) {
+            const int c1 = c + 1 == N_R ? 0 : c + 1;
+            if (component[std::size_t(bark.node(c, r))] != component[std::size_t(bark.node(c1, r))])
+                cuts.push_back(c);
+        }
+        for (std::size_t k = 0; k < cuts.size(); ++k) {
+            int gap = k + 1 < cuts.size() ? cuts[k + 1] - cuts[k] : cuts[0] + N_R - cuts[k];
+            const float w = float(gap) * cell_w;
+            iw += w, ++nw;
+            out->intercept_max_width = std::max(out->intercept_max_width, w);
+        }
+    }
+    for (int c = 0; c < N_R; ++c) {
+        int last = -1;
+        for (int r = 0; r + 1 < N_H; ++r)
+            if (component[std::size_t(bark.node(c, r))] != component[std::size_t(bark.node(c, r + 1))]) {
+                if (last >= 0) {
+                    const float h = float(r - last) * cell_h;
+                    ih += h, ++nh;
+                    out->intercept_max_height = std::max(out->intercept_max_height, h);
+                }
+                last = r;
+            }
+        if (last < 0) ++out->columns_uncut;
+    }
+    if (nw) out->intercept_mean_width = float(iw / nw);
+    if (nh) out->intercept_mean_height = float(ih / nh);
+    return Status::success();
+}
+
+}  // namespace shitsukan

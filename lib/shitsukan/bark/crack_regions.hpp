@@ -1,0 +1,66 @@
+// shitsukan/bark/crack_regions.hpp — hirota1998 Table 3: the regions bounded by cracks.
+//
+// Manual
+//   RegionReport rep;
+//   Status s = measure_regions(bark, params.T, bark.net.W.data(), &rep);
+//   rep.mean_width, rep.mean_height, rep.max_width, rep.max_height   // cm, as Table 3
+//   rep.regions[i]: nodes, width, height, wraps, full_height; rep.label[p]: node p's region
+//
+// Table 3 reports "the dimensions of the area surrounded by cracks" (horizontal x vertical:
+// around the trunk x along it), mean and max, and the text calls them "the vertical and
+// horizontal crack spacings". Both are measured here:
+//
+// Regions (primary). A central-force triangular lattice has a zero-energy mechanism: along a
+// lattice line a crack opens by sliding once one of the two diagonal families across it has
+// broken, while the other family only rotates. Plain connectivity over intact springs would
+// then merge regions a visible crack separates. So (chosen here, MODEL.md §3.6):
+//   1. a triangle is intact when its three springs are; a spring is strong when it belongs to
+//      an intact triangle;
+//   2. regions are the connected components of nodes over strong springs;
+//   3. a region's width and height are its node extents at time t (unrolled around the trunk,
+//      carried across the seam spring by spring) plus one cell (a_h and L0, grown); a region
+//      that closes around the trunk wraps (width = the circumference); a region spanning the
+//      whole height (within 1.5 rows) is full height;
+//   4. regions of fewer than min_nodes (chosen here: 3) are crumbs at crack junctions.
+// Mean and max of width and height are taken separately, as Table 3 does.
+//
+// Intercepts (secondary, the text's "crack spacings"): along each ring of nodes the distance
+// between consecutive changes of region, and along each column the same vertically.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "shitsukan/bark/cylinder_lattice.hpp"
+
+namespace shitsukan {
+
+struct BarkRegion {
+    int nodes = 0;
+    float width = 0, height = 0;  // cm at the measured time
+    bool wraps = false, full_height = false;
+};
+
+struct RegionReport {
+    std::vector<BarkRegion> regions;    // kept regions (>= min_nodes), in order of first node
+    std::vector<std::int32_t> label;    // per node: index into regions, -1 for crumbs
+    int components = 0;                 // all components, crumbs included
+    float mean_width = 0, mean_height = 0, max_width = 0, max_height = 0;
+    int wrapped = 0, full_height = 0;
+    // Intercepts: spacings between region changes around rings / along columns (cm).
+    float intercept_mean_width = 0, intercept_max_width = 0;
+    float intercept_mean_height = 0, intercept_max_height = 0;
+    int columns_uncut = 0;              // columns with no change of region over the height
+};
+
+constexpr int kMinRegionNodes = 3;  // chosen here: single nodes at junctions are crumbs
+
+// Measures at time t with displacement field W (valid at t); a spring counts as broken when
+// its t_break is in [0, t].
+Status measure_regions(const BarkCylinder& bark, float t, const Vec3* W, RegionReport* out,
+                       int min_nodes = kMinRegionNodes);
+
+// strong[s] = spring s intact at t and in at least one intact triangle.
+void strong_springs(const BarkCylinder& bark, float t, std::vector<std::uint8_t>* strong);
+
+}  // namespace shitsukan
