@@ -24,6 +24,7 @@ public:
         while (size_ < n_) size_ *= 2;
         time_.assign(std::size_t(n_) + 1, kNever);  // slot n_: the empty leaf
         node_.assign(std::size_t(2 * size_), std::uint32_t(n_));
+        mark_.assign(std::size_t(2 * size_), 0);
         for (int s = 0; s < n_; ++s) node_[std::size_t(size_ + s)] = std::uint32_t(s);
     }
     void set_all(const float* times) {
@@ -34,6 +35,25 @@ public:
         time_[s] = t;
         for (int v = (size_ + int(s)) / 2; v >= 1; v /= 2)
             node_[v] = better(node_[2 * v], node_[2 * v + 1]);
+    }
+    // Many leaves at once: each changed inner node is recomputed once, level by level.
+    void set_many(const std::vector<std::uint32_t>& springs, const std::vector<float>& times) {
+        level_.clear();
+        for (std::size_t k = 0; k < springs.size(); ++k) {
+            time_[springs[k]] = times[k];
+            const int v = (size_ + int(springs[k])) / 2;
+            if (!mark_[std::size_t(v)]) mark_[std::size_t(v)] = 1, level_.push_back(v);
+        }
+        while (!level_.empty()) {
+            next_.clear();
+            for (int v : level_) {
+                mark_[std::size_t(v)] = 0;
+                node_[std::size_t(v)] = better(node_[std::size_t(2 * v)], node_[std::size_t(2 * v + 1)]);
+                const int up = v / 2;
+                if (up >= 1 && !mark_[std::size_t(up)]) mark_[std::size_t(up)] = 1, next_.push_back(up);
+            }
+            level_.swap(next_);
+        }
     }
     std::uint32_t top() const { return node_[1]; }
     float time(std::uint32_t s) const { return time_[s]; }
@@ -50,6 +70,8 @@ private:
     int n_ = 0, size_ = 1;
     std::vector<float> time_;
     std::vector<std::uint32_t> node_;
+    std::vector<std::uint8_t> mark_;
+    std::vector<int> level_, next_;
 };
 
 // t_s = eps_c / E_s for an intact spring in tension, never otherwise.
@@ -104,7 +126,9 @@ Status run_cracking(SpringNetwork& net, float T, float tol, const CrackRunOption
             times[s] = break_time(net, std::uint32_t(s));
         tree.set_all(times.data());
     }
-    std::vector<std::uint32_t> touched;
+    std::vector<std::uint32_t> touched, dirty;
+    std::vector<float> dirty_times;
+    std::vector<std::uint8_t> is_dirty(net.springs.size(), 0);
     int next_snapshot = 0;
     float t = 0.0f, last_progress = 0.0f;
     for (;;) {
@@ -126,9 +150,19 @@ Status run_cracking(SpringNetwork& net, float T, float tol, const CrackRunOption
         const std::uint32_t seeds[2] = {std::min(sp.i, sp.j), std::max(sp.i, sp.j)};
         touched.clear();
         SHITSUKAN_TRY(relax(net, seeds, 2, tol, &touched));
+        dirty.clear();
+        dirty_times.clear();
         for (std::uint32_t p : touched)
-            for (std::uint32_t e = net.adj_begin[p]; e < net.adj_begin[p + 1]; ++e)
-                if (net.adj[e].k > 0.0f) tree.set(net.adj[e].s, break_time(net, net.adj[e].s));
+            for (std::uint32_t e = net.adj_begin[p]; e < net.adj_begin[p + 1]; ++e) {
+                const std::uint32_t d = net.adj[e].s;
+                if (net.adj[e].k > 0.0f && !is_dirty[d]) {
+                    is_dirty[d] = 1;
+                    dirty.push_back(d);
+                    dirty_times.push_back(break_time(net, d));
+                }
+            }
+        for (std::uint32_t d : dirty) is_dirty[d] = 0;
+        tree.set_many(dirty, dirty_times);
 
         if (options.progress && t - last_progress >= 0.05f * T) {
             last_progress = t;

@@ -1,0 +1,143 @@
+// What the hirota1998 figures share (see bark_common.hpp).
+#include "hirota1998/bark_common.hpp"
+
+#include <chrono>
+#include <map>
+#include <memory>
+#include <mutex>
+
+#include "shitsukan/core/hash.hpp"
+#include "shitsukan/image/raster_canvas.hpp"
+
+namespace shitsukan::figures::bark {
+
+const Rgb8 kBarkPlate{150, 128, 104};
+const Rgb8 kCrack{28, 20, 14};
+
+Status species_run(Species species, bool quick, const SpeciesRun** out) {
+    static std::mutex mutex;
+    static std::map<int, std::unique_ptr<SpeciesRun>> memo;
+    std::lock_guard<std::mutex> lock(mutex);
+    const int key = int(species) * 2 + (quick ? 1 : 0);
+    auto it = memo.find(key);
+    if (it != memo.end()) {
+        *out = it->second.get();
+        return Status::success();
+    }
+    auto r = std::make_unique<SpeciesRun>();
+    r->species = species;
+    r->params.species = species_preset(species);
+    if (quick) r->params.N_R = 32, r->params.N_H = 24;
+    const auto t0 = std::chrono::steady_clock::now();
+    SHITSUKAN_TRY(build_cylinder(r->params, &r->bark));
+    const float T = r->params.T;
+    const float times[] = {0.6f * T, 0.75f * T, 0.9f * T, T};
+    CrackRunOptions opt;
+    opt.snapshot_times = times;
+    opt.snapshot_count = 4;
+    SHITSUKAN_TRY(grow_and_crack(r->bark, opt, &r->run));
+    r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    SHITSUKAN_TRY(measure_regions(r->bark, T, r->bark.net.W.data(), &r->regions));
+    *out = r.get();
+    memo[key] = std::move(r);
+    return Status::success();
+}
+
+void record_parameters(FigureContext& ctx, const CylinderParams& p) {
+    const SpeciesParams& s = p.species;
+    ctx.given("L0", "0.33 cm", "Table 2");
+    ctx.given(fmt("E1, E2, G (%s)", s.name),
+              fmt("%.1fe7, %.1fe7, %.1fe7 (read as dyn/cm^2)", double(s.E1) / 1e7,
+                  double(s.E2) / 1e7, double(s.G) / 1e7),
+              "Table 2");
+    ctx.given(fmt("kappa1, kappa2 (%s)", s.name), fmt("%.3f, %.3f", double(s.kappa1), double(s.kappa2)),
+              "Table 2");
+    ctx.chosen("1 / 2 subscripts", "1 = axial (vertical springs), 2 = around the trunk (diagonals)",
+               "camphor and tallow share every subscript-2 value and Table 3's width, and differ "
+               "in subscript 1 and the height (MODEL.md §2.2)");
+    ctx.given("R0, H0", fmt("sqrt(3) L0 N_R / (4 pi) = %.3f cm, L0 N_H = %.2f cm",
+                            double(initial_radius(p)), double(initial_height(p))),
+              "Table 1");
+    ctx.chosen("N_R x N_H", fmt("%d x %d", p.N_R, p.N_H),
+               "R0 = 5.8 cm in Table 3's 'radius 5-10 cm', H0 > 20 cm so '(>20)' is measurable");
+    ctx.chosen("D (layer thickness)", fmt("%.2f cm", double(p.D)),
+               "region sizes scale with D; below about L0 the damage is diffuse");
+    ctx.chosen("sigma", fmt("%.4f, Gaussian, relative to kappa - 1, clipped at 3 sigma", double(p.sigma)),
+               "0.015 makes camphor full-height strips, 0.02 breaks them to 8 cm");
+    ctx.chosen("growth", fmt("T %.0f s, delta_r %.4g cm/s, delta_h %.4g cm/s: final hoop strain "
+                             "%.4f, axial %.4f",
+                             double(p.T), double(p.delta_r), double(p.delta_h),
+                             double(hoop_strain(p, p.T)), double(axial_strain(p, p.T))),
+               "calibrated on Table 3; only the final strains matter to the quasi-static result");
+    ctx.chosen("solver", fmt("quasi-static, linear, event-driven; tolerance %.0e", double(p.tolerance)),
+               "growth is slow next to elastic waves: the damped dynamics of ref. 12 settle into "
+               "equilibria; rho, dt and damping drop out");
+    ctx.chosen("spring constants", "k = E S / l0 (S = face length x D), k_sh = G A / D",
+               "bar in tension, block in shear, from §5.1's connection areas");
+    ctx.chosen("seed", fmt("%u (hash streams 11: springs)", p.seed), "the paper's year");
+}
+
+namespace {
+
+Rgb8 shade(Rgb8 c, float f) {
+    auto ch = [f](std::uint8_t v) {
+        const float x = float(v) * f;
+        return std::uint8_t(x > 255.0f ? 255.0f : x);
+    };
+    return {ch(c.r), ch(c.g), ch(c.b)};
+}
+
+}  // namespace
+
+void draw_crack_map(Canvas& canvas, const BarkCylinder& bark, const RegionReport* regions,
+                    float t, const Vec3* W, Vec2 origin, float scale, float min_width_cm) {
+    const float C = bark.circumference * (1.0f + hoop_strain(bark.params, t));
+    auto to_px = [&](Vec3 p, float shift) {
+        return Vec2{origin.x + (p.x + shift) * scale, origin.y - p.y * scale};
+    };
+    auto* raster = dynamic_cast<RasterCanvas*>(&canvas);
+    if (raster) raster->set_antialias(false);  // plates tile exactly; cracks are smoothed
+    for (const ConnectionTriangle& tri : bark.triangles) {
+        Vec3 x[3];
+        bool beyond = false;
+        for (int k = 0; k < 3; ++k) {
+            x[k] = corner_position(bark, tri.corner[k], tri.node[k], t, W);
+            beyond = beyond || x[k].x > C;
+        }
+        Rgb8 colour = kBarkPlate;
+        if (regions) {
+            const std::int32_t label = regions->label[tri.node[0]];
+            const float f = label < 0 ? 0.8f
+                                      : 0.88f + 0.24f * hash_uniform(7, 5, label);  // chosen here
+            colour = shade(kBarkPlate, f);
+        }
+        for (float shift : {0.0f, -C}) {
+            if (shift != 0.0f && !beyond) continue;
+            const Vec2 pts[3] = {to_px(x[0], shift), to_px(x[1], shift), to_px(x[2], shift)};
+            canvas.fill_polygon(pts, 3, colour);
+        }
+    }
+    if (raster) raster->set_antialias(true);
+    std::vector<CrackRibbon> cracks;
+    if (!crack_ribbons(bark, t, W, &cracks, /*include_weak=*/true).ok()) return;
+    for (const CrackRibbon& r : cracks) {
+        // A weak axial spring is a one-node-wide sliver between two vertical cracks, not a
+        // crack across it: drawn as part of the sliver (chosen here).
+        if (r.weak && bark.net.springs[r.spring].family == 1) continue;
+        Vec3 quads[2][4];
+        ribbon_quads(r, quads, min_width_cm);
+        bool beyond = false;
+        for (auto& q : quads)
+            for (const Vec3& p : q) beyond = beyond || p.x > C;
+        for (float shift : {0.0f, -C}) {
+            if (shift != 0.0f && !beyond) continue;
+            for (auto& q : quads) {
+                const Vec2 pts[4] = {to_px(q[0], shift), to_px(q[1], shift), to_px(q[2], shift),
+                                     to_px(q[3], shift)};
+                canvas.fill_polygon(pts, 4, kCrack);
+            }
+        }
+    }
+}
+
+}  // namespace shitsukan::figures::bark

@@ -1,0 +1,41 @@
+// paper_figures/hirota1998/bark_common.hpp — what the hirota1998 figures share: the species
+// runs (memoised: fig04, fig05 and table03 use the same three simulations), the crack map
+// drawing and the parameter table.
+#pragma once
+
+#include <vector>
+
+#include "driver/figure.hpp"
+#include "shitsukan/bark/bark.hpp"
+#include "shitsukan/image/canvas.hpp"
+
+namespace shitsukan::figures::bark {
+
+// One species grown to T, measured at T, with snapshots at 0.6, 0.75, 0.9 and 1.0 T.
+struct SpeciesRun {
+    Species species;
+    CylinderParams params;
+    BarkCylinder bark;
+    CrackRun run;
+    RegionReport regions;
+    double seconds = 0;  // build + growth + cracking
+};
+
+// Full size (128 x 64) or, in quick mode, 32 x 24. Computed once per process (thread-safe).
+Status species_run(Species species, bool quick, const SpeciesRun** out);
+
+// Records the parameters that matter (given by Table 2, chosen here) in the figure's table.
+void record_parameters(FigureContext& ctx, const CylinderParams& p);
+
+// Colours (chosen here: a grey-brown bark plate, near-black cracks).
+extern const Rgb8 kBarkPlate;
+extern const Rgb8 kCrack;
+
+// Draws the unrolled bark at time t with W: plates (the lattice triangles, each region's
+// plates slightly lighter or darker, chosen here so the blocks read), cracks as Fig. 4
+// ribbons (weak diagonal springs, a crack opened by sliding, at min_width_cm). (u, z) cm -> pixel (origin.x + u·scale,
+// origin.y - z·scale).
+void draw_crack_map(Canvas& canvas, const BarkCylinder& bark, const RegionReport* regions,
+                    float t, const Vec3* W, Vec2 origin, float scale, float min_width_cm);
+
+}  // namespace shitsukan::figures::bark
