@@ -10,10 +10,14 @@
 //   §3.1, Fig. 3       cylinder_lattice.hpp  the two-layer cylinder: layout decoded from R0,
 //                                            families, thresholds, growth
 //   §3.1-3.2           crack_events.hpp      growth and cracking, one break at a time
+//                      event_tree.hpp        (its next-event tree, canonical ties)
 //   §3.1, Fig. 4       crack_drawing.hpp     a broken spring drawn as a crack of width l - l0
 //   Table 3            crack_regions.hpp     regions bounded by cracks, crack spacings
 //   §3.2               spacing_estimate.hpp  the (reconstructed) largest-spacing estimate
 //                      bark_export.hpp       CSV, SVG and the deformed trunk as a mesh
+//   §4.1, Figs. 6-7    layer_schedule.hpp    the four layers' radii over time (role changes)
+//   §4.2-4.3, Table 4  layered_bark.hpp      four layers over several cycles: peeling, drying,
+//                                            falling off, new layers
 //
 // Manual (a camphor trunk, its Table 3 numbers):
 //   CylinderParams p;  p.species = species_preset(Species::camphor);
@@ -30,6 +34,9 @@
 #include "shitsukan/bark/crack_drawing.hpp"
 #include "shitsukan/bark/crack_events.hpp"
 #include "shitsukan/bark/crack_regions.hpp"
+#include "shitsukan/bark/event_tree.hpp"
+#include "shitsukan/bark/layer_schedule.hpp"
+#include "shitsukan/bark/layered_bark.hpp"
 #include "shitsukan/bark/cylinder_lattice.hpp"
 #include "shitsukan/bark/spacing_estimate.hpp"
 #include "shitsukan/bark/spring_network.hpp"

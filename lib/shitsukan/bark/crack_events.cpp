@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "shitsukan/bark/event_tree.hpp"
 #include "shitsukan/core/hash.hpp"
 #include "shitsukan/core/scalar.hpp"
 
@@ -13,66 +14,6 @@ namespace shitsukan {
 namespace {
 
 constexpr float kNever = std::numeric_limits<float>::infinity();
-
-// A min-tree over springs: leaf s holds t_s; an inner node the index of its smaller child
-// (ties: smaller canonical key). O(1) minimum, O(log n) update.
-class EventTree {
-public:
-    explicit EventTree(const SpringNetwork& net) : net_(net) {
-        n_ = int(net.springs.size());
-        size_ = 1;
-        while (size_ < n_) size_ *= 2;
-        time_.assign(std::size_t(n_) + 1, kNever);  // slot n_: the empty leaf
-        node_.assign(std::size_t(2 * size_), std::uint32_t(n_));
-        mark_.assign(std::size_t(2 * size_), 0);
-        for (int s = 0; s < n_; ++s) node_[std::size_t(size_ + s)] = std::uint32_t(s);
-    }
-    void set_all(const float* times) {
-        for (int s = 0; s < n_; ++s) time_[std::size_t(s)] = times[s];
-        for (int v = size_ - 1; v >= 1; --v) node_[v] = better(node_[2 * v], node_[2 * v + 1]);
-    }
-    void set(std::uint32_t s, float t) {
-        time_[s] = t;
-        for (int v = (size_ + int(s)) / 2; v >= 1; v /= 2)
-            node_[v] = better(node_[2 * v], node_[2 * v + 1]);
-    }
-    // Many leaves at once: each changed inner node is recomputed once, level by level.
-    void set_many(const std::vector<std::uint32_t>& springs, const std::vector<float>& times) {
-        level_.clear();
-        for (std::size_t k = 0; k < springs.size(); ++k) {
-            time_[springs[k]] = times[k];
-            const int v = (size_ + int(springs[k])) / 2;
-            if (!mark_[std::size_t(v)]) mark_[std::size_t(v)] = 1, level_.push_back(v);
-        }
-        while (!level_.empty()) {
-            next_.clear();
-            for (int v : level_) {
-                mark_[std::size_t(v)] = 0;
-                node_[std::size_t(v)] = better(node_[std::size_t(2 * v)], node_[std::size_t(2 * v + 1)]);
-                const int up = v / 2;
-                if (up >= 1 && !mark_[std::size_t(up)]) mark_[std::size_t(up)] = 1, next_.push_back(up);
-            }
-            level_.swap(next_);
-        }
-    }
-    std::uint32_t top() const { return node_[1]; }
-    float time(std::uint32_t s) const { return time_[s]; }
-
-private:
-    std::uint32_t better(std::uint32_t a, std::uint32_t b) const {
-        if (time_[a] < time_[b]) return a;
-        if (time_[b] < time_[a]) return b;
-        if (a == std::uint32_t(n_)) return b;
-        if (b == std::uint32_t(n_)) return a;
-        return net_.springs[a].key <= net_.springs[b].key ? a : b;
-    }
-    const SpringNetwork& net_;
-    int n_ = 0, size_ = 1;
-    std::vector<float> time_;
-    std::vector<std::uint32_t> node_;
-    std::vector<std::uint8_t> mark_;
-    std::vector<int> level_, next_;
-};
 
 // t_s = eps_c / E_s for an intact spring in tension, never otherwise.
 float break_time(const SpringNetwork& net, std::uint32_t s) {
@@ -119,7 +60,7 @@ Status run_cracking(SpringNetwork& net, float T, float tol, const CrackRunOption
     // The intact network's equilibrium at unit growth (free edges make W != 0 from the start).
     SHITSUKAN_TRY(solve_full(net, tol, 100000));
 
-    EventTree tree(net);
+    EventTree tree(net.springs.size(), [&](std::uint32_t s) { return net.springs[s].key; });
     {
         std::vector<float> times(net.springs.size());
         for (std::size_t s = 0; s < times.size(); ++s)

@@ -25,15 +25,17 @@ bool spring_end(int N_R, int N_H, int c, int r, int dir, int* c2, int* r2) {
     return *r2 >= 0 && *r2 < N_H;
 }
 
+}  // namespace
+
 // Critical strain eps_c = (kappa_f - 1)·max(0.05, 1 + sigma·clamp(g, -3, 3)) (chosen here:
 // Gaussian, relative spread, clipped so no spring is near-zero strength).
-float critical_strain(float kappa, float sigma, std::uint32_t seed, int c, int r, int dir) {
-    const float g = clamp(hash_gaussian(seed, kStreamCylinderSprings, c, r, dir), -3.0f, 3.0f);
+float spring_critical_strain(float kappa, float sigma, std::uint32_t seed, int c, int r, int dir,
+                             int generation) {
+    const float g = clamp(hash_gaussian(seed, kStreamCylinderSprings, c, r, dir + 4 * generation),
+                          -3.0f, 3.0f);
     const float f = 1.0f + sigma * g;
     return (kappa - 1.0f) * (f > 0.05f ? f : 0.05f);
 }
-
-}  // namespace
 
 Vec3 cylinder_anchor(const BarkCylinder& bark, Vec3 reference, float t) {
     const float et = hoop_strain(bark.params, t), ez = axial_strain(bark.params, t);
@@ -103,7 +105,7 @@ Status build_cylinder(const CylinderParams& params, BarkCylinder* out, bool reve
         // §3.1: the anchors pull the spring at g_s = (dr/R0) n_u^2 + (dh/H0) n_z^2.
         sp.growth_rate = rate_u * sp.n.x * sp.n.x + rate_z * sp.n.y * sp.n.y;
         const float kappa = sp.family == 1 ? params.species.kappa1 : params.species.kappa2;
-        sp.eps_c = critical_strain(kappa, params.sigma, params.seed, k.c, k.r, k.dir);
+        sp.eps_c = spring_critical_strain(kappa, params.sigma, params.seed, k.c, k.r, k.dir);
         sp.key = cylinder_spring_key(k.c, k.r, k.dir);
         b.spring_index[std::size_t(3 * b.node(k.c, k.r) + k.dir)] = std::int32_t(s);
     }

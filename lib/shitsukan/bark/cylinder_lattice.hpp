@@ -73,6 +73,13 @@ inline std::uint64_t cylinder_spring_key(int c, int r, int dir) {
            std::uint64_t(dir);
 }
 
+// The critical strain of spring (c, r, dir) of layer generation g (§3.1 sigma, chosen here):
+// (kappa - 1)·max(0.05, 1 + sigma·clamp(gauss, -3, 3)), gauss = hash_gaussian(seed, 11, c, r,
+// dir + 4·g). Generation 0 is the two-layer cylinder; the four-layer bark draws fresh
+// thresholds for every new layer.
+float spring_critical_strain(float kappa, float sigma, std::uint32_t seed, int c, int r, int dir,
+                             int generation = 0);
+
 // The anchor of a reference point (u, z) at time t: (u·(1 + eps_theta), z·(1 + eps_z)).
 Vec3 cylinder_anchor(const BarkCylinder& bark, Vec3 reference, float t);
 // Node p at time t, unrolled: anchor + t·W_p (W: the displacement field valid at t).

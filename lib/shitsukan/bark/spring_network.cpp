@@ -124,6 +124,25 @@ void break_spring(SpringNetwork& net, std::uint32_t s, float t_break) {
             if (net.adj[e].s == s) net.adj[e].k = 0.0f, net.adj[e].load = 0.0f;
 }
 
+void restore_spring(SpringNetwork& net, std::uint32_t s) {
+    BarkSpring& sp = net.springs[s];
+    sp.t_break = -1.0f;
+    const float load = sp.k * sp.l0 * sp.growth_rate;
+    for (std::uint32_t p : {sp.i, sp.j})
+        for (std::uint32_t e = net.adj_begin[p]; e < net.adj_begin[p + 1]; ++e)
+            if (net.adj[e].s == s) net.adj[e].k = sp.k, net.adj[e].load = load;
+}
+
+void set_growth_rate(SpringNetwork& net, std::uint32_t s, float growth_rate) {
+    BarkSpring& sp = net.springs[s];
+    sp.growth_rate = growth_rate;
+    if (!sp.intact()) return;
+    const float load = sp.k * sp.l0 * growth_rate;
+    for (std::uint32_t p : {sp.i, sp.j})
+        for (std::uint32_t e = net.adj_begin[p]; e < net.adj_begin[p + 1]; ++e)
+            if (net.adj[e].s == s) net.adj[e].load = load;
+}
+
 float update_node(SpringNetwork& net, std::uint32_t p) {
     const Vec3 w = node_minimiser(net, p);
     const Vec3 d = w - net.W[p];

@@ -88,6 +88,13 @@ Status finalize_network(SpringNetwork& net);
 // Removes spring s for good (no healing, no contact): it exerts no force from now on.
 void break_spring(SpringNetwork& net, std::uint32_t s, float t_break);
 
+// Puts a broken spring back (a layer born anew, §4.1's role change): its force counts again.
+void restore_spring(SpringNetwork& net, std::uint32_t s);
+
+// Changes spring s's growth strain (rate) g_s and so its pull k·l0·g_s (stepped drivers whose
+// loading is not linear in t).
+void set_growth_rate(SpringNetwork& net, std::uint32_t s, float growth_rate);
+
 // Minimises Phi over node p with the others fixed; returns |Delta W_p|^2.
 float update_node(SpringNetwork& net, std::uint32_t p);
 
