@@ -1,0 +1,76 @@
+// shitsukan/bark/branch_bark.hpp — hirota1998 §5: cracks on a branching trunk (Figs. 9, 11).
+//
+// Manual
+//   BranchBarkParams p;                          // MODEL.md §2.3 branch values
+//   BranchBark bark;
+//   Status s = build_branch_bark(p, &bark);     // mesh, springs on its edges, constants
+//   CrackRun run;
+//   s = grow_branch_bark(bark, CrackRunOptions{}, &run);
+//   Vec3 x = branch_node_position(bark, i, t, bark.net.W.data());   // node i at time t
+//
+// §5.1: the paper digitised a real branch and re-meshed it near-uniformly (bubble mesh); here
+// the shape is branch_shape.hpp's implicit trunk + branch, meshed to edge length L0. On the
+// irregular mesh every node is a small volume and every mesh edge a spring; the constants come
+// from the connection areas of Fig. 9 (connection_area.hpp), with the same function as the
+// cylinder: k = E·S/l0 (S = |C1-P-C2|·D), k_sh = G·A/D.
+//
+// §5.2: the growth is an isotropic enlargement plus an offset along the normal (Fig. 10); each
+// surface node is tied by its shear spring to its anchor A_i(t) on the grown inner layer, and a
+// spring feels the linearised growth strain rate of its edge (edge_growth_rate). In 3D each
+// node has three degrees of freedom; the solver and the event driver are the cylinder's
+// (spring_network.hpp, crack_events.hpp).
+//
+// Material (chosen here, MODEL.md §2.3): isotropic, E = 117.3e7, G = 53.3e7, kappa = 1.015
+// for every spring: at the crotch "axial" and "around" are undefined (the paper's own point),
+// and the growth's anisotropy alone orients the cracks. Thresholds from a hash of the spring's
+// two end positions (sorted), stream 13: independent of how the mesh is numbered.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "shitsukan/bark/branch_shape.hpp"
+#include "shitsukan/bark/connection_area.hpp"
+#include "shitsukan/bark/crack_events.hpp"
+#include "shitsukan/bark/spring_network.hpp"
+#include "shitsukan/geom/mesh.hpp"
+
+namespace shitsukan {
+
+struct BranchBarkParams {
+    BranchShapeParams shape;
+    float edge_length = 0.33f;  // L0 (Table 2), the remesher's target
+    AnisotropicGrowth growth;   // r_h 0.010, r_n 0.05 cm over T = 100 s (chosen here)
+    float E = 117.3e7f, G = 53.3e7f;  // Table 2 (tallow / pine values)
+    float kappa = 1.015f;             // Table 2's kappa2 for every spring (chosen here)
+    float sigma = 0.0175f;            // as the cylinder
+    float D = 0.55f;                  // as the cylinder
+    float tolerance = 1e-3f;
+    std::uint32_t seed = 1998;
+};
+
+Status validate(const BranchBarkParams& p);
+
+// Springs and connection triangles of any triangle mesh: one spring per edge, in the order of
+// (smaller vertex, larger vertex). Refuses non-finite positions, degenerate triangles and edges
+// shared by more than two triangles.
+Status mesh_springs(const TriangleMesh& mesh, std::vector<ConnectionTriangle>* triangles,
+                    std::vector<std::uint32_t>* edge_nodes /* 2 per spring */);
+
+struct BranchBark {
+    BranchBarkParams params;
+    TriangleMesh mesh;                          // the reference shape (normals = grad f)
+    BranchMeshStats mesh_stats;
+    std::vector<ConnectionTriangle> triangles;  // the mesh's triangles with their springs
+    std::vector<std::int32_t> spring_triangles; // 2 per spring, -1 where none
+    std::vector<float> node_area, spring_face;  // Fig. 9
+    SpringNetwork net;                          // dim 3
+};
+
+Status build_branch_bark(const BranchBarkParams& params, BranchBark* out);
+Status grow_branch_bark(BranchBark& bark, const CrackRunOptions& options, CrackRun* out);
+
+// Node i at time t: its anchor A_i(t) plus t·W_i.
+Vec3 branch_node_position(const BranchBark& bark, std::uint32_t i, float t, const Vec3* W);
+
+}  // namespace shitsukan
