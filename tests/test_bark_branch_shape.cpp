@@ -98,7 +98,7 @@ TEST_CASE("branch mesh: manifold pair of pants with near-uniform edges (MODEL.md
     CHECK(topo.euler_characteristic == -1);
     CHECK(st.boundary_loops == 3);
     CHECK(st.euler_characteristic == -1);
-    // ~3,700 nodes (MODEL.md §2.3); measured 3,485.
+    // ~3,700 nodes (MODEL.md §2.3); measured 3,465.
     CHECK(m.vertex_count() > 3000);
     CHECK(m.vertex_count() < 4200);
     CHECK(st.remesh.after.edge_length_cv < 0.15);

@@ -15,12 +15,12 @@ struct LimbGeometry {
     Vec3 ga, gb;     // their gradients (unit)
 };
 
-LimbGeometry limbs(const BranchShapeParams& s, Vec3 p) {
+// u = branch_axis_direction(s), passed in so the mesher computes its sine and cosine once.
+LimbGeometry limbs(const BranchShapeParams& s, Vec3 u, Vec3 p) {
     LimbGeometry g;
     const float r = std::sqrt(p.x * p.x + p.y * p.y);
     g.a = r - s.trunk_radius;
     g.ga = r > 0.0f ? Vec3{p.x / r, p.y / r, 0.0f} : Vec3{1.0f, 0.0f, 0.0f};
-    const Vec3 u = branch_axis_direction(s);
     const Vec3 d = p - s.branch_origin;
     float t = dot(d, u);
     if (t < 0.0f) t = 0.0f;  // the half-line ends at the origin (inside the trunk)
@@ -36,8 +36,19 @@ float blend_weight(float a, float b, float k) {  // h of the polynomial smooth m
     return h < 0.0f ? 0.0f : (h > 1.0f ? 1.0f : h);
 }
 
+float smooth_union(const BranchShapeParams& s, const LimbGeometry& g) {
+    const float h = blend_weight(g.a, g.b, s.blend);
+    return g.b + h * (g.a - g.b) - s.blend * h * (1.0f - h);
+}
+
+struct PreparedShape {
+    const BranchShapeParams* params;
+    Vec3 axis;
+};
+
 float shape_function(Vec3 p, const void* user) {
-    return branch_shape_value(*static_cast<const BranchShapeParams*>(user), p);
+    const PreparedShape& s = *static_cast<const PreparedShape*>(user);
+    return smooth_union(*s.params, limbs(*s.params, s.axis, p));
 }
 
 }  // namespace
@@ -73,19 +84,17 @@ Vec3 branch_axis_direction(const BranchShapeParams& s) {
 }
 
 float branch_shape_value(const BranchShapeParams& s, Vec3 p) {
-    const LimbGeometry g = limbs(s, p);
-    const float h = blend_weight(g.a, g.b, s.blend);
-    return g.b + h * (g.a - g.b) - s.blend * h * (1.0f - h);
+    return smooth_union(s, limbs(s, branch_axis_direction(s), p));
 }
 
 Vec3 branch_shape_gradient(const BranchShapeParams& s, Vec3 p) {
-    const LimbGeometry g = limbs(s, p);
+    const LimbGeometry g = limbs(s, branch_axis_direction(s), p);
     const float h = blend_weight(g.a, g.b, s.blend);
     return g.ga * h + g.gb * (1.0f - h);
 }
 
 LimbDistances limb_distances(const BranchShapeParams& s, Vec3 p) {
-    const LimbGeometry g = limbs(s, p);
+    const LimbGeometry g = limbs(s, branch_axis_direction(s), p);
     LimbDistances d;
     d.f_trunk = g.a;
     d.f_branch = g.b;
@@ -134,13 +143,14 @@ Status make_branch_mesh(const BranchShapeParams& params, float target_edge_lengt
     mt.cut_z_min = mt.cut_z_max = true;
     mt.compute_normals = false;
     TriangleMesh mesh;
-    SHITSUKAN_TRY(marching_tetrahedra(&shape_function, &params, mt, &mesh));
+    const PreparedShape prepared{&params, branch_axis_direction(params)};
+    SHITSUKAN_TRY(marching_tetrahedra(&shape_function, &prepared, mt, &mesh));
     s->marching_vertices = mesh.vertex_count();
     s->marching_triangles = mesh.triangle_count();
     IsotropicRemeshOptions ro;
     ro.target_edge_length = L0;
     ro.surface = &shape_function;
-    ro.user = &params;
+    ro.user = &prepared;
     SHITSUKAN_TRY(isotropic_remesh(ro, &mesh, &s->remesh));
     for (std::size_t v = 0; v < mesh.positions.size(); ++v)
         mesh.normals[v] = branch_shape_normal(params, mesh.positions[v]);

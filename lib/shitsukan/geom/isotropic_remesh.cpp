@@ -120,9 +120,13 @@ public:
         SHITSUKAN_TRY(rebuild());
         for (int pass = 0; pass < opt_.passes; ++pass) {
             for (int s = 0; s < kRemeshSweeps && split_sweep(stats); ++s) SHITSUKAN_TRY(rebuild());
-            for (int s = 0; s < kRemeshSweeps && collapse_sweep(stats); ++s)
-                SHITSUKAN_TRY(rebuild());
-            for (int s = 0; s < kRemeshSweeps && flip_sweep(stats); ++s) SHITSUKAN_TRY(rebuild());
+            // Collapses and flips keep the half-edges current: sweep until nothing changes,
+            // then compact.
+            bool collapsed = false;
+            for (int s = 0; s < kRemeshSweeps && collapse_sweep(stats); ++s) collapsed = true;
+            for (int s = 0; s < kRemeshSweeps && flip_sweep(stats); ++s) {
+            }
+            if (collapsed) SHITSUKAN_TRY(rebuild());
             smooth();
             project();
         }
@@ -245,9 +249,6 @@ private:
     }
 
     bool locked(int v) const { return lock_[std::size_t(v)] != 0; }
-    void lock_ring(const std::vector<int>& ring) {
-        for (int v : ring) lock_[std::size_t(v)] = 1;
-    }
 
     bool split_sweep(IsotropicRemeshStats* stats) {
         bool changed = false;
@@ -278,61 +279,83 @@ private:
         return changed;
     }
 
+    // Twins glued across a removed triangle corner: x and y become each other's twins.
+    void glue(int x, int y) {
+        if (x >= 0) O_[std::size_t(x)] = y;
+        if (y >= 0) O_[std::size_t(y)] = x;
+    }
+
+    // A valid outgoing half-edge for v, starting from any live outgoing one: on the boundary
+    // the one without a twin (one_ring starts there).
+    void set_vh(int v, int g) {
+        const int first = g;
+        for (;;) {
+            if (O_[std::size_t(g)] < 0) break;
+            g = next_he(O_[std::size_t(g)]);
+            if (g == first) break;
+        }
+        VH_[std::size_t(v)] = g;
+    }
+
+    // Collapses keep the twins up to date (no locks): a -> b removes the triangles (a, b, c)
+    // and (b, a, d), glues their outer edges and renames a to b around a.
     bool collapse_sweep(IsotropicRemeshStats* stats) {
         bool changed = false;
         for (int h = 0; h < int(T_.size()); ++h) {
             if (dead_[std::size_t(h / 3)]) continue;
-            const int o = O_[std::size_t(h)];
+            int o = O_[std::size_t(h)];
             if (o >= 0 && o < h) continue;
             int a = from(h), b = to(h);  // a is removed, b kept
-            if (locked(a) || locked(b)) continue;
             if (double(length(P_[std::size_t(b)] - P_[std::size_t(a)])) >= low_) continue;
             const bool edge_boundary = o < 0;
             const bool ba = boundary_[std::size_t(a)] != 0, bb = boundary_[std::size_t(b)] != 0;
             if (ba && bb && !edge_boundary) continue;
+            int he = h, ho = o;  // he runs a -> b
             if (ba && !bb) {
+                if (edge_boundary) continue;  // cannot happen: a boundary edge has both ends on it
                 int s = a;
                 a = b;
                 b = s;
+                he = o;
+                ho = h;
             }
-            const int c = from(prev_he(h)), d = edge_boundary ? -1 : from(prev_he(o));
+            const int c = from(prev_he(he)), d = edge_boundary ? -1 : from(prev_he(ho));
             // An opposite vertex keeps at least 3 neighbours.
             if (valence_[std::size_t(c)] - 1 < 3) continue;
             if (d >= 0 && valence_[std::size_t(d)] - 1 < 3) continue;
-            Vec3 p = (edge_boundary || (!ba && !bb))
-                         ? (P_[std::size_t(a)] + P_[std::size_t(b)]) * 0.5f
-                         : P_[std::size_t(b)];
+            const Vec3 p = (edge_boundary || (!ba && !bb))
+                               ? (P_[std::size_t(a)] + P_[std::size_t(b)]) * 0.5f
+                               : P_[std::size_t(b)];
             one_ring(a, &ring_a_, &tris_a_);
             one_ring(b, &ring_b_, &tris_b_);
             // Link condition: the common neighbours are exactly the opposite vertices.
             int common = 0;
-            bool link_ok = true;
+            bool ok = true;
             for (int x : ring_a_)
                 for (int y : ring_b_)
                     if (x == y) {
                         ++common;
-                        if (x != c && x != d) link_ok = false;
+                        if (x != c && x != d) ok = false;
                     }
-            if (!link_ok || common != (edge_boundary ? 1 : 2)) continue;
+            if (!ok || common != (edge_boundary ? 1 : 2)) continue;
             // New edges no longer than 4/3 L; no triangle folds over or degenerates.
-            bool ok = true;
             for (const std::vector<int>* ring : {&ring_a_, &ring_b_})
                 for (int x : *ring)
                     if (x != a && x != b && double(length(P_[std::size_t(x)] - p)) > high_)
                         ok = false;
-            for (int pass = 0; pass < 2 && ok; ++pass) {
-                const std::vector<int>& tris = pass == 0 ? tris_a_ : tris_b_;
-                const int moved = pass == 0 ? a : b;
+            for (int side = 0; side < 2 && ok; ++side) {
+                const std::vector<int>& tris = side == 0 ? tris_a_ : tris_b_;
+                const int moved = side == 0 ? a : b, other = side == 0 ? b : a;
                 for (int t : tris) {
                     Vec3 q[3], r[3];
-                    bool has_both = false;
+                    bool removed = false;
                     for (int k = 0; k < 3; ++k) {
                         int v = int(T_[std::size_t(3 * t + k)]);
-                        if (v == (pass == 0 ? b : a)) has_both = true;
+                        removed |= v == other;
                         q[k] = P_[std::size_t(v)];
                         r[k] = v == moved ? p : q[k];
                     }
-                    if (has_both) continue;  // removed by the collapse
+                    if (removed) continue;
                     Vec3 n0 = cross(q[1] - q[0], q[2] - q[0]), n1 = cross(r[1] - r[0], r[2] - r[0]);
                     double l2 = std::fmax(double(length_squared(r[1] - r[0])),
                                           std::fmax(double(length_squared(r[2] - r[1])),
@@ -342,18 +365,35 @@ private:
                 }
             }
             if (!ok) continue;
+            // Glue the outer edges of the two removed triangles: (b->c)~(a->c), (a->d)~(b->d)
+            // become twins once a is renamed b.
+            const int n0 = next_he(he), p0 = prev_he(he);
+            const int x0 = O_[std::size_t(n0)], y0 = O_[std::size_t(p0)];
+            glue(x0, y0);
+            int x1 = -1, y1 = -1;
+            if (ho >= 0) {
+                x1 = O_[std::size_t(next_he(ho))];
+                y1 = O_[std::size_t(prev_he(ho))];
+                glue(x1, y1);
+                dead_[std::size_t(ho / 3)] = 1;
+            }
+            dead_[std::size_t(he / 3)] = 1;
             for (int t : tris_a_)
-                for (int k = 0; k < 3; ++k)
-                    if (int(T_[std::size_t(3 * t + k)]) == a) T_[std::size_t(3 * t + k)] = std::uint32_t(b);
-            dead_[std::size_t(h / 3)] = 1;
-            if (o >= 0) dead_[std::size_t(o / 3)] = 1;
+                if (!dead_[std::size_t(t)])
+                    for (int k = 0; k < 3; ++k)
+                        if (int(T_[std::size_t(3 * t + k)]) == a)
+                            T_[std::size_t(3 * t + k)] = std::uint32_t(b);
             P_[std::size_t(b)] = p;
             boundary_[std::size_t(b)] = char(ba || bb);
-            // Only the triangles around a changed (a -> b) or died: locking a's ring (b is in
-            // it) keeps every later sweep step away from stale twins. Vertices around b
-            // alone see only unchanged triangles (b's new position is read live).
-            lock_ring(ring_a_);
-            lock_[std::size_t(a)] = 1;
+            valence_[std::size_t(b)] += valence_[std::size_t(a)] - common - 2;
+            --valence_[std::size_t(c)];
+            if (d >= 0) --valence_[std::size_t(d)];
+            valence_[std::size_t(a)] = 0;
+            // Fresh outgoing half-edges for b, c, d (the old ones may have died).
+            // c: c -> b (x0) or, when b -> c was a boundary edge, the edge after a -> c.
+            set_vh(c, x0 >= 0 ? x0 : next_he(y0));
+            if (d >= 0) set_vh(d, y1 >= 0 ? next_he(y1) : x1);
+            set_vh(b, y0 >= 0 ? y0 : next_he(x0));
             changed = true;
             if (stats) ++stats->collapses;
         }
@@ -365,13 +405,15 @@ private:
         return e * e;
     }
 
+    // Flips keep the twins up to date too.
     bool flip_sweep(IsotropicRemeshStats* stats) {
         bool changed = false;
         for (int h = 0; h < int(T_.size()); ++h) {
+            if (dead_[std::size_t(h / 3)]) continue;
             const int o = O_[std::size_t(h)];
             if (o < h) continue;  // boundary edges (o < 0) never flip; each edge once
             const int a = from(h), b = to(h), c = from(prev_he(h)), d = from(prev_he(o));
-            if (locked(a) || locked(b) || locked(c) || locked(d) || c == d) continue;
+            if (c == d) continue;
             const int before = deviation(a, 0) + deviation(b, 0) + deviation(c, 0) + deviation(d, 0);
             const int after = deviation(a, -1) + deviation(b, -1) + deviation(c, 1) + deviation(d, 1);
             if (after >= before) continue;
@@ -387,20 +429,29 @@ private:
             const Vec3 n = cross(pb - pa, pc - pa) + cross(pa - pb, pd - pb);
             const Vec3 m0 = cross(pa - pc, pd - pc), m1 = cross(pb - pd, pc - pd);
             if (!(dot(m0, n) > 0.0f && dot(m1, n) > 0.0f && dot(m0, m1) > 0.0f)) continue;
-            // (a, b, c), (b, a, d) -> (c, a, d), (d, b, c).
+            // (a, b, c), (b, a, d) -> (c, a, d), (d, b, c); outer twins: b->c, c->a, a->d, d->b.
             const int t0 = h / 3, t1 = o / 3;
-            T_[std::size_t(3 * t0)] = std::uint32_t(c);
-            T_[std::size_t(3 * t0 + 1)] = std::uint32_t(a);
-            T_[std::size_t(3 * t0 + 2)] = std::uint32_t(d);
-            T_[std::size_t(3 * t1)] = std::uint32_t(d);
-            T_[std::size_t(3 * t1 + 1)] = std::uint32_t(b);
-            T_[std::size_t(3 * t1 + 2)] = std::uint32_t(c);
+            const int o_bc = O_[std::size_t(next_he(h))], o_ca = O_[std::size_t(prev_he(h))];
+            const int o_ad = O_[std::size_t(next_he(o))], o_db = O_[std::size_t(prev_he(o))];
+            const std::uint32_t tri0[3] = {std::uint32_t(c), std::uint32_t(a), std::uint32_t(d)};
+            const std::uint32_t tri1[3] = {std::uint32_t(d), std::uint32_t(b), std::uint32_t(c)};
+            for (int k = 0; k < 3; ++k) {
+                T_[std::size_t(3 * t0 + k)] = tri0[k];
+                T_[std::size_t(3 * t1 + k)] = tri1[k];
+            }
+            glue(3 * t0, o_ca);      // c -> a
+            glue(3 * t0 + 1, o_ad);  // a -> d
+            glue(3 * t0 + 2, 3 * t1 + 2);  // d -> c ~ c -> d
+            glue(3 * t1, o_db);      // d -> b
+            glue(3 * t1 + 1, o_bc);  // b -> c
+            set_vh(c, 3 * t0);
+            set_vh(a, 3 * t0 + 1);
+            set_vh(d, 3 * t1);
+            set_vh(b, 3 * t1 + 1);
             --valence_[std::size_t(a)];
             --valence_[std::size_t(b)];
             ++valence_[std::size_t(c)];
             ++valence_[std::size_t(d)];
-            lock_[std::size_t(a)] = lock_[std::size_t(b)] = lock_[std::size_t(c)] =
-                lock_[std::size_t(d)] = 1;
             changed = true;
             if (stats) ++stats->flips;
         }

@@ -28,12 +28,14 @@
 //      normal (∇f/|∇f|) removed; a boundary vertex moves toward the midpoint of its two
 //      boundary neighbours and keeps its z;
 //   5. projection to f = 0 with `newton_steps` steps p -= f ∇f / |∇f|² (central-difference
-//      gradient, step L/20); boundary vertices use the gradient without its z component, so they stay on
-//      their plane z = const (the open ends of a cut trunk, marching_tetrahedra.hpp).
-// Operations within one sweep never touch the same neighbourhood twice (the vertices of a
-// changed patch are locked until the sweep ends); sweeps repeat until nothing changes (at
-// most kRemeshSweeps), then the half-edge structure is rebuilt. The final normals are
-// ∇f/|∇f| at the final positions.
+//      gradient, step L/20); boundary vertices use the gradient without its z component, so
+//      they stay on their plane z = const (the open ends of a cut trunk,
+//      marching_tetrahedra.hpp).
+// Collapses and flips keep the half-edge twins current as they go, and sweep in index order
+// until nothing changes (at most kRemeshSweeps sweeps); splits lock the vertices of each split
+// patch until the sweep ends and the half-edges are rebuilt between split sweeps. Dead
+// triangles and vertices are compacted away (keeping index order) after each pass's
+// collapses. The final normals are ∇f/|∇f| at the final positions.
 //
 // Input: a manifold triangle mesh (mesh_topology.hpp) with finite positions and no
 // degenerate triangles (a repeated vertex or |cross| <= 1e-10·(longest edge)²); each is refused
@@ -58,8 +60,9 @@ struct IsotropicRemeshOptions {
     const void* user = nullptr;
 };
 
-// Sweeps of one step within a pass before it gives up (chosen here: every sweep locks the
-// neighbourhoods it changed, so a few sweeps finish what one cannot).
+// Sweeps of one step within a pass before it gives up (chosen here: a split sweep locks the
+// patches it changed, and a collapse can make a neighbouring edge short; measured on the
+// branch: at most 6 sweeps are needed).
 constexpr int kRemeshSweeps = 12;
 constexpr int kMaxRemeshVertices = 1 << 24;  // chosen here: ~1 GB of work arrays
 
