@@ -12,12 +12,14 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <vector>
 
 #include "bench.hpp"
 #include "shitsukan/bark/branch_shape.hpp"
+#include "shitsukan/geom/isotropic_remesh.hpp"
 #include "shitsukan/geom/marching_tetrahedra.hpp"
 
 using namespace shitsukan;
@@ -132,11 +134,33 @@ SHITSUKAN_BENCH(branch_mesh_vs_cgal) {
     bench::report("isotropic remesh of the branch (" + std::to_string(input.triangle_count()) +
                       " -> ~" + std::to_string(out.triangle_count()) + " triangles, 8 passes)",
                   ours, "CGAL isotropic_remeshing", peer);
+    // CGAL's result measured with the same yardstick.
+    TriangleMesh back;
+    {
+        std::vector<std::uint32_t> id(cg.number_of_vertices() + cg.number_of_removed_vertices());
+        for (CgalMesh::Vertex_index v : cg.vertices()) {
+            const Point& q = cg.point(v);
+            id[std::size_t(v)] = back.add_vertex(Vec3{float(q.x()), float(q.y()), float(q.z())});
+        }
+        for (CgalMesh::Face_index f : cg.faces()) {
+            std::uint32_t c[3];
+            int k = 0;
+            for (CgalMesh::Vertex_index v : cg.vertices_around_face(cg.halfedge(f)))
+                if (k < 3) c[k++] = id[std::size_t(v)];
+            back.add_triangle(c[0], c[1], c[2]);
+        }
+    }
+    MeshQuality cq;
+    Status cs = mesh_quality(back, &cq);
     const double tri = double(input.triangle_count());
     bench::info("remesher triangles per second",
                 "shitsukan " + std::to_string(long(tri / (ours * 1e-9))) + ", CGAL " +
                     std::to_string(long(tri / (peer * 1e-9))) + " (input triangles / s); ours " +
                     std::to_string(out.triangle_count()) + " triangles, edge CV " +
-                    format("%.3f", rs.after.edge_length_cv) + ", CGAL " +
-                    std::to_string(cg.number_of_faces()) + " triangles");
+                    format("%.3f, %.2f %% of triangles above 25 deg", rs.after.edge_length_cv,
+                           100.0 * rs.after.fraction_angle_above_25) +
+                    "; CGAL " + std::to_string(cg.number_of_faces()) + " triangles, " +
+                    (cs ? format("edge CV %.3f, %.2f %% above 25 deg", cq.edge_length_cv,
+                                 100.0 * cq.fraction_angle_above_25)
+                        : std::string("not measurable: ") + cs.message()));
 }
