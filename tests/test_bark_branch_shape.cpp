@@ -54,11 +54,14 @@ TEST_CASE("branch shape: the implicit function and its zones") {
             Vec3 g = branch_shape_gradient(s, p);
             const float e = 1e-3f;
             Vec3 num{(branch_shape_value(s, p + Vec3{e, 0, 0}) -
-                      branch_shape_value(s, p - Vec3{e, 0, 0})) / (2 * e),
+                      branch_shape_value(s, p - Vec3{e, 0, 0})) /
+                         (2 * e),
                      (branch_shape_value(s, p + Vec3{0, e, 0}) -
-                      branch_shape_value(s, p - Vec3{0, e, 0})) / (2 * e),
+                      branch_shape_value(s, p - Vec3{0, e, 0})) /
+                         (2 * e),
                      (branch_shape_value(s, p + Vec3{0, 0, e}) -
-                      branch_shape_value(s, p - Vec3{0, 0, e})) / (2 * e)};
+                      branch_shape_value(s, p - Vec3{0, 0, e})) /
+                         (2 * e)};
             CHECK(length(g - num) < 2e-2f);
         }
     LimbDistances d = limb_distances(s, {2.5f, 0.0f, 1.0f});
@@ -152,8 +155,9 @@ TEST_CASE("growth: on a regular cylinder, hoop edges grow at r_h + r_n/R, axial 
         for (int k = 0; k < 3; ++k) {
             std::uint32_t i = m.indices[3 * t + k], j = m.indices[3 * t + (k + 1) % 3];
             Vec3 e = normalize(m.positions[j] - m.positions[i]);
-            double rate = double(edge_growth_rate(g, m.positions[i], m.positions[j],
-                                                  m.normals[i], m.normals[j])) * g.duration;
+            double rate = double(edge_growth_rate(g, m.positions[i], m.positions[j], m.normals[i],
+                                                  m.normals[j])) *
+                          g.duration;
             if (std::fabs(e.y) < 1e-4f) {
                 CHECK(std::fabs(rate / hoop - 1.0) < 0.05);
                 CHECK(std::fabs(rate / hoop - 1.0) < 1e-4);  // exact for a chord: 1/R
@@ -225,8 +229,8 @@ TEST_CASE("growth: on a remeshed cylinder the field equals the cylinder model's 
     const float t = 100.0f;
     const double expect = double(isotropic_scaling(g, t) * kR + normal_offset(g, t));
     for (int v = 0; v < m.vertex_count(); ++v) {
-        Vec3 a = anisotropic_growth_anchor(g, m.positions[std::size_t(v)],
-                                           m.normals[std::size_t(v)], t);
+        Vec3 a =
+            anisotropic_growth_anchor(g, m.positions[std::size_t(v)], m.normals[std::size_t(v)], t);
         CHECK(std::fabs(std::sqrt(double(a.x * a.x + a.y * a.y)) / expect - 1.0) < 1e-4);
     }
 }

@@ -39,8 +39,8 @@ IsotropicRemeshOptions options(ImplicitFunction f, float L) {
 }  // namespace
 
 TEST_CASE("isotropic remesh: a marched sphere becomes near-uniform and stays a sphere") {
-    TriangleMesh m = marched(&unit_sphere, {-1.2f, -1.2f, -1.2f}, {1.2f, 1.2f, 1.2f}, 0.075f,
-                             false);
+    TriangleMesh m =
+        marched(&unit_sphere, {-1.2f, -1.2f, -1.2f}, {1.2f, 1.2f, 1.2f}, 0.075f, false);
     const float L = 0.15f;
     IsotropicRemeshStats st;
     Status s = isotropic_remesh(options(&unit_sphere, L), &m, &st);

@@ -195,7 +195,8 @@ TEST_CASE("mesh topology: non-manifold meshes are refused, counts of simple mesh
     CHECK(std::strstr(s.message(), "bow-tie") != nullptr);
     // Two triangles of opposite orientation on one edge.
     TriangleMesh flipped;
-    for (Vec3 p : {Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{1, 1, 0}}) flipped.add_vertex(p);
+    for (Vec3 p : {Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{1, 1, 0}})
+        flipped.add_vertex(p);
     flipped.add_triangle(0, 1, 2);
     flipped.add_triangle(1, 2, 3);
     CHECK(!mesh_topology(flipped, &topo));

@@ -84,8 +84,8 @@ struct EdgeRates {
 
 Status edge_rates(const TriangleMesh& mesh, const AnisotropicGrowth& g, EdgeRates* out) {
     std::vector<int> opp;
-    SHITSUKAN_TRY(halfedge_opposites(mesh.indices.data(), mesh.triangle_count(),
-                                     mesh.vertex_count(), &opp));
+    SHITSUKAN_TRY(
+        halfedge_opposites(mesh.indices.data(), mesh.triangle_count(), mesh.vertex_count(), &opp));
     for (int h = 0; h < int(opp.size()); ++h) {
         if (opp[std::size_t(h)] >= 0 && opp[std::size_t(h)] < h) continue;
         std::uint32_t i = mesh.indices[std::size_t(h)];
@@ -109,23 +109,29 @@ SHITSUKAN_FIGURE(hirota1998_fig10, "hirota1998", "fig10",
                  "(section y = 0), and the per-edge growth rate on the branch mesh") {
     const BranchShapeParams shape;
     const float L0 = ctx.quick() ? 0.6f : 0.33f;
-    ctx.given("growth", "isotropic enlargement of the whole (length) + enlargement along the "
-              "normal (thickness), Fig. 10", "hirota1998 §5.2");
+    ctx.given("growth",
+              "isotropic enlargement of the whole (length) + enlargement along the "
+              "normal (thickness), Fig. 10",
+              "hirota1998 §5.2");
     ctx.given("r_h, r_r (fig11)", "rates along the length and around the trunk",
               "hirota1998 §5.3 (values not legible: chosen below)");
-    ctx.chosen("shape", "trunk R_t = 2.5 cm, z in [0, 16]; branch R_b = 1.5 cm from (0, 0, 6) "
+    ctx.chosen("shape",
+               "trunk R_t = 2.5 cm, z in [0, 16]; branch R_b = 1.5 cm from (0, 0, 6) "
                "at 40 deg from vertical in the x-z plane; smooth-min blend k = 1 cm",
                "no scan: an implicit trunk + branch (MODEL.md §2.3)");
-    ctx.chosen("mesh", fmt("marching tetrahedra at L0/2, isotropic remeshing to L0 = %.2f cm "
-                           "(8 passes)%s", double(L0), ctx.quick() ? " [quick]" : ""),
+    ctx.chosen("mesh",
+               fmt("marching tetrahedra at L0/2, isotropic remeshing to L0 = %.2f cm "
+                   "(8 passes)%s",
+                   double(L0), ctx.quick() ? " [quick]" : ""),
                "the bubble-mesh substitute: near-uniform node spacing (§5.1)");
     ctx.chosen("c (scaling centre)", "(0, 0, 0), the base centre of the trunk", "MODEL.md §1.11");
-    ctx.chosen("panel (a) growth", fmt("s = %.2f, d = %.1f cm", double(kShowScale),
-                                        double(kShowOffset)),
+    ctx.chosen("panel (a) growth",
+               fmt("s = %.2f, d = %.1f cm", double(kShowScale), double(kShowOffset)),
                "magnified so the four outlines separate at figure scale");
-    ctx.chosen("panels (b, c) growth", fmt("r_h = %.3f, r_r = %.3f, T = %.0f -> r_n = (r_r - "
-                                            "r_h) R_t = %.3f cm", double(kRh), double(kRr),
-                                            double(kT), double((kRr - kRh) * shape.trunk_radius)),
+    ctx.chosen("panels (b, c) growth",
+               fmt("r_h = %.3f, r_r = %.3f, T = %.0f -> r_n = (r_r - "
+                   "r_h) R_t = %.3f cm",
+                   double(kRh), double(kRr), double(kT), double((kRr - kRh) * shape.trunk_radius)),
                "the fig11 values (MODEL.md §2.3)");
 
     auto t0 = std::chrono::steady_clock::now();
@@ -184,8 +190,10 @@ SHITSUKAN_FIGURE(hirota1998_fig10, "hirota1998", "fig10",
     const int W = 1350, H = 620;
     RgbImage img(W, H, Rgb8{255, 255, 255});
     RasterCanvas canvas(img.view());
-    canvas.text({12, 8}, "hirota1998 fig. 10 - anisotropic growth = isotropic scaling + "
-                         "normal offset", Rgb8{0, 0, 0}, 2);
+    canvas.text({12, 8},
+                "hirota1998 fig. 10 - anisotropic growth = isotropic scaling + "
+                "normal offset",
+                Rgb8{0, 0, 0}, 2);
     {
         RasterCanvas pa(img.view().subview(0, 30, 470, H - 30));
         // Equal scales on x and z: 18 cm x 22 cm in a 380 x 464 px data area.
@@ -294,15 +302,15 @@ SHITSUKAN_FIGURE(hirota1998_fig10, "hirota1998", "fig10",
     const int PW = 390, PH = 540;
     {
         RgbView vb = img.view().subview(475, 50, PW, PH);
-        Camera cam = perspective_camera({8.0f, -38.0f, 15.0f}, {4.0f, 0.0f, 8.3f}, {0, 0, 1},
-                                        32.0f, PW, PH);
+        Camera cam =
+            perspective_camera({8.0f, -38.0f, 15.0f}, {4.0f, 0.0f, 8.3f}, {0, 0, 1}, 32.0f, PW, PH);
         SHITSUKAN_TRY(render(colored, cam, vb, true, nullptr));
         canvas.text({480, 36}, "(b) vertex mean of edge rates (fig11 growth)", Rgb8{0, 0, 0});
     }
     {
         RgbView vc = img.view().subview(475 + PW + 5, 50, PW, PH);
-        Camera cam = perspective_camera({6.5f, -19.0f, 11.0f}, {3.0f, 0.0f, 8.2f}, {0, 0, 1},
-                                        36.0f, PW, PH);
+        Camera cam =
+            perspective_camera({6.5f, -19.0f, 11.0f}, {3.0f, 0.0f, 8.2f}, {0, 0, 1}, 36.0f, PW, PH);
         FloatImage depth;
         SHITSUKAN_TRY(render(mesh, cam, vc, false, &depth));
         FrameBand band = full_frame_band(vc, depth.view());
@@ -340,37 +348,39 @@ SHITSUKAN_FIGURE(hirota1998_fig10, "hirota1998", "fig10",
     const bool hoop_ok = std::fabs(hoop_t / hoop_t_expect - 1.0) < 0.05;
     const bool axial_ok = std::fabs(axial_t / double(g.r_h) - 1.0) < 0.05;
     const bool branch_ok = std::fabs(hoop_b / hoop_b_expect - 1.0) < 0.05;
-    ctx.note(fmt("Mesh: %d nodes, %d triangles (marching tetrahedra gave %d / %d), edge mean "
-                 "%.3f cm, CV %.3f, min angle %.1f deg, %.2f %% of triangles above 25 deg; "
-                 "%d boundary loops, Euler characteristic %d; built in %.3f s.",
-                 q.vertices, q.triangles, ms.marching_vertices, ms.marching_triangles,
-                 q.edge_length_mean, q.edge_length_cv, q.min_angle_degrees,
-                 100.0 * q.fraction_angle_above_25, ms.boundary_loops, ms.euler_characteristic,
-                 mesh_seconds));
-    ctx.note(fmt("(a) trunk width at z = 3 cm: %.3f / %.3f / %.3f / %.3f cm, expected 2R, 2sR, "
-                 "2(R + d), 2(sR + d) = %.3f / %.3f / %.3f / %.3f (largest error %.2f %%, %s); "
-                 "trunk height %.3f (scaling only) and %.3f (both) = s x 16 = %.1f (%s).",
-                 double(width[0]), double(width[1]), double(width[2]), double(width[3]),
-                 double(width_expect[0]), double(width_expect[1]), double(width_expect[2]),
-                 double(width_expect[3]), 100.0 * double(width_err), widths_ok ? "ok" : "FAIL",
-                 double(height_iso), double(height_both), double(kShowScale * shape.height),
-                 height_ok ? "ok" : "FAIL"));
-    ctx.note(fmt("(b, c) eps*T on the trunk below the crotch: hoop edges (|e.z| < 0.15, %d) "
-                 "%.4f vs r_h + r_n/R_t = %.4f (%s), axial edges (|e.z| > 0.97, %d) %.4f vs "
-                 "r_h = %.4f (%s); branch hoop edges (|e.u| < 0.15, %d) %.4f vs r_h + r_n/R_b "
-                 "= %.4f (%s): the thinner limb grows faster around (sec. 5.2's drawback).",
-                 n_hoop_t, hoop_t, hoop_t_expect, hoop_ok ? "ok" : "FAIL", n_axial_t, axial_t,
-                 double(g.r_h), axial_ok ? "ok" : "FAIL", n_hoop_b, hoop_b, hoop_b_expect,
-                 branch_ok ? "ok" : "FAIL"));
-    ctx.note(fmt("The magnified offset d = %.1f cm exceeds the concave radius of curvature in the "
-                 "upper crotch, where the offset outline folds into a small swallowtail (%d "
-                 "triangles turn over); at fig11's d(T) = %.2f cm %d do.",
-                 double(kShowOffset), folded_shown, double((kRr - kRh) * shape.trunk_radius),
-                 folded_fig11));
-    ctx.note("Look for: (a) scaling alone stretches the whole shape away from c (taller and "
-             "wider), the normal offset alone thickens both limbs by the same distance, both "
-             "together give the anisotropic growth; (b, c) the branch is hotter than the trunk, "
-             "and on each limb the edges around it are hotter than those along it.");
+    ctx.note(fmt(
+        "Mesh: %d nodes, %d triangles (marching tetrahedra gave %d / %d), edge mean "
+        "%.3f cm, CV %.3f, min angle %.1f deg, %.2f %% of triangles above 25 deg; "
+        "%d boundary loops, Euler characteristic %d; built in %.3f s.",
+        q.vertices, q.triangles, ms.marching_vertices, ms.marching_triangles, q.edge_length_mean,
+        q.edge_length_cv, q.min_angle_degrees, 100.0 * q.fraction_angle_above_25, ms.boundary_loops,
+        ms.euler_characteristic, mesh_seconds));
+    ctx.note(
+        fmt("(a) trunk width at z = 3 cm: %.3f / %.3f / %.3f / %.3f cm, expected 2R, 2sR, "
+            "2(R + d), 2(sR + d) = %.3f / %.3f / %.3f / %.3f (largest error %.2f %%, %s); "
+            "trunk height %.3f (scaling only) and %.3f (both) = s x 16 = %.1f (%s).",
+            double(width[0]), double(width[1]), double(width[2]), double(width[3]),
+            double(width_expect[0]), double(width_expect[1]), double(width_expect[2]),
+            double(width_expect[3]), 100.0 * double(width_err), widths_ok ? "ok" : "FAIL",
+            double(height_iso), double(height_both), double(kShowScale * shape.height),
+            height_ok ? "ok" : "FAIL"));
+    ctx.note(fmt(
+        "(b, c) eps*T on the trunk below the crotch: hoop edges (|e.z| < 0.15, %d) "
+        "%.4f vs r_h + r_n/R_t = %.4f (%s), axial edges (|e.z| > 0.97, %d) %.4f vs "
+        "r_h = %.4f (%s); branch hoop edges (|e.u| < 0.15, %d) %.4f vs r_h + r_n/R_b "
+        "= %.4f (%s): the thinner limb grows faster around (sec. 5.2's drawback).",
+        n_hoop_t, hoop_t, hoop_t_expect, hoop_ok ? "ok" : "FAIL", n_axial_t, axial_t, double(g.r_h),
+        axial_ok ? "ok" : "FAIL", n_hoop_b, hoop_b, hoop_b_expect, branch_ok ? "ok" : "FAIL"));
+    ctx.note(fmt(
+        "The magnified offset d = %.1f cm exceeds the concave radius of curvature in the "
+        "upper crotch, where the offset outline folds into a small swallowtail (%d "
+        "triangles turn over); at fig11's d(T) = %.2f cm %d do.",
+        double(kShowOffset), folded_shown, double((kRr - kRh) * shape.trunk_radius), folded_fig11));
+    ctx.note(
+        "Look for: (a) scaling alone stretches the whole shape away from c (taller and "
+        "wider), the normal offset alone thickens both limbs by the same distance, both "
+        "together give the anisotropic growth; (b, c) the branch is hotter than the trunk, "
+        "and on each limb the edges around it are hotter than those along it.");
     if (!ctx.quick() && !(widths_ok && height_ok && hoop_ok && axial_ok && branch_ok))
         return Status::error(StatusCode::invalid_argument,
                              "fig10: a measured check failed (see the notes)");

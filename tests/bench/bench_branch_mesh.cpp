@@ -108,8 +108,9 @@ SHITSUKAN_BENCH(branch_mesh_vs_cgal) {
     const long long nodes = (long long)(ms.nx + 1) * (ms.ny + 1) * (ms.nz + 1);
     bench::info(format("marching tetrahedra, branch shape h = %.3f cm", double(mt.spacing)),
                 std::to_string(nodes) + " nodes -> " + std::to_string(input.triangle_count()) +
-                    " triangles in " + format("%.2f ms (%.0f %% of it sampling f on the grid)",
-                                              march * 1e-6, 100.0 * sample / march));
+                    " triangles in " +
+                    format("%.2f ms (%.0f %% of it sampling f on the grid)", march * 1e-6,
+                           100.0 * sample / march));
 
     IsotropicRemeshOptions ro;
     ro.target_edge_length = L0;
@@ -126,9 +127,8 @@ SHITSUKAN_BENCH(branch_mesh_vs_cgal) {
         to_cgal(input, &cg);
         CGAL::Polygon_mesh_processing::isotropic_remeshing(
             faces(cg), double(L0), cg,
-            CGAL::parameters::number_of_iterations(8)
-                .relax_constraints(true)
-                .projection_functor(CgalProjection{&cg, L0}));
+            CGAL::parameters::number_of_iterations(8).relax_constraints(true).projection_functor(
+                CgalProjection{&cg, L0}));
         bench::sink(cg.number_of_faces());
     });
     bench::report("isotropic remesh of the branch (" + std::to_string(input.triangle_count()) +

@@ -11,8 +11,8 @@ namespace shitsukan {
 namespace {
 
 struct LimbGeometry {
-    float a, b;      // f_trunk, f_branch
-    Vec3 ga, gb;     // their gradients (unit)
+    float a, b;   // f_trunk, f_branch
+    Vec3 ga, gb;  // their gradients (unit)
 };
 
 // u = branch_axis_direction(s), passed in so the mesher computes its sine and cosine once.
@@ -54,9 +54,9 @@ float shape_function(Vec3 p, const void* user) {
 }  // namespace
 
 Status validate_branch_shape(const BranchShapeParams& s) {
-    const float values[] = {s.trunk_radius, s.height, s.branch_radius, s.branch_origin.x,
-                            s.branch_origin.y, s.branch_origin.z, s.branch_angle_degrees,
-                            s.blend};
+    const float values[] = {
+        s.trunk_radius,    s.height,          s.branch_radius,        s.branch_origin.x,
+        s.branch_origin.y, s.branch_origin.z, s.branch_angle_degrees, s.blend};
     for (float v : values)
         if (!is_finite(v))
             return Status::error(StatusCode::invalid_argument,

@@ -4,7 +4,7 @@
 // Manual
 //   BranchShapeParams shape;                               // MODEL.md §2.3 values
 //   TriangleMesh mesh;  BranchMeshStats stats;
-//   Status s = make_branch_mesh(shape, 0.33f, &mesh, &stats);   // ~3,700 nodes, normals = ∇f/|∇f|
+//   Status s = make_branch_mesh(shape, 0.33f, &mesh, &stats);   // ~3,500 nodes, n = ∇f/|∇f|
 //   float f = branch_shape_value(shape, p);                // < 0 inside the wood
 //   LimbDistances d = limb_distances(shape, p);            // trunk / branch zones (fig11)
 //
@@ -85,8 +85,7 @@ LimbDistances limb_distances(const BranchShapeParams& params, Vec3 p);
 
 // The box the shape is meshed in: z in [0, height] exactly, x and y with a margin of
 // blend/4 + 2·spacing around the limbs.
-void branch_shape_box(const BranchShapeParams& params, float spacing, Vec3* box_min,
-                      Vec3* box_max);
+void branch_shape_box(const BranchShapeParams& params, float spacing, Vec3* box_min, Vec3* box_max);
 
 struct BranchMeshStats {
     int marching_vertices = 0, marching_triangles = 0;
@@ -103,10 +102,10 @@ Status make_branch_mesh(const BranchShapeParams& params, float target_edge_lengt
 
 // ---- §5.2 anisotropic growth ----
 struct AnisotropicGrowth {
-    float r_h = 0.010f;     // isotropic (length) growth over the duration (MODEL.md §2.3)
-    float r_n = 0.05f;      // normal offset over the duration, cm ((r_r - r_h)·R_t)
+    float r_h = 0.010f;       // isotropic (length) growth over the duration (MODEL.md §2.3)
+    float r_n = 0.05f;        // normal offset over the duration, cm ((r_r - r_h)·R_t)
     float duration = 100.0f;  // T
-    Vec3 centre{0, 0, 0};   // c: the fixed point of the scaling (the trunk's base centre)
+    Vec3 centre{0, 0, 0};     // c: the fixed point of the scaling (the trunk's base centre)
 };
 
 Status validate_growth(const AnisotropicGrowth& growth);

@@ -30,14 +30,15 @@ Status check_input(const TriangleMesh& mesh, std::vector<int>* opposite) {
     for (int t = 0; t < mesh.triangle_count(); ++t) {
         Vec3 a = mesh.positions[mesh.indices[3 * t]], b = mesh.positions[mesh.indices[3 * t + 1]],
              c = mesh.positions[mesh.indices[3 * t + 2]];
-        double l2 = std::fmax(double(length_squared(b - a)),
-                              std::fmax(double(length_squared(c - b)), double(length_squared(a - c))));
+        double l2 =
+            std::fmax(double(length_squared(b - a)),
+                      std::fmax(double(length_squared(c - b)), double(length_squared(a - c))));
         if (!(double(length(cross(b - a, c - a))) > kDegenerate * l2))
             return Status::error(StatusCode::degenerate,
                                  "mesh: triangle %d is degenerate (zero area: (%g, %g, %g), "
                                  "(%g, %g, %g), (%g, %g, %g))",
-                                 t, double(a.x), double(a.y), double(a.z), double(b.x),
-                                 double(b.y), double(b.z), double(c.x), double(c.y), double(c.z));
+                                 t, double(a.x), double(a.y), double(a.z), double(b.x), double(b.y),
+                                 double(b.z), double(c.x), double(c.y), double(c.z));
     }
     return Status::success();
 }
@@ -414,8 +415,10 @@ private:
             if (o < h) continue;  // boundary edges (o < 0) never flip; each edge once
             const int a = from(h), b = to(h), c = from(prev_he(h)), d = from(prev_he(o));
             if (c == d) continue;
-            const int before = deviation(a, 0) + deviation(b, 0) + deviation(c, 0) + deviation(d, 0);
-            const int after = deviation(a, -1) + deviation(b, -1) + deviation(c, 1) + deviation(d, 1);
+            const int before =
+                deviation(a, 0) + deviation(b, 0) + deviation(c, 0) + deviation(d, 0);
+            const int after =
+                deviation(a, -1) + deviation(b, -1) + deviation(c, 1) + deviation(d, 1);
             if (after >= before) continue;
             if (valence_[std::size_t(a)] <= (boundary_[std::size_t(a)] ? 2 : 3) ||
                 valence_[std::size_t(b)] <= (boundary_[std::size_t(b)] ? 2 : 3))
@@ -439,11 +442,11 @@ private:
                 T_[std::size_t(3 * t0 + k)] = tri0[k];
                 T_[std::size_t(3 * t1 + k)] = tri1[k];
             }
-            glue(3 * t0, o_ca);      // c -> a
-            glue(3 * t0 + 1, o_ad);  // a -> d
+            glue(3 * t0, o_ca);            // c -> a
+            glue(3 * t0 + 1, o_ad);        // a -> d
             glue(3 * t0 + 2, 3 * t1 + 2);  // d -> c ~ c -> d
-            glue(3 * t1, o_db);      // d -> b
-            glue(3 * t1 + 1, o_bc);  // b -> c
+            glue(3 * t1, o_db);            // d -> b
+            glue(3 * t1 + 1, o_bc);        // b -> c
             set_vh(c, 3 * t0);
             set_vh(a, 3 * t0 + 1);
             set_vh(d, 3 * t1);
@@ -466,7 +469,8 @@ private:
             one_ring(v, &ring_a_, &tris_a_);
             if (boundary_[std::size_t(v)]) {
                 // The two boundary neighbours: the first and the last of the fan.
-                Vec3 q = (P_[std::size_t(ring_a_.front())] + P_[std::size_t(ring_a_.back())]) * 0.5f;
+                Vec3 q =
+                    (P_[std::size_t(ring_a_.front())] + P_[std::size_t(ring_a_.back())]) * 0.5f;
                 Vec3 np = p + (q - p) * lambda;
                 np.z = p.z;
                 moved[std::size_t(v)] = np;
@@ -524,8 +528,10 @@ Status isotropic_remesh(const IsotropicRemeshOptions& options, TriangleMesh* mes
                              "remesh: target_edge_length must be > 0 and finite (got %g)",
                              double(L));
     if (options.passes < 1 || options.passes > 100)
-        return Status::error(StatusCode::invalid_argument, "remesh: passes must be in [1, 100] "
-                             "(got %d)", options.passes);
+        return Status::error(StatusCode::invalid_argument,
+                             "remesh: passes must be in [1, 100] "
+                             "(got %d)",
+                             options.passes);
     if (options.newton_steps < 0 || options.newton_steps > 20)
         return Status::error(StatusCode::invalid_argument,
                              "remesh: newton_steps must be in [0, 20] (got %d)",

@@ -71,10 +71,10 @@ struct MeshQuality {
     int triangles = 0;
     int boundary_vertices = 0;
     double edge_length_mean = 0;
-    double edge_length_cv = 0;          // standard deviation / mean over the unique edges
+    double edge_length_cv = 0;  // standard deviation / mean over the unique edges
     double edge_length_min = 0, edge_length_max = 0;
-    double min_angle_degrees = 0;       // the smallest angle of any triangle
-    double fraction_angle_above_25 = 0; // triangles whose smallest angle exceeds 25 degrees
+    double min_angle_degrees = 0;        // the smallest angle of any triangle
+    double fraction_angle_above_25 = 0;  // triangles whose smallest angle exceeds 25 degrees
     double area = 0;
 };
 

@@ -18,20 +18,20 @@ constexpr int kEdgeType[8] = {-1, 0, 1, 2, 3, 4, 5, 6};
 constexpr int kEdgeTypes = 7;
 constexpr int kPlanarTypes = 3;  // x, y, xy: the edges lying in one z layer
 
-constexpr float kMinT = 1e-4f;   // see the header: no zero-length edges
+constexpr float kMinT = 1e-4f;  // see the header: no zero-length edges
 
 // Even permutations of (0, 1, 2, 3) that bring a given vertex first / a given pair first.
 constexpr int kSingleFirst[4][4] = {{0, 1, 2, 3}, {1, 0, 3, 2}, {2, 0, 1, 3}, {3, 0, 2, 1}};
 // The same for a pair, indexed by the pair's bit mask.
 void pair_first(int mask, int* order) {
-    static constexpr int table[16][4] = {
-        {0, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}, {0, 1, 2, 3},  // 3 = {0,1}
-        {0, 0, 0, 0}, {0, 2, 3, 1},                                // 5 = {0,2}
-        {1, 2, 0, 3},                                              // 6 = {1,2}
-        {0, 0, 0, 0}, {0, 0, 0, 0}, {0, 3, 1, 2},                  // 9 = {0,3}
-        {1, 3, 2, 0},                                              // 10 = {1,3}
-        {0, 0, 0, 0}, {2, 3, 0, 1},                                // 12 = {2,3}
-        {0, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
+    static constexpr int table[16][4] = {{0, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0},
+                                         {0, 1, 2, 3},                              // 3 = {0,1}
+                                         {0, 0, 0, 0}, {0, 2, 3, 1},                // 5 = {0,2}
+                                         {1, 2, 0, 3},                              // 6 = {1,2}
+                                         {0, 0, 0, 0}, {0, 0, 0, 0}, {0, 3, 1, 2},  // 9 = {0,3}
+                                         {1, 3, 2, 0},                              // 10 = {1,3}
+                                         {0, 0, 0, 0}, {2, 3, 0, 1},                // 12 = {2,3}
+                                         {0, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
     for (int k = 0; k < 4; ++k) order[k] = table[mask][k];
 }
 
@@ -53,15 +53,14 @@ Status marching_tetrahedra(ImplicitFunction f, const void* user,
     const Vec3 lo = options.box_min, hi = options.box_max;
     if (!is_finite(lo) || !is_finite(hi))
         return Status::error(StatusCode::invalid_argument,
-                             "marching: box (%g, %g, %g)-(%g, %g, %g) is not finite",
-                             double(lo.x), double(lo.y), double(lo.z), double(hi.x),
-                             double(hi.y), double(hi.z));
+                             "marching: box (%g, %g, %g)-(%g, %g, %g) is not finite", double(lo.x),
+                             double(lo.y), double(lo.z), double(hi.x), double(hi.y), double(hi.z));
     if (!(hi.x > lo.x && hi.y > lo.y && hi.z > lo.z))
         return Status::error(StatusCode::invalid_argument,
                              "marching: box_max (%g, %g, %g) must exceed box_min (%g, %g, %g) "
                              "on every axis",
-                             double(hi.x), double(hi.y), double(hi.z), double(lo.x),
-                             double(lo.y), double(lo.z));
+                             double(hi.x), double(hi.y), double(hi.z), double(lo.x), double(lo.y),
+                             double(lo.z));
     const float h = options.spacing;
     if (!is_finite(h) || !(h > 0.0f))
         return Status::error(StatusCode::invalid_argument,
@@ -158,10 +157,10 @@ Status marching_tetrahedra(ImplicitFunction f, const void* user,
                     const float f0 = v[c0], f1 = v[c1];
                     float t = f0 / (f0 - f1);
                     t = t < kMinT ? kMinT : (t > 1.0f - kMinT ? 1.0f - kMinT : t);
-                    const Vec3 p0 = node_position(i + (c0 & 1), j + ((c0 >> 1) & 1),
-                                                  k + ((c0 >> 2) & 1));
-                    const Vec3 p1 = node_position(i + (c1 & 1), j + ((c1 >> 1) & 1),
-                                                  k + ((c1 >> 2) & 1));
+                    const Vec3 p0 =
+                        node_position(i + (c0 & 1), j + ((c0 >> 1) & 1), k + ((c0 >> 2) & 1));
+                    const Vec3 p1 =
+                        node_position(i + (c1 & 1), j + ((c1 >> 1) & 1), k + ((c1 >> 2) & 1));
                     Vec3 p = p0 + (p1 - p0) * t;
                     // Exact rims on the box planes the edge lies in.
                     for (int a = 0; a < 3; ++a)

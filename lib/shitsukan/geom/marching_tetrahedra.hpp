@@ -19,8 +19,8 @@
 //   - Every cube is cut into 6 tetrahedra around its main diagonal (0,0,0)-(1,1,1) (Kuhn /
 //     Freudenthal). The same diagonal in every cube makes neighbouring cubes cut their shared
 //     face along the same diagonal, so the tetrahedra fill the box face to face.
-//   - Inside means f < 0; f = 0 and NaN count as outside. A tetrahedron with 1 or 3 nodes inside gives
-//     one triangle, with 2 inside a quad split along its shorter diagonal.
+//   - Inside means f < 0; f = 0 and NaN count as outside. A tetrahedron with 1 or 3 nodes
+//     inside gives one triangle, with 2 inside a quad split along its shorter diagonal.
 //   - A surface vertex sits on a grid edge (an axis edge, a face diagonal or the body diagonal)
 //     at the linear zero of f, t = f0 / (f0 - f1), clamped to [1e-4, 1 - 1e-4] (chosen here:
 //     no zero-length edges when f vanishes at a node). Vertices are welded by grid-edge id, so
@@ -52,9 +52,9 @@ using ImplicitFunction = float (*)(Vec3 p, const void* user);
 struct MarchingTetrahedraOptions {
     Vec3 box_min{-1, -1, -1};
     Vec3 box_max{1, 1, 1};
-    float spacing = 0.1f;       // grid spacing h (the largest used on any axis)
-    bool cut_z_min = false;     // leave the surface open at z = box_min.z
-    bool cut_z_max = false;     // leave the surface open at z = box_max.z
+    float spacing = 0.1f;    // grid spacing h (the largest used on any axis)
+    bool cut_z_min = false;  // leave the surface open at z = box_min.z
+    bool cut_z_max = false;  // leave the surface open at z = box_max.z
     bool compute_normals = true;
 };
 
@@ -62,9 +62,9 @@ struct MarchingTetrahedraOptions {
 constexpr long long kMaxMarchingNodes = 1LL << 27;
 
 struct MarchingTetrahedraStats {
-    int nx = 0, ny = 0, nz = 0;      // cubes per axis
-    Vec3 cell{0, 0, 0};              // the spacing used per axis
-    long long evaluations = 0;       // calls of f (grid nodes + normals)
+    int nx = 0, ny = 0, nz = 0;  // cubes per axis
+    Vec3 cell{0, 0, 0};          // the spacing used per axis
+    long long evaluations = 0;   // calls of f (grid nodes + normals)
 };
 
 Status marching_tetrahedra(ImplicitFunction f, const void* user,
@@ -73,11 +73,11 @@ Status marching_tetrahedra(ImplicitFunction f, const void* user,
 
 // Convenience for lambdas and functors taking (Vec3) and returning float.
 template <class F, class = decltype(float(std::declval<const F&>()(Vec3{})))>
-Status marching_tetrahedra(const F& f, const MarchingTetrahedraOptions& options,
-                           TriangleMesh* out, MarchingTetrahedraStats* stats = nullptr) {
+Status marching_tetrahedra(const F& f, const MarchingTetrahedraOptions& options, TriangleMesh* out,
+                           MarchingTetrahedraStats* stats = nullptr) {
     return marching_tetrahedra(
-        [](Vec3 p, const void* u) -> float { return float((*static_cast<const F*>(u))(p)); },
-        &f, options, out, stats);
+        [](Vec3 p, const void* u) -> float { return float((*static_cast<const F*>(u))(p)); }, &f,
+        options, out, stats);
 }
 
 // The central-difference gradient of f at p with step `step` (6 calls of f).

@@ -14,8 +14,8 @@ Status halfedge_opposites(const std::uint32_t* indices, int triangles, int verte
                           std::vector<int>* opposite) {
     if (triangles < 0 || vertex_count < 0 || (triangles > 0 && indices == nullptr))
         return Status::error(StatusCode::invalid_argument,
-                             "mesh: %d triangles, %d vertices, indices %s", triangles,
-                             vertex_count, indices ? "given" : "missing");
+                             "mesh: %d triangles, %d vertices, indices %s", triangles, vertex_count,
+                             indices ? "given" : "missing");
     const int halfedges = 3 * triangles;
     for (int t = 0; t < triangles; ++t) {
         std::uint32_t a = indices[3 * t], b = indices[3 * t + 1], c = indices[3 * t + 2];

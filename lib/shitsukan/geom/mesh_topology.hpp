@@ -35,8 +35,8 @@ namespace shitsukan {
 
 struct MeshTopology {
     bool manifold = false;
-    int vertices = 0;         // referenced by at least one triangle
-    int unreferenced = 0;     // positions no triangle uses
+    int vertices = 0;      // referenced by at least one triangle
+    int unreferenced = 0;  // positions no triangle uses
     int edges = 0;
     int triangles = 0;
     int boundary_edges = 0;
