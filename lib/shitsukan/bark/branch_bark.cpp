@@ -105,10 +105,31 @@ Status mesh_springs(const TriangleMesh& mesh, std::vector<ConnectionTriangle>* t
 Status build_branch_bark(const BranchBarkParams& params, BranchBark* out) {
     if (!out) return Status::error(StatusCode::invalid_argument, "build_branch_bark: out is null");
     SHITSUKAN_TRY(validate(params));
+    TriangleMesh mesh;
+    BranchMeshStats stats;
+    SHITSUKAN_TRY(make_branch_mesh(params.shape, params.edge_length, &mesh, &stats));
+    SHITSUKAN_TRY(build_bark_on_mesh(params, mesh, out));
+    out->mesh_stats = stats;
+    return Status::success();
+}
+
+Status build_bark_on_mesh(const BranchBarkParams& params, const TriangleMesh& mesh,
+                          BranchBark* out) {
+    if (!out) return Status::error(StatusCode::invalid_argument, "build_bark_on_mesh: out is null");
+    SHITSUKAN_TRY(validate(params));
+    if (mesh.normals.size() != mesh.positions.size())
+        return Status::error(StatusCode::invalid_argument,
+                             "build_bark_on_mesh: %zu normals for %zu vertices (one per vertex "
+                             "needed: the growth offsets along them)",
+                             mesh.normals.size(), mesh.positions.size());
+    for (std::size_t i = 0; i < mesh.normals.size(); ++i)
+        if (!is_finite(mesh.normals[i]) || std::fabs(length(mesh.normals[i]) - 1.0f) > 1e-3f)
+            return Status::error(StatusCode::invalid_argument,
+                                 "build_bark_on_mesh: normal %zu is not a unit vector", i);
     BranchBark& b = *out;
     b = BranchBark{};
     b.params = params;
-    SHITSUKAN_TRY(make_branch_mesh(params.shape, params.edge_length, &b.mesh, &b.mesh_stats));
+    b.mesh = mesh;
     std::vector<std::uint32_t> edge_nodes;
     SHITSUKAN_TRY(mesh_springs(b.mesh, &b.triangles, &edge_nodes));
     const int n = b.mesh.vertex_count(), m = int(edge_nodes.size() / 2);
@@ -126,6 +147,13 @@ Status build_branch_bark(const BranchBarkParams& params, BranchBark* out) {
     SpringNetwork& net = b.net;
     net.dim = 3;
     net.X = b.mesh.positions;
+    net.node_key.resize(std::size_t(n));  // canonical: from the position's bits
+    for (int i = 0; i < n; ++i) {
+        const Vec3 x = b.mesh.positions[std::size_t(i)];
+        std::uint64_t h = hash_start(params.seed, kStreamBranchSprings + 100);
+        for (float v : {x.x, x.y, x.z}) h = hash_add(h, bits(v));
+        net.node_key[std::size_t(i)] = h;
+    }
     net.k_anchor.resize(std::size_t(n));
     for (int i = 0; i < n; ++i)
         net.k_anchor[std::size_t(i)] = shear_spring_constant(params.G, b.node_area[std::size_t(i)],

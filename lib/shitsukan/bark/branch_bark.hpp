@@ -68,6 +68,10 @@ struct BranchBark {
 };
 
 Status build_branch_bark(const BranchBarkParams& params, BranchBark* out);
+// The same on a mesh of your own (positions, unit normals per vertex, a manifold): the bark of
+// any shape. params.shape is used only for the growth's centre if you set it there.
+Status build_bark_on_mesh(const BranchBarkParams& params, const TriangleMesh& mesh,
+                          BranchBark* out);
 Status grow_branch_bark(BranchBark& bark, const CrackRunOptions& options, CrackRun* out);
 
 // Node i at time t: its anchor A_i(t) plus t·W_i.

@@ -88,7 +88,8 @@ Status run_cracking(SpringNetwork& net, float T, float tol, const CrackRunOption
         out->breaks.push_back({s, t});
         tree.set(s, kNever);
         const BarkSpring& sp = net.springs[s];
-        const std::uint32_t seeds[2] = {std::min(sp.i, sp.j), std::max(sp.i, sp.j)};
+        std::uint32_t seeds[2] = {sp.i, sp.j};
+        canonical_order(net, seeds, 2);
         touched.clear();
         SHITSUKAN_TRY(relax(net, seeds, 2, tol, &touched));
         dirty.clear();

@@ -108,11 +108,27 @@ Status finalize_network(SpringNetwork& net) {
                   [&](const NetworkEntry& a, const NetworkEntry& b) {
                       return net.springs[a.s].key < net.springs[b.s].key;
                   });
+    if (!net.node_key.empty() && int(net.node_key.size()) != n)
+        return Status::error(StatusCode::invalid_argument,
+                             "spring network: %zu node keys for %d nodes", net.node_key.size(), n);
+    net.sweep_order.resize(static_cast<std::size_t>(n));
+    for (int p = 0; p < n; ++p) net.sweep_order[std::size_t(p)] = std::uint32_t(p);
+    canonical_order(net, net.sweep_order.data(), n);
     net.W.assign(static_cast<std::size_t>(n), Vec3{});
     net.flags.assign(static_cast<std::size_t>(n), 0);
     net.queue.assign(static_cast<std::size_t>(n), 0);
     net.updates = 0;
     return Status::success();
+}
+
+void canonical_order(const SpringNetwork& net, std::uint32_t* nodes, int count) {
+    if (net.node_key.empty()) {
+        std::sort(nodes, nodes + count);
+        return;
+    }
+    std::sort(nodes, nodes + count, [&](std::uint32_t a, std::uint32_t b) {
+        return net.node_key[a] != net.node_key[b] ? net.node_key[a] < net.node_key[b] : a < b;
+    });
 }
 
 void break_spring(SpringNetwork& net, std::uint32_t s, float t_break) {
@@ -163,8 +179,7 @@ Status solve_full(SpringNetwork& net, float tol, int max_sweeps) {
     float worst = 0.0f;
     for (int sweep = 0; sweep < max_sweeps; ++sweep) {
         worst = 0.0f;
-        for (int p = 0; p < net.node_count(); ++p)
-            worst = std::max(worst, update_node(net, std::uint32_t(p)));
+        for (std::uint32_t p : net.sweep_order) worst = std::max(worst, update_node(net, p));
         if (worst <= tol2) return Status::success();
     }
     return Status::error(StatusCode::not_supported,

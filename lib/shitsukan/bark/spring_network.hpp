@@ -69,6 +69,10 @@ struct SpringNetwork {
     std::vector<float> k_anchor;         // shear spring of each node (> 0)
     std::vector<BarkSpring> springs;
     std::vector<Vec3> W;                 // displacement per unit time relative to the anchor
+    // Canonical node keys (optional; empty = the node index). Sweeps and seeds go in this
+    // order, so renumbering the nodes of a mesh changes no bit of the result.
+    std::vector<std::uint64_t> node_key;
+    std::vector<std::uint32_t> sweep_order;  // nodes sorted by key (finalize_network)
     // CSR adjacency built by finalize_network: node p's entries adj[adj_begin[p] ..
     // adj_begin[p + 1]), sorted by spring key.
     std::vector<std::uint32_t> adj_begin;
@@ -102,7 +106,10 @@ float update_node(SpringNetwork& net, std::uint32_t p);
 // max_sweeps: then a not_supported Status says how far it got).
 Status solve_full(SpringNetwork& net, float tol, int max_sweeps);
 
-// Residual-driven relaxation from the seed nodes: a node that moves by more than tol pushes its
+// Sorts nodes into canonical order (by node_key) in place.
+void canonical_order(const SpringNetwork& net, std::uint32_t* nodes, int count);
+
+// Residual-driven relaxation from the seed nodes (taken in the given order): a node that moves by more than tol pushes its
 // intact neighbours. Nodes updated are appended to *touched once each (may be null). More
 // than max_updates_per_node·N updates returns an error instead of looping forever.
 Status relax(SpringNetwork& net, const std::uint32_t* seeds, int seed_count, float tol,
