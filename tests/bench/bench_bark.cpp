@@ -2,6 +2,7 @@
 // (one local re-solve per break) against the naive way: a full relaxation of the lattice after
 // every break. The naive cost is measured as one full solve of the intact lattice from rest
 // times the number of breaks (a lower bound: a cracked lattice relaxes more slowly).
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -61,4 +62,42 @@ SHITSUKAN_BENCH(bark_species) {
     bench::report("bark camphor 128x64, per break: event-driven local re-solve vs a full "
                   "relaxation",
                   camphor_run / camphor_breaks * 1e9, "full Gauss-Seidel solve", full_solve * 1e9);
+}
+
+// hirota1998 §4 and §5: fig. 8's four-layer run (5 cycles) and fig. 11's growth run.
+SHITSUKAN_BENCH(bark_layered_and_branch) {
+    const bool quick = bench::g_min_seconds < 0.1;
+    LayeredParams lp;
+    if (quick) lp.N_R = 24, lp.N_H = 16, lp.cycles = 3, lp.spin_up_cycles = 1;
+    auto t0 = std::chrono::steady_clock::now();
+    LayeredBark layered;
+    if (!layered.build(lp).ok() || !layered.run(nullptr, 0).ok()) {
+        bench::info("bark layered", "run failed");
+        return;
+    }
+    const double layered_s = seconds_since(t0);
+    int breaks = 0;
+    for (const LayeredStep& s : layered.record()) breaks += s.debonded;
+    bench::info(std::string("bark four-layer run (fig08), ") + std::to_string(lp.N_R) + " x " +
+                    std::to_string(lp.N_H) + " x 2 layers, " + std::to_string(lp.cycles) + " cycles",
+                std::to_string(layered_s).substr(0, 5) + " s, " + std::to_string(breaks) +
+                    " debonds");
+    BranchBarkParams bp;
+    if (quick) bp.edge_length = 0.6f;
+    t0 = std::chrono::steady_clock::now();
+    BranchBark branch;
+    if (!build_branch_bark(bp, &branch).ok()) return;
+    const double mesh_s = seconds_since(t0);
+    t0 = std::chrono::steady_clock::now();
+    CrackRun run;
+    if (!grow_branch_bark(branch, CrackRunOptions{}, &run).ok()) return;
+    const double crack_s = seconds_since(t0);
+    bench::info("bark branch growth run (fig11), " + std::to_string(branch.mesh.vertex_count()) +
+                    " nodes",
+                "mesh " + std::to_string(mesh_s).substr(0, 5) + " s, cracking " +
+                    std::to_string(crack_s).substr(0, 5) + " s, " +
+                    std::to_string(run.breaks.size()) + " breaks, " +
+                    std::to_string(crack_s / double(std::max<std::size_t>(1, run.breaks.size())) * 1e6)
+                        .substr(0, 5) +
+                    " us per break");
 }

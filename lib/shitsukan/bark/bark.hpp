@@ -18,6 +18,9 @@
 //   §4.1, Figs. 6-7    layer_schedule.hpp    the four layers' radii over time (role changes)
 //   §4.2-4.3, Table 4  layered_bark.hpp      four layers over several cycles: peeling, drying,
 //                                            falling off, new layers
+//   §5.1-5.2, Fig. 10  branch_shape.hpp      a trunk with a branch (implicit, meshed), growth as
+//                                            isotropic scaling + normal offset
+//   §5.3, Figs. 9, 11  branch_bark.hpp       the springs on any mesh, cracking in 3D
 //
 // Manual (a camphor trunk, its Table 3 numbers):
 //   CylinderParams p;  p.species = species_preset(Species::camphor);
@@ -30,6 +33,8 @@
 
 #include "shitsukan/bark/bark_export.hpp"
 #include "shitsukan/bark/bark_params.hpp"
+#include "shitsukan/bark/branch_bark.hpp"
+#include "shitsukan/bark/branch_shape.hpp"
 #include "shitsukan/bark/connection_area.hpp"
 #include "shitsukan/bark/crack_drawing.hpp"
 #include "shitsukan/bark/crack_events.hpp"
