@@ -39,7 +39,7 @@ LayeredParams layered_params(bool quick) {
     return p;
 }
 
-Status layered_run(bool quick, const LayeredRun** out) {
+Status layered_run(bool quick, const LayeredRun** out, FigureContext* ctx = nullptr) {
     static std::mutex mutex;
     static std::map<bool, std::unique_ptr<LayeredRun>> memo;
     std::lock_guard<std::mutex> lock(mutex);
@@ -58,7 +58,20 @@ Status layered_run(bool quick, const LayeredRun** out) {
     }
     const auto t0 = std::chrono::steady_clock::now();
     SHITSUKAN_TRY(r->bark.build(r->params));
-    SHITSUKAN_TRY(r->bark.run(frames.data(), int(frames.size())));
+    // Progress on stderr (through the driver) at every fifth of the run.
+    struct Progress {
+        FigureContext* ctx;
+        int last = -1;
+    } prog{ctx};
+    auto report = [](float fraction, void* user) {
+        auto* pr = static_cast<Progress*>(user);
+        const int fifth = int(fraction * 5.0f);
+        if (pr->ctx && fifth != pr->last) {
+            pr->last = fifth;
+            pr->ctx->progress("four-layer run: %3.0f %%", double(fraction) * 100.0);
+        }
+    };
+    SHITSUKAN_TRY(r->bark.run(frames.data(), int(frames.size()), report, &prog));
     r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     *out = r.get();
     memo[quick] = std::move(r);
@@ -264,8 +277,7 @@ SHITSUKAN_FIGURE(hirota_fig07, "hirota1998", "fig07",
 SHITSUKAN_FIGURE(hirota_fig08, "hirota1998", "fig08",
                  "The bark over several cycles: cracking, lifting, peeling, new layers") {
     const LayeredRun* run;
-    ctx.progress("four-layer run");
-    SHITSUKAN_TRY(layered_run(ctx.quick(), &run));
+    SHITSUKAN_TRY(layered_run(ctx.quick(), &run, &ctx));
     const LayeredBark& bark = run->bark;
     const LayeredParams& p = run->params;
     record_layered(ctx, p);
@@ -366,7 +378,7 @@ SHITSUKAN_FIGURE(hirota_fig08, "hirota1998", "fig08",
 SHITSUKAN_FIGURE(hirota_fig06, "hirota1998", "fig06",
                  "The four-layer model: a radial section at mid-cycle, to scale") {
     const LayeredRun* run;
-    SHITSUKAN_TRY(layered_run(ctx.quick(), &run));
+    SHITSUKAN_TRY(layered_run(ctx.quick(), &run, &ctx));
     const LayeredBark& bark = run->bark;
     const LayeredParams& p = run->params;
     record_layered(ctx, p);
