@@ -2,9 +2,6 @@
 #include "hirota1998/bark_common.hpp"
 
 #include <chrono>
-#include <map>
-#include <memory>
-#include <mutex>
 
 #include "shitsukan/core/hash.hpp"
 #include "shitsukan/image/raster_canvas.hpp"
@@ -15,32 +12,21 @@ const Rgb8 kBarkPlate{150, 128, 104};
 const Rgb8 kCrack{28, 20, 14};
 
 Status species_run(Species species, bool quick, const SpeciesRun** out) {
-    static std::mutex mutex;
-    static std::map<int, std::unique_ptr<SpeciesRun>> memo;
-    std::lock_guard<std::mutex> lock(mutex);
-    const int key = int(species) * 2 + (quick ? 1 : 0);
-    auto it = memo.find(key);
-    if (it != memo.end()) {
-        *out = it->second.get();
-        return Status::success();
-    }
-    auto r = std::make_unique<SpeciesRun>();
-    r->species = species;
-    r->params.species = species_preset(species);
-    if (quick) r->params.N_R = 32, r->params.N_H = 24;
-    const auto t0 = std::chrono::steady_clock::now();
-    SHITSUKAN_TRY(build_cylinder(r->params, &r->bark));
-    const float T = r->params.T;
-    const float times[] = {0.6f * T, 0.75f * T, 0.9f * T, T};
-    CrackRunOptions opt;
-    opt.snapshot_times = times;
-    opt.snapshot_count = 4;
-    SHITSUKAN_TRY(grow_and_crack(r->bark, opt, &r->run));
-    r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    SHITSUKAN_TRY(measure_regions(r->bark, T, r->bark.net.W.data(), &r->regions));
-    *out = r.get();
-    memo[key] = std::move(r);
-    return Status::success();
+    return memoised<SpeciesRun>(int(species) * 2 + (quick ? 1 : 0), [&](SpeciesRun& r) {
+        r.species = species;
+        r.params.species = species_preset(species);
+        if (quick) r.params.N_R = 32, r.params.N_H = 24;
+        const auto t0 = std::chrono::steady_clock::now();
+        SHITSUKAN_TRY(build_cylinder(r.params, &r.bark));
+        const float T = r.params.T;
+        const float times[] = {0.6f * T, 0.75f * T, 0.9f * T, T};
+        CrackRunOptions opt;
+        opt.snapshot_times = times;
+        opt.snapshot_count = 4;
+        SHITSUKAN_TRY(grow_and_crack(r.bark, opt, &r.run));
+        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return measure_regions(r.bark, T, r.bark.net.W.data(), &r.regions);
+    }, out);
 }
 
 void record_parameters(FigureContext& ctx, const CylinderParams& p) {

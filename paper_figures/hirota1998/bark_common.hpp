@@ -3,6 +3,9 @@
 // drawing and the parameter table.
 #pragma once
 
+#include <map>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "driver/figure.hpp"
@@ -10,6 +13,23 @@
 #include "shitsukan/image/canvas.hpp"
 
 namespace shitsukan::figures::bark {
+
+// Runs build(T&) once per key in this process (thread-safe: the figures of a paper share one
+// simulation; fig04, fig05 and table03 the species runs, figs. 6-8 the four-layer run).
+template <class T, class Build>
+Status memoised(int key, Build build, const T** out) {
+    static std::mutex mutex;
+    static std::map<int, std::unique_ptr<T>> memo;
+    std::lock_guard<std::mutex> lock(mutex);
+    auto it = memo.find(key);
+    if (it == memo.end()) {
+        auto value = std::make_unique<T>();
+        SHITSUKAN_TRY(build(*value));
+        it = memo.emplace(key, std::move(value)).first;
+    }
+    *out = it->second.get();
+    return Status::success();
+}
 
 // One species grown to T, measured at T, with snapshots at 0.6, 0.75, 0.9 and 1.0 T.
 struct SpeciesRun {

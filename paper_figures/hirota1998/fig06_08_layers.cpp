@@ -4,9 +4,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <map>
-#include <memory>
-#include <mutex>
 #include <string>
 #include <vector>
 
@@ -40,42 +37,33 @@ LayeredParams layered_params(bool quick) {
 }
 
 Status layered_run(bool quick, const LayeredRun** out, FigureContext* ctx = nullptr) {
-    static std::mutex mutex;
-    static std::map<bool, std::unique_ptr<LayeredRun>> memo;
-    std::lock_guard<std::mutex> lock(mutex);
-    auto it = memo.find(quick);
-    if (it != memo.end()) {
-        *out = it->second.get();
-        return Status::success();
-    }
-    auto r = std::make_unique<LayeredRun>();
-    r->params = layered_params(quick);
-    const float T = r->params.schedule.T, base = float(r->params.spin_up_cycles);
-    std::vector<FrameRequest> frames;
-    for (int i = 0; i < 8; ++i) {
-        frames.push_back({(base + kFrameOffsets[i]) * T, kFrameBefore[i]});
-        if (i == 3) frames.push_back({(base + kSectionOffset) * T, false});  // fig. 6
-    }
-    const auto t0 = std::chrono::steady_clock::now();
-    SHITSUKAN_TRY(r->bark.build(r->params));
-    // Progress on stderr (through the driver) at every fifth of the run.
-    struct Progress {
-        FigureContext* ctx;
-        int last = -1;
-    } prog{ctx};
-    auto report = [](float fraction, void* user) {
-        auto* pr = static_cast<Progress*>(user);
-        const int fifth = int(fraction * 5.0f);
-        if (pr->ctx && fifth != pr->last) {
-            pr->last = fifth;
-            pr->ctx->progress("four-layer run: %3.0f %%", double(fraction) * 100.0);
+    return memoised<LayeredRun>(quick ? 1 : 0, [&](LayeredRun& r) {
+        r.params = layered_params(quick);
+        const float T = r.params.schedule.T, base = float(r.params.spin_up_cycles);
+        std::vector<FrameRequest> frames;
+        for (int i = 0; i < 8; ++i) {
+            frames.push_back({(base + kFrameOffsets[i]) * T, kFrameBefore[i]});
+            if (i == 3) frames.push_back({(base + kSectionOffset) * T, false});  // fig. 6
         }
-    };
-    SHITSUKAN_TRY(r->bark.run(frames.data(), int(frames.size()), report, &prog));
-    r->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    *out = r.get();
-    memo[quick] = std::move(r);
-    return Status::success();
+        // Progress on stderr (through the driver) at every fifth of the run.
+        struct Progress {
+            FigureContext* ctx;
+            int last = -1;
+        } prog{ctx};
+        auto report = [](float fraction, void* user) {
+            auto* pr = static_cast<Progress*>(user);
+            const int fifth = int(fraction * 5.0f);
+            if (pr->ctx && fifth != pr->last) {
+                pr->last = fifth;
+                pr->ctx->progress("four-layer run: %3.0f %%", double(fraction) * 100.0);
+            }
+        };
+        const auto t0 = std::chrono::steady_clock::now();
+        SHITSUKAN_TRY(r.bark.build(r.params));
+        SHITSUKAN_TRY(r.bark.run(frames.data(), int(frames.size()), report, &prog));
+        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return Status::success();
+    }, out);
 }
 
 const LayerFrame& frame_at(const LayeredBark& bark, float t, bool before) {

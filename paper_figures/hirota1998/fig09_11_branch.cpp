@@ -4,8 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <map>
-#include <memory>
-#include <mutex>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -31,26 +29,17 @@ struct BranchRun {
 };
 
 Status branch_run(bool quick, const BranchRun** out) {
-    static std::mutex mutex;
-    static std::map<bool, std::unique_ptr<BranchRun>> memo;
-    std::lock_guard<std::mutex> lock(mutex);
-    auto it = memo.find(quick);
-    if (it != memo.end()) {
-        *out = it->second.get();
+    return memoised<BranchRun>(quick ? 1 : 0, [&](BranchRun& r) {
+        if (quick) r.params.edge_length = 0.6f;  // chosen here: CI's smoke size
+        const auto t0 = std::chrono::steady_clock::now();
+        SHITSUKAN_TRY(build_branch_bark(r.params, &r.bark));
+        const auto t1 = std::chrono::steady_clock::now();
+        SHITSUKAN_TRY(grow_branch_bark(r.bark, CrackRunOptions{}, &r.run));
+        const auto t2 = std::chrono::steady_clock::now();
+        r.mesh_seconds = std::chrono::duration<double>(t1 - t0).count();
+        r.crack_seconds = std::chrono::duration<double>(t2 - t1).count();
         return Status::success();
-    }
-    auto r = std::make_unique<BranchRun>();
-    if (quick) r->params.edge_length = 0.6f;  // chosen here: CI's smoke size
-    auto t0 = std::chrono::steady_clock::now();
-    SHITSUKAN_TRY(build_branch_bark(r->params, &r->bark));
-    auto t1 = std::chrono::steady_clock::now();
-    SHITSUKAN_TRY(grow_branch_bark(r->bark, CrackRunOptions{}, &r->run));
-    auto t2 = std::chrono::steady_clock::now();
-    r->mesh_seconds = std::chrono::duration<double>(t1 - t0).count();
-    r->crack_seconds = std::chrono::duration<double>(t2 - t1).count();
-    *out = r.get();
-    memo[quick] = std::move(r);
-    return Status::success();
+    }, out);
 }
 
 void record_branch(FigureContext& ctx, const BranchBarkParams& p) {
