@@ -73,7 +73,7 @@ TEST_CASE("lattice side is 2^R + 1 and the node classes follow eqs. (1)-(4)") {
 }
 
 TEST_CASE("Types I, II and III give the same float at all 65^3 nodes (hash noise)") {
-    FractalParams p;  // R = 6, beta 0.5, seed 1987
+    FractalParams p;  // R = 6, beta 0.9, seed 1987
     p.corners[3] = 0.75f;
     p.corners[6] = -1.25f;
     LatticeView v;

@@ -47,9 +47,12 @@ void record_lattice(figures::FigureContext& ctx) {
               "okada1987 §4.4, okada1989 §4-4");
     ctx.given("noise g", "N(0, 1), amplitude exp(-(n-1)·beta)", "okada1987 eqs. (1)-(5)");
     ctx.given("lattice type", "Type I (the whole 65^3 array in memory)", "okada1989 §4-4");
-    ctx.chosen("beta", fmt("%g", double(kBeta)),
+    ctx.chosen("beta", fmt("%g (the library's default)", double(kBeta)),
                "not printed; finest level at e^-4.5 = 1 % of the first: smooth folds at k = 16 "
                "(0.5 broke the k = 16 marble into fine noise)");
+    ctx.chosen("eq. (2) reading", "L^(n) = e^-(n-1)·beta, so L^(1) = 1 (as eq. (5))",
+               "eq. (2) also reads L^(n) = L^(n-1)·e^-beta from L^(0) = 1, i.e. L^(1) = e^-beta: "
+               "that reading scales D by e^-beta = 0.41, so its k = 16 is k = 6.5 here");
     ctx.chosen("seed", fmt("%u (coordinate hash, Types I/II/III agree)", kSeed),
                "any seed; hash noise so okada1989's three types give the same lattice");
     ctx.chosen("corner values", "0 (all eight)", "not given; D then has mean 0 everywhere");

@@ -40,7 +40,9 @@ namespace shitsukan::okada {
 // (its eq. (8)); wood: the radial sine of both papers (eq. (10)).
 enum class Material { marble, marble_single, wood };
 
-constexpr float kBeta = 0.9f;
+// The library's default (FractalParams::beta, whose header gives the one reason and the reading
+// of eq. (2) taken: L^(1) = 1).
+constexpr float kBeta = FractalParams{}.beta;
 constexpr std::uint32_t kSeed = 1987u;
 constexpr float kMarbleK = 16.0f;  // okada1987 §4.4
 constexpr float kWoodK = 1.6f;     // okada1987 §4.4
