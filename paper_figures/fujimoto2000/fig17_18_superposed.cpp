@@ -50,14 +50,15 @@ WrControlMesh fig17_mesh(bool changed) {
 
 // fig. 18 (chosen): 11 x 11 B-spline points on [-1.5, 1.5]^2 (8 x 8 spans), flat; a winding
 // mountain range through the middle (heights up to 0.7) with a hashed variation (seed 18).
-// Row (b): two neighbouring points on the ridge (columns 3-4, row 5) raised by 0.35.
+// Row (b): four points beside the ridge (columns 7-8, rows 2-3, towards the camera) raised by
+// 0.45: a new spur off the range.
 WrControlMesh fig18_mesh(bool changed) {
     return square_control_mesh(11, 1.5f, [changed](int c, int r, float x, float z,
                                                    WrControlPoint& p) {
         const float d = z + 0.1f - 0.35f * std::sin(1.6f * x);  // distance from a winding ridge
         p.height =
             0.05f + 0.55f * std::exp(-3.0f * d * d) * (0.65f + 0.6f * hash_uniform(18, 0, c, r));
-        if (changed && r == 5 && (c == 3 || c == 4)) p.height += 0.35f;
+        if (changed && (r == 2 || r == 3) && (c == 7 || c == 8)) p.height += 0.45f;
         p.color = height_color(p.height, 0.65f);
     });
 }
@@ -177,7 +178,7 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, char row, int panel) 
     if (row == 'b')
         ctx.chosen("height change (a-1) -> (b-1)",
                    bezier ? "front-left point 0.20 -> 1.0, peak 1.20 -> 0.6"
-                          : "two ridge points (columns 3-4, row 5) +0.35",
+                          : "four points beside the ridge (columns 7-8, rows 2-3) +0.45",
                    "the paper changes some h_i and does not print them");
     ctx.chosen("image size", fmt("%d x %d", size, size), "not given");
     const float delta = panel == 4 ? kDeltaSmooth : kDeltaRough;
