@@ -7,7 +7,7 @@
 // Row (a) is the surface as designed; row (b) the same surface after a few heights h_i change
 // (§4.1: (a-1) -> (b-1) deforms (a-4,5) -> (b-4,5) "like an avalanche", 雪崩式変形). Each (b)
 // panel's note measures how far the change reaches: the share of the surface that moved by
-// more than 1 % of max|h_i| between (a) and (b). A Bezier control point acts on the whole
+// more than 0.1 % of max|h_i| between (a) and (b). A Bezier control point acts on the whole
 // patch; a B-spline one on 4 x 4 spans, and the IST carries that change to the places it maps
 // there (every small interval whose source lies in the changed region).
 #include <algorithm>
@@ -134,7 +134,7 @@ Status panel_options(const SuperFigure& f, const RowSurface& rs, int panel, bool
 }
 
 // How far the change (a) -> (b) reaches in panel 2..5: the share of grid vertices (uniform in
-// u, v) that moved by more than 1 % of max|h_i|, and the largest move.
+// u, v) that moved by more than 0.1 % of max|h_i|, and the largest move.
 Status measure_reach(const SuperFigure& f, int panel, float delta, bool quick, int size,
                      double* share, double* largest) {
     WrMesh m[2];
@@ -154,7 +154,7 @@ Status measure_reach(const SuperFigure& f, int panel, float delta, bool quick, i
     const std::size_t n = m[0].mesh.positions.size();
     for (std::size_t i = 0; i < n; ++i) {
         const double d = length(m[1].mesh.positions[i] - m[0].mesh.positions[i]);
-        if (d > 0.01 * hmax) ++moved;
+        if (d > 0.001 * hmax) ++moved;
         big = std::max(big, d);
     }
     *share = n ? double(moved) / double(n) : 0.0;
@@ -218,7 +218,7 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, char row, int panel) 
         double share = 0, largest = 0;
         SHITSUKAN_TRY(measure_reach(f, panel, delta, quick, size, &share, &largest));
         ctx.note(fmt("Reach of the height change (a) -> (b): %.1f %% of the surface moved by more "
-                     "than 1 %% of max|h_i| (largest move %.3f).",
+                     "than 0.1 %% of max|h_i| (largest move %.3f).",
                      100.0 * share, largest));
     }
     return ctx.save_png(img.view());
