@@ -201,7 +201,7 @@ TEST_CASE("patch strip: reference_row maps a bent strap without shear; bad value
         CHECK(bent.uvs[std::size_t(4 * columns + c)].x ==
               doctest::Approx(own.uvs[std::size_t(4 * columns + c)].x));
     }
-    CHECK(drift_own > 0.1f);   // the raised middle row runs further out than the side rows
+    CHECK(drift_own > 0.1f);    // the raised middle row runs further out than the side rows
     CHECK(drift_bent == 0.0f);  // one x per column
     o.reference_row = 1.5f;
     CHECK(!tessellate_patch_strip(&p, 1, o, &bent).ok());

@@ -285,9 +285,8 @@ TEST_CASE("constant h_i and c_i: eqs. (16) and (20) give h itself for every delt
                         CHECK(h.levels_used == K);
                         CHECK(length(h.attributes.color - Vec3{0.2f, 0.6f, 0.9f}) < 1e-4f);
                         // eq. (20): displaced along the unit base normal N(u, v)
-                        CHECK(length(h.position -
-                                     (h.base.position + h.base.normal * h.attributes.height)) <
-                              1e-4f);
+                        CHECK(length(h.position - (h.base.position +
+                                                   h.base.normal * h.attributes.height)) < 1e-4f);
                         // the adaptive end of the sum (§4.2) keeps the total as well
                         const SuperposedSample c = superposed_sampled(s, hs, u, v, 0.05f);
                         CHECK(c.levels_used <= K);

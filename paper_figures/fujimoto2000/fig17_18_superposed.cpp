@@ -53,14 +53,14 @@ WrControlMesh fig17_mesh(bool changed) {
 // Row (b): four points beside the ridge (columns 7-8, rows 2-3, towards the camera) raised by
 // 0.45: a new spur off the range.
 WrControlMesh fig18_mesh(bool changed) {
-    return square_control_mesh(11, 1.5f, [changed](int c, int r, float x, float z,
-                                                   WrControlPoint& p) {
-        const float d = z + 0.1f - 0.35f * std::sin(1.6f * x);  // distance from a winding ridge
-        p.height =
-            0.05f + 0.55f * std::exp(-3.0f * d * d) * (0.65f + 0.6f * hash_uniform(18, 0, c, r));
-        if (changed && (r == 2 || r == 3) && (c == 7 || c == 8)) p.height += 0.45f;
-        p.color = height_color(p.height, 0.65f);
-    });
+    return square_control_mesh(
+        11, 1.5f, [changed](int c, int r, float x, float z, WrControlPoint& p) {
+            const float d = z + 0.1f - 0.35f * std::sin(1.6f * x);  // distance from a winding ridge
+            p.height = 0.05f +
+                       0.55f * std::exp(-3.0f * d * d) * (0.65f + 0.6f * hash_uniform(18, 0, c, r));
+            if (changed && (r == 2 || r == 3) && (c == 7 || c == 8)) p.height += 0.45f;
+            p.color = height_color(p.height, 0.65f);
+        });
 }
 
 struct SuperFigure {
@@ -100,8 +100,8 @@ Status make_row_surface(const SuperFigure& f, bool changed, float delta, RowSurf
 }
 
 // Tessellation options of panel 2..5 (and the sampling of 4, 5). `coarse`: a grid for measuring.
-Status panel_options(const SuperFigure& f, const RowSurface& rs, int panel, bool quick,
-                     bool coarse, int size, WrTessellationOptions* o, HierarchicalSampling* hs,
+Status panel_options(const SuperFigure& f, const RowSurface& rs, int panel, bool quick, bool coarse,
+                     int size, WrTessellationOptions* o, HierarchicalSampling* hs,
                      std::string* chosen) {
     if (panel == 2) {
         o->form = WrSurfaceForm::plain;
@@ -217,9 +217,10 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, char row, int panel) 
     if (row == 'b') {
         double share = 0, largest = 0;
         SHITSUKAN_TRY(measure_reach(f, panel, delta, quick, size, &share, &largest));
-        ctx.note(fmt("Reach of the height change (a) -> (b): %.1f %% of the surface moved by more "
-                     "than 0.1 %% of max|h_i| (largest move %.3f).",
-                     100.0 * share, largest));
+        ctx.note(
+            fmt("Reach of the height change (a) -> (b): %.1f %% of the surface moved by more "
+                "than 0.1 %% of max|h_i| (largest move %.3f).",
+                100.0 * share, largest));
     }
     return ctx.save_png(img.view());
 }
@@ -231,10 +232,10 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, char row, int panel) 
         return run_panel(ctx, figure, (#row)[0], i);                               \
     }
 
-#define SUPER_ROW(fig, row, figure, name, plain, when)                                         \
-    SUPER_PANEL(fig, row, 1, figure, name ": (" #row "-1) control mesh with heights h_i" when) \
-    SUPER_PANEL(fig, row, 2, figure, name ": (" #row "-2) conventional " plain " surface" when) \
-    SUPER_PANEL(fig, row, 3, figure, name ": (" #row "-3) WR surface, eq. (15)" when)          \
+#define SUPER_ROW(fig, row, figure, name, plain, when)                                            \
+    SUPER_PANEL(fig, row, 1, figure, name ": (" #row "-1) control mesh with heights h_i" when)    \
+    SUPER_PANEL(fig, row, 2, figure, name ": (" #row "-2) conventional " plain " surface" when)   \
+    SUPER_PANEL(fig, row, 3, figure, name ": (" #row "-3) WR surface, eq. (15)" when)             \
     SUPER_PANEL(fig, row, 4, figure, name ": (" #row "-4) superposed, small delta (smooth)" when) \
     SUPER_PANEL(fig, row, 5, figure, name ": (" #row "-5) superposed, large delta (rough)" when)
 

@@ -68,7 +68,8 @@ WrControlMesh terrain_mesh(float delta) {
             h = (1.0f - g) * h + g * (0.06f + 0.08f * hash_uniform(21, 1, c, r));
             p.position = {x, 0.0f, z};
             p.height = h;
-            const float warm = 0.5f + 0.08f * x - 0.06f * z + 0.25f * (hash_uniform(21, 2, c, r) - 0.5f);
+            const float warm =
+                0.5f + 0.08f * x - 0.06f * z + 0.25f * (hash_uniform(21, 2, c, r) - 0.5f);
             const Vec3 grass = lerp(Vec3{0.30f, 0.50f, 0.22f}, Vec3{0.50f, 0.55f, 0.25f}, warm);
             const Vec3 rock = lerp(Vec3{0.42f, 0.42f, 0.44f}, Vec3{0.60f, 0.47f, 0.36f}, warm);
             const Vec3 snow{0.96f, 0.96f, 0.98f};
@@ -188,13 +189,14 @@ Status render_panel(bool quick, char panel, RgbImage* img, StageTimes* times, Wr
     times->rendering = seconds_since(t0);
     times->triangles = wm.mesh.triangle_count();
     if (measure) *measure = measure_terrain(surface, wm);
-    *params = fmt("grid level %d (%d x %d vertices), %s", a.grid_level, wm.grid_u, wm.grid_v,
-                  panel >= 'e' ? fmt("K = %d, delta = %.2f, linear sampling, Gaussian jitter "
-                                     "(height x(1 + %.2f g), colour + %.3f g), mean steps used %.2f",
-                                     times->levels, double(delta), double(kJitterHeight),
-                                     double(kJitterColor), wm.mean_levels_used)
-                                     .c_str()
-                               : (panel == 'd' ? fmt("K = %d", o.levels).c_str() : "no IST"));
+    *params =
+        fmt("grid level %d (%d x %d vertices), %s", a.grid_level, wm.grid_u, wm.grid_v,
+            panel >= 'e' ? fmt("K = %d, delta = %.2f, linear sampling, Gaussian jitter "
+                               "(height x(1 + %.2f g), colour + %.3f g), mean steps used %.2f",
+                               times->levels, double(delta), double(kJitterHeight),
+                               double(kJitterColor), wm.mean_levels_used)
+                               .c_str()
+                         : (panel == 'd' ? fmt("K = %d", o.levels).c_str() : "no IST"));
     if (keep) *keep = std::move(wm);
     return Status::success();
 }
@@ -214,8 +216,9 @@ Status run_panel(FigureContext& ctx, char panel) {
     ctx.chosen("adaptive sampling", "grid cells <= 1.5 px, rest of the sum < 0.5 px, level cap 4",
                "keeps a full panel within seconds");
     if (panel >= 'e')
-        ctx.chosen("jitter", fmt("height x(1 + %.2f g), colour + %.3f g", double(kJitterHeight),
-                                 double(kJitterColor)),
+        ctx.chosen("jitter",
+                   fmt("height x(1 + %.2f g), colour + %.3f g", double(kJitterHeight),
+                       double(kJitterColor)),
                    "§5 applies Gaussian jitter to the sample values; it gives no deviation");
     RgbImage img;
     StageTimes t;
@@ -224,10 +227,11 @@ Status run_panel(FigureContext& ctx, char panel) {
     TerrainMeasure m;
     SHITSUKAN_TRY(render_panel(ctx.quick(), panel, &img, &t, &wm, &params, &m));
     if (panel >= 'd')
-        ctx.note(fmt("Measured on every 7th vertex: mean height %.1f %% of the plain surface (c) "
-                     "(eq. 18: the total is set by H); RMS departure from (c) %.3f in the "
-                     "mountains, %.3f in the green field at the front right (not superposed).",
-                     100.0 * m.mean_height / m.mean_plain, m.rms_mountains, m.rms_green));
+        ctx.note(
+            fmt("Measured on every 7th vertex: mean height %.1f %% of the plain surface (c) "
+                "(eq. 18: the total is set by H); RMS departure from (c) %.3f in the "
+                "mountains, %.3f in the green field at the front right (not superposed).",
+                100.0 * m.mean_height / m.mean_plain, m.rms_mountains, m.rms_green));
     if (panel != 'b') record_stage_times(fmt("fig21%c", panel), t);
     ctx.note(params +
              fmt("; %ld triangles; sampling %.2f s, polygonisation %.2f s, rendering %.2f s.",

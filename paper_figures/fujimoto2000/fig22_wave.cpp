@@ -132,11 +132,11 @@ Status build_fig22(bool quick, RgbImage* img, std::map<std::string, StageTimes>*
         const char* label;
         const char* file;  // per-panel file (Table 3 panels)
     };
-    const P panels[] = {{'x', 0, 0, 0, "(x)", nullptr},   {'y', 0, 1, 0, "(y)", nullptr},
-                        {'z', 0, 2, 0, "(z)", "_z"},      {'a', 1, 0, 1, "(a-1)", "_a1"},
-                        {'a', 2, 1, 1, "(a-2)", "_a2"},   {'a', 3, 2, 1, "(a-3)", "_a3"},
-                        {'a', 4, 3, 1, "(a-4)", "_a4"},   {'b', 1, 0, 2, "(b-1)", "_b1"},
-                        {'b', 2, 1, 2, "(b-2)", "_b2"},   {'b', 3, 2, 2, "(b-3)", "_b3"},
+    const P panels[] = {{'x', 0, 0, 0, "(x)", nullptr}, {'y', 0, 1, 0, "(y)", nullptr},
+                        {'z', 0, 2, 0, "(z)", "_z"},    {'a', 1, 0, 1, "(a-1)", "_a1"},
+                        {'a', 2, 1, 1, "(a-2)", "_a2"}, {'a', 3, 2, 1, "(a-3)", "_a3"},
+                        {'a', 4, 3, 1, "(a-4)", "_a4"}, {'b', 1, 0, 2, "(b-1)", "_b1"},
+                        {'b', 2, 1, 2, "(b-2)", "_b2"}, {'b', 3, 2, 2, "(b-3)", "_b3"},
                         {'b', 4, 3, 2, "(b-4)", "_b4"}};
     for (const P& p : panels) {
         RgbView cell = img->view().subview(p.gx * cw, p.gy * ch, cw, ch);
@@ -174,9 +174,10 @@ SHITSUKAN_FIGURE(
     "Wave (1200 x 600): mesh, spans, plain; (a) fully-connected N = 5, (b) fig. 6b IST; "
     "1 WR, 2-4 superposed delta 0.25/0.50/0.75") {
     ctx.given("image size", "1200 x 600 per panel", "Table 3");
-    ctx.chosen("composite", "an overview: 11 panels shrunk into 300 x 150 cells; the panels of "
-                            "Table 3 are written at full size as fig22_z.png, fig22_a1.png .. "
-                            "fig22_b4.png",
+    ctx.chosen("composite",
+               "an overview: 11 panels shrunk into 300 x 150 cells; the panels of "
+               "Table 3 are written at full size as fig22_z.png, fig22_a1.png .. "
+               "fig22_b4.png",
                "Table 3 times each panel at 1200 x 600");
     ctx.given("K", "3", "fig. 22 caption");
     ctx.given("sample interpolation", "Hermite", "fig. 22 caption");
@@ -198,16 +199,17 @@ SHITSUKAN_FIGURE(
     SHITSUKAN_TRY(build_fig22(ctx.quick(), &img, &times, ctx.path("")));
     for (const auto& kv : times) record_stage_times("fig22" + kv.first, kv.second);
     const double plain = times["(z)"].mean_offset;
-    ctx.note(fmt("Total height kept (eq. 18): mean displacement from the base surface relative "
-                 "to (z): (a-2) %.1f %%, (a-3) %.1f %%, (a-4) %.1f %%; (b-2) %.1f %%, (b-3) "
-                 "%.1f %%, (b-4) %.1f %% (jitter included).",
-                 100 * times["(a-2)"].mean_offset / plain, 100 * times["(a-3)"].mean_offset / plain,
-                 100 * times["(a-4)"].mean_offset / plain, 100 * times["(b-2)"].mean_offset / plain,
-                 100 * times["(b-3)"].mean_offset / plain,
-                 100 * times["(b-4)"].mean_offset / plain));
-    ctx.note(fmt("Per-panel images (%d x %d): fig22_z.png, fig22_a1.png .. fig22_a4.png, "
-                 "fig22_b1.png .. fig22_b4.png; this image is the overview.",
-                 ctx.quick() ? kPanelW / 4 : kPanelW, ctx.quick() ? kPanelH / 4 : kPanelH));
+    ctx.note(
+        fmt("Total height kept (eq. 18): mean displacement from the base surface relative "
+            "to (z): (a-2) %.1f %%, (a-3) %.1f %%, (a-4) %.1f %%; (b-2) %.1f %%, (b-3) "
+            "%.1f %%, (b-4) %.1f %% (jitter included).",
+            100 * times["(a-2)"].mean_offset / plain, 100 * times["(a-3)"].mean_offset / plain,
+            100 * times["(a-4)"].mean_offset / plain, 100 * times["(b-2)"].mean_offset / plain,
+            100 * times["(b-3)"].mean_offset / plain, 100 * times["(b-4)"].mean_offset / plain));
+    ctx.note(
+        fmt("Per-panel images (%d x %d): fig22_z.png, fig22_a1.png .. fig22_a4.png, "
+            "fig22_b1.png .. fig22_b4.png; this image is the overview.",
+            ctx.quick() ? kPanelW / 4 : kPanelW, ctx.quick() ? kPanelH / 4 : kPanelH));
     return ctx.save_png(img.view());
 }
 

@@ -1,5 +1,5 @@
-// fujimoto2000 fig. 23 and Table 4: flame, 1200 x 1200 per panel. (x) the conventional surface (a-2)
-// coloured per parameter interval; (a,b,c-1) control meshes; (a,b,c-2) conventional B-spline
+// fujimoto2000 fig. 23 and Table 4: flame, 1200 x 1200 per panel. (x) the conventional surface
+// (a-2) coloured per parameter interval; (a,b,c-1) control meshes; (a,b,c-2) conventional B-spline
 // surfaces; (a,b,c-3) superposed IST-B-spline surfaces, fully-connected IST N = 3, K = 3,
 // delta = 0.60, linear interpolation of the samples. Heights and displacement directions of the
 // control points change a -> b -> c; the superposed surface follows with the "avalanche"
@@ -140,16 +140,12 @@ Status build_fig23(bool quick, RgbImage* img, std::map<std::string, StageTimes>*
         const char* label;
         const char* file;
     };
-    const P panels[] = {{'x', 0, 0, 0, 150, 150, "(x)", nullptr},
-                        {'1', 0, 150, 0, 150, 150, "(a-1)", nullptr},
-                        {'1', 1, 300, 0, 150, 150, "(b-1)", nullptr},
-                        {'1', 2, 450, 0, 150, 150, "(c-1)", nullptr},
-                        {'2', 0, 0, 150, 200, 200, "(a-2)", "_a2"},
-                        {'2', 1, 200, 150, 200, 200, "(b-2)", "_b2"},
-                        {'2', 2, 400, 150, 200, 200, "(c-2)", "_c2"},
-                        {'3', 0, 0, 350, 200, 200, "(a-3)", "_a3"},
-                        {'3', 1, 200, 350, 200, 200, "(b-3)", "_b3"},
-                        {'3', 2, 400, 350, 200, 200, "(c-3)", "_c3"}};
+    const P panels[] = {
+        {'x', 0, 0, 0, 150, 150, "(x)", nullptr},     {'1', 0, 150, 0, 150, 150, "(a-1)", nullptr},
+        {'1', 1, 300, 0, 150, 150, "(b-1)", nullptr}, {'1', 2, 450, 0, 150, 150, "(c-1)", nullptr},
+        {'2', 0, 0, 150, 200, 200, "(a-2)", "_a2"},   {'2', 1, 200, 150, 200, 200, "(b-2)", "_b2"},
+        {'2', 2, 400, 150, 200, 200, "(c-2)", "_c2"}, {'3', 0, 0, 350, 200, 200, "(a-3)", "_a3"},
+        {'3', 1, 200, 350, 200, 200, "(b-3)", "_b3"}, {'3', 2, 400, 350, 200, 200, "(c-3)", "_c3"}};
     for (const P& p : panels) {
         RgbView cell = img->view().subview(p.x / s, p.y / s, p.w / s, p.h / s);
         StageTimes t;
@@ -163,7 +159,8 @@ Status build_fig23(bool quick, RgbImage* img, std::map<std::string, StageTimes>*
         } else {
             SHITSUKAN_TRY(draw_panel(quick, p.kind, p.setting, cell, &t, k));
         }
-        if (!quick) label_panel(cell, p.label, p.kind == '1' ? Rgb8{20, 20, 20} : Rgb8{230, 230, 230});
+        if (!quick)
+            label_panel(cell, p.label, p.kind == '1' ? Rgb8{20, 20, 20} : Rgb8{230, 230, 230});
         (*times)[p.label] = t;
     }
     return Status::success();
@@ -204,11 +201,12 @@ SHITSUKAN_FIGURE(
     WrMesh keep;
     SHITSUKAN_TRY(build_fig23(ctx.quick(), &img, &times, &keep, ctx.path("")));
     for (const auto& kv : times) record_stage_times("fig23" + kv.first, kv.second);
-    ctx.note(fmt("Total height kept (eq. 18): mean displacement of (a-3), (b-3), (c-3) relative "
-                 "to (a-2), (b-2), (c-2): %.1f %%, %.1f %%, %.1f %% (jitter included).",
-                 100 * times["(a-3)"].mean_offset / times["(a-2)"].mean_offset,
-                 100 * times["(b-3)"].mean_offset / times["(b-2)"].mean_offset,
-                 100 * times["(c-3)"].mean_offset / times["(c-2)"].mean_offset));
+    ctx.note(
+        fmt("Total height kept (eq. 18): mean displacement of (a-3), (b-3), (c-3) relative "
+            "to (a-2), (b-2), (c-2): %.1f %%, %.1f %%, %.1f %% (jitter included).",
+            100 * times["(a-3)"].mean_offset / times["(a-2)"].mean_offset,
+            100 * times["(b-3)"].mean_offset / times["(b-2)"].mean_offset,
+            100 * times["(c-3)"].mean_offset / times["(c-2)"].mean_offset));
     if (!ctx.quick()) {
         SHITSUKAN_TRY(write_obj(ctx.path("_c3.obj").c_str(), keep.mesh));
         ctx.note(

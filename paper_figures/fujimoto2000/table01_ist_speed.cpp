@@ -58,8 +58,7 @@ SHITSUKAN_FIGURE(table01_ist_speed, "fujimoto2000", "table01",
                "div / in-shf / ex-shf procedure of §2.2 (ist_procedure_forward)");
     ctx.given("timing", "mean time per coordinate over all coordinates",
               "Table 1 caption: the average per coordinate");
-    ctx.chosen("interleaving",
-               ctx.quick() ? "20 chunks of 1000" : "200 chunks of 5000",
+    ctx.chosen("interleaving", ctx.quick() ? "20 chunks of 1000" : "200 chunks of 5000",
                "the three methods take turns on each chunk, so a disturbance of the shared "
                "machine falls on all three alike; the fastest chunk is reported beside the mean");
     ctx.chosen("formula", "ist_forward (float): eq. (9) split, eq. (12) on the digits, eq. (14)",
@@ -71,16 +70,17 @@ SHITSUKAN_FIGURE(table01_ist_speed, "fujimoto2000", "table01",
 
     std::string md;
     md += "# fujimoto2000 Table 1 — time per coordinate (microseconds)\n\n";
+    md += fmt(
+        "%d pseudo-random coordinates per cell (timed in chunks of %d, the three methods in turn; "
+        "every time is the mean per coordinate, as in the paper), "
+        "fully-connected IST on %d base intervals "
+        "(cyclic). *procedure* = original IST of §2.1 simulated step by step on a real u "
+        "(ist_original_forward), *div/in/ex* = the §2.2 procedure (ist_procedure_forward), "
+        "*formula* = eq. (14) (ist_forward). Paper: Origin2000, MIPS R10000 250 MHz.\n\n",
+        coordinates, chunk, base_intervals);
     md +=
-        fmt("%d pseudo-random coordinates per cell (timed in chunks of %d, the three methods in turn; "
-            "every time is the mean per coordinate, as in the paper), "
-            "fully-connected IST on %d base intervals "
-            "(cyclic). *procedure* = original IST of §2.1 simulated step by step on a real u "
-            "(ist_original_forward), *div/in/ex* = the §2.2 procedure (ist_procedure_forward), "
-            "*formula* = eq. (14) (ist_forward). Paper: Origin2000, MIPS R10000 250 MHz.\n\n",
-            coordinates, chunk, base_intervals);
-    md += "| N | K | paper procedure | paper formula | paper ratio | procedure | div/in/ex | "
-          "formula | ratio procedure/formula | ratio div/in/ex/formula | ratio, fastest chunks |\n";
+        "| N | K | paper procedure | paper formula | paper ratio | procedure | div/in/ex | "
+        "formula | ratio procedure/formula | ratio div/in/ex/formula | ratio, fastest chunks |\n";
     md += "|---|---|---|---|---|---|---|---|---|---|---|\n";
     const int ns[3] = {3, 5, 7};
     double ratio_k1[3] = {0, 0, 0}, ratio_k6[3] = {0, 0, 0};
@@ -100,7 +100,7 @@ SHITSUKAN_FIGURE(table01_ist_speed, "fujimoto2000", "table01",
             // paper's measure, the ratio of the fastest chunks is shown beside it.
             double sum_p = 0.0, sum_q = 0.0, sum_f = 0.0;
             double t_proc = 0.0, t_step = 0.0, t_form = 0.0;  // sums over the chunks: the mean
-            double b_form = 1e300, b_proc = 1e300;             // fastest chunk, scaled
+            double b_form = 1e300, b_proc = 1e300;            // fastest chunk, scaled
             for (int c0 = 0; c0 < coordinates; c0 += chunk) {
                 const int c1 = c0 + chunk < coordinates ? c0 + chunk : coordinates;
                 const double share = double(coordinates) / double(c1 - c0);
@@ -131,10 +131,11 @@ SHITSUKAN_FIGURE(table01_ist_speed, "fujimoto2000", "table01",
                                      n, k, sum_p, sum_q, sum_f);
             const double us = 1e6 / double(coordinates);
             const double p = t_proc * us, q = t_step * us, f = t_form * us;
-            md += fmt("| %d | %d | %.2f | %.2f | %.0f | %.3f | %.3f | %.4f | %.1f | %.1f | %.1f |\n",
-                      n, k, kPaper[ni][k - 1][0], kPaper[ni][k - 1][1],
-                      kPaper[ni][k - 1][0] / kPaper[ni][k - 1][1], p, q, f, p / f, q / f,
-                      b_proc / b_form);
+            md +=
+                fmt("| %d | %d | %.2f | %.2f | %.0f | %.3f | %.3f | %.4f | %.1f | %.1f | %.1f |\n",
+                    n, k, kPaper[ni][k - 1][0], kPaper[ni][k - 1][1],
+                    kPaper[ni][k - 1][0] / kPaper[ni][k - 1][1], p, q, f, p / f, q / f,
+                    b_proc / b_form);
             if (k == 1) ratio_k1[ni] = p / f;
             if (k == 6) ratio_k6[ni] = p / f;
             ctx.progress("N = %d, K = %d: procedure %.3f us, div/in/ex %.3f us, formula %.4f us",

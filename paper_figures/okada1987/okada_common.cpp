@@ -16,7 +16,6 @@ using figures::fmt;
 const MarbleStripe kStripes[6] = {{8.0f, 1.2f, 0.9f},  {17.0f, 2.5f, 0.6f}, {26.0f, 0.8f, 1.5f},
                                   {35.0f, 3.5f, 0.5f}, {46.0f, 1.5f, 0.8f}, {55.0f, 2.0f, 0.7f}};
 
-
 namespace {
 double g_build_seconds = 0.0;
 const Vec3 kLight = normalize(Vec3{0.3f, 0.8f, 0.55f});  // from the upper front, slightly right
@@ -78,15 +77,15 @@ void record_material(figures::FigureContext& ctx, Material m) {
     if (m == Material::marble_single) {
         ctx.given("G", "one layer: trapezoid with exponential skirts, u = (0, 0, 1)",
                   "okada1989 eqs. (8), (9)");
-        ctx.chosen("layers (lattice units)",
-                   fmt("the one layer of eq. (8), w %g, alpha %g, repeated every %g along z "
-                       "(c = %g + %g j)",
-                       double(kSingleStripe.w), double(kSingleStripe.alpha),
-                       double(kSingleLayerPeriod), double(kSingleStripe.c),
-                       double(kSingleLayerPeriod)),
-                   "eq. (8) is 'the function representing one layer' of 'layered, striped "
-                   "marble' (§4-2); a single layer through the middle (c 32, w 3, alpha 0.5) "
-                   "covered 4-12 % of each object: one crack in a white object");
+        ctx.chosen(
+            "layers (lattice units)",
+            fmt("the one layer of eq. (8), w %g, alpha %g, repeated every %g along z "
+                "(c = %g + %g j)",
+                double(kSingleStripe.w), double(kSingleStripe.alpha), double(kSingleLayerPeriod),
+                double(kSingleStripe.c), double(kSingleLayerPeriod)),
+            "eq. (8) is 'the function representing one layer' of 'layered, striped "
+            "marble' (§4-2); a single layer through the middle (c 32, w 3, alpha 0.5) "
+            "covered 4-12 % of each object: one crack in a white object");
         ctx.chosen("G'", "1 - min(G, 1)", "as okada1987: I_max = limestone, I_min = impurity");
         ctx.chosen("I_max (limestone)", "(238, 234, 226)", "warm white");
         ctx.chosen("I_min (impurity)", "(62, 74, 80)", "dark grey-green");
@@ -136,8 +135,7 @@ float density(Material m, float k, Vec3 lp) {
         float t = std::fmod(zp - kSingleStripe.c, kSingleLayerPeriod);
         if (t < 0.0f) t += kSingleLayerPeriod;
         const MarbleStripe layer{0.0f, kSingleStripe.w, kSingleStripe.alpha};
-        const float g =
-            trapezoid_skirt(t, layer) + trapezoid_skirt(t - kSingleLayerPeriod, layer);
+        const float g = trapezoid_skirt(t, layer) + trapezoid_skirt(t - kSingleLayerPeriod, layer);
         return 1.0f - (g < 1.0f ? g : 1.0f);
     }
     WoodParams w;
@@ -171,8 +169,10 @@ struct SolidShader {
         const float g = density(material, k, lp);
         if (shares) {
             ++shares->pixels;
-            if (g < 0.5f) ++shares->vein;
-            else if (g < 0.9f) ++shares->skirt;
+            if (g < 0.5f)
+                ++shares->vein;
+            else if (g < 0.9f)
+                ++shares->skirt;
         }
         const Vec3 c = material_color(material, g);
         Vec3 n = f.normal;
@@ -330,13 +330,13 @@ Status object_figure(figures::FigureContext& ctx, const std::string& scene_name,
     ctx.note(fmt("The object covers %.1f %% of the frame.",
                  100.0 * double(covered) / (double(img.width()) * double(img.height()))));
     if (m != Material::wood && shares.pixels > 0)
-        ctx.note(fmt("Measured over the object's drawn fragments: %.1f %% in the vein colour (G' < 0.5, "
-                     "nearer I_min than I_max), %.1f %% in the pale skirt (0.5 <= G' < 0.9), "
-                     "%.1f %% limestone.",
-                     100.0 * double(shares.vein) / double(shares.pixels),
-                     100.0 * double(shares.skirt) / double(shares.pixels),
-                     100.0 * double(shares.pixels - shares.vein - shares.skirt) /
-                         double(shares.pixels)));
+        ctx.note(fmt(
+            "Measured over the object's drawn fragments: %.1f %% in the vein colour (G' < 0.5, "
+            "nearer I_min than I_max), %.1f %% in the pale skirt (0.5 <= G' < 0.9), "
+            "%.1f %% limestone.",
+            100.0 * double(shares.vein) / double(shares.pixels),
+            100.0 * double(shares.skirt) / double(shares.pixels),
+            100.0 * double(shares.pixels - shares.vein - shares.skirt) / double(shares.pixels)));
     return ctx.save_png(img.view());
 }
 

@@ -165,31 +165,35 @@ SHITSUKAN_FIGURE(okada1989_table_types, "okada1989", "table-types",
     auto heap_text = [](long h) {
         return h >= 0 ? fmt(" (heap growth measured: %ld)", h) : std::string();
     };
-    md += fmt("| II (ancestor list, kept) | after the slice: %zu nodes, %zu bytes as held by the "
-              "hash map%s (payload %zu); after the scattered set: %zu nodes, %zu bytes%s "
-              "(payload %zu) | 0 | %.3f | %.3f |\n",
-              list_slice, real_slice, heap_text(heap_slice).c_str(), list_slice * 12, list_rand,
-              real_rand, heap_text(heap_rand).c_str(), list_rand * 12,
-              slice2 * us / double(coherent.size()), rand2 * us / double(random_points.size()));
-    md += fmt("| III as in okada1989 (list cleared for every point, O(R); timed on every 8th "
-              "point) | %zu bytes ancestry | 0 | %.3f | %.3f |\n",
-              paper3.ancestry_bytes(), slice3p * us / double(n3c), rand3p * us / double(n3r));
-    md += fmt("| III here (ancestry kept between points + a 64-block row cache) | %zu bytes "
-              "ancestry (object %zu bytes, fixed) | 0 | %.3f | %.3f |\n",
-              type3.ancestry_bytes(), TypeIIILattice::object_bytes(),
-              slice3 * us / double(coherent.size()), rand3 * us / double(random_points.size()));
+    md +=
+        fmt("| II (ancestor list, kept) | after the slice: %zu nodes, %zu bytes as held by the "
+            "hash map%s (payload %zu); after the scattered set: %zu nodes, %zu bytes%s "
+            "(payload %zu) | 0 | %.3f | %.3f |\n",
+            list_slice, real_slice, heap_text(heap_slice).c_str(), list_slice * 12, list_rand,
+            real_rand, heap_text(heap_rand).c_str(), list_rand * 12,
+            slice2 * us / double(coherent.size()), rand2 * us / double(random_points.size()));
+    md +=
+        fmt("| III as in okada1989 (list cleared for every point, O(R); timed on every 8th "
+            "point) | %zu bytes ancestry | 0 | %.3f | %.3f |\n",
+            paper3.ancestry_bytes(), slice3p * us / double(n3c), rand3p * us / double(n3r));
+    md +=
+        fmt("| III here (ancestry kept between points + a 64-block row cache) | %zu bytes "
+            "ancestry (object %zu bytes, fixed) | 0 | %.3f | %.3f |\n",
+            type3.ancestry_bytes(), TypeIIILattice::object_bytes(),
+            slice3 * us / double(coherent.size()), rand3 * us / double(random_points.size()));
     md += "\nAgreement:\n\n";
     md += fmt("- all 274,625 lattice nodes, Types II and III vs. the Type I array: %d differ "
               "(bit-for-bit comparison)\n", node_mismatch);
     md += fmt("- D(P) at all %zu points, Types II and III vs. Type I: %d differ\n",
               coherent.size() + random_points.size(), mismatch2 + mismatch3);
-    md += fmt("- Type III on the slice: %.4f subdivisions (19 new nodes each) per point with "
-              "the caches, %.2f as in the paper (R = %d per point)\n",
-              double(sub_slice) / double(coherent.size()),
-              double(sub_slice_p) / double(n3c), params.R);
-    md += "- Type II's memory is what the hash map holds (bucket array + a 32-byte heap node "
-          "per entry), about 2.7 times its payload of 12 bytes a node; the paper's list "
-          "(coordinates + value, searched exhaustively) would hold about the payload\n";
+    md += fmt(
+        "- Type III on the slice: %.4f subdivisions (19 new nodes each) per point with "
+        "the caches, %.2f as in the paper (R = %d per point)\n",
+        double(sub_slice) / double(coherent.size()), double(sub_slice_p) / double(n3c), params.R);
+    md +=
+        "- Type II's memory is what the hash map holds (bucket array + a 32-byte heap node "
+        "per entry), about 2.7 times its payload of 12 bytes a node; the paper's list "
+        "(coordinates + value, searched exhaustively) would hold about the payload\n";
     md += fmt("- Type II with one sequential random stream instead of the hash: querying the "
               "line (x, 17, 40) forwards and backwards gives %d of 65 nodes different values, "
               "which is why Type III seeds each node's number by its coordinates\n",

@@ -113,10 +113,11 @@ Status section_texture(FigureContext& ctx, Table1Section which, bool close_up) {
         }
     const double n = double(img.width()) * double(img.height());
     const double mean = sum / n;
-    ctx.note(fmt("%d scales; largest height %.4f pattern units; luma mean %.1f, RMS contrast %.1f "
-                 "(0..255) under the light shared by figs. 13-15.",
-                 pattern.polygon_count(), double(maps.max_height), mean,
-                 std::sqrt(std::fmax(0.0, sum2 / n - mean * mean))));
+    ctx.note(
+        fmt("%d scales; largest height %.4f pattern units; luma mean %.1f, RMS contrast %.1f "
+            "(0..255) under the light shared by figs. 13-15.",
+            pattern.polygon_count(), double(maps.max_height), mean,
+            std::sqrt(std::fmax(0.0, sum2 / n - mean * mean))));
     return ctx.save_png(img.view());
 }
 

@@ -250,11 +250,12 @@ SHITSUKAN_FIGURE(tokai1994_fig18, "tokai1994", "fig18",
         double sheared = 0, bent = 0;
         SHITSUKAN_TRY(max_shear(-1.0f, &sheared));
         SHITSUKAN_TRY(max_shear(0.5f, &bent));
-        ctx.note(fmt("Handle: texture x across the strap differs by at most %.4f pattern units "
-                     "(mapped from the middle row; a scale is about 0.1 wide); with each row "
-                     "measured on its own it drifted by %.3f, a shear that drew one row of "
-                     "scales out into long diagonals.",
-                     bent, sheared));
+        ctx.note(
+            fmt("Handle: texture x across the strap differs by at most %.4f pattern units "
+                "(mapped from the middle row; a scale is about 0.1 wide); with each row "
+                "measured on its own it drifted by %.3f, a shear that drew one row of "
+                "scales out into long diagonals.",
+                bent, sheared));
     }
     RgbImage img(2 * size, size);
     RasterStats stats;
