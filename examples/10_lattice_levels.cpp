@@ -20,7 +20,7 @@
 using namespace shitsukan;
 
 int main() {
-    FractalParams params;  // R = 6, beta = 0.5, seed 1987, corners 0
+    FractalParams params;  // R = 6, beta = 0.9, seed 1987, corners 0
     const int side = int(lattice_side(params.R));
     std::vector<float> values(std::size_t(side) * side * side);
     const int panel = 130;

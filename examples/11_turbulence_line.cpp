@@ -23,7 +23,6 @@ using namespace shitsukan;
 
 int main() {
     FractalParams params;
-    params.beta = 0.9f;  // as the figures
     FractalLattice lattice;
     Status s = lattice.build(params);
     if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;

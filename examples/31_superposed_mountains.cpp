@@ -51,7 +51,11 @@ int main() {
         std::printf("delta %.2f: weights", double(delta));
         for (int k = 0; k <= 4; ++k)
             std::printf(" W^%d = %.3f", k, double(superposition_weight(delta, k)));
-        std::printf(" (sum %.3f = 1 - delta^5)\n", double(superposition_weight_sum(delta, 4)));
+        std::printf(
+            " (sum %.3f = 1 - delta^5; the sum stops at K = 4, so each weight is divided "
+            "by it and they add up to 1 again, eq. 18: W^0 -> %.3f)\n",
+            double(superposition_weight_sum(delta, 4)),
+            double(superposition_weight_truncated(delta, 0, 4)));
 
         // 3. Polygonise eq. (20) and render.
         WrTessellationOptions o;

@@ -172,3 +172,37 @@ TEST_CASE("patch strip: anchor measures each row from a chosen column") {
     opt.anchor = 2.5f;
     CHECK(!tessellate_patch_strip(strip, 2, opt, &m).ok());
 }
+
+TEST_CASE("patch strip: reference_row maps a bent strap without shear; bad values refused") {
+    // A half-round strap bent around an arch: the rows on the outside are longer.
+    BezierPatch p;
+    const float radius = 0.2f;
+    for (int i = 0; i < 4; ++i) {
+        const float a = 1.5707963f * float(i) / 3.0f;
+        const Vec3 c{std::cos(a), std::sin(a), 0.0f}, n = c;
+        const float across[4] = {radius, radius, -radius, -radius};
+        const float raise[4] = {0.0f, 4.0f * radius / 3.0f, 4.0f * radius / 3.0f, 0.0f};
+        for (int j = 0; j < 4; ++j) p.p[i][j] = c + Vec3{0, 0, across[j]} + n * raise[j];
+    }
+    PatchStripOptions o;
+    o.segments_u = o.segments_v = 8;
+    TriangleMesh own, bent;
+    REQUIRE(tessellate_patch_strip(&p, 1, o, &own).ok());
+    o.reference_row = 0.5f;
+    REQUIRE(tessellate_patch_strip(&p, 1, o, &bent).ok());
+    const int columns = 9;
+    float drift_own = 0, drift_bent = 0;
+    for (int c = 0; c < columns; ++c) {
+        drift_own = std::fmax(drift_own, std::fabs(own.uvs[std::size_t(4 * columns + c)].x -
+                                                   own.uvs[std::size_t(c)].x));
+        drift_bent = std::fmax(drift_bent, std::fabs(bent.uvs[std::size_t(8 * columns + c)].x -
+                                                     bent.uvs[std::size_t(c)].x));
+        // the middle row keeps its own arc length
+        CHECK(bent.uvs[std::size_t(4 * columns + c)].x ==
+              doctest::Approx(own.uvs[std::size_t(4 * columns + c)].x));
+    }
+    CHECK(drift_own > 0.1f);    // the raised middle row runs further out than the side rows
+    CHECK(drift_bent == 0.0f);  // one x per column
+    o.reference_row = 1.5f;
+    CHECK(!tessellate_patch_strip(&p, 1, o, &bent).ok());
+}

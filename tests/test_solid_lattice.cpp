@@ -73,7 +73,7 @@ TEST_CASE("lattice side is 2^R + 1 and the node classes follow eqs. (1)-(4)") {
 }
 
 TEST_CASE("Types I, II and III give the same float at all 65^3 nodes (hash noise)") {
-    FractalParams p;  // R = 6, beta 0.5, seed 1987
+    FractalParams p;  // R = 6, beta 0.9, seed 1987
     p.corners[3] = 0.75f;
     p.corners[6] = -1.25f;
     LatticeView v;
@@ -343,4 +343,30 @@ TEST_CASE("eqs. (1)-(4) by hand on an R = 2 lattice: face centres from the EDGE 
     CHECK(level_amplitude(1, 0.7f) == 1.0f);
     CHECK(level_amplitude(2, 0.7f) == doctest::Approx(std::exp(-0.7)).epsilon(1e-6));
     CHECK(level_amplitude(6, 0.7f) == doctest::Approx(std::exp(-3.5)).epsilon(1e-6));
+}
+
+TEST_CASE("Type III as okada1989 has it (no reuse): the same values, R subdivisions a query") {
+    FractalParams p;
+    TypeIIILattice cached, paper;
+    REQUIRE(cached.init(p).ok());
+    REQUIRE(paper.init(p).ok());
+    paper.set_reuse(false);
+    CHECK(!paper.reuse());
+    const int n = 300;
+    for (int i = 0; i < n; ++i) {
+        const Vec3 q{float(i % 64) + 0.25f, float((i * 7) % 64) + 0.5f, 31.75f};
+        CHECK(same_bits(cached.turbulence(q), paper.turbulence(q)));
+    }
+    CHECK(paper.subdivisions() == long(n) * p.R);  // every query descends all R levels
+    CHECK(cached.subdivisions() < paper.subdivisions());
+}
+
+TEST_CASE("Type II's container memory counts the hash map, not only the payload") {
+    FractalParams p;
+    TypeIILattice t2;
+    REQUIRE(t2.init(p).ok());
+    for (int i = 0; i < 200; ++i) (void)t2.turbulence(Vec3{float(i % 64) + 0.5f, 10.5f, 20.5f});
+    REQUIRE(t2.list_size() > 0);
+    CHECK(t2.container_bytes() >= t2.list_size() * 32);  // one heap node of >= 32 bytes each
+    CHECK(t2.container_bytes() > 2 * t2.list_bytes());
 }

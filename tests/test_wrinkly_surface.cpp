@@ -108,14 +108,13 @@ TEST_CASE("hierarchical sampling: samples take H at F^{-1}; H^k passes through t
                 }
         }
     }
-    // k = 0: H^0 is H itself, so with K = 0 the sum is W^0 H = (1 - delta) H.
+    // k = 0: H^0 is H itself, so with K = 0 the sum is H (the single weight is 1, eq. 18).
     HierarchicalOptions o0;
     o0.levels = 0;
     HierarchicalSampling hs0;
     REQUIRE(sample_hierarchy(s, o0, &hs0));
     const SuperposedSample p = superposed_sampled(s, hs0, 0.3f, 0.8f);
-    CHECK(p.attributes.height ==
-          doctest::Approx((1 - p.base.delta) * s.attributes(0.3f, 0.8f).height).epsilon(1e-5));
+    CHECK(p.attributes.height == doctest::Approx(s.attributes(0.3f, 0.8f).height).epsilon(1e-5));
 }
 
 TEST_CASE("linear and Hermite interpolation agree at the samples and differ between them") {
@@ -169,8 +168,9 @@ TEST_CASE("adaptive end of the superposition: a tolerance drops the small steps"
     const float tol = 0.05f;
     const SuperposedSample cut = superposed_sampled(s, hs, 0.42f, 0.58f, tol);
     CHECK(cut.levels_used < 4);
-    // What was dropped is bounded by the tolerance (delta^k max|h| < tol).
-    CHECK(std::fabs(cut.attributes.height - all.attributes.height) < tol);
+    // What was dropped is bounded by the tolerance (delta^k max|h| < tol), twice that after the
+    // weights used are renormalised (eq. 18 on the finite sum).
+    CHECK(std::fabs(cut.attributes.height - all.attributes.height) < 2 * tol);
 }
 
 TEST_CASE("tessellation: grid, triangle count, superposed vs plain") {
@@ -250,39 +250,57 @@ TEST_CASE("bad input gives a clear status, never a crash") {
     CHECK(!tessellate_wr_surface(s, nullptr, to, &wm));
 }
 
-TEST_CASE(
-    "constant h_i and c_i: eqs. (16) and (20) add up to h·(1 - delta^(K+1)), colour stays c") {
+TEST_CASE("constant h_i and c_i: eqs. (16) and (20) give h itself for every delta and K (eq. 18)") {
     // Whatever the IST moves, a constant H is moved onto itself, so every step contributes
-    // W^k·h and the truncated sum is h·sum_k W^k (eq. 18); the averaged colour is c itself.
-    WrControlMesh m = test_mesh(7, 6);
-    for (WrControlPoint& p : m.points) {
-        p.height = 0.3f;
-        p.color = {0.2f, 0.6f, 0.9f};
-        p.delta = 0.6f;
+    // W^k·h. Eq. (18) says the weights add up to 1 and delta only redistributes them; a sum
+    // stopped at K keeps that (delta_0 = (1 - delta)/(1 - delta^(K+1))), so the result is h,
+    // not h·(1 - delta^(K+1)) (fig. 21 (g) was 23 % low before), and the colour is c.
+    for (float delta : {0.25f, 0.6f, 0.75f, 0.95f}) {
+        WrControlMesh m = test_mesh(7, 6);
+        for (WrControlPoint& p : m.points) {
+            p.height = 0.3f;
+            p.color = {0.2f, 0.6f, 0.9f};
+            p.delta = delta;
+        }
+        WrSurface s;
+        REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+        WrAxis au = identity_axis(s.spans_u(), 3), av = identity_axis(s.spans_v(), 3);
+        au.inverse = reflect_inverse;
+        av.inverse = reflect_inverse;
+        REQUIRE(s.set_axes(au, av));
+        for (int K : {0, 1, 3}) {
+            for (SampleInterpolation mode :
+                 {SampleInterpolation::linear, SampleInterpolation::hermite}) {
+                HierarchicalOptions o;
+                o.levels = K;
+                o.interpolation = mode;
+                HierarchicalSampling hs;
+                REQUIRE(sample_hierarchy(s, o, &hs));
+                for (float u : {0.0f, 0.13f, 0.5f, 0.87f})
+                    for (float v : {0.07f, 0.61f, 1.0f}) {
+                        const WrAttributes d = superposed_attributes_direct(s, u, v, K);
+                        const SuperposedSample h = superposed_sampled(s, hs, u, v);
+                        CHECK(d.height == doctest::Approx(0.3f).epsilon(1e-4));
+                        CHECK(h.attributes.height == doctest::Approx(0.3f).epsilon(1e-4));
+                        CHECK(h.levels_used == K);
+                        CHECK(length(h.attributes.color - Vec3{0.2f, 0.6f, 0.9f}) < 1e-4f);
+                        // eq. (20): displaced along the unit base normal N(u, v)
+                        CHECK(length(h.position - (h.base.position +
+                                                   h.base.normal * h.attributes.height)) < 1e-4f);
+                        // the adaptive end of the sum (§4.2) keeps the total as well
+                        const SuperposedSample c = superposed_sampled(s, hs, u, v, 0.05f);
+                        CHECK(c.levels_used <= K);
+                        CHECK(c.attributes.height == doctest::Approx(0.3f).epsilon(1e-4));
+                    }
+            }
+        }
     }
-    WrSurface s;
-    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
-    WrAxis au = identity_axis(s.spans_u(), 3), av = identity_axis(s.spans_v(), 3);
-    au.inverse = reflect_inverse;
-    av.inverse = reflect_inverse;
-    REQUIRE(s.set_axes(au, av));
-    HierarchicalOptions o;
-    o.levels = 3;
-    o.interpolation = SampleInterpolation::hermite;
-    HierarchicalSampling hs;
-    REQUIRE(sample_hierarchy(s, o, &hs));
-    const float expect = 0.3f * (1.0f - std::pow(0.6f, 4.0f));
-    for (float u : {0.0f, 0.13f, 0.5f, 0.87f})
-        for (float v : {0.07f, 0.61f, 1.0f}) {
-            const WrAttributes d = superposed_attributes_direct(s, u, v, 3);
-            const SuperposedSample h = superposed_sampled(s, hs, u, v);
-            CHECK(d.height == doctest::Approx(expect).epsilon(1e-4));
-            CHECK(h.attributes.height == doctest::Approx(expect).epsilon(1e-4));
-            CHECK(h.levels_used == 3);
-            CHECK(length(h.attributes.color - Vec3{0.2f, 0.6f, 0.9f}) < 1e-4f);
-            // eq. (20): displaced along the unit base normal N(u, v)
-            CHECK(length(h.position - (h.base.position + h.base.normal * h.attributes.height)) <
-                  1e-4f);
+    // The truncated weights of eq. (19) add up to 1 for every K.
+    for (float delta : {0.1f, 0.5f, 0.9f})
+        for (int K = 0; K <= 6; ++K) {
+            float sum = 0;
+            for (int k = 0; k <= K; ++k) sum += superposition_weight_truncated(delta, k, K);
+            CHECK(sum == doctest::Approx(1.0f).epsilon(1e-5));
         }
 }
 

@@ -6,7 +6,7 @@
 //   SHITSUKAN_FIGURE(fig10_cube_marble, "okada1987", "fig10a",
 //                    "Cube with the marble texture (k = 16)") {
 //       ctx.given("k", "16", "okada1987 §4");
-//       ctx.chosen("beta", "0.5", "amplitude halves per level; not printed in the paper");
+//       ctx.chosen("beta", "0.9", "not printed in the paper; smooth folds at k = 16");
 //       RgbImage img(ctx.quick() ? 128 : 512, ...);
 //       ... render ...
 //       return ctx.save_png(img.view());            // -> out/okada1987/fig10a.png

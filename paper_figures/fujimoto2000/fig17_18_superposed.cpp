@@ -4,6 +4,12 @@
 // (4), (5) superposed WR surfaces, eq. (20) (hierarchical sampling), with a constant ratio
 // function delta: small delta smooth, large delta rough "mountain ranges" (§4.1), against the
 // "spiky" plain WR surface of (3).
+// Row (a) is the surface as designed; row (b) the same surface after a few heights h_i change
+// (§4.1: (a-1) -> (b-1) deforms (a-4,5) -> (b-4,5) "like an avalanche", 雪崩式変形). Each (b)
+// panel's note measures how far the change reaches: the share of the surface that moved by
+// more than 0.1 % of max|h_i| between (a) and (b). A Bezier control point acts on the whole
+// patch; a B-spline one on 4 x 4 spans, and the IST carries that change to the places it maps
+// there (every small interval whose source lies in the changed region).
 #include <algorithm>
 #include <cmath>
 
@@ -27,32 +33,40 @@ Vec3 height_color(float h, float hmax) {
 }
 
 // fig. 17 (chosen): 4 x 4 Bezier points on [-1.2, 1.2]^2 (flat), a ridge of heights up to 1.2.
-WrControlMesh fig17_mesh() {
+// Row (b): the point at column 0, row 2 (front left) is raised from 0.20 to 1.0, the peak at
+// column 2, row 2 lowered from 1.20 to 0.6.
+WrControlMesh fig17_mesh(bool changed) {
     static const float h[4][4] = {{0.05f, 0.35f, 0.45f, 0.10f},
                                   {0.30f, 1.10f, 0.80f, 0.20f},
                                   {0.20f, 0.85f, 1.20f, 0.45f},
                                   {0.05f, 0.30f, 0.45f, 0.10f}};
-    return square_control_mesh(4, 1.2f, [](int c, int r, float, float, WrControlPoint& p) {
+    return square_control_mesh(4, 1.2f, [changed](int c, int r, float, float, WrControlPoint& p) {
         p.height = h[r][c];
+        if (changed && r == 2 && c == 0) p.height = 1.0f;
+        if (changed && r == 2 && c == 2) p.height = 0.6f;
         p.color = height_color(p.height, 1.2f);
     });
 }
 
 // fig. 18 (chosen): 11 x 11 B-spline points on [-1.5, 1.5]^2 (8 x 8 spans), flat; a winding
 // mountain range through the middle (heights up to 0.7) with a hashed variation (seed 18).
-WrControlMesh fig18_mesh() {
-    return square_control_mesh(11, 1.5f, [](int c, int r, float x, float z, WrControlPoint& p) {
-        const float d = z + 0.1f - 0.35f * std::sin(1.6f * x);  // distance from a winding ridge
-        p.height =
-            0.05f + 0.55f * std::exp(-3.0f * d * d) * (0.65f + 0.6f * hash_uniform(18, 0, c, r));
-        p.color = height_color(p.height, 0.65f);
-    });
+// Row (b): four points beside the ridge (columns 7-8, rows 2-3, towards the camera) raised by
+// 0.45: a new spur off the range.
+WrControlMesh fig18_mesh(bool changed) {
+    return square_control_mesh(
+        11, 1.5f, [changed](int c, int r, float x, float z, WrControlPoint& p) {
+            const float d = z + 0.1f - 0.35f * std::sin(1.6f * x);  // distance from a winding ridge
+            p.height = 0.05f +
+                       0.55f * std::exp(-3.0f * d * d) * (0.65f + 0.6f * hash_uniform(18, 0, c, r));
+            if (changed && (r == 2 || r == 3) && (c == 7 || c == 8)) p.height += 0.45f;
+            p.color = height_color(p.height, 0.65f);
+        });
 }
 
 struct SuperFigure {
     SurfaceBasis basis;
     IstKind kind;
-    WrControlMesh (*mesh)();
+    WrControlMesh (*mesh)(bool changed);
     int wr_levels;  // K of panel (3)
     int max_level;  // cap of the adaptive choice
     Shot shot;
@@ -63,85 +77,151 @@ const SuperFigure kFig17{SurfaceBasis::bezier,
                          fig17_mesh,
                          4,
                          5,
-                         Shot{{0.4f, 2.7f, 3.1f}, {0.0f, 0.25f, 0.0f}, {0, 1, 0}, 40.0f}};
+                         Shot{{2.9f, 2.6f, 2.9f}, {0.0f, 0.3f, 0.0f}, {0, 1, 0}, 36.0f}};
 const SuperFigure kFig18{SurfaceBasis::bspline,
                          IstKind::fully_connected,
                          fig18_mesh,
                          3,
                          4,
-                         Shot{{0.3f, 3.0f, 3.6f}, {0.0f, 0.2f, 0.0f}, {0, 1, 0}, 40.0f}};
+                         Shot{{3.3f, 3.0f, 3.3f}, {0.0f, 0.15f, 0.0f}, {0, 1, 0}, 35.0f}};
 
-Status run_panel(FigureContext& ctx, const SuperFigure& f, int panel) {
-    const bool quick = ctx.quick();
-    const int size = quick ? 128 : 512;
-    ctx.given("base surface",
-              f.basis == SurfaceBasis::bezier ? "Bezier n = 3" : "uniform B-spline n = 3",
-              "§4.1, figs. 17-18");
-    ctx.given("weights", "W^k = (1 - delta) delta^k", "eq. (19)");
-    ctx.chosen("IST", f.kind == IstKind::unit ? "unit-IST N = 3" : "fully-connected IST N = 3",
-               "the ISTs of figs. 14/15");
-    ctx.chosen("control mesh",
-               f.basis == SurfaceBasis::bezier
-                   ? "4 x 4 flat, ridge of heights 0.05..1.2"
-                   : "11 x 11 flat (8 x 8 spans), winding range up to 0.7",
-               "not printed");
-    ctx.chosen("image size", fmt("%d x %d", size, size), "not given");
-    WrControlMesh mesh = f.mesh();
-    const float delta = panel == 4 ? kDeltaSmooth : kDeltaRough;
-    for (WrControlPoint& p : mesh.points) p.delta = delta;  // constant ratio function (§4.1)
+// The surface of one row (changed = row b) with its axes, ready to tessellate.
+struct RowSurface {
+    WrControlMesh mesh;
     WrSurface surface;
-    SHITSUKAN_TRY(make_wr_surface(mesh, f.basis, 3, &surface));
     AxisPair axes;
-    SHITSUKAN_TRY(make_axes(surface, f.kind, "fully", 3, kMaxWrLevel, &axes));
-    SHITSUKAN_TRY(surface.set_axes(axes.u.axis(), axes.v.axis()));
-    RgbImage img(size, size);
-    Shading shading;
-    const Camera camera = shot_camera(f.shot, size, size);
-    if (panel == 1) {
-        draw_control_mesh(img.view(), camera, mesh, surface, true, shading.background);
-        return ctx.save_png(img.view());
-    }
-    WrTessellationOptions o;
-    HierarchicalSampling hs;
+};
+Status make_row_surface(const SuperFigure& f, bool changed, float delta, RowSurface* out) {
+    out->mesh = f.mesh(changed);
+    for (WrControlPoint& p : out->mesh.points) p.delta = delta;  // constant ratio function
+    SHITSUKAN_TRY(make_wr_surface(out->mesh, f.basis, 3, &out->surface));
+    SHITSUKAN_TRY(make_axes(out->surface, f.kind, "fully", 3, kMaxWrLevel, &out->axes));
+    return out->surface.set_axes(out->axes.u.axis(), out->axes.v.axis());
+}
+
+// Tessellation options of panel 2..5 (and the sampling of 4, 5). `coarse`: a grid for measuring.
+Status panel_options(const SuperFigure& f, const RowSurface& rs, int panel, bool quick, bool coarse,
+                     int size, WrTessellationOptions* o, HierarchicalSampling* hs,
+                     std::string* chosen) {
     if (panel == 2) {
-        o.form = WrSurfaceForm::plain;
-        o.grid_level = quick ? 2 : 3;
-        o.subdivisions = 2;
+        o->form = WrSurfaceForm::plain;
+        o->grid_level = quick || coarse ? 2 : 3;
+        o->subdivisions = coarse ? 1 : 2;
     } else if (panel == 3) {
-        o.form = WrSurfaceForm::wr;
-        o.levels = quick ? 2 : f.wr_levels;
-        o.grid_level = o.levels;
-        o.subdivisions = quick ? 1 : 2;
-        ctx.chosen("K", fmt("%d", o.levels), "small intervals of a few pixels");
+        o->form = WrSurfaceForm::wr;
+        o->levels = quick ? 2 : f.wr_levels;
+        o->grid_level = o->levels;
+        o->subdivisions = quick || coarse ? 1 : 2;
+        *chosen = fmt("K = %d", o->levels);
     } else {
         // Adaptive sampling: grid cells of <= 2 pixels, the sum stops when the rest of it is
         // below half a pixel (§4.2), both capped.
         const float ppu = shot_pixels_per_unit(f.shot, size);
         const AdaptiveLevels a =
-            choose_adaptive_levels(surface, mesh, ppu, 2.0f, 0.5f, quick ? 2 : f.max_level);
+            choose_adaptive_levels(rs.surface, rs.mesh, ppu, 2.0f, 0.5f, quick ? 2 : f.max_level);
         HierarchicalOptions ho;
         ho.levels = std::max(a.sum_levels, 1);
         ho.interpolation = SampleInterpolation::hermite;
-        SHITSUKAN_TRY(sample_hierarchy(surface, ho, &hs));
-        o.form = WrSurfaceForm::superposed;
-        o.grid_level = a.grid_level;
-        o.subdivisions = 1;
-        o.tail_tolerance = a.world_tolerance;
+        SHITSUKAN_TRY(sample_hierarchy(rs.surface, ho, hs));
+        o->form = WrSurfaceForm::superposed;
+        o->grid_level = coarse ? std::min(a.grid_level, 3) : a.grid_level;
+        o->subdivisions = 1;
+        o->tail_tolerance = a.world_tolerance;
+        *chosen = fmt("grid level %d, K = %d, tail tolerance %.4f", a.grid_level, ho.levels,
+                      double(a.world_tolerance));
+    }
+    return Status::success();
+}
+
+// How far the change (a) -> (b) reaches in panel 2..5: the share of grid vertices (uniform in
+// u, v) that moved by more than 0.1 % of max|h_i|, and the largest move.
+Status measure_reach(const SuperFigure& f, int panel, float delta, bool quick, int size,
+                     double* share, double* largest) {
+    WrMesh m[2];
+    float hmax = 0;
+    for (int row = 0; row < 2; ++row) {
+        RowSurface rs;
+        SHITSUKAN_TRY(make_row_surface(f, row == 1, delta, &rs));
+        hmax = std::max(hmax, rs.surface.max_abs_height());
+        WrTessellationOptions o;
+        HierarchicalSampling hs;
+        std::string unused;
+        SHITSUKAN_TRY(panel_options(f, rs, panel, quick, true, size, &o, &hs, &unused));
+        SHITSUKAN_TRY(evaluate_wr_grid(rs.surface, panel >= 4 ? &hs : nullptr, o, &m[row]));
+    }
+    long moved = 0;
+    double big = 0;
+    const std::size_t n = m[0].mesh.positions.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const double d = length(m[1].mesh.positions[i] - m[0].mesh.positions[i]);
+        if (d > 0.001 * hmax) ++moved;
+        big = std::max(big, d);
+    }
+    *share = n ? double(moved) / double(n) : 0.0;
+    *largest = big;
+    return Status::success();
+}
+
+Status run_panel(FigureContext& ctx, const SuperFigure& f, char row, int panel) {
+    const bool quick = ctx.quick();
+    const int size = quick ? 128 : 512;
+    const bool bezier = f.basis == SurfaceBasis::bezier;
+    ctx.given("base surface", bezier ? "Bezier n = 3" : "uniform B-spline n = 3",
+              "§4.1, figs. 17-18");
+    ctx.given("weights", "W^k = (1 - delta) delta^k", "eq. (19)");
+    ctx.chosen("IST", f.kind == IstKind::unit ? "unit-IST N = 3" : "fully-connected IST N = 3",
+               "the ISTs of figs. 14/15");
+    ctx.chosen("control mesh",
+               bezier ? "4 x 4 flat, ridge of heights 0.05..1.2"
+                      : "11 x 11 flat (8 x 8 spans), winding range up to 0.7",
+               "not printed");
+    if (row == 'b')
+        ctx.chosen("height change (a-1) -> (b-1)",
+                   bezier ? "front-left point 0.20 -> 1.0, peak 1.20 -> 0.6"
+                          : "four points beside the ridge (columns 7-8, rows 2-3) +0.45",
+                   "the paper changes some h_i and does not print them");
+    ctx.chosen("image size", fmt("%d x %d", size, size), "not given");
+    const float delta = panel == 4 ? kDeltaSmooth : kDeltaRough;
+    RowSurface rs;
+    SHITSUKAN_TRY(make_row_surface(f, row == 'b', delta, &rs));
+    RgbImage img(size, size);
+    Shading shading;
+    // Chosen: a diagonal view (45 degrees to u and v) and light from above and the left, so
+    // neither parameter's IST stripes line up with the view.
+    shading.light = Vec3{-0.6f, 1.0f, 0.2f};
+    const Camera camera = shot_camera(f.shot, size, size);
+    if (panel == 1) {
+        // Wider than the surface panels: the control polygon reaches beyond the surface.
+        const Camera wide = shot_camera(zoom_shot(f.shot, f.shot.target, 0.8f), size, size);
+        draw_control_mesh(img.view(), wide, rs.mesh, rs.surface, true, shading.background);
+        return ctx.save_png(img.view());
+    }
+    WrTessellationOptions o;
+    HierarchicalSampling hs;
+    std::string chosen;
+    SHITSUKAN_TRY(panel_options(f, rs, panel, quick, false, size, &o, &hs, &chosen));
+    if (panel == 3) ctx.chosen("K", chosen, "small intervals of a few pixels");
+    if (panel >= 4) {
         ctx.chosen("delta", fmt("%.2f (constant)", double(delta)),
                    "one smooth and one rough value; the paper does not print them");
         ctx.chosen("sample interpolation", "Hermite",
                    "fig. 19(d); the paper does not say for figs. 17-18");
-        ctx.chosen("adaptive sampling",
-                   fmt("grid level %d, K = %d, tail tolerance %.4f", a.grid_level, ho.levels,
-                       double(a.world_tolerance)),
-                   "cells <= 2 px, omitted rest of the sum < 0.5 px");
+        ctx.chosen("adaptive sampling", chosen, "cells <= 2 px, omitted rest of the sum < 0.5 px");
     }
     WrMesh wm;
-    SHITSUKAN_TRY(tessellate_wr_surface(surface, panel >= 4 ? &hs : nullptr, o, &wm));
+    SHITSUKAN_TRY(tessellate_wr_surface(rs.surface, panel >= 4 ? &hs : nullptr, o, &wm));
     RasterStats stats;
     SHITSUKAN_TRY(render_opaque(camera, wm.mesh, img.view(), shading, &stats));
     ctx.note(fmt("%d triangles; superposition steps used: max %d, mean %.2f.",
                  wm.mesh.triangle_count(), wm.max_levels_used, wm.mean_levels_used));
+    if (row == 'b') {
+        double share = 0, largest = 0;
+        SHITSUKAN_TRY(measure_reach(f, panel, delta, quick, size, &share, &largest));
+        ctx.note(
+            fmt("Reach of the height change (a) -> (b): %.1f %% of the surface moved by more "
+                "than 0.1 %% of max|h_i| (largest move %.3f).",
+                100.0 * share, largest));
+    }
     return ctx.save_png(img.view());
 }
 
@@ -149,18 +229,19 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, int panel) {
 
 #define SUPER_PANEL(fig, row, i, figure, caption)                                  \
     SHITSUKAN_FIGURE(fig##row##i##_panel, "fujimoto2000", #fig #row #i, caption) { \
-        return run_panel(ctx, figure, i);                                          \
+        return run_panel(ctx, figure, (#row)[0], i);                               \
     }
 
-SUPER_PANEL(fig17, a, 1, kFig17, "Superposed IST-Bezier: (a-1) control mesh with heights h_i")
-SUPER_PANEL(fig17, a, 2, kFig17, "Superposed IST-Bezier: (a-2) conventional Bezier surface")
-SUPER_PANEL(fig17, a, 3, kFig17, "Superposed IST-Bezier: (a-3) WR surface, eq. (15)")
-SUPER_PANEL(fig17, a, 4, kFig17, "Superposed IST-Bezier: (a-4) superposed, small delta (smooth)")
-SUPER_PANEL(fig17, a, 5, kFig17, "Superposed IST-Bezier: (a-5) superposed, large delta (rough)")
-SUPER_PANEL(fig18, b, 1, kFig18, "Superposed IST-B-spline: (b-1) control mesh with heights h_i")
-SUPER_PANEL(fig18, b, 2, kFig18, "Superposed IST-B-spline: (b-2) conventional B-spline surface")
-SUPER_PANEL(fig18, b, 3, kFig18, "Superposed IST-B-spline: (b-3) WR surface, eq. (15)")
-SUPER_PANEL(fig18, b, 4, kFig18, "Superposed IST-B-spline: (b-4) superposed, small delta (smooth)")
-SUPER_PANEL(fig18, b, 5, kFig18, "Superposed IST-B-spline: (b-5) superposed, large delta (rough)")
+#define SUPER_ROW(fig, row, figure, name, plain, when)                                            \
+    SUPER_PANEL(fig, row, 1, figure, name ": (" #row "-1) control mesh with heights h_i" when)    \
+    SUPER_PANEL(fig, row, 2, figure, name ": (" #row "-2) conventional " plain " surface" when)   \
+    SUPER_PANEL(fig, row, 3, figure, name ": (" #row "-3) WR surface, eq. (15)" when)             \
+    SUPER_PANEL(fig, row, 4, figure, name ": (" #row "-4) superposed, small delta (smooth)" when) \
+    SUPER_PANEL(fig, row, 5, figure, name ": (" #row "-5) superposed, large delta (rough)" when)
+
+SUPER_ROW(fig17, a, kFig17, "Superposed IST-Bezier", "Bezier", "")
+SUPER_ROW(fig17, b, kFig17, "Superposed IST-Bezier", "Bezier", ", after some h_i change")
+SUPER_ROW(fig18, a, kFig18, "Superposed IST-B-spline", "B-spline", "")
+SUPER_ROW(fig18, b, kFig18, "Superposed IST-B-spline", "B-spline", ", after some h_i change")
 
 }  // namespace shitsukan::fujimoto2000

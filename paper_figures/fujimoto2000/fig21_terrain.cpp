@@ -1,8 +1,12 @@
-// fujimoto2000 fig. 21 and Table 2: terrain, 800 x 800. (c) conventional B-spline surface,
-// (d) WR surface (spiky), (e)(f)(g) superposed IST-B-spline surfaces with three ratio
-// functions delta: the roughness of the "mountain ranges" changes with delta (§5). As in the
-// paper, the green part at the front right is not superposed: its control points carry a tiny
-// delta (0.02), so W^0 = 0.98 and the sum is practically H itself.
+// fujimoto2000 fig. 21 and Table 2: terrain, 800 x 800 per panel. (a) control mesh with the
+// heights, (b) the conventional surface coloured per span (the captions of (a)(b) are lost in
+// the OCR; read as fig. 22's (x)(y)), (c) conventional B-spline surface, (d) WR surface
+// (spiky), (e)(f)(g) superposed IST-B-spline surfaces with three ratio functions delta: the
+// roughness of the "mountain ranges" changes with delta (§5), with §5's Gaussian jitter on the
+// sample values. As in the paper, the green part at the front right is not superposed: its
+// control points carry a tiny delta (0.02), so W^0 = 0.98 and the sum is practically H itself.
+// The product IST (u and v separately) gives every WR surface a plaid grain; a camera looking
+// along one parameter turns it into curtains, so the view is diagonal, the light from above.
 // Table 2 lists our time per stage beside the paper's Origin2000 minutes.
 #include <algorithm>
 #include <cmath>
@@ -23,14 +27,29 @@ using figures::fmt;
 // superposed" delta of the green part.
 constexpr float kDeltas[3] = {0.35f, 0.55f, 0.75f};
 constexpr float kDeltaGreen = 0.02f;
+// §5: "to add naturalness, Gaussian random numbers are given to the sample values" (chosen
+// deviations: the paper gives none). Only the sampled panels (e)-(g) have samples.
+constexpr float kJitterHeight = 0.12f, kJitterColor = 0.035f;
 
-float green_mask(float x, float z) {  // 1 in the front-right field, 0 in the mountains
-    return clamp((x - 0.3f) * 1.2f, 0.0f, 1.0f) * clamp((z - 0.2f) * 1.2f, 0.0f, 1.0f);
+// The camera looks diagonally across the parameter grid (from +x +z, 45 degrees to both
+// parameter directions, so neither the u nor the v stripes of the product IST line up with
+// the view), from above; the light comes from above. Screen "right" is +x -z, "front" +x +z.
+const Shot kShot{{5.4f, 4.6f, 5.4f}, {-0.3f, 0.3f, -0.3f}, {0, 1, 0}, 41.0f};
+const Vec3 kLight{0.25f, 1.0f, 0.45f};
+
+float screen_right(float x, float z) { return 0.7071f * (x - z); }
+float screen_front(float x, float z) { return 0.7071f * (x + z); }
+
+// 1 in the field at the front right (as seen by kShot), 0 in the mountains.
+float green_mask(float x, float z) {
+    return clamp((screen_right(x, z) - 0.5f) * 1.1f, 0.0f, 1.0f) *
+           clamp((screen_front(x, z) + 0.6f) * 1.1f, 0.0f, 1.0f);
 }
 
-// Chosen: 10 x 10 control points (7 x 7 spans) on [-3, 3]^2, flat base; a massif at the back
-// left, a second range at the back right, a low green field at the front right; colours by
-// height (grass, rock, snow); hashed variation seed 21.
+// Chosen: 10 x 10 control points (7 x 7 spans) on [-3, 3]^2, flat base; a massif at the back,
+// a second range to the left, a low green field at the front right. Colour per control point
+// varies along both parameters: the height band (grass, rock, snow), a hashed tint per point
+// and a slow drift (warmer rock towards +x, cooler towards +z); hashed variation seed 21.
 WrControlMesh terrain_mesh(float delta) {
     const int n = 10;
     WrControlMesh m = make_control_mesh(n, n);
@@ -42,24 +61,25 @@ WrControlMesh terrain_mesh(float delta) {
             const float g = green_mask(x, z);
             float h =
                 1.9f *
-                    std::exp(-((x + 1.0f) * (x + 1.0f) / 2.2f + (z + 1.1f) * (z + 1.1f) / 1.3f)) +
+                    std::exp(-((x + 0.9f) * (x + 0.9f) / 1.6f + (z + 1.0f) * (z + 1.0f) / 1.6f)) +
                 1.1f *
-                    std::exp(-((x - 1.7f) * (x - 1.7f) / 1.0f + (z + 1.9f) * (z + 1.9f) / 0.7f)) +
-                0.25f * hash_uniform(21, 0, c, r);
+                    std::exp(-((x + 2.0f) * (x + 2.0f) / 0.8f + (z - 1.2f) * (z - 1.2f) / 1.4f)) +
+                0.3f * hash_uniform(21, 0, c, r);
             h = (1.0f - g) * h + g * (0.06f + 0.08f * hash_uniform(21, 1, c, r));
             p.position = {x, 0.0f, z};
             p.height = h;
-            const Vec3 grass{0.36f, 0.52f, 0.24f}, rock{0.52f, 0.45f, 0.38f},
-                snow{0.96f, 0.96f, 0.98f};
-            Vec3 col = h < 0.7f ? lerp(grass, rock, h / 0.7f)
-                                : lerp(rock, snow, clamp((h - 0.9f) / 0.6f, 0.0f, 1.0f));
-            p.color = lerp(col, Vec3{0.30f, 0.62f, 0.22f}, g);
+            const float warm =
+                0.5f + 0.08f * x - 0.06f * z + 0.25f * (hash_uniform(21, 2, c, r) - 0.5f);
+            const Vec3 grass = lerp(Vec3{0.30f, 0.50f, 0.22f}, Vec3{0.50f, 0.55f, 0.25f}, warm);
+            const Vec3 rock = lerp(Vec3{0.42f, 0.42f, 0.44f}, Vec3{0.60f, 0.47f, 0.36f}, warm);
+            const Vec3 snow{0.96f, 0.96f, 0.98f};
+            Vec3 col = h < 0.6f ? lerp(grass, rock, h / 0.6f)
+                                : lerp(rock, snow, clamp((h - 1.0f) / 0.6f, 0.0f, 1.0f));
+            p.color = lerp(col, Vec3{0.28f, 0.62f, 0.20f}, g);
             p.delta = (1.0f - g) * delta + g * kDeltaGreen;
         }
     return m;
 }
-
-const Shot kShot{{2.0f, 3.6f, 7.2f}, {-0.5f, 0.2f, -0.3f}, {0, 1, 0}, 44.0f};
 
 struct Panel {
     char id;
@@ -75,16 +95,55 @@ const Panel kPanels[5] = {{'c', "(c)", "1:06", "0:12", "0:35", "1:53"},
                           {'f', "(f)", "1:49", "0:12", "2:11", "4:12"},
                           {'g', "(g)", "1:49", "0:12", "2:24", "4:25"}};
 
+// What the reader should see, measured on the vertex grid (the same grid for every panel):
+// mean height (relative to the plain surface (c)), and the RMS departure from the plain
+// surface in the mountains and in the green field.
+struct TerrainMeasure {
+    double mean_height = 0, mean_plain = 0, rms_mountains = 0, rms_green = 0;
+};
+TerrainMeasure measure_terrain(const WrSurface& surface, const WrMesh& wm) {
+    TerrainMeasure m;
+    double sum = 0, sum_plain = 0, sm = 0, sg = 0;
+    long nm = 0, ng = 0, n = 0;
+    for (std::size_t i = 0; i < wm.mesh.positions.size(); i += 7) {  // every 7th vertex
+        const Vec2 uv = wm.mesh.uvs[i];
+        const BasePoint b = surface.base_point(uv.x, uv.y);
+        const float h = dot(wm.mesh.positions[i] - b.position, b.normal);
+        const float hp = surface.attributes(uv.x, uv.y).height;
+        const float d = h - hp;
+        sum += h;
+        sum_plain += hp;
+        ++n;
+        if (green_mask(b.position.x, b.position.z) > 0.99f) {
+            sg += double(d) * d;
+            ++ng;
+        } else if (green_mask(b.position.x, b.position.z) == 0.0f) {
+            sm += double(d) * d;
+            ++nm;
+        }
+    }
+    m.mean_height = sum / double(n);
+    m.mean_plain = sum_plain / double(n);
+    m.rms_mountains = nm ? std::sqrt(sm / double(nm)) : 0.0;
+    m.rms_green = ng ? std::sqrt(sg / double(ng)) : 0.0;
+    return m;
+}
+
+Status make_terrain_surface(float delta, WrControlMesh* mesh, WrSurface* surface, AxisPair* axes) {
+    *mesh = terrain_mesh(delta);
+    SHITSUKAN_TRY(make_wr_surface(*mesh, SurfaceBasis::bspline, 3, surface));
+    SHITSUKAN_TRY(make_axes(*surface, IstKind::fully_connected, "fully", 3, kMaxWrLevel, axes));
+    return surface->set_axes(axes->u.axis(), axes->v.axis());
+}
+
 Status render_panel(bool quick, char panel, RgbImage* img, StageTimes* times, WrMesh* keep,
-                    std::string* params) {
+                    std::string* params, TerrainMeasure* measure = nullptr) {
     const int size = quick ? 160 : 800;
     const float delta = panel >= 'e' ? kDeltas[panel - 'e'] : 0.5f;
-    WrControlMesh mesh = terrain_mesh(delta);
+    WrControlMesh mesh;
     WrSurface surface;
-    SHITSUKAN_TRY(make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface));
     AxisPair axes;
-    SHITSUKAN_TRY(make_axes(surface, IstKind::fully_connected, "fully", 3, kMaxWrLevel, &axes));
-    SHITSUKAN_TRY(surface.set_axes(axes.u.axis(), axes.v.axis()));
+    SHITSUKAN_TRY(make_terrain_surface(delta, &mesh, &surface, &axes));
     const float ppu = shot_pixels_per_unit(kShot, size);
     const AdaptiveLevels a = choose_adaptive_levels(surface, mesh, ppu, 1.5f, 0.5f, quick ? 2 : 4);
     WrTessellationOptions o;
@@ -94,7 +153,7 @@ Status render_panel(bool quick, char panel, RgbImage* img, StageTimes* times, Wr
     times->quick = quick;
     times->grid_level = a.grid_level;
     auto t0 = Clock::now();
-    if (panel == 'c') {
+    if (panel == 'c' || panel == 'b') {
         o.form = WrSurfaceForm::plain;  // the paper polygonised (c) as finely as the WR surfaces
     } else if (panel == 'd') {
         o.form = WrSurfaceForm::wr;
@@ -104,6 +163,9 @@ Status render_panel(bool quick, char panel, RgbImage* img, StageTimes* times, Wr
         HierarchicalOptions ho;
         ho.levels = std::max(1, a.sum_levels);
         ho.interpolation = SampleInterpolation::linear;
+        ho.jitter_height = kJitterHeight;
+        ho.jitter_color = kJitterColor;
+        ho.seed = 21;
         SHITSUKAN_TRY(sample_hierarchy(surface, ho, &hs));
         o.form = WrSurfaceForm::superposed;
         o.tail_tolerance = a.world_tolerance;
@@ -116,18 +178,25 @@ Status render_panel(bool quick, char panel, RgbImage* img, StageTimes* times, Wr
     t0 = Clock::now();
     polygonise_wr_grid(surface, &wm);
     times->polygonisation = seconds_since(t0);
+    if (panel == 'b') color_by_source_span(&wm, surface, 0);
     t0 = Clock::now();
     *img = RgbImage(size, size);
     Shading shading;
     shading.background = Rgb8{196, 216, 236};
+    shading.light = kLight;
+    shading.ambient = 0.32f;
     SHITSUKAN_TRY(render_opaque(shot_camera(kShot, size, size), wm.mesh, img->view(), shading));
     times->rendering = seconds_since(t0);
     times->triangles = wm.mesh.triangle_count();
-    *params = fmt("grid level %d (%d x %d vertices), %s", a.grid_level, wm.grid_u, wm.grid_v,
-                  panel >= 'e' ? fmt("K = %d, delta = %.2f, linear sampling, mean steps used %.2f",
-                                     times->levels, double(delta), wm.mean_levels_used)
-                                     .c_str()
-                               : (panel == 'd' ? fmt("K = %d", o.levels).c_str() : "no IST"));
+    if (measure) *measure = measure_terrain(surface, wm);
+    *params =
+        fmt("grid level %d (%d x %d vertices), %s", a.grid_level, wm.grid_u, wm.grid_v,
+            panel >= 'e' ? fmt("K = %d, delta = %.2f, linear sampling, Gaussian jitter "
+                               "(height x(1 + %.2f g), colour + %.3f g), mean steps used %.2f",
+                               times->levels, double(delta), double(kJitterHeight),
+                               double(kJitterColor), wm.mean_levels_used)
+                               .c_str()
+                         : (panel == 'd' ? fmt("K = %d", o.levels).c_str() : "no IST"));
     if (keep) *keep = std::move(wm);
     return Status::success();
 }
@@ -137,18 +206,33 @@ Status run_panel(FigureContext& ctx, char panel) {
     ctx.given("surface", "superposed IST-B-spline, n = 3", "§5");
     ctx.chosen("IST", "fully-connected, N = 3", "the paper does not name it for fig. 21");
     ctx.chosen("control mesh",
-               "10 x 10 (7 x 7 spans), massif back left, range back right, "
-               "green field front right (delta 0.02)",
+               "10 x 10 (7 x 7 spans), massif at the back, range to the left, green field front "
+               "right (delta 0.02); colour per point from height band, hashed tint and a drift "
+               "along x and z",
                "not printed");
+    ctx.chosen("view", "diagonal camera from above (45 degrees to u and v), light from above",
+               "a view along one parameter shows only the IST's stripes of the other");
     ctx.chosen("deltas (e)(f)(g)", "0.35, 0.55, 0.75", "not printed; small to large roughness");
     ctx.chosen("adaptive sampling", "grid cells <= 1.5 px, rest of the sum < 0.5 px, level cap 4",
                "keeps a full panel within seconds");
+    if (panel >= 'e')
+        ctx.chosen("jitter",
+                   fmt("height x(1 + %.2f g), colour + %.3f g", double(kJitterHeight),
+                       double(kJitterColor)),
+                   "§5 applies Gaussian jitter to the sample values; it gives no deviation");
     RgbImage img;
     StageTimes t;
     WrMesh wm;
     std::string params;
-    SHITSUKAN_TRY(render_panel(ctx.quick(), panel, &img, &t, &wm, &params));
-    record_stage_times(fmt("fig21%c", panel), t);
+    TerrainMeasure m;
+    SHITSUKAN_TRY(render_panel(ctx.quick(), panel, &img, &t, &wm, &params, &m));
+    if (panel >= 'd')
+        ctx.note(
+            fmt("Measured on every 7th vertex: mean height %.1f %% of the plain surface (c) "
+                "(eq. 18: the total is set by H); RMS departure from (c) %.3f in the "
+                "mountains, %.3f in the green field at the front right (not superposed).",
+                100.0 * m.mean_height / m.mean_plain, m.rms_mountains, m.rms_green));
+    if (panel != 'b') record_stage_times(fmt("fig21%c", panel), t);
     ctx.note(params +
              fmt("; %ld triangles; sampling %.2f s, polygonisation %.2f s, rendering %.2f s.",
                  t.triangles, t.sampling, t.polygonisation, t.rendering));
@@ -158,6 +242,26 @@ Status run_panel(FigureContext& ctx, char panel) {
 
 }  // namespace
 
+SHITSUKAN_FIGURE(fig21a_panel, "fujimoto2000", "fig21a",
+                 "Terrain: (a) control mesh with the heights h_i (sticks) and colours") {
+    ctx.chosen("caption", "(a) control mesh with heights",
+               "the captions of (a)(b) are lost in the OCR; read as fig. 22's (x)(y)");
+    const int size = ctx.quick() ? 160 : 800;
+    WrControlMesh mesh;
+    WrSurface surface;
+    AxisPair axes;
+    SHITSUKAN_TRY(make_terrain_surface(0.5f, &mesh, &surface, &axes));
+    RgbImage img(size, size);
+    // Wider than the surface panels: the control polygon reaches beyond the B-spline surface.
+    const Shot wide = zoom_shot(kShot, kShot.target + Vec3{0.3f, 0.0f, 0.3f}, 0.72f);
+    draw_control_mesh(img.view(), shot_camera(wide, size, size), mesh, surface, true,
+                      Rgb8{255, 255, 255});
+    return ctx.save_png(img.view());
+}
+SHITSUKAN_FIGURE(fig21b_panel, "fujimoto2000", "fig21b",
+                 "Terrain: (b) the conventional surface (c) coloured per parameter span") {
+    return run_panel(ctx, 'b');
+}
 SHITSUKAN_FIGURE(fig21c_panel, "fujimoto2000", "fig21c",
                  "Terrain (800 x 800): (c) conventional B-spline surface") {
     return run_panel(ctx, 'c');

@@ -207,6 +207,47 @@ bool find_stage_times(const std::string& key, StageTimes* t) {
     return true;
 }
 
+double mean_offset(const WrSurface& surface, const WrMesh& m) {
+    double sum = 0;
+    long n = 0;
+    for (std::size_t i = 0; i < m.mesh.positions.size(); i += 7) {
+        const Vec2 uv = m.mesh.uvs[i];
+        sum += double(length(m.mesh.positions[i] - surface.base_point(uv.x, uv.y).position));
+        ++n;
+    }
+    return n ? sum / double(n) : 0.0;
+}
+
+std::string format_seconds(double s) {
+    // Small stages (polygonisation takes milliseconds here) keep their digits: never "0.00 s".
+    if (s >= 1.0) return fmt("%.2f s", s);
+    if (s >= 0.01) return fmt("%.3f s", s);
+    return fmt("%.2f ms", 1e3 * s);
+}
+
+void downsample_into(const RgbView& src, RgbView dst) {
+    // Box filter: each destination pixel is the mean of the source pixels it covers.
+    for (int y = 0; y < dst.height; ++y) {
+        const int y0 = int(std::int64_t(y) * src.height / dst.height);
+        const int y1 = std::max(y0 + 1, int(std::int64_t(y + 1) * src.height / dst.height));
+        for (int x = 0; x < dst.width; ++x) {
+            const int x0 = int(std::int64_t(x) * src.width / dst.width);
+            const int x1 = std::max(x0 + 1, int(std::int64_t(x + 1) * src.width / dst.width));
+            unsigned r = 0, g = 0, b = 0, n = 0;
+            for (int sy = y0; sy < y1; ++sy)
+                for (int sx = x0; sx < x1; ++sx) {
+                    const Rgb8 c = src.at(sx, sy);
+                    r += c.r;
+                    g += c.g;
+                    b += c.b;
+                    ++n;
+                }
+            dst.at(x, y) = Rgb8{std::uint8_t((r + n / 2) / n), std::uint8_t((g + n / 2) / n),
+                                std::uint8_t((b + n / 2) / n)};
+        }
+    }
+}
+
 std::string stage_table(const std::vector<std::string>& names, const std::vector<StageTimes>& ours,
                         const std::vector<std::array<const char*, 4>>& paper) {
     std::string md = "| | ";
@@ -223,7 +264,7 @@ std::string stage_table(const std::vector<std::string>& names, const std::vector
                              : r == 1 ? t.polygonisation
                              : r == 2 ? t.rendering
                                       : t.sampling + t.polygonisation + t.rendering;
-            md += std::string(paper[i][std::size_t(r)]) + " | " + fmt("%.2f s", v) + " | ";
+            md += std::string(paper[i][std::size_t(r)]) + " | " + format_seconds(v) + " | ";
         }
         md += "\n";
     }

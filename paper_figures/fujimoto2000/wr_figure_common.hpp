@@ -92,7 +92,11 @@ struct StageTimes {
     long triangles = 0;
     int grid_level = 0, levels = 0;
     bool quick = false;
+    double mean_offset = 0;  // mean |R(u,v) - P(u,v)| over the vertices (see mean_offset)
 };
+// Mean distance of the displaced vertices from the base surface (every 7th vertex): the total
+// height a panel carries, to compare superposed panels with the plain one (eq. 18).
+double mean_offset(const WrSurface& surface, const WrMesh& mesh);
 void record_stage_times(const std::string& key, const StageTimes& t);
 bool find_stage_times(const std::string& key, StageTimes* t);
 
@@ -116,6 +120,12 @@ struct PaperTimes {
 // taken from what an earlier run recorded under `figure` + label (record_stage_times).
 std::string stage_table(const std::string& figure, const std::vector<PaperTimes>& rows,
                         const std::map<std::string, StageTimes>& times);
+
+// "1.23 s", "0.045 s", "3.10 ms": a stage time that keeps its digits when it is small.
+std::string format_seconds(double seconds);
+
+// A full-size panel shrunk into a cell of an overview composite (box filter).
+void downsample_into(const RgbView& src, RgbView dst);
 
 // Blit a panel label ("(a-1)") in the top-left corner.
 void label_panel(RgbView target, const std::string& text, Rgb8 color);

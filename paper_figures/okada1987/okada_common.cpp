@@ -47,9 +47,12 @@ void record_lattice(figures::FigureContext& ctx) {
               "okada1987 §4.4, okada1989 §4-4");
     ctx.given("noise g", "N(0, 1), amplitude exp(-(n-1)·beta)", "okada1987 eqs. (1)-(5)");
     ctx.given("lattice type", "Type I (the whole 65^3 array in memory)", "okada1989 §4-4");
-    ctx.chosen("beta", fmt("%g", double(kBeta)),
+    ctx.chosen("beta", fmt("%g (the library's default)", double(kBeta)),
                "not printed; finest level at e^-4.5 = 1 % of the first: smooth folds at k = 16 "
                "(0.5 broke the k = 16 marble into fine noise)");
+    ctx.chosen("eq. (2) reading", "L^(n) = e^-(n-1)·beta, so L^(1) = 1 (as eq. (5))",
+               "eq. (2) also reads L^(n) = L^(n-1)·e^-beta from L^(0) = 1, i.e. L^(1) = e^-beta: "
+               "that reading scales D by e^-beta = 0.41, so its k = 16 is k = 6.5 here");
     ctx.chosen("seed", fmt("%u (coordinate hash, Types I/II/III agree)", kSeed),
                "any seed; hash noise so okada1989's three types give the same lattice");
     ctx.chosen("corner values", "0 (all eight)", "not given; D then has mean 0 everywhere");
@@ -72,12 +75,17 @@ void record_material(figures::FigureContext& ctx, Material m, float k) {
 
 void record_material(figures::FigureContext& ctx, Material m) {
     if (m == Material::marble_single) {
-        ctx.given("G", "one trapezoid with exponential skirts, u = (0, 0, 1)",
+        ctx.given("G", "one layer: trapezoid with exponential skirts, u = (0, 0, 1)",
                   "okada1989 eqs. (8), (9)");
-        ctx.chosen("stripe (lattice units)",
-                   fmt("c %g, w %g, alpha %g", double(kSingleStripe.c), double(kSingleStripe.w),
-                       double(kSingleStripe.alpha)),
-                   "not given; one layer through the middle of the object");
+        ctx.chosen(
+            "layers (lattice units)",
+            fmt("the one layer of eq. (8), w %g, alpha %g, repeated every %g along z "
+                "(c = %g + %g j)",
+                double(kSingleStripe.w), double(kSingleStripe.alpha), double(kSingleLayerPeriod),
+                double(kSingleStripe.c), double(kSingleLayerPeriod)),
+            "eq. (8) is 'the function representing one layer' of 'layered, striped "
+            "marble' (§4-2); a single layer through the middle (c 32, w 3, alpha 0.5) "
+            "covered 4-12 % of each object: one crack in a white object");
         ctx.chosen("G'", "1 - min(G, 1)", "as okada1987: I_max = limestone, I_min = impurity");
         ctx.chosen("I_max (limestone)", "(238, 234, 226)", "warm white");
         ctx.chosen("I_min (impurity)", "(62, 74, 80)", "dark grey-green");
@@ -116,10 +124,18 @@ void record_camera(figures::FigureContext& ctx, const std::string& description) 
 
 float density(Material m, float k, Vec3 lp) {
     const float d = turbulence(shared_lattice().view(), lp);  // D(P), eq. (6)
-    if (m == Material::marble || m == Material::marble_single) {
-        const MarbleParams params = m == Material::marble ? MarbleParams{kStripes, kStripeCount, k}
-                                                          : MarbleParams{&kSingleStripe, 1, k};
-        const float g = marble_texture(lp, d, params);  // G(P + k·D(P)·(0, 0, 1))
+    if (m == Material::marble) {
+        const float g = marble_texture(lp, d, MarbleParams{kStripes, kStripeCount, k});
+        return 1.0f - (g < 1.0f ? g : 1.0f);  // G(P + k·D(P)·(0, 0, 1)), G' = 1 - min(G, 1)
+    }
+    if (m == Material::marble_single) {
+        // okada1989 eqs. (8), (9): the one layer at the displaced z' = z + k·D(P), repeated
+        // every period: the two nearest repeats, at t and t - period from z'.
+        const float zp = lp.z + k * d;
+        float t = std::fmod(zp - kSingleStripe.c, kSingleLayerPeriod);
+        if (t < 0.0f) t += kSingleLayerPeriod;
+        const MarbleStripe layer{0.0f, kSingleStripe.w, kSingleStripe.alpha};
+        const float g = trapezoid_skirt(t, layer) + trapezoid_skirt(t - kSingleLayerPeriod, layer);
         return 1.0f - (g < 1.0f ? g : 1.0f);
     }
     WoodParams w;
@@ -147,9 +163,18 @@ namespace {
 struct SolidShader {
     Material material;
     float k;
+    DensityShares* shares;  // counted when not null
     Rgb8 operator()(const Fragment& f) const {
         const Vec3 lp = object_to_lattice(f.object_position);
-        const Vec3 c = material_color(material, density(material, k, lp));
+        const float g = density(material, k, lp);
+        if (shares) {
+            ++shares->pixels;
+            if (g < 0.5f)
+                ++shares->vein;
+            else if (g < 0.9f)
+                ++shares->skirt;
+        }
+        const Vec3 c = material_color(material, g);
         Vec3 n = f.normal;
         if (!f.front_facing) n = -n;
         const float lambert = std::fmax(0.0f, dot(n, kLight));
@@ -178,14 +203,15 @@ Status spline_profile(const Vec2d* control, int count, int samples, std::vector<
 
 }  // namespace
 
-Status render_scene(const Scene& scene, Material m, float k, int size, RgbImage* out) {
+Status render_scene(const Scene& scene, Material m, float k, int size, RgbImage* out,
+                    DensityShares* shares) {
     out->resize(size, size, kBackground);
     FloatImage depth(size, size);
     const FrameBand band = full_frame_band(out->view(), depth.view());
     clear_band(band, kBackground);
     const Camera camera = perspective_camera(scene.eye, scene.target, Vec3{0, 1, 0},
                                              scene.fov_degrees, size, size);
-    SolidShader shader{m, k};
+    SolidShader shader{m, k, shares};
     for (const Piece& piece : scene.pieces) {
         DrawOptions opt;
         opt.model = piece.model;
@@ -238,12 +264,20 @@ Status build_scene(const std::string& name, bool quick, Scene* out) {
         add_piece(out, mesh);
         out->eye = {2.5f, 2.5f, 3.4f};
     } else if (name == "nagoya") {
-        SHITSUKAN_TRY(make_block_text("NAGOYA", 1.0f, 0.45f, &mesh));
-        fit_to_cube(&mesh, 0.95f);
+        // Chosen: the word in two rows, NAG over OYA, cut from one block of the stone. In one
+        // row the word filled 10 % of the frame and each letter (9 lattice units tall) held
+        // about one marble layer or two wood rings, so neither material read; in two rows each
+        // letter is 20 units tall (two to three layers, four rings) and the word fills the
+        // frame. The texture stays one continuous solid (one object -> lattice map).
+        SHITSUKAN_TRY(make_block_text("NAG", 1.0f, 0.45f, &mesh));
+        TriangleMesh second;
+        SHITSUKAN_TRY(make_block_text("OYA", 1.0f, 0.45f, &second));
+        SHITSUKAN_TRY(append(&mesh, second, Mat4::translate({0.0f, -1.25f, 0.0f})));
+        fit_to_cube(&mesh, 0.92f);
         add_piece(out, mesh);
-        out->eye = {0.0f, 1.2f, 2.25f};
-        out->target = {0.0f, -0.04f, 0.0f};
-        out->fov_degrees = 44.0f;
+        out->eye = {0.9f, 1.5f, 5.2f};
+        out->target = {0.0f, -0.02f, 0.0f};
+        out->fov_degrees = 23.0f;
     } else if (name == "cup") {
         const Vec2d profile[] = {{0.0, -0.9},  {0.52, -0.9}, {0.58, -0.84}, {0.62, 0.2},
                                  {0.66, 0.88}, {0.66, 0.92}, {0.60, 0.92},  {0.56, 0.2},
@@ -285,7 +319,24 @@ Status object_figure(figures::FigureContext& ctx, const std::string& scene_name,
     ctx.given("image", "512 x 512, RGB 8 bit",
               ctx.paper() == "okada1989" ? "okada1989 §4-4" : "okada1987 §4.4");
     RgbImage img;
-    SHITSUKAN_TRY(render_scene(scene, m, k, ctx.quick() ? 128 : 512, &img));
+    DensityShares shares;
+    SHITSUKAN_TRY(render_scene(scene, m, k, ctx.quick() ? 128 : 512, &img, &shares));
+    long covered = 0;
+    for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) {
+            const Rgb8 c = img.view().at(x, y);
+            covered += !(c.r == kBackground.r && c.g == kBackground.g && c.b == kBackground.b);
+        }
+    ctx.note(fmt("The object covers %.1f %% of the frame.",
+                 100.0 * double(covered) / (double(img.width()) * double(img.height()))));
+    if (m != Material::wood && shares.pixels > 0)
+        ctx.note(fmt(
+            "Measured over the object's drawn fragments: %.1f %% in the vein colour (G' < 0.5, "
+            "nearer I_min than I_max), %.1f %% in the pale skirt (0.5 <= G' < 0.9), "
+            "%.1f %% limestone.",
+            100.0 * double(shares.vein) / double(shares.pixels),
+            100.0 * double(shares.skirt) / double(shares.pixels),
+            100.0 * double(shares.pixels - shares.vein - shares.skirt) / double(shares.pixels)));
     return ctx.save_png(img.view());
 }
 

@@ -18,7 +18,8 @@
 //              lengths (P, c_j, w_j, r, the shift k·D) are in lattice spacings.
 //   marble     six stripes (kStripes, lattice units), G' = 1 - min(G, 1) so that G' = 1
 //              (I_max) is limestone and the stripes take the impurity colour I_min.
-//   okada1989  one stripe kSingleStripe (c 32, w 3, alpha 0.5), same G' and colours.
+//   okada1989  one layer kSingleStripe (w 1.2, alpha 1) repeated every 12 along z,
+//              same G' and colours.
 //   wood       axis through lattice (x0, y0) = kWoodAxis, k2 = kWoodK2 (rings every
 //              2·pi/k2 = 5.2 lattice units), G' = (sin + 1)/2; I_max winter (late) wood.
 //   shading    Lambert, light from the upper front (slightly right), 0.3 + 0.7·max(0, n·l).
@@ -40,7 +41,9 @@ namespace shitsukan::okada {
 // (its eq. (8)); wood: the radial sine of both papers (eq. (10)).
 enum class Material { marble, marble_single, wood };
 
-constexpr float kBeta = 0.9f;
+// The library's default (FractalParams::beta, whose header gives the one reason and the reading
+// of eq. (2) taken: L^(1) = 1).
+constexpr float kBeta = FractalParams{}.beta;
 constexpr std::uint32_t kSeed = 1987u;
 constexpr float kMarbleK = 16.0f;  // okada1987 §4.4
 constexpr float kWoodK = 1.6f;     // okada1987 §4.4
@@ -49,7 +52,13 @@ constexpr float kLatticeScale = 30.0f;
 constexpr float kWoodK2 = 1.2f;
 const Vec2 kWoodAxis{6.0f, 14.0f};
 extern const MarbleStripe kStripes[6];
-const MarbleStripe kSingleStripe{32.0f, 3.0f, 0.5f};  // okada1989: one layer through the middle
+// okada1989: eq. (8) is the function of ONE layer ("1つの層を表現する原関数"); its striped
+// marble ("層状の縞模様のある大理石") is that one layer repeated through the stone, every
+// kSingleLayerPeriod along z (chosen reading: a single layer through the middle covered only
+// 4-12 % of each object and read as a white object with one crack). density() sums the two
+// layers nearest to the displaced z (the others add less than e^-8).
+const MarbleStripe kSingleStripe{32.0f, 1.2f, 1.0f};
+constexpr float kSingleLayerPeriod = 12.0f;
 constexpr int kStripeCount = 6;
 const Vec3 kMarbleLimestone{238.0f, 234.0f, 226.0f};  // I_max
 const Vec3 kMarbleImpurity{62.0f, 74.0f, 80.0f};      // I_min
@@ -93,8 +102,15 @@ struct Scene {
 
 void add_piece(Scene* scene, const TriangleMesh& mesh, const Mat4& model = Mat4::identity());
 
-// Renders the scene into a size x size image with the solid texture.
-Status render_scene(const Scene& scene, Material m, float k, int size, RgbImage* out);
+// Shares of the drawn pixels by texture density G' (marble: vein < 0.5 <= skirt < 0.9).
+struct DensityShares {
+    long pixels = 0, vein = 0, skirt = 0;
+};
+
+// Renders the scene into a size x size image with the solid texture (counting the density
+// shares of the drawn fragments into `shares` when given).
+Status render_scene(const Scene& scene, Material m, float k, int size, RgbImage* out,
+                    DensityShares* shares = nullptr);
 
 // The okada1987 objects (object space inside [-1, 1]^3): "cube", "slices", "cut_sphere",
 // "pot", "nagoya"; okada1989: "cup", "ashtray", "torus". Returns the scene with its camera.

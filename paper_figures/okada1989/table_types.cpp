@@ -8,6 +8,11 @@
 #include "okada1987/okada_common.hpp"
 #include "shitsukan/core/prng.hpp"
 
+#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
+#include <malloc.h>
+#define SHITSUKAN_HAVE_MALLINFO2 1
+#endif
+
 using namespace shitsukan;
 using figures::fmt;
 
@@ -16,6 +21,15 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+// Bytes in use on the heap (glibc), to check Type II's container_bytes() against; -1 elsewhere.
+long heap_in_use() {
+#ifdef SHITSUKAN_HAVE_MALLINFO2
+    const struct mallinfo2 m = mallinfo2();
+    return long(m.uordblks + m.hblkhd);  // small chunks + mmapped blocks (the bucket array)
+#else
+    return -1;
+#endif
+}
 }  // namespace
 
 SHITSUKAN_FIGURE(okada1989_table_types, "okada1989", "table-types",
@@ -60,18 +74,24 @@ SHITSUKAN_FIGURE(okada1989_table_types, "okada1989", "table-types",
     // Type II: a fresh list for each point set (the list persists within a set).
     TypeIILattice type2;
     SHITSUKAN_TRY(type2.init(params));
+    long heap0 = heap_in_use();
     int mismatch2 = 0;
     t0 = std::chrono::steady_clock::now();
     for (std::size_t i = 0; i < coherent.size(); ++i)
         mismatch2 += !same_bits(type2.turbulence(coherent[i]), d1c[i]);
     const double slice2 = seconds_since(t0);
     const std::size_t list_slice = type2.list_size();
+    const std::size_t real_slice = type2.container_bytes();
+    const long heap_slice = heap0 >= 0 ? heap_in_use() - heap0 : -1;
     SHITSUKAN_TRY(type2.init(params));
+    heap0 = heap_in_use();
     t0 = std::chrono::steady_clock::now();
     for (std::size_t i = 0; i < random_points.size(); ++i)
         mismatch2 += !same_bits(type2.turbulence(random_points[i]), d1r[i]);
     const double rand2 = seconds_since(t0);
     const std::size_t list_rand = type2.list_size();
+    const std::size_t real_rand = type2.container_bytes();
+    const long heap_rand = heap0 >= 0 ? heap_in_use() - heap0 : -1;
 
     // Type III.
     TypeIIILattice type3;
@@ -86,6 +106,24 @@ SHITSUKAN_FIGURE(okada1989_table_types, "okada1989", "table-types",
     for (std::size_t i = 0; i < random_points.size(); ++i)
         mismatch3 += !same_bits(type3.turbulence(random_points[i]), d1r[i]);
     const double rand3 = seconds_since(t0);
+
+    // Type III as okada1989 §3-3 has it: the list cleared for every new point, so every query
+    // descends all R levels (no ancestry kept between points, no row cache). Its cost does
+    // not depend on the order of the points, so every 8th point of each set is enough.
+    constexpr std::size_t kPaperStride = 8;
+    TypeIIILattice paper3;
+    SHITSUKAN_TRY(paper3.init(params));
+    paper3.set_reuse(false);
+    std::size_t n3c = 0, n3r = 0;
+    t0 = std::chrono::steady_clock::now();
+    for (std::size_t i = 0; i < coherent.size(); i += kPaperStride, ++n3c)
+        mismatch3 += !same_bits(paper3.turbulence(coherent[i]), d1c[i]);
+    const double slice3p = seconds_since(t0);
+    const long sub_slice_p = paper3.subdivisions();
+    t0 = std::chrono::steady_clock::now();
+    for (std::size_t i = 0; i < random_points.size(); i += kPaperStride, ++n3r)
+        mismatch3 += !same_bits(paper3.turbulence(random_points[i]), d1r[i]);
+    const double rand3p = seconds_since(t0);
 
     // Every lattice node: Types II and III against the Type I array.
     int node_mismatch = 0;
@@ -124,21 +162,38 @@ SHITSUKAN_FIGURE(okada1989_table_types, "okada1989", "table-types",
         "| I (whole array, O(2^{3R})) | %llu bytes (65^3 floats) | %.4f (build) | %.3f | %.3f |\n",
         static_cast<unsigned long long>(type1.bytes()), build1,
         slice1 * us / double(coherent.size()), rand1 * us / double(random_points.size()));
-    md += fmt("| II (ancestor list, kept) | %zu nodes = %zu bytes payload after the slice, %zu "
-              "nodes = %zu bytes after the scattered set | 0 | %.3f | %.3f |\n",
-              list_slice, list_slice * 12, list_rand, list_rand * 12,
-              slice2 * us / double(coherent.size()), rand2 * us / double(random_points.size()));
-    md += fmt("| III (coordinate-seeded, O(R)) | %zu bytes ancestry (object %zu bytes, fixed, "
-              "incl. a 64-block row cache) | 0 | %.3f | %.3f |\n",
-              type3.ancestry_bytes(), TypeIIILattice::object_bytes(),
-              slice3 * us / double(coherent.size()), rand3 * us / double(random_points.size()));
+    auto heap_text = [](long h) {
+        return h >= 0 ? fmt(" (heap growth measured: %ld)", h) : std::string();
+    };
+    md +=
+        fmt("| II (ancestor list, kept) | after the slice: %zu nodes, %zu bytes as held by the "
+            "hash map%s (payload %zu); after the scattered set: %zu nodes, %zu bytes%s "
+            "(payload %zu) | 0 | %.3f | %.3f |\n",
+            list_slice, real_slice, heap_text(heap_slice).c_str(), list_slice * 12, list_rand,
+            real_rand, heap_text(heap_rand).c_str(), list_rand * 12,
+            slice2 * us / double(coherent.size()), rand2 * us / double(random_points.size()));
+    md +=
+        fmt("| III as in okada1989 (list cleared for every point, O(R); timed on every 8th "
+            "point) | %zu bytes ancestry | 0 | %.3f | %.3f |\n",
+            paper3.ancestry_bytes(), slice3p * us / double(n3c), rand3p * us / double(n3r));
+    md +=
+        fmt("| III here (ancestry kept between points + a 64-block row cache) | %zu bytes "
+            "ancestry (object %zu bytes, fixed) | 0 | %.3f | %.3f |\n",
+            type3.ancestry_bytes(), TypeIIILattice::object_bytes(),
+            slice3 * us / double(coherent.size()), rand3 * us / double(random_points.size()));
     md += "\nAgreement:\n\n";
     md += fmt("- all 274,625 lattice nodes, Types II and III vs. the Type I array: %d differ "
               "(bit-for-bit comparison)\n", node_mismatch);
     md += fmt("- D(P) at all %zu points, Types II and III vs. Type I: %d differ\n",
               coherent.size() + random_points.size(), mismatch2 + mismatch3);
-    md += fmt("- Type III on the slice: %.4f subdivisions (19 new nodes each) per point\n",
-              double(sub_slice) / double(coherent.size()));
+    md += fmt(
+        "- Type III on the slice: %.4f subdivisions (19 new nodes each) per point with "
+        "the caches, %.2f as in the paper (R = %d per point)\n",
+        double(sub_slice) / double(coherent.size()), double(sub_slice_p) / double(n3c), params.R);
+    md +=
+        "- Type II's memory is what the hash map holds (bucket array + a 32-byte heap node "
+        "per entry), about 2.7 times its payload of 12 bytes a node; the paper's list "
+        "(coordinates + value, searched exhaustively) would hold about the payload\n";
     md += fmt("- Type II with one sequential random stream instead of the hash: querying the "
               "line (x, 17, 40) forwards and backwards gives %d of 65 nodes different values, "
               "which is why Type III seeds each node's number by its coordinates\n",

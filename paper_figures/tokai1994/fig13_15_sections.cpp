@@ -1,5 +1,6 @@
 // tokai1994 figs. 13-15: the three cross-sections of Table 1 and the leather they give.
 // (a) the section plot, (b) the shaded leather texture of the fig. 7 pattern, (c) a close-up.
+#include <cmath>
 #include <vector>
 
 #include "driver/figure.hpp"
@@ -12,6 +13,9 @@ using namespace shitsukan;
 using namespace shitsukan::figures;
 
 namespace {
+
+// The key light of figs. 13-15 (chosen, one value for the three figures).
+constexpr float kSectionKeyHeight = 0.32f;
 
 const char* table1_text(Table1Section which) {
     switch (which) {
@@ -90,19 +94,30 @@ Status section_texture(FigureContext& ctx, Table1Section which, bool close_up) {
                        double(hi.y)),
                    "the centre line of the belly, 3x");
     }
-    // The concave section of Table 1 is shallow (the floor rises 0.03 -> 0.12 over r = 0.8, a
-    // slope of about 0.1): a grazing key light shows its sunken centres; the data stay the
-    // paper's.
-    const bool grazing = which == Table1Section::concave;
-    const float key_height = grazing ? 0.15f : tokai_relief::kDefaultKeyHeight;
-    ctx.chosen("key light height", fmt("%.2f window spans", double(key_height)),
-               grazing ? "grazing (about 6 degrees above the window's centre), to show the "
-                         "shallow sunken centres"
-                       : "about 21 degrees above the window's centre");
+    // Figs. 13-15 are lit alike (the text says nothing of different lights): one key light
+    // low enough for the shallow concave section of fig. 14 (its floor rises 0.03 -> 0.05
+    // over r = 0.8) to show, the same for the convex and two-segment sections.
+    ctx.chosen("key light height", fmt("%.2f window spans", double(kSectionKeyHeight)),
+               "the same for figs. 13-15 (about 12 degrees above the window's centre): low "
+               "enough for fig. 14's shallow concave floor");
     tokai_relief::shade_flat_texture(maps, lo, hi, img.view(), tokai_relief::leather_material(),
-                                     key_height);
-    ctx.note(fmt("%d scales; largest height %.4f pattern units.", pattern.polygon_count(),
-                 double(maps.max_height)));
+                                     kSectionKeyHeight);
+    // Measured: the relief's contrast under the common light (RMS of the luma, 0..255).
+    double sum = 0, sum2 = 0;
+    for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) {
+            const Rgb8 c = img.view().at(x, y);
+            const double l = 0.299 * c.r + 0.587 * c.g + 0.114 * c.b;
+            sum += l;
+            sum2 += l * l;
+        }
+    const double n = double(img.width()) * double(img.height());
+    const double mean = sum / n;
+    ctx.note(
+        fmt("%d scales; largest height %.4f pattern units; luma mean %.1f, RMS contrast %.1f "
+            "(0..255) under the light shared by figs. 13-15.",
+            pattern.polygon_count(), double(maps.max_height), mean,
+            std::sqrt(std::fmax(0.0, sum2 / n - mean * mean))));
     return ctx.save_png(img.view());
 }
 

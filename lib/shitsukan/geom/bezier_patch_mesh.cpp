@@ -45,6 +45,11 @@ Status tessellate_patch_strip(const BezierPatch* patches, int count,
     if (options.chords < 1 || options.chords > 1024)
         return Status::error(StatusCode::invalid_argument,
                              "patch strip: chords must be 1..1024 (got %d)", options.chords);
+    if (!(options.reference_row == -1.0f ||
+          (options.reference_row >= 0.0f && options.reference_row <= 1.0f)))
+        return Status::error(StatusCode::invalid_argument,
+                             "patch strip: reference_row must be -1 or in [0, 1] (got %g)",
+                             double(options.reference_row));
     if (!(options.anchor >= 0.0f && options.anchor <= float(count)))
         return Status::error(StatusCode::invalid_argument,
                              "patch strip: anchor must be in [0, %d] (got %g)", count,
@@ -113,6 +118,14 @@ Status tessellate_patch_strip(const BezierPatch* patches, int count,
             float x_anchor = texture[std::size_t(j) * std::size_t(columns) + std::size_t(anchor)].x;
             for (int c = 0; c < columns; ++c)
                 texture[std::size_t(j) * std::size_t(columns) + std::size_t(c)].x -= x_anchor;
+        }
+        if (options.reference_row >= 0.0f) {
+            // One row's arc length for all rows: a strip bent without stretching (header).
+            const int ref = int(std::lround(options.reference_row * float(nv)));
+            for (int j = 0; j < rows; ++j)
+                for (int c = 0; c < columns; ++c)
+                    texture[std::size_t(j) * std::size_t(columns) + std::size_t(c)].x =
+                        texture[std::size_t(ref) * std::size_t(columns) + std::size_t(c)].x;
         }
         for (int c = 0; c < columns; ++c) {
             float u;

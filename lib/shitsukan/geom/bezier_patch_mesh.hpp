@@ -25,9 +25,16 @@
 // anchor (strip parameter in [0, count], default 0): each row's x is measured from the
 // point of the row at that position (rounded to a vertex column; arc_length mode), e.g.
 // 0.5 = the middle of the first patch, so the texture's centre line follows a panel's middle.
+// reference_row (v in [0, 1], or -1 = off, default): every row takes its x from the arc length
+// of the one row at that v (rounded to a vertex row) instead of its own. For a strap bent
+// along its length (the handbag's handle: a half-round strap around a tight arch) the rows on
+// the outside of the bend are longer than those inside; measured each on its own, their x
+// drift apart along the strap and the texture shears (a pattern edge across the strap turns
+// into a long diagonal). One reference row (the strap's middle) keeps every column at one x:
+// the leather is mapped as a strip bent without stretching along its centre line.
 // Options (defaults): segments_u = segments_v = 16 per patch (1..1024), arc_length = true,
 // texture_scale = 1, texture_origin = (0, 0), chords = 8 per segment for the arc lengths,
-// anchor = 0.
+// anchor = 0, reference_row = -1.
 // Normals: du x dv of eq. (5), averaged across a shared edge. Triangles counter-clockwise
 // seen from the normal side.
 #pragma once
@@ -46,6 +53,7 @@ struct PatchStripOptions {
     Vec2 texture_origin{0, 0};
     int chords = 8;
     float anchor = 0.0f;
+    float reference_row = -1.0f;  // -1: each row its own arc length; v in [0, 1]: that row's
 };
 
 constexpr long long kMaxStripVertices = 1LL << 26;  // keeps int / uint32 indices exact

@@ -1,7 +1,7 @@
 // shitsukan/solid/fractal_params.hpp — the parameters of okada1987's 3D random fractal lattice.
 //
 // Manual
-//   FractalParams p;                 // R = 6 (65^3 points), beta = 0.5, seed = 1987, corners 0
+//   FractalParams p;                 // R = 6 (65^3 points), beta = 0.9, seed = 1987, corners 0
 //   p.beta = 0.7f;
 //   Status s = validate_fractal_params(p, kTypeIMaxDepth);
 //   int n = lattice_side(p.R);       // 2^R + 1 points a side (okada1987 §2.2)
@@ -10,9 +10,18 @@
 // Parameters and ranges
 //   R        recursion depth, 0 <= R <= the type's limit (Type I: kTypeIMaxDepth = 10,
 //            Type III: kTypeIIIMaxDepth = 24). Default 6: both papers' 65^3 lattice.
-//   beta     decay constant of eq. (2), finite, >= 0. Default 0.5 (chosen here: the papers
-//            print no value; 0.5 keeps the finest level at e^-2.5 = 8 % of the first, a
-//            visibly rough but continuous turbulence).
+//   beta     decay constant of eq. (2), finite, >= 0. Default 0.9 (chosen here, the one value
+//            of the library and of every figure: the papers print none; 0.9 puts the finest
+//            of the R = 6 levels at e^-4.5 = 1 % of the first, so okada1987's k = 16 shift
+//            folds the marble layers smoothly, where 0.5 (finest level 8 %) broke the k = 16
+//            marble into fine noise).
+//            Reading of eq. (2): it states both L^(n) = L^(n-1)·e^-beta with L^(0) = 1, which
+//            gives L^(1) = e^-beta, and L^(n) = e^-(n-1)·beta, which gives L^(1) = 1. Taken here:
+//            the closed form, L^(1) = 1 (eq. (5), eps^(n) = g·e^-(n-1)·beta, says the same).
+//            The other reading scales every amplitude, hence D and the shift k·D, by e^-beta
+//            (0.41 at beta = 0.9): the paper's "k = 16" under it is k = 6.5 here, and k = 16
+//            here is k = 39 there. The figures use k = 16 in this reading (layers folded a few
+//            layer spacings, as the paper's figures describe).
 //   seed     selects the random numbers g. Default 1987 (chosen here).
 //   corners  the eight initial values at the cube's corners (okada1987 §2.2 "given initial
 //            values"), finite. Index = i + 2j + 4k for the corner (i, j, k) in {0, 1}^3.
@@ -35,7 +44,7 @@ enum class NoiseSource : std::uint8_t { hash = 0, sequential = 1 };
 
 struct FractalParams {
     int R = 6;
-    float beta = 0.5f;
+    float beta = 0.9f;
     std::uint32_t seed = 1987u;
     float corners[8] = {0, 0, 0, 0, 0, 0, 0, 0};
     NoiseSource noise = NoiseSource::hash;

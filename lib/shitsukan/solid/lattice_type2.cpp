@@ -107,4 +107,13 @@ float TypeIILattice::turbulence(Vec3 p) {
     return trilinear_corners(d, fx, fy, fz);
 }
 
+std::size_t TypeIILattice::container_bytes() const {
+    // One node of std::unordered_map<uint64_t, float>: the next pointer and the pair
+    // (libstdc++ keeps no cached hash for std::hash<uint64_t>), then the malloc chunk.
+    const std::size_t node = sizeof(void*) + sizeof(std::pair<const std::uint64_t, float>);
+    std::size_t chunk = (node + sizeof(std::size_t) + 15) / 16 * 16;
+    if (chunk < 32) chunk = 32;
+    return list_.bucket_count() * sizeof(void*) + list_.size() * chunk;
+}
+
 }  // namespace shitsukan

@@ -48,6 +48,11 @@ public:
     std::size_t list_bytes() const {
         return list_.size() * (sizeof(std::uint64_t) + sizeof(float));
     }
+    // What the list really occupies, container overhead included: the hash map's bucket array
+    // plus one heap node per entry (next pointer, key, value), each allocation rounded as a
+    // glibc-style malloc does (8-byte header, 16-byte granularity, 32 bytes at least): 32
+    // bytes a node on a 64-bit libstdc++, 2.7x the payload, plus 8 bytes a bucket.
+    std::size_t container_bytes() const;
 
 private:
     float compute(std::int32_t x, std::int32_t y, std::int32_t z);

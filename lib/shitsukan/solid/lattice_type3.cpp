@@ -86,14 +86,15 @@ static void block_corners(const float* grid, int ox, int oy, int oz, float out[8
 
 const float* TypeIIILattice::unit_cell_corners(std::int32_t ix, std::int32_t iy,
                                                std::int32_t iz) {
-    if (ix == last_cell_[0] && iy == last_cell_[1] && iz == last_cell_[2]) return cell_;
+    if (!reuse_) cached_depth_ = 0;  // okada1989 §3-3: a fresh list for every point
+    if (reuse_ && ix == last_cell_[0] && iy == last_cell_[1] && iz == last_cell_[2]) return cell_;
     if (R_ == 0) {
         for (int i = 0; i < 8; ++i) cell_[i] = corners0_[i];
     } else {
         // The finest block (edge 2) holding the unit cell: first look in the row cache.
         const std::int32_t fx0 = ix & ~1, fy0 = iy & ~1, fz0 = iz & ~1;
         Block* slot = nullptr;
-        if (kTypeIIIRowCache > 0) {
+        if (kTypeIIIRowCache > 0 && reuse_) {
             std::uint32_t key = (std::uint32_t(fx0 >> 1) * 73856093u) ^
                                 (std::uint32_t(fy0 >> 1) * 19349663u) ^
                                 (std::uint32_t(fz0 >> 1) * 83492791u);

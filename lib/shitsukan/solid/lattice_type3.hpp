@@ -58,6 +58,13 @@ public:
     float turbulence(Vec3 p);
     Status turbulence_checked(Vec3 p, float* out);
 
+    // true (default): keep the ancestry blocks and the row cache between queries (this
+    // library's Type III). false: okada1989's own Type III (§3-3: the list is cleared for
+    // every new point), every query descends all R levels from the initial cube; the values
+    // are the same, only the time differs.
+    void set_reuse(bool reuse) { reuse_ = reuse; }
+    bool reuse() const { return reuse_; }
+
     // Teaching/bench counters: how many cell subdivisions (19 new nodes each) were computed.
     long subdivisions() const { return subdivisions_; }
     // Bytes that hold the ancestry for depth R (one 27-node block per level), and the object.
@@ -79,6 +86,7 @@ private:
     int R_ = -1;
     std::uint64_t hash_start_ = 0;
     int cached_depth_ = 0;  // blocks_[1..cached_depth_] hold the ancestry of the last query
+    bool reuse_ = true;
     long subdivisions_ = 0;
     std::int32_t last_cell_[3] = {-1, -1, -1};  // unit cell of the last query
     float corners0_[8] = {};                    // the eight initial corner values

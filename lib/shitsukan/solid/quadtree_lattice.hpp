@@ -27,7 +27,7 @@ namespace shitsukan {
 
 struct QuadtreeParams {
     int R = 6;
-    float beta = 0.5f;
+    float beta = 0.9f;  // as FractalParams (fractal_params.hpp gives the reason)
     std::uint32_t seed = 1987u;
     float corners[4] = {0, 0, 0, 0};
 };

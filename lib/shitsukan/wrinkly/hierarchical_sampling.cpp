@@ -226,6 +226,10 @@ SuperposedSample superposed_sampled(const WrSurface& surface, const Hierarchical
         used = k;
         tail *= delta;
     }
+    // eq. (18) on the finite sum k = 0..used: divide by the weights used, 1 - delta^(used+1)
+    // (superposition.hpp). The total height stays the one H sets; delta only redistributes it.
+    sum.height /= wsum;
+    sum.vector = sum.vector / wsum;
     sum.color = sum.color / wsum;
     sum.transparency /= wsum;
     r.attributes = sum;

@@ -24,7 +24,9 @@
 //   - Jitter: height samples are scaled by (1 + jitter_height·g) (direction kept), colour and
 //     transparency get + jitter·g per channel (clamped to [0, 1]); g ~ N(0,1) from the
 //     coordinate hash of (sample i, j, step k), so it does not depend on evaluation order.
-//   - Colour and transparency sums are divided by the weights used (they stay in [0, 1]).
+//   - eq. (18) is kept on the finite sum: every attribute (height and vector too) is divided by
+//     the weights actually used, 1 - delta^(k_last + 1) (superposition.hpp). The omitted tail
+//     would otherwise lower the surface by delta^(K+1) of its height (fig. 21 (g): 23 %).
 // Ranges: levels (K) in 0..surface.max_level() (<= kMaxWrLevel), jitters >= 0, sample count per
 // step at most kMaxHierarchicalSamples (too_large otherwise).
 #pragma once
@@ -94,10 +96,12 @@ private:
 Status sample_hierarchy(const WrSurface& surface, const HierarchicalOptions& options,
                         HierarchicalSampling* out);
 
-// eq. (20) at (u, v). tail_tolerance (world units, >= 0): stop before step k once
-// delta^k·max|h_i| — a bound on everything still to be added — is below it (the adaptive end
-// of the sum, §4.2); 0 = add every sampled step. With jitter_height > 0 the samples may exceed
-// max|h_i| by the factor (1 + jitter_height·g), so the bound is then approximate.
+// eq. (20) at (u, v), with the weights of the steps used renormalised to sum to 1 (eq. 18).
+// tail_tolerance (world units, >= 0): stop before step k once delta^k·max|h_i| — a bound on
+// the weight of everything still to be added times the largest height — is below it (the
+// adaptive end of the sum, §4.2); 0 = add every sampled step. Renormalising moves the result
+// by at most twice that bound. With jitter_height > 0 the samples may exceed max|h_i| by the
+// factor (1 + jitter_height·g), so the bound is then approximate.
 SuperposedSample superposed_sampled(const WrSurface& surface, const HierarchicalSampling& hs,
                                     float u, float v, float tail_tolerance = 0);
 

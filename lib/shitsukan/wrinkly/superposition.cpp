@@ -15,6 +15,11 @@ float superposition_weight_sum(float delta, int levels_k) {
     return 1.0f - p;
 }
 
+float superposition_weight_truncated(float delta, int k, int levels_k) {
+    // eqs. (17) + (18) over k = 0..K: delta_0 = (1 - delta) / (1 - delta^(K+1))
+    return superposition_weight(delta, k) / superposition_weight_sum(delta, levels_k);
+}
+
 WrAttributes superposed_attributes_direct(const WrSurface& s, float u, float v, int levels_k) {
     const float delta = s.base_point(u, v).delta;
     WrAttributes sum;
@@ -32,8 +37,11 @@ WrAttributes superposed_attributes_direct(const WrSurface& s, float u, float v, 
         sum.transparency += w * a.transparency;
         wsum += w;
     }
-    // Colour and transparency are averages, not displacements: normalise by the weights used
-    // so a truncated sum keeps them in [0, 1] (chosen here; §4.1 only says "the same").
+    // eq. (18) on the finite sum: the weights used add up to 1 (delta_0 = (1 - delta) /
+    // (1 - delta^(K+1))), so the total height is still set by H and colour and transparency
+    // stay in [0, 1]. Without this the missing tail delta^(K+1) lowers the whole surface.
+    sum.height /= wsum;
+    sum.vector = sum.vector / wsum;
     sum.color = sum.color / wsum;
     sum.transparency /= wsum;
     return sum;
