@@ -252,7 +252,8 @@ Status build_scene(const std::string& name, bool quick, Scene* out) {
         TriangleMesh handle;
         SHITSUKAN_TRY(make_torus(0.3f, 0.07f, seg / 2, quick ? 8 : 24, &handle));
         // The handle: a ring in the xy plane, its inner half hidden in the wall.
-        append(&mesh, handle, Mat4::translate({0.66f, 0.05f, 0.0f}) * Mat4::rotate_x(1.5707963f));
+        SHITSUKAN_TRY(append(&mesh, handle,
+                             Mat4::translate({0.66f, 0.05f, 0.0f}) * Mat4::rotate_x(1.5707963f)));
         fit_to_cube(&mesh, 0.92f);
         add_piece(out, mesh);
         out->eye = {1.9f, 2.4f, 4.2f};

@@ -70,7 +70,8 @@ Status check_lattice_point(Vec3 p, int R);  // invalid_argument for NaN/inf, out
 // order i + 2j + 4k, then eq. (6). Inline: a renderer calls it once per pixel, and the call
 // itself would cost as much as a fifth of the lookup.
 inline float turbulence(const LatticeView& lattice, Vec3 p) {
-    SHITSUKAN_ASSERT(lattice.values != nullptr && lattice.side >= 2);
+    SHITSUKAN_REQUIRE_BUILT(lattice.values != nullptr && lattice.side >= 2,
+                            "build_fractal_lattice()", "turbulence() on an empty LatticeView");
     const int cells = lattice.side - 1;
     int ix, iy, iz;
     float fx, fy, fz;
