@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "shitsukan/image/image_io.hpp"
+#include "shitsukan/image/png16.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wall"
@@ -134,4 +135,35 @@ TEST_CASE("image writers report errors: empty image, empty path, unwritable path
     // "Empty" includes a view with pixels but zero width.
     RgbView zero{rgb.data(), 0, 2, 2};
     CHECK(write_ppm("build/never.ppm", zero).code() == StatusCode::invalid_argument);
+}
+
+TEST_CASE("write_png's fallback encoder (no stb): stored deflate, stbi_load round trip") {
+    // The encoder write_png uses when the library is built without stb_image_write.
+    RgbImage big(40, 30);
+    for (int y = 0; y < 30; ++y)
+        for (int x = 0; x < 40; ++x) big.at(x, y) = rgb_pattern(x, y);
+    RgbView window = big.view().subview(5, 3, 31, 22);
+    const char* path = "build/test_image_io_fallback.png";
+    REQUIRE(detail::write_png8_stored(path, reinterpret_cast<const std::uint8_t*>(window.pixels), window.width, window.height, 3,
+                                      std::size_t(window.stride) * 3, false)
+                .ok());
+    int w = 0, h = 0, n = 0;
+    stbi_uc* back = stbi_load(path, &w, &h, &n, 0);
+    REQUIRE(back != nullptr);
+    CHECK(w == 31);
+    CHECK(h == 22);
+    CHECK(n == 3);
+    int wrong = 0;
+    for (int y = 0; y < 22; ++y)
+        for (int x = 0; x < 31; ++x) {
+            const stbi_uc* p = back + 3 * (y * 31 + x);
+            Rgb8 e = window.at(x, y);
+            wrong += p[0] != e.r || p[1] != e.g || p[2] != e.b;
+        }
+    CHECK(wrong == 0);
+    stbi_image_free(back);
+    // 8-bit samples: the file is the raw bytes (one filter byte a row) plus headers.
+    CHECK(read_file(path).size() < std::size_t(22 * (1 + 31 * 3) + 100));
+    CHECK(png_compressed());  // this build has stb_image_write (the Makefile installs it)
+    std::remove(path);
 }
