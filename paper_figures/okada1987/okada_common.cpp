@@ -5,29 +5,28 @@
 #include <cmath>
 
 #include "shitsukan/geom/mesh_builders.hpp"
+#include "shitsukan/geom/mesh_fit.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
+#include "shitsukan/render/solid_mesh.hpp"
 
 namespace shitsukan::okada {
 
 using figures::fmt;
 
-// Six layers of impurity, lattice units along the texture's z (the object's up axis):
-// uneven spacing and widths, sharp and soft skirts (chosen here; the paper gives none).
-const MarbleStripe kStripes[6] = {{8.0f, 1.2f, 0.9f},  {17.0f, 2.5f, 0.6f}, {26.0f, 0.8f, 1.5f},
-                                  {35.0f, 3.5f, 0.5f}, {46.0f, 1.5f, 0.8f}, {55.0f, 2.0f, 0.7f}};
-
 namespace {
 double g_build_seconds = 0.0;
-const Vec3 kLight = normalize(Vec3{0.3f, 0.8f, 0.55f});  // from the upper front, slightly right
 }  // namespace
+
+SolidMaterial solid_material(Material m, float k) {
+    if (m == Material::marble) return okada1987_marble(k);
+    if (m == Material::marble_single) return okada1989_marble(k);
+    return okada1987_wood(k);
+}
 
 const FractalLattice& shared_lattice() {
     static FractalLattice lattice;
     if (lattice.empty()) {
-        FractalParams p;
-        p.R = 6;
-        p.beta = kBeta;
-        p.seed = kSeed;
+        const FractalParams p = okada1987_lattice_params();
         auto t0 = std::chrono::steady_clock::now();
         Status s = lattice.build(p);
         g_build_seconds =
@@ -115,24 +114,11 @@ void record_camera(figures::FigureContext& ctx, const std::string& description) 
 }
 
 float density(Material m, float k, Vec3 lp) {
-    const float d = turbulence(shared_lattice().view(), lp);  // D(P), eq. (6)
-    if (m == Material::marble || m == Material::marble_single) {
-        const MarbleParams params = m == Material::marble ? MarbleParams{kStripes, kStripeCount, k}
-                                                          : MarbleParams{&kSingleStripe, 1, k};
-        const float g = marble_texture(lp, d, params);  // G(P + k·D(P)·(0, 0, 1))
-        return 1.0f - (g < 1.0f ? g : 1.0f);
-    }
-    WoodParams w;
-    w.x0 = kWoodAxis.x;
-    w.y0 = kWoodAxis.y;
-    w.k2 = kWoodK2;
-    w.k = k;
-    return wood_unit_range(wood_texture(lp, d, w));  // (sin(k2·r') + 1)/2
+    return solid_density(solid_material(m, k), shared_lattice().view(), lp);  // eqs. (6)-(11)
 }
 
 Vec3 material_color(Material m, float g) {
-    return m != Material::wood ? lookup_color(g, kMarbleImpurity, kMarbleLimestone)
-                                 : lookup_color(g, kWoodSummer, kWoodWinter);
+    return solid_density_color(solid_material(m, 0.0f), g);  // eq. (12)
 }
 
 void add_piece(Scene* scene, const TriangleMesh& mesh, const Mat4& model) {
@@ -143,32 +129,6 @@ void add_piece(Scene* scene, const TriangleMesh& mesh, const Mat4& model) {
 }
 
 namespace {
-
-struct SolidShader {
-    Material material;
-    float k;
-    Rgb8 operator()(const Fragment& f) const {
-        const Vec3 lp = object_to_lattice(f.object_position);
-        const Vec3 c = material_color(material, density(material, k, lp));
-        Vec3 n = f.normal;
-        if (!f.front_facing) n = -n;
-        const float lambert = std::fmax(0.0f, dot(n, kLight));
-        const float light = 0.3f + 0.7f * lambert;
-        auto to8 = [](float v) {
-            return std::uint8_t(v <= 0.0f ? 0 : (v >= 255.0f ? 255 : int(v + 0.5f)));
-        };
-        return Rgb8{to8(c.x * light), to8(c.y * light), to8(c.z * light)};
-    }
-};
-
-// Uniform scale and shift so the mesh's bounding box is centred in [-extent, extent]^3.
-void fit_to_cube(TriangleMesh* m, float extent) {
-    Vec3 lo{1e30f, 1e30f, 1e30f}, hi{-1e30f, -1e30f, -1e30f};
-    for (const Vec3& p : m->positions) lo = vmin(lo, p), hi = vmax(hi, p);
-    const Vec3 size = hi - lo, mid = (lo + hi) * 0.5f;
-    const float s = 2.0f * extent / std::fmax(size.x, std::fmax(size.y, size.z));
-    for (Vec3& p : m->positions) p = (p - mid) * s;
-}
 
 // A Catmull-Rom profile (r, y) through the control points, in double (okada1987 §4.4: the
 // spline is the one computation in 8-byte reals).
@@ -185,12 +145,13 @@ Status render_scene(const Scene& scene, Material m, float k, int size, RgbImage*
     clear_band(band, kBackground);
     const Camera camera = perspective_camera(scene.eye, scene.target, Vec3{0, 1, 0},
                                              scene.fov_degrees, size, size);
-    SolidShader shader{m, k};
+    const SolidMaterial material = solid_material(m, k);
     for (const Piece& piece : scene.pieces) {
         DrawOptions opt;
         opt.model = piece.model;
         opt.cull = CullMode::back;
-        SHITSUKAN_TRY(draw_mesh(camera, band, piece.mesh.view(), opt, shader));
+        SHITSUKAN_TRY(draw_solid_textured_mesh(camera, band, piece.mesh.view(), opt,
+                                               shared_lattice().view(), material));
     }
     return Status::success();
 }
@@ -234,12 +195,12 @@ Status build_scene(const std::string& name, bool quick, Scene* out) {
         profile.push_back({0.40, 0.55});
         profile.push_back({0.0, 0.45});
         SHITSUKAN_TRY(make_revolution(profile.data(), int(profile.size()), seg, &mesh));
-        fit_to_cube(&mesh, 0.92f);
+        SHITSUKAN_TRY(fit_mesh_to_cube(&mesh, 0.92f));
         add_piece(out, mesh);
         out->eye = {2.5f, 2.5f, 3.4f};
     } else if (name == "nagoya") {
         SHITSUKAN_TRY(make_block_text("NAGOYA", 1.0f, 0.45f, &mesh));
-        fit_to_cube(&mesh, 0.95f);
+        SHITSUKAN_TRY(fit_mesh_to_cube(&mesh, 0.95f));
         add_piece(out, mesh);
         out->eye = {0.0f, 1.2f, 2.25f};
         out->target = {0.0f, -0.04f, 0.0f};
@@ -254,7 +215,7 @@ Status build_scene(const std::string& name, bool quick, Scene* out) {
         // The handle: a ring in the xy plane, its inner half hidden in the wall.
         SHITSUKAN_TRY(append(&mesh, handle,
                              Mat4::translate({0.66f, 0.05f, 0.0f}) * Mat4::rotate_x(1.5707963f)));
-        fit_to_cube(&mesh, 0.92f);
+        SHITSUKAN_TRY(fit_mesh_to_cube(&mesh, 0.92f));
         add_piece(out, mesh);
         out->eye = {1.9f, 2.4f, 4.2f};
     } else if (name == "ashtray") {
@@ -262,12 +223,12 @@ Status build_scene(const std::string& name, bool quick, Scene* out) {
                                  {0.96, 0.12}, {0.74, 0.12}, {0.66, 0.02},  {0.58, -0.14},
                                  {0.0, -0.14}};
         SHITSUKAN_TRY(make_revolution(profile, 9, seg, &mesh));
-        fit_to_cube(&mesh, 0.92f);
+        SHITSUKAN_TRY(fit_mesh_to_cube(&mesh, 0.92f));
         add_piece(out, mesh);
         out->eye = {1.5f, 2.5f, 2.7f};
     } else if (name == "torus") {
         SHITSUKAN_TRY(make_torus(0.64f, 0.28f, seg, quick ? 16 : 48, &mesh));
-        fit_to_cube(&mesh, 0.92f);
+        SHITSUKAN_TRY(fit_mesh_to_cube(&mesh, 0.92f));
         add_piece(out, mesh);
         out->eye = {1.6f, 2.5f, 2.8f};
     } else {

@@ -114,11 +114,7 @@ Status snake_pattern(FigureContext& ctx, float width, float height, ScalePattern
 
 Status leather_maps(const ScalePattern& pattern, int w, int h, const BezierChain& section,
                     const ReliefOptions& options, LeatherMaps* out) {
-    std::vector<std::int32_t> labels(std::size_t(w) * std::size_t(h));
-    SHITSUKAN_TRY(rasterize_scale_labels(pattern, w, h, labels.data()));
-    static_assert(sizeof(std::int32_t) == sizeof(int), "labels are ints");
-    return make_leather_maps(pattern, reinterpret_cast<const int*>(labels.data()), w, h, section,
-                             options, out);
+    return make_leather_maps(pattern, w, h, section, options, out);  // the library's one call
 }
 
 void shade_flat_texture(const LeatherMaps& maps, Vec2 lo, Vec2 hi, const RgbView& out,
@@ -158,24 +154,8 @@ Status compute_texture_tangents(BumpSurface* s) {
     return mesh_texture_tangents(s->mesh.view(), s->dpdx.data(), s->dpdy.data(), n);
 }
 
-namespace {
-// Folds x into [0, w] by mirrored repetition; *flip says whether this copy is mirrored.
-float mirror(float x, float w, bool* flip) {
-    float period = 2.0f * w;
-    float m = std::fmod(x, period);
-    if (m < 0.0f) m += period;
-    *flip = m > w;
-    return *flip ? period - m : m;
-}
-}  // namespace
-
 Vec3 mirrored_normal(const LeatherMaps& maps, Vec2 t) {
-    bool fx, fy;
-    Vec2 q{mirror(t.x, maps.pattern_width, &fx), mirror(t.y, maps.pattern_height, &fy)};
-    Vec3 n = normal_at(maps, q);
-    if (fx) n.x = -n.x;
-    if (fy) n.y = -n.y;
-    return n;
+    return mirrored_normal_at(maps, t);  // the library's tiling
 }
 
 Rgb8 LeatherShader::operator()(const Fragment& f) const {
