@@ -1,7 +1,8 @@
 // shitsukan/core/config.hpp — version and compile-time switches.
 //
 // Manual
-//   SHITSUKAN_VERSION_STRING  "0.1.0"
+//   SHITSUKAN_VERSION_STRING  "0.2.0" (also the .pc's Version and the CMake package version;
+//                             CHANGELOG.md says what changed)
 //   Float                     the scalar type of the library (float: the papers' 4-byte reals).
 //   SHITSUKAN_NO_ASSERT       define to compile SHITSUKAN_ASSERT checks out.
 //   SHITSUKAN_ASSERT(expr)    define before any shitsukan header to route programmer-bug
@@ -9,9 +10,9 @@
 #pragma once
 
 #define SHITSUKAN_VERSION_MAJOR 0
-#define SHITSUKAN_VERSION_MINOR 1
+#define SHITSUKAN_VERSION_MINOR 2
 #define SHITSUKAN_VERSION_PATCH 0
-#define SHITSUKAN_VERSION_STRING "0.1.0"
+#define SHITSUKAN_VERSION_STRING "0.2.0"
 
 namespace shitsukan {
 
