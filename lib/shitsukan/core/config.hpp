@@ -3,7 +3,6 @@
 // Manual
 //   SHITSUKAN_VERSION_STRING  "0.2.0" (also the .pc's Version and the CMake package version;
 //                             CHANGELOG.md says what changed)
-//   Float                     the scalar type of the library (float: the papers' 4-byte reals).
 //   SHITSUKAN_NO_ASSERT       define to compile SHITSUKAN_ASSERT checks out.
 //   SHITSUKAN_ASSERT(expr)    define before any shitsukan header to route programmer-bug
 //                             checks to your own handler (see assert.hpp).
@@ -14,10 +13,6 @@
 #define SHITSUKAN_VERSION_PATCH 0
 #define SHITSUKAN_VERSION_STRING "0.2.0"
 
-namespace shitsukan {
-
-// The papers compute in 4-byte reals (okada1987 §5: "4-byte floating point except the
-// spline, 8-byte"). One alias, as pbrt's Float, so a port can see the choice in one place.
-using Float = float;
-
-}  // namespace shitsukan
+// Scalars: the library writes float (the papers' 4-byte reals, okada1987 §5: "4-byte
+// floating point except the spline, 8-byte") and double only where a paper or precision
+// demands it. There is no Float alias: the 0.1 one was used nowhere (CHANGELOG.md).
