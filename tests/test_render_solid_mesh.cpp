@@ -1,6 +1,6 @@
 // Tests for the reusable pieces the figures now call: solid/object_mapping, solid_material,
 // okada1987_presets, geom/mesh_fit, render/solid_mesh, and leather/maps' one-call maps and
-// mirrored tiling.
+// mirrored tiling, render/leather_mesh.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -187,4 +187,57 @@ TEST_CASE("leather maps in one call; mirrored tiling is continuous and 2W-period
         bad += std::fabs(mirrored_normal_at(maps, m).x + n0.x) > 1e-4f;
     }
     CHECK(bad == 0);
+}
+
+TEST_CASE("render/leather_mesh: bumps change the shading, gamma, tangents must match the mesh") {
+    CHECK(to_display_gamma(Vec3{0.0f, 1.0f, 2.0f}).r == 0);
+    CHECK(to_display_gamma(Vec3{0.0f, 1.0f, 2.0f}).g == 255);
+    CHECK(to_display_gamma(Vec3{0.0f, 1.0f, 2.0f}).b == 255);  // clamped
+    CHECK(int(to_display_gamma(Vec3{0.5f, 0.5f, 0.5f}).r) == 186);  // 255·0.5^(1/2.2)
+
+    ScalePattern pattern;
+    REQUIRE(generate_scale_pattern(ScaleParams{}, &pattern).ok());
+    LeatherMaps maps;
+    REQUIRE(make_leather_maps(pattern, 128, 128, table1_section(Table1Section::convex),
+                              ReliefOptions{}, &maps)
+                .ok());
+    TriangleMesh box;
+    REQUIRE(make_box({-0.8f, -0.8f, -0.8f}, {0.8f, 0.8f, 0.8f}, &box).ok());
+    TextureTangents tangents;
+    REQUIRE(compute_texture_tangents(box.view(), &tangents).ok());
+    const Camera cam = perspective_camera({2.5f, 2.0f, 3.0f}, {0, 0, 0}, {0, 1, 0}, 35.0f, 64, 64);
+
+    auto render = [&](bool bumps, RgbImage* img) {
+        img->resize(64, 64);
+        FloatImage depth(64, 64);
+        const FrameBand band = full_frame_band(img->view(), depth.view());
+        clear_band(band, Rgb8{0, 0, 0});
+        if (bumps)
+            return draw_leather_mesh(cam, band, box.view(), DrawOptions{}, maps, tangents);
+        LeatherShader flat;  // no maps: the same material unbumped
+        flat.eye = cam.eye;
+        return draw_mesh(cam, band, box.view(), DrawOptions{}, flat);
+    };
+    RgbImage bumped, flat;
+    REQUIRE(render(true, &bumped).ok());
+    REQUIRE(render(false, &flat).ok());
+    int covered = 0, differ = 0;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const Rgb8 a = bumped.at(x, y), b = flat.at(x, y);
+            if (b.r == 0 && b.g == 0 && b.b == 0) continue;
+            ++covered;
+            differ += a.r != b.r || a.g != b.g || a.b != b.b;
+        }
+    CHECK(covered > 64 * 64 / 4);
+    CHECK(differ > covered / 3);  // the scales' slopes show on most pixels
+
+    TriangleMesh other;
+    REQUIRE(make_torus(0.6f, 0.2f, 8, 6, &other).ok());
+    RgbImage img(64, 64);
+    FloatImage depth(64, 64);
+    const FrameBand band = full_frame_band(img.view(), depth.view());
+    const Status s = draw_leather_mesh(cam, band, other.view(), DrawOptions{}, maps, tangents);
+    CHECK(s.code() == StatusCode::invalid_argument);
+    CHECK(std::string(s.message()).find("compute_texture_tangents") != std::string::npos);
 }

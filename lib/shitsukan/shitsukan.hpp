@@ -113,4 +113,5 @@
 #include "shitsukan/wrinkly/wr_tessellation.hpp"
 
 // render
+#include "shitsukan/render/leather_mesh.hpp"
 #include "shitsukan/render/solid_mesh.hpp"
