@@ -4,8 +4,8 @@
 #   make test      install missing packages, build and run the tests
 #   make all | test-sanitize | examples | bench | check-small | install PREFIX=... | deps | clean
 #   make check-api        headers compile alone, umbrella header complete, only shitsukan
-#                         symbols exported, a program with its own stb links, dropped Status
-#                         is a compile error under -Werror
+#                         symbols exported, a program with its own stb links, PNGs without
+#                         the stb header, dropped Status is a compile error under -Werror
 #   make test-consumers   installs cmake/pkg-config if missing; builds tests/consumer four ways
 #                         (add_subdirectory, FetchContent, find_package, pkg-config)
 #
@@ -161,6 +161,11 @@ check-api: deps
 	@# 4. a program with its own stb_image_write implementation links and runs
 	$(CXX) $(CPPFLAGS) -std=c++17 -O1 -w tests/consumer/stb_clash.cpp $(LIBRARY) -o $(API_DIR)/stb_clash
 	@$(API_DIR)/stb_clash $(API_DIR)/own.png $(API_DIR)/ours.png
+	@# 4b. built without the stb header (as `make install` on a bare machine), PNGs still work
+	$(CXX) $(CXXFLAGS) -DSHITSUKAN_NO_STB -Ilib -c lib/shitsukan/image/image_io.cpp -o $(API_DIR)/image_io_nostb.o
+	$(CXX) $(CXXFLAGS) -Ilib tests/consumer/png_without_stb.cpp $(API_DIR)/image_io_nostb.o $(LIBRARY) \
+	  -o $(API_DIR)/png_without_stb
+	@$(API_DIR)/png_without_stb $(API_DIR)/nostb.png
 	@# 5. a dropped Status is a compile error under -Werror (and the checked form compiles)
 	@$(CXX) $(CPPFLAGS) -std=c++17 -Wall -Werror -DSHITSUKAN_CHECKED -fsyntax-only \
 	  tests/compile_fail/dropped_status.cpp || { echo "check-api: the checked form does not compile"; exit 1; }
