@@ -3,6 +3,11 @@
 #   make figures   install missing packages, build, render every paper figure
 #   make test      install missing packages, build and run the tests
 #   make all | test-sanitize | examples | bench | check-small | install PREFIX=... | deps | clean
+#   make check-api        headers compile alone, umbrella header complete, only shitsukan
+#                         symbols exported, a program with its own stb links, PNGs without
+#                         the stb header, dropped Status is a compile error under -Werror
+#   make test-consumers   installs cmake/pkg-config if missing; builds tests/consumer four ways
+#                         (add_subdirectory, FetchContent, find_package, pkg-config)
 #
 # Sources are discovered: any lib/shitsukan/**/*.cpp is part of the library, any
 # paper_figures/**/*.cpp part of the figures driver, tests/*.cpp part of the test runner,
@@ -16,7 +21,7 @@ JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 FIGURES_ARGS ?=
 BENCH_ARGS ?=
 
-# DESIGN.md: same inputs, same bits -> no FMA contraction, no fast-math.
+# docs/DESIGN.md: same inputs, same bits -> no FMA contraction, no fast-math.
 WARN     := -Wall -Wextra -Wpedantic
 ifdef CI
 WARN     += -Werror
@@ -48,11 +53,14 @@ FIG_OBJS   := $(FIG_SRCS:%.cpp=$(BUILD)/obj/%.o)
 TEST_OBJS  := $(TEST_SRCS:%.cpp=$(BUILD)/obj/%.o)
 BENCH_OBJS := $(BENCH_SRCS:%.cpp=$(BUILD)/obj/%.o)
 SAN_OBJS   := $(LIB_SRCS:%.cpp=$(BUILD)/san/%.o) $(TEST_SRCS:%.cpp=$(BUILD)/san/%.o)
-SMALL_OBJS := $(SMALL_SRCS:%.cpp=$(BUILD)/small/%.o)
+SMALL_CPPS := $(filter %.cpp,$(SMALL_SRCS))
+SMALL_HPPS := $(filter %.hpp,$(SMALL_SRCS))
+SMALL_OBJS := $(SMALL_CPPS:%.cpp=$(BUILD)/small/%.o)
 EXAMPLES   := $(EXAMPLE_SRCS:examples/%.cpp=$(BUILD)/examples/%)
 LIBRARY    := $(BUILD)/libshitsukan.a
 
-.PHONY: all test test-sanitize figures examples bench check-small install deps bench-deps clean
+.PHONY: all test test-sanitize figures examples bench check-small check-api test-consumers \
+        install deps bench-deps consumer-deps clean
 
 # The top-level targets run one at a time (each builds in parallel inside its own sub-make), so
 # `make -j test figures` cannot build the library twice at once.
@@ -68,6 +76,7 @@ all: deps
 REQUIRED := /usr/include/doctest/doctest.h:doctest-dev /usr/include/stb/stb_image_write.h:libstb-dev
 BENCH_REQUIRED := /usr/include/libnoise/noise.h:libnoise-dev /usr/include/boost/polygon/voronoi.hpp:libboost-dev \
                   /usr/include/CGAL/Surface_mesh.h:libcgal-dev
+CONSUMER_REQUIRED := /usr/bin/cmake:cmake /usr/bin/pkg-config:pkg-config /usr/bin/git:git
 define ensure_packages
 	@missing=""; for pair in $(1); do f=$${pair%%:*}; p=$${pair##*:}; \
 	  [ -f "$$f" ] || missing="$$missing $$p"; done; \
@@ -86,6 +95,9 @@ deps:
 
 bench-deps: deps
 	$(call ensure_packages,$(BENCH_REQUIRED))
+
+consumer-deps: deps
+	$(call ensure_packages,$(CONSUMER_REQUIRED))
 
 # ---- the two set-up commands ----
 test: deps
@@ -120,8 +132,53 @@ check-small: $(SMALL_OBJS)
 	      grep -E '/bits/(stl_vector|basic_string|unique_ptr|stl_map|stl_list|stl_deque|hashtable)\.h' | sort -u); \
 	  if [ -n "$$h" ]; then echo "check-small: $$f includes host containers:"; echo "$$h"; exit 1; fi; \
 	done; \
-	echo "check-small: $(words $(SMALL_OBJS)) files compile with -fno-exceptions -fno-rtti, allocate nothing"; \
-	echo "check-small: and include no std containers or strings (not even through headers)"
+	echo "check-small: $(words $(SMALL_CPPS)) small-device .cpp files compile with -fno-exceptions -fno-rtti and allocate nothing;"; \
+	echo "check-small: all $(words $(SMALL_SRCS)) small-device files ($(words $(SMALL_CPPS)) .cpp, $(words $(SMALL_HPPS)) headers) include no std containers or strings"
+
+# Using the library from outside: see check-api / test-consumers in the header of this file.
+HEADERS := $(shell find lib -name '*.hpp' 2>/dev/null | LC_ALL=C sort)
+API_DIR := $(BUILD)/api
+check-api: deps
+	@$(SUBMAKE) $(LIBRARY)
+	@mkdir -p $(API_DIR)
+	@# 1. every header compiles on its own (it includes what it uses)
+	@printf '%s\n' $(HEADERS:lib/%=%) | xargs -P $(JOBS) -I{} sh -c \
+	  'printf "#include \"%s\"\n" "{}" | $(CXX) $(CXXFLAGS) -Ilib -fsyntax-only -x c++ - || \
+	   { echo "check-api: {} does not compile alone"; exit 255; }'
+	@echo "check-api: $(words $(HEADERS)) headers compile alone"
+	@# 2. the umbrella header includes every header (tools/gen_umbrella.sh writes it)
+	@missing=$$(for h in $(filter-out lib/shitsukan/shitsukan.hpp,$(HEADERS)); do \
+	  grep -qF "#include \"$${h#lib/}\"" lib/shitsukan/shitsukan.hpp || echo "$${h#lib/}"; done); \
+	if [ -n "$$missing" ]; then echo "check-api: shitsukan/shitsukan.hpp misses (run tools/gen_umbrella.sh):"; \
+	  echo "$$missing"; exit 1; fi; echo "check-api: shitsukan/shitsukan.hpp includes all of them"
+	@# 3. the archive exports only shitsukan symbols (std:: template instances are weak, shared)
+	@bad=$$(nm -g --defined-only $(LIBRARY) | awk 'NF == 3 { print $$2, $$3 }' | \
+	  awk '($$1 ~ /^[TDBRGSC]$$/ && $$2 !~ /9shitsukan/) || ($$1 ~ /^[WVu]$$/ && $$2 !~ /9shitsukan/ && \
+	       $$2 !~ /^(_ZN?K?St|_ZN?K?9__gnu_cxx|_ZT[ISV]N?St|DW\.ref\.__gxx_personality_v0$$)/) \
+	       { print $$2 }' | sort -u); \
+	if [ -n "$$bad" ]; then echo "check-api: libshitsukan.a exports symbols outside namespace shitsukan:"; \
+	  echo "$$bad" | c++filt | head -20; exit 1; fi
+	@echo "check-api: libshitsukan.a exports only shitsukan symbols (no stbi_*)"
+	@# 4. a program with its own stb_image_write implementation links and runs
+	$(CXX) $(CPPFLAGS) -std=c++17 -O1 -w tests/consumer/stb_clash.cpp $(LIBRARY) -o $(API_DIR)/stb_clash
+	@$(API_DIR)/stb_clash $(API_DIR)/own.png $(API_DIR)/ours.png
+	@# 4b. built without the stb header (as `make install` on a bare machine), PNGs still work
+	$(CXX) $(CXXFLAGS) -DSHITSUKAN_NO_STB -Ilib -c lib/shitsukan/image/image_io.cpp -o $(API_DIR)/image_io_nostb.o
+	$(CXX) $(CXXFLAGS) -Ilib tests/consumer/png_without_stb.cpp $(API_DIR)/image_io_nostb.o $(LIBRARY) \
+	  -o $(API_DIR)/png_without_stb
+	@$(API_DIR)/png_without_stb $(API_DIR)/nostb.png
+	@# 5. a dropped Status is a compile error under -Werror (and the checked form compiles)
+	@$(CXX) $(CPPFLAGS) -std=c++17 -Wall -Werror -DSHITSUKAN_CHECKED -fsyntax-only \
+	  tests/compile_fail/dropped_status.cpp || { echo "check-api: the checked form does not compile"; exit 1; }
+	@if $(CXX) $(CPPFLAGS) -std=c++17 -Wall -Werror -fsyntax-only tests/compile_fail/dropped_status.cpp \
+	     2> $(API_DIR)/dropped_status.log; then \
+	  echo "check-api: dropping a Status compiled under -Werror"; exit 1; fi; \
+	grep -q "nodiscard" $(API_DIR)/dropped_status.log || \
+	  { echo "check-api: dropped_status.cpp failed, but not for nodiscard:"; cat $(API_DIR)/dropped_status.log; exit 1; }
+	@echo "check-api: a dropped Status does not compile under -Werror (nodiscard)"
+
+test-consumers: consumer-deps
+	JOBS=$(JOBS) CXX=$(CXX) bash tests/consumer/run.sh
 
 # ---- linking ----
 $(LIBRARY): $(LIB_OBJS)
@@ -164,15 +221,27 @@ $(BUILD)/small/%.o: %.cpp $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CXX) $(CPPFLAGS) $(CXXFLAGS) $(SMALL_FLAGS) -MMD -MP -c $< -o $@
 
-# ---- install: headers, static library, pkg-config file ----
-install: all
-	@mkdir -p $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib/pkgconfig
+# ---- install: headers, static library, pkg-config file, CMake package ----
+# Needs only a compiler: no test framework, no apt-get (without the stb header write_png
+# uses the library's own, uncompressed PNG encoder). The version is core/config.hpp's.
+VERSION := $(shell sed -n 's/^\#define SHITSUKAN_VERSION_STRING "\(.*\)"/\1/p' lib/shitsukan/core/config.hpp)
+VERSION_MAJOR := $(word 1,$(subst ., ,$(VERSION)))
+VERSION_MINOR := $(word 2,$(subst ., ,$(VERSION)))
+install:
+	@$(SUBMAKE) $(LIBRARY)
+	@mkdir -p $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib/pkgconfig \
+	  $(DESTDIR)$(PREFIX)/lib/cmake/shitsukan
 	cd lib && find shitsukan -name '*.hpp' -exec install -D -m 644 {} $(DESTDIR)$(PREFIX)/include/{} \;
 	install -m 644 $(LIBRARY) $(DESTDIR)$(PREFIX)/lib/libshitsukan.a
-	@printf 'prefix=%s\nincludedir=$${prefix}/include\nlibdir=$${prefix}/lib\n\nName: shitsukan\nDescription: natural-material textures from five Japanese CG papers\nVersion: %s\nCflags: -I$${includedir} -std=c++17\nLibs: -L$${libdir} -lshitsukan\n' \
-	  '$(PREFIX)' "$$(sed -n 's/.*VERSION_STRING "\(.*\)"/\1/p' lib/shitsukan/core/config.hpp)" \
-	  > $(DESTDIR)$(PREFIX)/lib/pkgconfig/shitsukan.pc
-	@echo "installed into $(DESTDIR)$(PREFIX)"
+	sed -e 's|@SHITSUKAN_PC_PREFIX@|$(PREFIX)|' -e 's|@SHITSUKAN_PC_INCLUDEDIR@|$${prefix}/include|' \
+	  -e 's|@SHITSUKAN_PC_LIBDIR@|$${prefix}/lib|' -e 's|@SHITSUKAN_PC_VERSION@|$(VERSION)|' \
+	  cmake/shitsukan.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/shitsukan.pc
+	install -m 644 cmake/shitsukanConfig-make.cmake.in \
+	  $(DESTDIR)$(PREFIX)/lib/cmake/shitsukan/shitsukanConfig.cmake
+	sed -e 's|@VERSION@|$(VERSION)|' -e 's|@MAJOR@|$(VERSION_MAJOR)|' -e 's|@MINOR@|$(VERSION_MINOR)|' \
+	  cmake/shitsukanConfigVersion-make.cmake.in \
+	  > $(DESTDIR)$(PREFIX)/lib/cmake/shitsukan/shitsukanConfigVersion.cmake
+	@echo "installed shitsukan $(VERSION) into $(DESTDIR)$(PREFIX)"
 
 clean:
 	rm -rf $(BUILD) paper_figures/out

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "shitsukan/image/image_io.hpp"
+#include "shitsukan/image/png16.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wall"
@@ -31,6 +32,27 @@ std::string read_file(const char* path) {
 
 Rgb8 rgb_pattern(int x, int y) {
     return Rgb8{std::uint8_t(x * 37 + y), std::uint8_t(y * 53 ^ x), std::uint8_t((x * y) & 255)};
+}
+
+// Decodes an RGB PNG with stb_image and counts the pixels that differ from `expected`
+// (a wrong size or channel count counts as every pixel wrong).
+int rgb_png_pixels_wrong(const char* path, const RgbView& expected) {
+    int w = 0, h = 0, n = 0;
+    stbi_uc* back = stbi_load(path, &w, &h, &n, 0);
+    if (back == nullptr) return expected.width * expected.height;
+    int wrong = 0;
+    if (w != expected.width || h != expected.height || n != 3) {
+        wrong = expected.width * expected.height;
+    } else {
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const stbi_uc* p = back + 3 * (y * w + x);
+                const Rgb8 e = expected.at(x, y);
+                wrong += p[0] != e.r || p[1] != e.g || p[2] != e.b;
+            }
+    }
+    stbi_image_free(back);
+    return wrong;
 }
 
 }  // namespace
@@ -82,30 +104,17 @@ TEST_CASE("write_png 8-bit RGB and gray: stbi_load round trip of every byte") {
     RgbView window = big.view().subview(5, 3, 31, 22);  // odd width, strided rows
     const char* path = "build/test_image_io.png";
     REQUIRE(write_png(path, window).ok());
-    int w = 0, h = 0, n = 0;
-    stbi_uc* back = stbi_load(path, &w, &h, &n, 0);
-    REQUIRE(back != nullptr);
-    CHECK(w == 31);
-    CHECK(h == 22);
-    CHECK(n == 3);
-    int wrong = 0;
-    for (int y = 0; y < 22; ++y)
-        for (int x = 0; x < 31; ++x) {
-            const stbi_uc* p = back + 3 * (y * 31 + x);
-            Rgb8 e = window.at(x, y);
-            wrong += p[0] != e.r || p[1] != e.g || p[2] != e.b;
-        }
-    CHECK(wrong == 0);
-    stbi_image_free(back);
+    CHECK(rgb_png_pixels_wrong(path, window) == 0);
 
     GrayImage gray(13, 9);
     for (int y = 0; y < 9; ++y)
         for (int x = 0; x < 13; ++x) gray.at(x, y) = std::uint8_t(x * 19 + y * 7);
     REQUIRE(write_png(path, gray.view()).ok());
-    back = stbi_load(path, &w, &h, &n, 0);
+    int w = 0, h = 0, n = 0;
+    stbi_uc* back = stbi_load(path, &w, &h, &n, 0);
     REQUIRE(back != nullptr);
     CHECK(n == 1);
-    wrong = 0;
+    int wrong = 0;
     for (int y = 0; y < 9; ++y)
         for (int x = 0; x < 13; ++x) wrong += back[y * 13 + x] != gray.at(x, y);
     CHECK(wrong == 0);
@@ -134,4 +143,22 @@ TEST_CASE("image writers report errors: empty image, empty path, unwritable path
     // "Empty" includes a view with pixels but zero width.
     RgbView zero{rgb.data(), 0, 2, 2};
     CHECK(write_ppm("build/never.ppm", zero).code() == StatusCode::invalid_argument);
+}
+
+TEST_CASE("write_png's fallback encoder (no stb): stored deflate, stbi_load round trip") {
+    // The encoder write_png uses when the library is built without stb_image_write.
+    RgbImage big(40, 30);
+    for (int y = 0; y < 30; ++y)
+        for (int x = 0; x < 40; ++x) big.at(x, y) = rgb_pattern(x, y);
+    RgbView window = big.view().subview(5, 3, 31, 22);
+    const char* path = "build/test_image_io_fallback.png";
+    const auto* bytes = reinterpret_cast<const std::uint8_t*>(window.pixels);
+    REQUIRE(detail::write_png8_stored(path, bytes, window.width, window.height, 3,
+                                      std::size_t(window.stride) * 3, false)
+                .ok());
+    CHECK(rgb_png_pixels_wrong(path, window) == 0);
+    // 8-bit samples: the file is the raw bytes (one filter byte a row) plus headers.
+    CHECK(read_file(path).size() < std::size_t(22 * (1 + 31 * 3) + 100));
+    CHECK(png_compressed());  // this build has stb_image_write (the Makefile installs it)
+    std::remove(path);
 }

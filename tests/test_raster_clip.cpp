@@ -100,7 +100,7 @@ void compare_with_reference(const Camera& cam, Vec3 p0, Vec3 p1, Vec3 p2) {
 }  // namespace
 
 TEST_CASE("clip_triangle: a vertex behind the near plane gives a quadrilateral in front") {
-    ClipVertex t[3] = {{{0, 0, 0.5f, 1}, {1, 0, 0}},     // in front
+    ClipSpaceVertex t[3] = {{{0, 0, 0.5f, 1}, {1, 0, 0}},     // in front
                        {{1, 0, -3, -2}, {0, 1, 0}},      // behind the eye (w < 0)
                        {{0, 1, 0.2f, 1}, {0, 0, 1}}};    // in front
     ClipPolygon poly;
@@ -110,7 +110,7 @@ TEST_CASE("clip_triangle: a vertex behind the near plane gives a quadrilateral i
     CHECK(r.clipped_near);
     REQUIRE(poly.count == 4);
     for (int i = 0; i < poly.count; ++i) {
-        const ClipVertex& v = poly.v[i];
+        const ClipSpaceVertex& v = poly.v[i];
         CHECK(v.clip.z + v.clip.w >= -1e-6f);
         CHECK(v.clip.w > 0.0f);
         CHECK(v.bary.x + v.bary.y + v.bary.z == doctest::Approx(1.0f));
@@ -122,10 +122,10 @@ TEST_CASE("clip_triangle: a vertex behind the near plane gives a quadrilateral i
 }
 
 TEST_CASE("clip_triangle: two triangles sharing a crossing edge get the same cut point") {
-    ClipVertex shared_front{{0.3f, 0.1f, 0.7f, 2.1f}, {}};
-    ClipVertex shared_back{{-0.7f, 0.4f, -1.3f, -0.9f}, {}};
-    ClipVertex t1[3] = {shared_front, shared_back, {{1, 1, 0.5f, 1.5f}, {}}};
-    ClipVertex t2[3] = {shared_back, shared_front, {{-1, -1, 0.5f, 1.5f}, {}}};  // reversed
+    ClipSpaceVertex shared_front{{0.3f, 0.1f, 0.7f, 2.1f}, {}};
+    ClipSpaceVertex shared_back{{-0.7f, 0.4f, -1.3f, -0.9f}, {}};
+    ClipSpaceVertex t1[3] = {shared_front, shared_back, {{1, 1, 0.5f, 1.5f}, {}}};
+    ClipSpaceVertex t2[3] = {shared_back, shared_front, {{-1, -1, 0.5f, 1.5f}, {}}};  // reversed
     ClipPolygon p1, p2;
     clip_triangle(t1, &p1);
     clip_triangle(t2, &p2);
@@ -141,12 +141,12 @@ TEST_CASE("clip_triangle: two triangles sharing a crossing edge get the same cut
 
 TEST_CASE("clip_triangle: wholly behind or beside the view is outside, NaN is not finite") {
     ClipPolygon poly;
-    ClipVertex behind[3] = {{{0, 0, -3, -1}, {}}, {{1, 0, -3, -1}, {}}, {{0, 1, -3, -1}, {}}};
+    ClipSpaceVertex behind[3] = {{{0, 0, -3, -1}, {}}, {{1, 0, -3, -1}, {}}, {{0, 1, -3, -1}, {}}};
     CHECK(clip_triangle(behind, &poly).outside);
     CHECK(poly.count == 0);
-    ClipVertex right[3] = {{{2, 0, 0, 1}, {}}, {{3, 0, 0, 1}, {}}, {{2, 1, 0, 1}, {}}};
+    ClipSpaceVertex right[3] = {{{2, 0, 0, 1}, {}}, {{3, 0, 0, 1}, {}}, {{2, 1, 0, 1}, {}}};
     CHECK(clip_triangle(right, &poly).outside);
-    ClipVertex nan[3] = {{{NAN, 0, 0, 1}, {}}, {{3, 0, 0, 1}, {}}, {{2, 1, 0, 1}, {}}};
+    ClipSpaceVertex nan[3] = {{{NAN, 0, 0, 1}, {}}, {{3, 0, 0, 1}, {}}, {{2, 1, 0, 1}, {}}};
     CHECK(clip_triangle(nan, &poly).not_finite);
 }
 

@@ -88,7 +88,7 @@ TEST_CASE("golden render of an asymmetric scene (hash of the bytes)") {
 
     std::uint32_t hash = fnv1a(color.data(), sizeof(Rgb8) * std::size_t(W) * std::size_t(H));
     if (hash != kGoldenHash) {
-        write_png("build/golden_raster.png", color.view());
+        CHECK(write_png("build/golden_raster.png", color.view()).ok());
         char text[64];
         std::snprintf(text, sizeof text, "0x%08xu", unsigned(hash));
         FAIL_CHECK("golden hash differs: got " << text << " (image in build/golden_raster.png)");

@@ -19,7 +19,7 @@
 // - ctx.progress(fmt, ...): a progress line for long figures (printed indented).
 // - Return a non-ok Status to report a failure; the driver goes on and exits non-zero.
 // Every figure's parameters appear in paper_figures/out/index.md as a table with a
-// "given / chosen" column (DESIGN.md: given vs. chosen).
+// "given / chosen" column (docs/DESIGN.md: given vs. chosen).
 #pragma once
 
 #include <string>

@@ -5,29 +5,28 @@
 #include <cmath>
 
 #include "shitsukan/geom/mesh_builders.hpp"
+#include "shitsukan/geom/mesh_fit.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
+#include "shitsukan/render/solid_mesh.hpp"
 
 namespace shitsukan::okada {
 
 using figures::fmt;
 
-// Six layers of impurity, lattice units along the texture's z (the object's up axis):
-// uneven spacing and widths, sharp and soft skirts (chosen here; the paper gives none).
-const MarbleStripe kStripes[6] = {{8.0f, 1.2f, 0.9f},  {17.0f, 2.5f, 0.6f}, {26.0f, 0.8f, 1.5f},
-                                  {35.0f, 3.5f, 0.5f}, {46.0f, 1.5f, 0.8f}, {55.0f, 2.0f, 0.7f}};
-
 namespace {
 double g_build_seconds = 0.0;
-const Vec3 kLight = normalize(Vec3{0.3f, 0.8f, 0.55f});  // from the upper front, slightly right
 }  // namespace
+
+SolidMaterial solid_material(Material m, float k) {
+    if (m == Material::marble) return okada1987_marble(k);
+    if (m == Material::marble_single) return okada1989_marble(k);
+    return okada1987_wood(k);
+}
 
 const FractalLattice& shared_lattice() {
     static FractalLattice lattice;
     if (lattice.empty()) {
-        FractalParams p;
-        p.R = 6;
-        p.beta = kBeta;
-        p.seed = kSeed;
+        const FractalParams p = okada1987_lattice_params();
         auto t0 = std::chrono::steady_clock::now();
         Status s = lattice.build(p);
         g_build_seconds =
@@ -123,32 +122,11 @@ void record_camera(figures::FigureContext& ctx, const std::string& description) 
 }
 
 float density(Material m, float k, Vec3 lp) {
-    const float d = turbulence(shared_lattice().view(), lp);  // D(P), eq. (6)
-    if (m == Material::marble) {
-        const float g = marble_texture(lp, d, MarbleParams{kStripes, kStripeCount, k});
-        return 1.0f - (g < 1.0f ? g : 1.0f);  // G(P + k·D(P)·(0, 0, 1)), G' = 1 - min(G, 1)
-    }
-    if (m == Material::marble_single) {
-        // okada1989 eqs. (8), (9): the one layer at the displaced z' = z + k·D(P), repeated
-        // every period: the two nearest repeats, at t and t - period from z'.
-        const float zp = lp.z + k * d;
-        float t = std::fmod(zp - kSingleStripe.c, kSingleLayerPeriod);
-        if (t < 0.0f) t += kSingleLayerPeriod;
-        const MarbleStripe layer{0.0f, kSingleStripe.w, kSingleStripe.alpha};
-        const float g = trapezoid_skirt(t, layer) + trapezoid_skirt(t - kSingleLayerPeriod, layer);
-        return 1.0f - (g < 1.0f ? g : 1.0f);
-    }
-    WoodParams w;
-    w.x0 = kWoodAxis.x;
-    w.y0 = kWoodAxis.y;
-    w.k2 = kWoodK2;
-    w.k = k;
-    return wood_unit_range(wood_texture(lp, d, w));  // (sin(k2·r') + 1)/2
+    return solid_density(solid_material(m, k), shared_lattice().view(), lp);  // eqs. (6)-(11)
 }
 
 Vec3 material_color(Material m, float g) {
-    return m != Material::wood ? lookup_color(g, kMarbleImpurity, kMarbleLimestone)
-                                 : lookup_color(g, kWoodSummer, kWoodWinter);
+    return solid_density_color(solid_material(m, 0.0f), g);  // eq. (12)
 }
 
 void add_piece(Scene* scene, const TriangleMesh& mesh, const Mat4& model) {
@@ -160,40 +138,23 @@ void add_piece(Scene* scene, const TriangleMesh& mesh, const Mat4& model) {
 
 namespace {
 
+// The library's shader (render/solid_mesh.hpp), counting the density shares the notes report.
 struct SolidShader {
-    Material material;
-    float k;
+    SolidTextureShader inner;
     DensityShares* shares;  // counted when not null
     Rgb8 operator()(const Fragment& f) const {
-        const Vec3 lp = object_to_lattice(f.object_position);
-        const float g = density(material, k, lp);
         if (shares) {
+            const Vec3 lp = shitsukan::object_to_lattice(f.object_position, inner.shading.mapping);
+            const float g = solid_density(inner.material, inner.lattice, lp);
             ++shares->pixels;
             if (g < 0.5f)
                 ++shares->vein;
             else if (g < 0.9f)
                 ++shares->skirt;
         }
-        const Vec3 c = material_color(material, g);
-        Vec3 n = f.normal;
-        if (!f.front_facing) n = -n;
-        const float lambert = std::fmax(0.0f, dot(n, kLight));
-        const float light = 0.3f + 0.7f * lambert;
-        auto to8 = [](float v) {
-            return std::uint8_t(v <= 0.0f ? 0 : (v >= 255.0f ? 255 : int(v + 0.5f)));
-        };
-        return Rgb8{to8(c.x * light), to8(c.y * light), to8(c.z * light)};
+        return inner(f);
     }
 };
-
-// Uniform scale and shift so the mesh's bounding box is centred in [-extent, extent]^3.
-void fit_to_cube(TriangleMesh* m, float extent) {
-    Vec3 lo{1e30f, 1e30f, 1e30f}, hi{-1e30f, -1e30f, -1e30f};
-    for (const Vec3& p : m->positions) lo = vmin(lo, p), hi = vmax(hi, p);
-    const Vec3 size = hi - lo, mid = (lo + hi) * 0.5f;
-    const float s = 2.0f * extent / std::fmax(size.x, std::fmax(size.y, size.z));
-    for (Vec3& p : m->positions) p = (p - mid) * s;
-}
 
 // A Catmull-Rom profile (r, y) through the control points, in double (okada1987 §4.4: the
 // spline is the one computation in 8-byte reals).
@@ -211,7 +172,8 @@ Status render_scene(const Scene& scene, Material m, float k, int size, RgbImage*
     clear_band(band, kBackground);
     const Camera camera = perspective_camera(scene.eye, scene.target, Vec3{0, 1, 0},
                                              scene.fov_degrees, size, size);
-    SolidShader shader{m, k, shares};
+    SolidShader shader{SolidTextureShader{shared_lattice().view(), solid_material(m, k), SolidShading{}},
+                       shares};
     for (const Piece& piece : scene.pieces) {
         DrawOptions opt;
         opt.model = piece.model;
@@ -260,7 +222,7 @@ Status build_scene(const std::string& name, bool quick, Scene* out) {
         profile.push_back({0.40, 0.55});
         profile.push_back({0.0, 0.45});
         SHITSUKAN_TRY(make_revolution(profile.data(), int(profile.size()), seg, &mesh));
-        fit_to_cube(&mesh, 0.92f);
+        SHITSUKAN_TRY(fit_mesh_to_cube(&mesh, 0.92f));
         add_piece(out, mesh);
         out->eye = {2.5f, 2.5f, 3.4f};
     } else if (name == "nagoya") {
@@ -273,7 +235,7 @@ Status build_scene(const std::string& name, bool quick, Scene* out) {
         TriangleMesh second;
         SHITSUKAN_TRY(make_block_text("OYA", 1.0f, 0.45f, &second));
         SHITSUKAN_TRY(append(&mesh, second, Mat4::translate({0.0f, -1.25f, 0.0f})));
-        fit_to_cube(&mesh, 0.92f);
+        SHITSUKAN_TRY(fit_mesh_to_cube(&mesh, 0.92f));
         add_piece(out, mesh);
         out->eye = {0.9f, 1.5f, 5.2f};
         out->target = {0.0f, -0.02f, 0.0f};
@@ -286,8 +248,9 @@ Status build_scene(const std::string& name, bool quick, Scene* out) {
         TriangleMesh handle;
         SHITSUKAN_TRY(make_torus(0.3f, 0.07f, seg / 2, quick ? 8 : 24, &handle));
         // The handle: a ring in the xy plane, its inner half hidden in the wall.
-        append(&mesh, handle, Mat4::translate({0.66f, 0.05f, 0.0f}) * Mat4::rotate_x(1.5707963f));
-        fit_to_cube(&mesh, 0.92f);
+        SHITSUKAN_TRY(append(&mesh, handle,
+                             Mat4::translate({0.66f, 0.05f, 0.0f}) * Mat4::rotate_x(1.5707963f)));
+        SHITSUKAN_TRY(fit_mesh_to_cube(&mesh, 0.92f));
         add_piece(out, mesh);
         out->eye = {1.9f, 2.4f, 4.2f};
     } else if (name == "ashtray") {
@@ -295,12 +258,12 @@ Status build_scene(const std::string& name, bool quick, Scene* out) {
                                  {0.96, 0.12}, {0.74, 0.12}, {0.66, 0.02},  {0.58, -0.14},
                                  {0.0, -0.14}};
         SHITSUKAN_TRY(make_revolution(profile, 9, seg, &mesh));
-        fit_to_cube(&mesh, 0.92f);
+        SHITSUKAN_TRY(fit_mesh_to_cube(&mesh, 0.92f));
         add_piece(out, mesh);
         out->eye = {1.5f, 2.5f, 2.7f};
     } else if (name == "torus") {
         SHITSUKAN_TRY(make_torus(0.64f, 0.28f, seg, quick ? 16 : 48, &mesh));
-        fit_to_cube(&mesh, 0.92f);
+        SHITSUKAN_TRY(fit_mesh_to_cube(&mesh, 0.92f));
         add_piece(out, mesh);
         out->eye = {1.6f, 2.5f, 2.8f};
     } else {

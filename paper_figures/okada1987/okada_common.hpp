@@ -8,7 +8,8 @@
 //   okada::Scene scene;  okada::add_piece(&scene, mesh);       // meshes in [-1, 1]^3
 //   RgbImage img;  okada::render_scene(scene, okada::Material::wood, 1.6f, 512, &img);
 //
-// Every value the papers leave open is chosen here, once (DESIGN.md: given vs. chosen):
+// Every value the papers leave open is chosen once, in the library
+// (shitsukan/solid/okada1987_presets.hpp; docs/DESIGN.md: given vs. chosen), and recorded here:
 //   lattice    R = 6 (given), beta = kBeta, seed = kSeed, corners 0, hash noise (so the
 //              Type I array equals Types II/III, okada1989 Table "types").
 //   mapping    object space [-1, 1]^3 (y up) -> lattice (32 + 30x, 32 - 30z, 32 + 30y): the
@@ -33,6 +34,8 @@
 #include "shitsukan/geom/mesh.hpp"
 #include "shitsukan/image/image.hpp"
 #include "shitsukan/raster/camera.hpp"
+#include "shitsukan/solid/object_mapping.hpp"
+#include "shitsukan/solid/okada1987_presets.hpp"
 #include "shitsukan/solid/solid.hpp"
 
 namespace shitsukan::okada {
@@ -41,30 +44,27 @@ namespace shitsukan::okada {
 // (its eq. (8)); wood: the radial sine of both papers (eq. (10)).
 enum class Material { marble, marble_single, wood };
 
-// The library's default (FractalParams::beta, whose header gives the one reason and the reading
-// of eq. (2) taken: L^(1) = 1).
-constexpr float kBeta = FractalParams{}.beta;
-constexpr std::uint32_t kSeed = 1987u;
-constexpr float kMarbleK = 16.0f;  // okada1987 §4.4
-constexpr float kWoodK = 1.6f;     // okada1987 §4.4
-constexpr float kLatticeCentre = 32.0f;
-constexpr float kLatticeScale = 30.0f;
-constexpr float kWoodK2 = 1.2f;
-const Vec2 kWoodAxis{6.0f, 14.0f};
-extern const MarbleStripe kStripes[6];
-// okada1989: eq. (8) is the function of ONE layer ("1つの層を表現する原関数"); its striped
-// marble ("層状の縞模様のある大理石") is that one layer repeated through the stone, every
-// kSingleLayerPeriod along z (chosen reading: a single layer through the middle covered only
-// 4-12 % of each object and read as a white object with one crack). density() sums the two
-// layers nearest to the displaced z (the others add less than e^-8).
-const MarbleStripe kSingleStripe{32.0f, 1.2f, 1.0f};
-constexpr float kSingleLayerPeriod = 12.0f;
-constexpr int kStripeCount = 6;
-const Vec3 kMarbleLimestone{238.0f, 234.0f, 226.0f};  // I_max
-const Vec3 kMarbleImpurity{62.0f, 74.0f, 80.0f};      // I_min
-const Vec3 kWoodWinter{128.0f, 72.0f, 34.0f};         // I_max (late wood, dark)
-const Vec3 kWoodSummer{226.0f, 184.0f, 128.0f};       // I_min (early wood, light)
+// The library's presets under the figures' short names.
+constexpr float kBeta = kOkada1987Beta;
+constexpr std::uint32_t kSeed = kOkada1987Seed;
+constexpr float kMarbleK = kOkada1987MarbleK;  // okada1987 §4.4
+constexpr float kWoodK = kOkada1987WoodK;      // okada1987 §4.4
+constexpr float kLatticeCentre = ObjectToLattice{}.centre;
+constexpr float kLatticeScale = ObjectToLattice{}.scale;
+constexpr float kWoodK2 = kOkada1987WoodK2;
+const Vec2 kWoodAxis = kOkada1987WoodAxis;
+inline const auto& kStripes = kOkada1987Stripes;
+inline const MarbleStripe& kSingleStripe = kOkada1989Stripe;  // okada1989: one layer
+constexpr float kSingleLayerPeriod = kOkada1989LayerPeriod;     // repeated every 12 units
+constexpr int kStripeCount = kOkada1987StripeCount;
+const Vec3 kMarbleLimestone = kOkada1987Limestone;  // I_max
+const Vec3 kMarbleImpurity = kOkada1987Impurity;    // I_min
+const Vec3 kWoodWinter = kOkada1987WinterWood;      // I_max (late wood, dark)
+const Vec3 kWoodSummer = kOkada1987SummerWood;      // I_min (early wood, light)
 const Rgb8 kBackground{24, 26, 32};
+
+// The library's SolidMaterial for a figure material and k.
+SolidMaterial solid_material(Material m, float k);
 
 // The one lattice of every figure (okada1987 §4.4: "the same fractal lattice for all").
 const FractalLattice& shared_lattice();
@@ -77,11 +77,8 @@ void record_material(figures::FigureContext& ctx, Material m, float k);
 void record_material(figures::FigureContext& ctx, Material m);
 void record_camera(figures::FigureContext& ctx, const std::string& description);
 
-// Object space -> lattice coordinates (see the top of this file).
-inline Vec3 object_to_lattice(Vec3 p) {
-    return Vec3{kLatticeCentre + kLatticeScale * p.x, kLatticeCentre - kLatticeScale * p.z,
-                kLatticeCentre + kLatticeScale * p.y};
-}
+// Object space -> lattice coordinates (see the top of this file; the library's mapping).
+inline Vec3 object_to_lattice(Vec3 p) { return shitsukan::object_to_lattice(p); }
 
 // The texture density G' in [0, 1] at a lattice point (pixel shift + eq. (12)'s input).
 float density(Material m, float k, Vec3 lattice_point);

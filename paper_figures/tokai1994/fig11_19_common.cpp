@@ -8,43 +8,14 @@
 #include "shitsukan/leather/scale_labels.hpp"
 #include "shitsukan/leather/seed_layout.hpp"
 #include "shitsukan/raster/bump_mapping.hpp"
+#include "shitsukan/render/leather_mesh.hpp"
 
 namespace shitsukan::figures::tokai_relief {
 
-Blinn1977Material leather_material() {
-    Blinn1977Material m;  // a tan crocodile leather with a polished finish (chosen here)
-    m.color = {0.36f, 0.17f, 0.07f};
-    m.ka = 0.18f;
-    m.kd = 0.75f;
-    m.ks = 0.35f;
-    m.distribution = BlinnDistribution::d3_trowbridge_reitz;
-    m.c3 = 0.25f;
-    m.refractive_index = 1.5f;
-    return m;
-}
-
-Blinn1977Material metal_material() {
-    Blinn1977Material m;  // the brass clasp: little diffuse, a tight coloured highlight
-    m.color = {0.55f, 0.42f, 0.16f};
-    m.specular_color = {1.0f, 0.85f, 0.5f};
-    m.ka = 0.35f;
-    m.kd = 0.45f;
-    m.ks = 1.2f;
-    m.distribution = BlinnDistribution::d3_trowbridge_reitz;
-    m.c3 = 0.08f;
-    m.refractive_index = 8.0f;  // metals: high index, so F stays near 1 at all angles
-    return m;
-}
-
-Blinn1977Material suede_material() {
-    Blinn1977Material m;
-    m.color = {0.50f, 0.36f, 0.24f};
-    m.ka = 0.25f;
-    m.kd = 0.8f;
-    m.ks = 0.05f;
-    m.c3 = 0.6f;
-    return m;
-}
+// The materials, lights and gamma are the library's (render/leather_mesh.hpp, chosen there).
+Blinn1977Material leather_material() { return tokai1994_leather_material(); }
+Blinn1977Material metal_material() { return tokai1994_metal_material(); }
+Blinn1977Material suede_material() { return tokai1994_suede_material(); }
 
 void record_shading(FigureContext& ctx) {
     ctx.given("reflection model", "Blinn 1977", "tokai1994 §5, ref. 20");
@@ -76,10 +47,7 @@ void record_relief(FigureContext& ctx) {
     ctx.chosen("normals", "eq. (4), (n_x, n_y) along p - m", "the paper's rule");
 }
 
-Rgb8 to_display(Vec3 c) {
-    auto g = [](float v) { return to_byte(std::pow(clamp(v, 0.0f, 1.0f), 1.0f / 2.2f)); };
-    return Rgb8{g(c.x), g(c.y), g(c.z)};
-}
+Rgb8 to_display(Vec3 c) { return to_display_gamma(c); }
 
 Status crocodile_pattern(FigureContext& ctx, ScalePattern* out) {
     ScaleParams prm;  // the fig. 7 defaults of the scale-pattern module
@@ -114,11 +82,7 @@ Status snake_pattern(FigureContext& ctx, float width, float height, ScalePattern
 
 Status leather_maps(const ScalePattern& pattern, int w, int h, const BezierChain& section,
                     const ReliefOptions& options, LeatherMaps* out) {
-    std::vector<std::int32_t> labels(std::size_t(w) * std::size_t(h));
-    SHITSUKAN_TRY(rasterize_scale_labels(pattern, w, h, labels.data()));
-    static_assert(sizeof(std::int32_t) == sizeof(int), "labels are ints");
-    return make_leather_maps(pattern, reinterpret_cast<const int*>(labels.data()), w, h, section,
-                             options, out);
+    return make_leather_maps(pattern, w, h, section, options, out);  // the library's one call
 }
 
 void shade_flat_texture(const LeatherMaps& maps, Vec2 lo, Vec2 hi, const RgbView& out,
@@ -144,10 +108,7 @@ void shade_flat_texture(const LeatherMaps& maps, Vec2 lo, Vec2 hi, const RgbView
     }
 }
 
-void scene_lights(PointLight out[2]) {
-    out[0] = {{-3.5f, 4.0f, 3.5f}, {1.05f, 1.0f, 0.95f}};
-    out[1] = {{4.5f, 1.0f, 1.5f}, {0.30f, 0.33f, 0.40f}};
-}
+void scene_lights(PointLight out[2]) { tokai1994_scene_lights(out); }
 
 Rgb8 background_color() { return Rgb8{206, 210, 214}; }
 
@@ -158,39 +119,18 @@ Status compute_texture_tangents(BumpSurface* s) {
     return mesh_texture_tangents(s->mesh.view(), s->dpdx.data(), s->dpdy.data(), n);
 }
 
-namespace {
-// Folds x into [0, w] by mirrored repetition; *flip says whether this copy is mirrored.
-float mirror(float x, float w, bool* flip) {
-    float period = 2.0f * w;
-    float m = std::fmod(x, period);
-    if (m < 0.0f) m += period;
-    *flip = m > w;
-    return *flip ? period - m : m;
-}
-}  // namespace
-
 Vec3 mirrored_normal(const LeatherMaps& maps, Vec2 t) {
-    bool fx, fy;
-    Vec2 q{mirror(t.x, maps.pattern_width, &fx), mirror(t.y, maps.pattern_height, &fy)};
-    Vec3 n = normal_at(maps, q);
-    if (fx) n.x = -n.x;
-    if (fy) n.y = -n.y;
-    return n;
+    return mirrored_normal_at(maps, t);  // the library's tiling
 }
 
 Rgb8 LeatherShader::operator()(const Fragment& f) const {
-    if (!f.front_facing) {
-        Vec3 n = -f.normal;
-        return to_display(shade_blinn1977(back, f.world_position, n, camera->eye, lights, 2));
-    }
-    Vec3 n = f.normal;
-    if (maps != nullptr && surface != nullptr) {
-        // Blinn 1978 in the orthonormalised frame of the texture's x, y on the surface.
-        TangentFrame frame = orthonormal_tangent_frame(n, surface->dpdx[std::size_t(f.triangle)],
-                                                       surface->dpdy[std::size_t(f.triangle)]);
-        n = perturb_normal(frame, mirrored_normal(*maps, f.uv));
-    }
-    return to_display(shade_blinn1977(front, f.world_position, n, camera->eye, lights, 2));
+    // The library's leather shader (render/leather_mesh.hpp): Blinn 1978 bumps with the
+    // mirrored maps, Blinn 1977 light, display gamma.
+    const bool bumps = maps != nullptr && surface != nullptr;
+    const std::size_t t = std::size_t(f.triangle);
+    return shade_leather_fragment(f, camera->eye, front, back, lights, 2, bumps ? maps : nullptr,
+                                  bumps ? surface->dpdx[t] : Vec3{},
+                                  bumps ? surface->dpdy[t] : Vec3{});
 }
 
 void draw_axes(Canvas& c, const PlotFrame& f, Vec2 lo, Vec2 hi, float tick, const char* x_label,

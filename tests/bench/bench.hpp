@@ -17,6 +17,8 @@
 #include <cstdio>
 #include <string>
 
+#include "shitsukan/core/status.hpp"
+
 namespace bench {
 
 extern double g_min_seconds;  // time each measurement for at least this long (0.2 s)
@@ -51,6 +53,12 @@ double ns_per_op(F&& fn) {
 
 void report(const std::string& what, double ours_ns, const std::string& peer, double peer_ns);
 void info(const std::string& what, const std::string& text);  // "bench: <what>: <text>"
+
+// A failed set-up must not print a timing: it would measure nothing. Reports the failure
+// ("bench: <what>: set-up failed: <message>") and returns false.
+bool set_up(const shitsukan::Status& s, const char* what);
+// The same for calls inside a timed loop: ok is the AND of their results.
+bool timed_calls_ok(bool ok, const char* what);
 
 using BenchFunction = void (*)();
 bool register_bench(const char* name, BenchFunction fn);

@@ -54,19 +54,22 @@ struct BagShader {
 
 SHITSUKAN_BENCH(leather_maps) {
     ScalePattern pattern;
-    generate_scale_pattern(ScaleParams{}, &pattern);
+    if (!bench::set_up(generate_scale_pattern(ScaleParams{}, &pattern), "leather maps")) return;
     const int size = 512;
     std::vector<std::int32_t> labels(std::size_t(size) * size);
     LeatherMaps maps;
     const BezierChain section = table1_section(Table1Section::convex);
+    bool ok = true;
     double lookup = bench::ns_per_op([&] {
-        rasterize_scale_labels(pattern, size, size, labels.data());
+        ok &= rasterize_scale_labels(pattern, size, size, labels.data()).ok();
         bench::sink(labels[12345]);
     });
     double relief = bench::ns_per_op([&] {
-        make_leather_maps(pattern, labels.data(), size, size, section, ReliefOptions{}, &maps);
+        ok &= make_leather_maps(pattern, labels.data(), size, size, section, ReliefOptions{}, &maps)
+                  .ok();
         bench::sink(maps.max_height);
     });
+    if (!bench::timed_calls_ok(ok, "leather maps")) return;
     const double pixels = double(size) * size;
     bench::report(
         "leather height + normal map 512x512 (fig. 7 pattern, fig. 13 section), per "
@@ -75,8 +78,8 @@ SHITSUKAN_BENCH(leather_maps) {
 
     // The fig. 18 frame.
     std::vector<std::int32_t> big(std::size_t(1536) * 1536);
-    rasterize_scale_labels(pattern, 1536, 1536, big.data());
-    make_leather_maps(pattern, big.data(), 1536, 1536, section, ReliefOptions{}, &maps);
+    Status s = rasterize_scale_labels(pattern, 1536, 1536, big.data());
+    if (s) s = make_leather_maps(pattern, big.data(), 1536, 1536, section, ReliefOptions{}, &maps);
     Handbag bag = make_handbag();
     Part parts[3];
     PatchStripOptions opt;
@@ -85,18 +88,20 @@ SHITSUKAN_BENCH(leather_maps) {
     opt.anchor = 1.5f;  // left, front, right, back: the front's middle
     opt.texture_origin = {0.5f, 0.12f};
     const BezierPatch tube[4] = {bag.patches[3], bag.patches[0], bag.patches[1], bag.patches[2]};
-    tessellate_patch_strip(tube, 4, opt, &parts[0].mesh);
+    if (s) s = tessellate_patch_strip(tube, 4, opt, &parts[0].mesh);
     opt.anchor = 0.0f;
-    tessellate_patch_strip(bag.patches + 4, 1, opt, &parts[1].mesh);
-    tessellate_patch_strip(bag.patches + 5, 2, opt, &parts[2].mesh);
+    if (s) s = tessellate_patch_strip(bag.patches + 4, 1, opt, &parts[1].mesh);
+    if (s) s = tessellate_patch_strip(bag.patches + 5, 2, opt, &parts[2].mesh);
     for (Part& p : parts) {
         const int n = p.mesh.triangle_count();
         p.dpdx.resize(std::size_t(n));
         p.dpdy.resize(std::size_t(n));
-        mesh_texture_tangents(p.mesh.view(), p.dpdx.data(), p.dpdy.data(), n);
+        if (s) s = mesh_texture_tangents(p.mesh.view(), p.dpdx.data(), p.dpdy.data(), n);
     }
     TriangleMesh knobs[2];
-    for (int k = 0; k < 2; ++k) make_spherical_segment(bag.clasp[k], 32, 16, &knobs[k]);
+    for (int k = 0; k < 2; ++k)
+        if (s) s = make_spherical_segment(bag.clasp[k], 32, 16, &knobs[k]);
+    if (!bench::set_up(s, "fig. 18 handbag frame")) return;
     Camera cam =
         perspective_camera({2.25f, 1.50f, 2.55f}, {0.04f, 0.64f, 0.0f}, {0, 1, 0}, 30.0f, 512, 512);
     RgbImage color(512, 512);
@@ -107,17 +112,18 @@ SHITSUKAN_BENCH(leather_maps) {
         DrawOptions d;
         d.cull = CullMode::none;
         for (const Part& p : parts) {
-            BagShader s{&cam, bump ? &maps : nullptr, &p, Blinn1977Material{}};
-            draw_mesh(cam, band, p.mesh.view(), d, s);
+            BagShader shader{&cam, bump ? &maps : nullptr, &p, Blinn1977Material{}};
+            ok &= draw_mesh(cam, band, p.mesh.view(), d, shader).ok();
         }
         for (const TriangleMesh& k : knobs) {
-            BagShader s{&cam, nullptr, nullptr, Blinn1977Material{}};
-            draw_mesh(cam, band, k.view(), d, s);
+            BagShader shader{&cam, nullptr, nullptr, Blinn1977Material{}};
+            ok &= draw_mesh(cam, band, k.view(), d, shader).ok();
         }
         bench::sink(color.at(256, 256).r);
     };
     double bumped = bench::ns_per_op([&] { frame(true); });
     double plain = bench::ns_per_op([&] { frame(false); });
+    if (!bench::timed_calls_ok(ok, "fig. 18 handbag frame")) return;
     bench::report("fig. 18 handbag frame 512x512, bump-mapped Blinn 1977, per frame", bumped,
                   "same frame without bump mapping", plain);
 }

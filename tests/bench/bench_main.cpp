@@ -35,6 +35,16 @@ void info(const std::string& what, const std::string& text) {
     std::fflush(stdout);
 }
 
+bool set_up(const shitsukan::Status& s, const char* what) {
+    if (!s) info(what, std::string("set-up failed: ") + s.message());
+    return s.ok();
+}
+
+bool timed_calls_ok(bool ok, const char* what) {
+    if (!ok) info(what, "a call inside the timed loop failed: no timing");
+    return ok;
+}
+
 }  // namespace bench
 
 int main(int argc, char** argv) {

@@ -66,8 +66,9 @@ SHITSUKAN_BENCH(raster_frame_overhead) {
     const int W = 512, H = 512;
     TriangleMesh sphere, torus;
     // Tessellation as in the foundation figures (64 x 32 each): ~45 pixels per drawn triangle.
-    make_uv_sphere(0.75f, 64, 32, &sphere);
-    make_torus(1.25f, 0.3f, 64, 32, &torus);
+    Status s = make_uv_sphere(0.75f, 64, 32, &sphere);
+    if (s) s = make_torus(1.25f, 0.3f, 64, 32, &torus);
+    if (!bench::set_up(s, "rasterizer overhead")) return;
     Camera cam = perspective_camera({0, 1.6f, 3.6f}, {0, 0, 0}, {0, 1, 0}, 45.0f, W, H);
     ShaderData data;
     data.material.specular = 0.3f;
@@ -79,10 +80,11 @@ SHITSUKAN_BENCH(raster_frame_overhead) {
     DrawOptions sphere_opt, torus_opt;
     torus_opt.model = Mat4::rotate_x(0.5f);
 
+    bool ok = true;  // every draw call of every timed frame succeeded
     auto render = [&](FragmentShader shader, void* user, RasterStats* stats) {
         clear_band(band, Rgb8{0, 0, 0});
-        draw_mesh(cam, band, sphere.view(), sphere_opt, shader, user, stats);  // front first
-        draw_mesh(cam, band, torus.view(), torus_opt, shader, user, stats);
+        ok &= draw_mesh(cam, band, sphere.view(), sphere_opt, shader, user, stats).ok();  // front
+        ok &= draw_mesh(cam, band, torus.view(), torus_opt, shader, user, stats).ok();
     };
 
     // Record the fragments the rasterizer shades.
@@ -115,6 +117,7 @@ SHITSUKAN_BENCH(raster_frame_overhead) {
     std::sort(rounds, rounds + 5, [](const Round& a, const Round& b) {
         return a.ours / a.baseline < b.ours / b.baseline;
     });
+    if (!bench::timed_calls_ok(ok, "raster overhead")) return;
     double ours = rounds[2].ours, baseline = rounds[2].baseline;
     bench::report("raster 512x512 frame, value-noise shader (sphere + torus)", ours,
                   "same shader on the same fragments, no rasterizer", baseline);

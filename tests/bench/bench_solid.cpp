@@ -48,11 +48,7 @@ template <class F> double ns_per_point(const std::vector<Vec3>& pts, F sample) {
            double(pts.size());
 }
 
-// A failed set-up must not print a timing: it would measure nothing.
-bool set_up(const Status& s, const char* what) {
-    if (!s) bench::info(what, std::string("set-up failed: ") + s.message());
-    return s.ok();
-}
+using bench::set_up;
 
 const FractalLattice& bench_lattice() {
     static FractalLattice lattice;

@@ -51,11 +51,12 @@ SHITSUKAN_BENCH(wrinkly_terrain) {
     WrSurface surface;
     if (!make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface)) return;
     IstAxis iu;
-    ist_fully_connected_axis(3, 1, surface.spans_u(), IstEnds::translation, &iu);
+    Status s = ist_fully_connected_axis(3, 1, surface.spans_u(), IstEnds::translation, &iu);
     WrIstAxis au, av;
-    make_wr_ist_axis(iu, 4, &au);
-    make_wr_ist_axis(iu, 4, &av);
-    surface.set_axes(au.axis(), av.axis());
+    if (s) s = make_wr_ist_axis(iu, 4, &au);
+    if (s) s = make_wr_ist_axis(iu, 4, &av);
+    if (s) s = surface.set_axes(au.axis(), av.axis());
+    if (!bench::set_up(s, "WR terrain")) return;
     const Vec3 eye{2.4f, 3.4f, 7.0f}, target{-0.3f, 0.2f, -0.3f};
     const Camera camera = perspective_camera(eye, target, {0, 1, 0}, 43.0f, size, size);
     const float ppu = 0.5f * float(size) / (std::tan(21.5f * kPi / 180.0f) * length(eye - target));
@@ -75,18 +76,19 @@ SHITSUKAN_BENCH(wrinkly_terrain) {
     HierarchicalOptions ho;
     ho.levels = a.sum_levels;
     long triangles = 0;
+    bool ok = true;  // every call of every timed run succeeded
     auto run = [&](WrSurfaceForm form, double* stages) {
         auto t0 = std::chrono::steady_clock::now();
         HierarchicalSampling hs;
         WrMesh wm;
         o.form = form;
-        if (form == WrSurfaceForm::superposed) sample_hierarchy(surface, ho, &hs);
-        evaluate_wr_grid(surface, &hs, o, &wm);
+        if (form == WrSurfaceForm::superposed) ok &= sample_hierarchy(surface, ho, &hs).ok();
+        ok &= evaluate_wr_grid(surface, &hs, o, &wm).ok();
         auto t1 = std::chrono::steady_clock::now();
         polygonise_wr_grid(surface, &wm);
         auto t2 = std::chrono::steady_clock::now();
         clear_band(band, Rgb8{0, 0, 0});
-        draw_mesh(camera, band, wm.mesh.view(), opt, shader);
+        ok &= draw_mesh(camera, band, wm.mesh.view(), opt, shader).ok();
         auto t3 = std::chrono::steady_clock::now();
         triangles = wm.mesh.triangle_count();
         if (stages) {
@@ -98,6 +100,7 @@ SHITSUKAN_BENCH(wrinkly_terrain) {
     };
     const double ours = bench::ns_per_op([&] { run(WrSurfaceForm::superposed, nullptr); });
     const double peer = bench::ns_per_op([&] { run(WrSurfaceForm::plain, nullptr); });
+    if (!bench::timed_calls_ok(ok, "WR terrain")) return;
     bench::report("fig21 superposed terrain, tessellate + render 800x800 (" +
                       std::to_string(triangles) + " triangles, K = " + std::to_string(ho.levels) +
                       ")",

@@ -1,22 +1,18 @@
 // shitsukan/core/config.hpp — version and compile-time switches.
 //
 // Manual
-//   SHITSUKAN_VERSION_STRING  "0.1.0"
-//   Float                     the scalar type of the library (float: the papers' 4-byte reals).
+//   SHITSUKAN_VERSION_STRING  "0.2.0" (also the .pc's Version and the CMake package version;
+//                             CHANGELOG.md says what changed)
 //   SHITSUKAN_NO_ASSERT       define to compile SHITSUKAN_ASSERT checks out.
 //   SHITSUKAN_ASSERT(expr)    define before any shitsukan header to route programmer-bug
 //                             checks to your own handler (see assert.hpp).
 #pragma once
 
 #define SHITSUKAN_VERSION_MAJOR 0
-#define SHITSUKAN_VERSION_MINOR 1
+#define SHITSUKAN_VERSION_MINOR 2
 #define SHITSUKAN_VERSION_PATCH 0
-#define SHITSUKAN_VERSION_STRING "0.1.0"
+#define SHITSUKAN_VERSION_STRING "0.2.0"
 
-namespace shitsukan {
-
-// The papers compute in 4-byte reals (okada1987 §5: "4-byte floating point except the
-// spline, 8-byte"). One alias, as pbrt's Float, so a port can see the choice in one place.
-using Float = float;
-
-}  // namespace shitsukan
+// Scalars: the library writes float (the papers' 4-byte reals, okada1987 §5: "4-byte
+// floating point except the spline, 8-byte") and double only where a paper or precision
+// demands it. There is no Float alias: the 0.1 one was used nowhere (CHANGELOG.md).

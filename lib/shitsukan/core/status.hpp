@@ -11,6 +11,10 @@
 // No exceptions, no allocation: the message is formatted (printf rules) into a fixed
 // buffer of Status::kMessageCapacity bytes inside the object and truncated if longer.
 // Return it by value; it is a plain struct a microcontroller port can keep.
+// Status is [[nodiscard]]: every function returning one warns (an error under -Werror, as
+// CI builds) when its result is dropped. Where ignoring it is really meant, say so with a
+// (void) cast and a comment. An object used after its builder failed with the Status
+// ignored aborts naming that builder (SHITSUKAN_REQUIRE_BUILT, assert.hpp).
 #pragma once
 
 #include <cstdint>
@@ -30,7 +34,7 @@ enum class StatusCode : std::uint8_t {
 
 const char* status_code_name(StatusCode code);
 
-class Status {
+class [[nodiscard]] Status {
 public:
     static constexpr int kMessageCapacity = 200;
 

@@ -1,9 +1,34 @@
 #include "shitsukan/image/image_io.hpp"
 
+#include <cstdint>
 #include <cstdio>
 
+#include "shitsukan/image/png16.hpp"
+
+// stb_image_write (Debian libstb-dev) compresses the PNGs when its header is there. It is
+// compiled privately: STB_IMAGE_WRITE_STATIC makes every stbi_* function and global static
+// to this file, so libshitsukan.a exports no stb symbol and links beside a program's own
+// stb implementation (CI checks both with `make check-api`). Without the header (or with
+// SHITSUKAN_NO_STB) write_png falls back to the library's own encoder (png16.cpp): the same
+// pixels in stored, uncompressed deflate blocks, so `make install` needs only a compiler.
+#if !defined(SHITSUKAN_NO_STB) && defined(__has_include)
+#if __has_include(<stb/stb_image_write.h>)
+#define SHITSUKAN_USE_STB_IMAGE_WRITE 1
+#endif
+#endif
+
+#ifdef SHITSUKAN_USE_STB_IMAGE_WRITE
+#define STB_IMAGE_WRITE_STATIC
 #define STB_IMAGE_WRITE_IMPLEMENTATION
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"  // the static writers we do not call
+#endif
 #include <stb/stb_image_write.h>
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+#endif
 
 namespace shitsukan {
 
@@ -34,19 +59,37 @@ Status write_netpbm(const char* path, const ImageView<P>& image, const char* mag
 
 }  // namespace
 
+namespace {
+Status encode_png8(const char* path, const void* pixels, int width, int height, int channels,
+                   int stride_bytes) {
+#ifdef SHITSUKAN_USE_STB_IMAGE_WRITE
+    if (!stbi_write_png(path, width, height, channels, pixels, stride_bytes))
+        return Status::error(StatusCode::io_error, "cannot write PNG %s", path);
+    return Status::success();
+#else
+    return detail::write_png8_stored(path, static_cast<const std::uint8_t*>(pixels), width,
+                                     height, channels, std::size_t(stride_bytes), false);
+#endif
+}
+}  // namespace
+
 Status write_png(const char* path, const RgbView& image) {
     SHITSUKAN_TRY(check(path, image.width, image.height, image.empty()));
     static_assert(sizeof(Rgb8) == 3, "Rgb8 must be packed");
-    if (!stbi_write_png(path, image.width, image.height, 3, image.pixels, image.stride * 3))
-        return Status::error(StatusCode::io_error, "cannot write PNG %s", path);
-    return Status::success();
+    return encode_png8(path, image.pixels, image.width, image.height, 3, image.stride * 3);
 }
 
 Status write_png(const char* path, const GrayView& image) {
     SHITSUKAN_TRY(check(path, image.width, image.height, image.empty()));
-    if (!stbi_write_png(path, image.width, image.height, 1, image.pixels, image.stride))
-        return Status::error(StatusCode::io_error, "cannot write PNG %s", path);
-    return Status::success();
+    return encode_png8(path, image.pixels, image.width, image.height, 1, image.stride);
+}
+
+bool png_compressed() {
+#ifdef SHITSUKAN_USE_STB_IMAGE_WRITE
+    return true;
+#else
+    return false;
+#endif
 }
 
 Status write_ppm(const char* path, const RgbView& image) {

@@ -6,7 +6,10 @@
 //   Status s = write_pgm("out.pgm", gray_view);    // binary P5
 // Failures (empty image, unwritable path) come back as a Status with the path in the
 // message; nothing is silent. Views with a stride are handled.
-// Host side: PNG encoding allocates inside stb_image_write.
+// PNG: compressed by stb_image_write when the library was built with its header (compiled
+// privately, no stbi_* symbol leaves the library); otherwise by the library's own encoder
+// in stored (uncompressed) deflate blocks: same pixels, bigger files. png_compressed() says
+// which. Host side: PNG encoding allocates.
 #pragma once
 
 #include "shitsukan/core/status.hpp"
@@ -18,5 +21,7 @@ Status write_png(const char* path, const RgbView& image);
 Status write_png(const char* path, const GrayView& image);
 Status write_ppm(const char* path, const RgbView& image);
 Status write_pgm(const char* path, const GrayView& image);
+// True when write_png compresses (built with stb_image_write), false for the fallback.
+bool png_compressed();
 
 }  // namespace shitsukan

@@ -152,16 +152,18 @@ private:
     std::uint32_t adler_ = 1;
 };
 
-// Encode rows of `channels` 16-bit samples; sample(x, y, c) gives each value.
+// Encode rows of `channels` samples of `bits` (8 or 16) bits; sample(x, y, c) gives each value.
 template <class SampleFn>
-Status encode_png16(const char* path, int width, int height, int channels, bool empty,
-                    SampleFn sample) {
+Status encode_png(const char* path, int width, int height, int channels, int bits, bool empty,
+                  SampleFn sample) {
     if (path == nullptr || path[0] == '\0')
         return Status::error(StatusCode::invalid_argument, "PNG path is empty");
     if (empty)
         return Status::error(StatusCode::invalid_argument,
                              "cannot write %s: image is empty (%d x %d)", path, width, height);
-    const std::uint64_t row_bytes = 1 + std::uint64_t(width) * std::uint64_t(channels) * 2;
+    const std::uint64_t bytes_per_sample = bits == 16 ? 2 : 1;
+    const std::uint64_t row_bytes =
+        1 + std::uint64_t(width) * std::uint64_t(channels) * bytes_per_sample;
     const std::uint64_t raw_bytes = row_bytes * std::uint64_t(height);
     const std::uint64_t idat_bytes = StoredDeflate::stream_size(raw_bytes);
     if (idat_bytes > 0x7FFFFFFFull)
@@ -179,7 +181,7 @@ Status encode_png16(const char* path, int width, int height, int channels, bool 
     std::uint8_t ihdr[13];
     PngWriter::put_u32(ihdr, std::uint32_t(width));
     PngWriter::put_u32(ihdr + 4, std::uint32_t(height));
-    ihdr[8] = 16;                                  // bit depth
+    ihdr[8] = std::uint8_t(bits);                  // bit depth
     ihdr[9] = std::uint8_t(channels == 1 ? 0 : 2);  // colour type: gray or RGB
     ihdr[10] = 0;                                  // compression: deflate
     ihdr[11] = 0;                                  // filter method 0 (per-row filter byte)
@@ -198,7 +200,7 @@ Status encode_png16(const char* path, int width, int height, int channels, bool 
         for (int x = 0; x < width; ++x)
             for (int c = 0; c < channels; ++c) {
                 std::uint16_t v = sample(x, y, c);
-                *p++ = std::uint8_t(v >> 8);  // big-endian samples
+                if (bits == 16) *p++ = std::uint8_t(v >> 8);  // big-endian samples
                 *p++ = std::uint8_t(v & 0xFF);
             }
         z.write(row.data(), row.size());
@@ -218,16 +220,26 @@ Status encode_png16(const char* path, int width, int height, int channels, bool 
 }  // namespace
 
 Status write_png16(const char* path, const Gray16View& image) {
-    return encode_png16(path, image.width, image.height, 1, image.empty(),
+    return encode_png(path, image.width, image.height, 1, 16, image.empty(),
                         [&](int x, int y, int) { return image.row(y)[x]; });
 }
 
 Status write_png16(const char* path, const Rgb16View& image) {
-    return encode_png16(path, image.width, image.height, 3, image.empty(),
+    return encode_png(path, image.width, image.height, 3, 16, image.empty(),
                         [&](int x, int y, int c) {
                             const Rgb16& p = image.row(y)[x];
                             return c == 0 ? p.r : (c == 1 ? p.g : p.b);
                         });
 }
+
+namespace detail {
+Status write_png8_stored(const char* path, const std::uint8_t* pixels, int width, int height,
+                         int channels, std::size_t row_stride_bytes, bool empty) {
+    return encode_png(path, width, height, channels, 8, empty, [&](int x, int y, int c) {
+        return std::uint16_t(pixels[std::size_t(y) * row_stride_bytes +
+                                    std::size_t(x) * std::size_t(channels) + std::size_t(c)]);
+    });
+}
+}  // namespace detail
 
 }  // namespace shitsukan

@@ -45,6 +45,10 @@ std::uint32_t crc32_update(std::uint32_t crc, const std::uint8_t* data, std::siz
 std::uint32_t crc32(const std::uint8_t* data, std::size_t size);     // PNG / zlib CRC-32
 std::uint32_t adler32_update(std::uint32_t adler, const std::uint8_t* data, std::size_t size);
 std::uint32_t adler32(const std::uint8_t* data, std::size_t size);   // zlib Adler-32
+// The same encoder at bit depth 8 (stored deflate blocks): write_png's fallback when the
+// library is built without stb_image_write (image_io.hpp).
+Status write_png8_stored(const char* path, const std::uint8_t* pixels, int width, int height,
+                         int channels, std::size_t row_stride_bytes, bool empty);
 }  // namespace detail
 
 }  // namespace shitsukan

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "shitsukan/core/assert.hpp"
+#include "shitsukan/leather/scale_labels.hpp"
 
 namespace shitsukan {
 
@@ -211,6 +212,45 @@ Status make_relief_mesh(const LeatherMaps& maps, int step, float z_scale, Triang
         }
     }
     return Status::success();
+}
+
+Status make_leather_maps(const ScalePattern& pattern, int width, int height,
+                         const BezierChain& section, const ReliefOptions& options,
+                         LeatherMaps* out) {
+    if (width < 1 || height < 1 || width > 16384 || height > 16384)
+        return Status::error(StatusCode::invalid_argument,
+                             "leather maps: size %d x %d outside 1..16384", width, height);
+    std::vector<std::int32_t> labels(std::size_t(width) * std::size_t(height));
+    SHITSUKAN_TRY(rasterize_scale_labels(pattern, width, height, labels.data()));
+    static_assert(sizeof(std::int32_t) == sizeof(int), "labels are ints");
+    return make_leather_maps(pattern, reinterpret_cast<const int*>(labels.data()), width, height,
+                             section, options, out);
+}
+
+namespace {
+// Folds x into [0, w] by mirrored repetition; *flip says whether this copy is mirrored.
+float mirror(float x, float w, bool* flip) {
+    float period = 2.0f * w;
+    float m = std::fmod(x, period);
+    if (m < 0.0f) m += period;
+    *flip = m > w;
+    return *flip ? period - m : m;
+}
+}  // namespace
+
+Vec3 mirrored_normal_at(const LeatherMaps& maps, Vec2 t) {
+    bool fx, fy;
+    Vec2 q{mirror(t.x, maps.pattern_width, &fx), mirror(t.y, maps.pattern_height, &fy)};
+    Vec3 n = normal_at(maps, q);
+    if (fx) n.x = -n.x;
+    if (fy) n.y = -n.y;
+    return n;
+}
+
+float mirrored_height_at(const LeatherMaps& maps, Vec2 t) {
+    bool fx, fy;
+    return height_at(maps, {mirror(t.x, maps.pattern_width, &fx),
+                            mirror(t.y, maps.pattern_height, &fy)});
 }
 
 }  // namespace shitsukan

@@ -3,6 +3,11 @@
 // relief mesh for OBJ).
 //
 // Manual
+//   LeatherMaps maps;                               // one call: labels, then the maps
+//   Status s = make_leather_maps(pattern, w, h, table1_section(Table1Section::convex),
+//                                ReliefOptions{}, &maps);
+//   Vec3 n = mirrored_normal_at(maps, uv);           // tiled by mirroring: any (u, v)
+//
 //   std::vector<int> labels(w * h);                 // pixel -> polygon id, from the pattern's
 //   ...                                             // label function (leather/scale_pattern)
 //   LeatherMaps maps;
@@ -62,10 +67,24 @@ Status make_leather_maps(const ScalePattern& pattern, const int* labels, int wid
                          const BezierChain& section, const ReliefOptions& options,
                          LeatherMaps* out);
 
+// The same in one call: the label image (rasterize_scale_labels, scale_labels.hpp) at
+// width x height, then the maps above. Same errors; the sizes are checked before the label
+// image is allocated.
+Status make_leather_maps(const ScalePattern& pattern, int width, int height,
+                         const BezierChain& section, const ReliefOptions& options,
+                         LeatherMaps* out);
+
 // Bilinear normal at a pattern point (clamped to the map), renormalised.
 Vec3 normal_at(const LeatherMaps& maps, Vec2 pattern_point);
 // Bilinear height at a pattern point (clamped to the map).
 float height_at(const LeatherMaps& maps, Vec2 pattern_point);
+
+// Tiling for texturing a surface larger than the pattern: the maps repeated by mirroring
+// (copy, mirror image, copy, ... in x and in y), so scales continue across every seam. In
+// a mirrored copy the normal's x (or y) is negated, so the bumps stay consistent. Any point
+// of the plane, in pattern units (e.g. a mesh's uv scaled by the pattern size).
+Vec3 mirrored_normal_at(const LeatherMaps& maps, Vec2 point);
+float mirrored_height_at(const LeatherMaps& maps, Vec2 point);
 
 // 16-bit height image, width·height values, top row = largest y. max_height <= 0 means
 // maps.max_height.

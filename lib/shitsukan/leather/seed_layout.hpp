@@ -3,11 +3,12 @@
 //
 // Manual
 //   SeedLayout s;
-//   square_lattice_seeds(1, 1, 0.1f, 0.2f, 7, &s);      // fig. 3 (e)-(h): moved along x and y
-//   triangular_lattice_seeds(1, 1, 0.1f, 0.2f, 7, &s);  // fig. 3 (a)-(d)
-//   stage1_seeds(1, 1, 0.1f, 0.1f, 0.25f, 7, &s);       // fig. 4: W, H, D, d, a, seed
-//   Stage2Columns c; stage2_columns(1, 0.1f, 0.5f, &c); // fig. 6: x positions and spacings
-//   stage2_row_seeds(c, 1, row_y, row_id, 0.25f, 7, &s); // one row, moved along x
+//   Status st = square_lattice_seeds(1, 1, 0.1f, 0.2f, 7, &s);  // fig. 3 (e)-(h): x and y
+//   st = triangular_lattice_seeds(1, 1, 0.1f, 0.2f, 7, &s);     // fig. 3 (a)-(d)
+//   st = stage1_seeds(1, 1, 0.1f, 0.1f, 0.25f, 7, &s);          // fig. 4: W, H, D, d, a, seed
+//   Stage2Columns c;
+//   st = stage2_columns(1, 0.1f, 0.5f, &c);          // fig. 6: W, D, edge ratio -> columns
+//   st = stage2_row_seeds(c, 0.25f, 0.5, 3, 7, &s);  // one row: a, y, row id, seed; along x
 //   s.original[i] = the lattice point, s.moved[i] = after eq. (1)
 //
 // Parameters: width, height > 0 (the pattern rectangle [0, W] x [0, H]); D > 0 the seed
@@ -16,7 +17,7 @@
 // distance of the two stage-1 seed rows from the centre line x = W / 2.
 //
 // Rnd is drawn from the coordinate hash of (seed, stream, lattice indices), so a seed's move
-// does not depend on how many seeds were generated before it (DESIGN.md: determinism).
+// does not depend on how many seeds were generated before it (docs/DESIGN.md: determinism).
 //
 // Stage-2 spacing law (chosen here; the paper only says the spacing narrows toward the left
 // and right edges): with u = |x - W/2| / (W/2) in [0, 1],

@@ -21,9 +21,10 @@ constexpr int kPlaneCount = 5;
 
 // The point where the edge from `in` (inside, value di >= 0) to `out` (value do < 0) crosses
 // the plane. Always evaluated from the inside end so both triangles of a shared edge agree.
-ClipVertex cut_edge(const ClipVertex& in, float di, const ClipVertex& out, float d_out) {
+ClipSpaceVertex cut_edge(const ClipSpaceVertex& in, float di, const ClipSpaceVertex& out,
+                         float d_out) {
     float t = di / (di - d_out);  // in (0, 1]: di >= 0 > d_out
-    ClipVertex r;
+    ClipSpaceVertex r;
     r.clip = in.clip + (out.clip - in.clip) * t;
     r.bary = in.bary + (out.bary - in.bary) * t;
     return r;
@@ -33,8 +34,8 @@ ClipVertex cut_edge(const ClipVertex& in, float di, const ClipVertex& out, float
 void clip_against(int plane, const ClipPolygon& src, ClipPolygon* dst) {
     dst->count = 0;
     for (int i = 0; i < src.count; ++i) {
-        const ClipVertex& a = src.v[i];
-        const ClipVertex& b = src.v[(i + 1) % src.count];
+        const ClipSpaceVertex& a = src.v[i];
+        const ClipSpaceVertex& b = src.v[(i + 1) % src.count];
         float da = clip_plane_value(plane, a.clip);
         float db = clip_plane_value(plane, b.clip);
         bool a_in = da >= 0.0f, b_in = db >= 0.0f;
@@ -48,7 +49,7 @@ void clip_against(int plane, const ClipPolygon& src, ClipPolygon* dst) {
 }  // namespace
 }  // namespace detail
 
-ClipResult clip_triangle(const ClipVertex triangle[3], ClipPolygon* out) {
+ClipResult clip_triangle(const ClipSpaceVertex triangle[3], ClipPolygon* out) {
     ClipResult result;
     out->count = 0;
     for (int i = 0; i < 3; ++i) {

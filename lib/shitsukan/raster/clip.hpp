@@ -2,7 +2,7 @@
 //
 // Manual
 //   ClipPolygon poly;
-//   ClipVertex tri[3] = {{clip0, {1,0,0}}, {clip1, {0,1,0}}, {clip2, {0,0,1}}};
+//   ClipSpaceVertex tri[3] = {{clip0, {1,0,0}}, {clip1, {0,1,0}}, {clip2, {0,0,1}}};
 //   ClipResult r = clip_triangle(tri, &poly);   // r.outside, r.not_finite, r.clipped_near
 //   for (int i = 1; i + 1 < poly.count; ++i) draw(poly.v[0], poly.v[i], poly.v[i + 1]);
 //
@@ -33,13 +33,13 @@ namespace shitsukan {
 constexpr float kGuardBand = 8.0f;  // chosen here: |x|, |y| <= 8·w, i.e. 4 screens each way
 constexpr int kMaxClipVertices = 12;
 
-struct ClipVertex {
+struct ClipSpaceVertex {
     Vec4 clip;  // homogeneous clip coordinates
     Vec3 bary;  // barycentric coordinates in the original triangle
 };
 
 struct ClipPolygon {
-    ClipVertex v[kMaxClipVertices];
+    ClipSpaceVertex v[kMaxClipVertices];
     int count = 0;
 };
 
@@ -52,7 +52,7 @@ struct ClipResult {
 // Clips a triangle (counter-clockwise order is kept) against the near plane and the guard
 // band. Trivially rejects triangles entirely outside one side of the view volume (x, y or
 // the far plane), since nothing of them can be drawn.
-ClipResult clip_triangle(const ClipVertex triangle[3], ClipPolygon* out);
+ClipResult clip_triangle(const ClipSpaceVertex triangle[3], ClipPolygon* out);
 
 // Outcode of a clip-space point: which clipping planes it is outside of (bits 0-4, in the
 // order above) and on which sides of the view volume it lies (bits 5-10: right, left, top,

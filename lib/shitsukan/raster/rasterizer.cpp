@@ -203,7 +203,7 @@ inline i64 snapped_area2(const ScreenVertex& a, const ScreenVertex& b, const Scr
 // determinant is det B · det C, and with all its w > 0 its screen orientation is the sign of
 // det C: one answer for every piece, whatever snapping does to a sliver. Positive = counter-
 // clockwise in NDC (y up) = front.
-inline double clip_orientation(const ClipVertex corners[3]) {
+inline double clip_orientation(const ClipSpaceVertex corners[3]) {
     double x0 = corners[0].clip.x, y0 = corners[0].clip.y, w0 = corners[0].clip.w;
     double x1 = corners[1].clip.x, y1 = corners[1].clip.y, w1 = corners[1].clip.w;
     double x2 = corners[2].clip.x, y2 = corners[2].clip.y, w2 = corners[2].clip.w;
@@ -304,7 +304,7 @@ inline bool finite_clip(Vec4 p) {
 // false when the corner cannot be mapped: w below kMinClipW (at or behind the eye: only a
 // vertex on the eye plane or a custom projection gets here) or a screen position out of
 // range.
-bool to_screen(const Camera& camera, const ClipVertex& v, ScreenVertex* r) {
+bool to_screen(const Camera& camera, const ClipSpaceVertex& v, ScreenVertex* r) {
     if (!(v.clip.w >= kMinClipW)) return false;
     float inv_w = 1.0f / v.clip.w;
     float nx = v.clip.x * inv_w, ny = v.clip.y * inv_w, nz = v.clip.z * inv_w;
@@ -341,7 +341,7 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
         SourceTriangle src;
         src.index = t;
         src.corner_index = mesh.indices + 3 * std::size_t(t);  // no int overflow
-        ClipVertex corners[3];
+        ClipSpaceVertex corners[3];
         bool finite = true;
         for (int k = 0; k < 3; ++k) {
             Vec3 p = mesh.positions[src.corner_index[k]];

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "shitsukan/core/assert.hpp"
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/solid/fractal_lattice.hpp"
 
@@ -29,7 +30,13 @@ constexpr std::uint64_t kDefaultLatticeBudget = std::uint64_t(512) << 20;  // 51
 class FractalLattice {
 public:
     Status build(const FractalParams& params, std::uint64_t budget_bytes = kDefaultLatticeBudget);
-    LatticeView view() const { return view_; }
+    // The lattice's values; using it before a successful build() / load_lattice() aborts
+    // naming the call whose Status was ignored.
+    LatticeView view() const {
+        SHITSUKAN_REQUIRE_BUILT(!values_.empty(), "FractalLattice::build() or load_lattice()",
+                                "FractalLattice::view()");
+        return view_;
+    }
     const FractalParams& params() const { return params_; }
     bool empty() const { return values_.empty(); }
     std::size_t bytes() const { return values_.size() * sizeof(float); }

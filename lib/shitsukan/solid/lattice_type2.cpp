@@ -72,7 +72,7 @@ float TypeIILattice::compute(std::int32_t x, std::int32_t y, std::int32_t z) {
 }
 
 float TypeIILattice::node_value(std::int32_t x, std::int32_t y, std::int32_t z) {
-    SHITSUKAN_ASSERT(ready_);
+    SHITSUKAN_REQUIRE_BUILT(ready_, "TypeIILattice::init()", "a TypeIILattice");
     const std::int32_t last = std::int32_t(1) << params_.R;
     SHITSUKAN_ASSERT(x >= 0 && y >= 0 && z >= 0 && x <= last && y <= last && z <= last);
     return compute(x, y, z);
@@ -93,7 +93,7 @@ Status TypeIILattice::node_value_checked(std::int32_t x, std::int32_t y, std::in
 }
 
 float TypeIILattice::turbulence(Vec3 p) {
-    SHITSUKAN_ASSERT(ready_);
+    SHITSUKAN_REQUIRE_BUILT(ready_, "TypeIILattice::init()", "a TypeIILattice");
     const int cells = 1 << params_.R;
     int ix, iy, iz;
     float fx, fy, fz;

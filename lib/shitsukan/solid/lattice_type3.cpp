@@ -132,7 +132,7 @@ const float* TypeIIILattice::unit_cell_corners(std::int32_t ix, std::int32_t iy,
 }
 
 float TypeIIILattice::node_value(std::int32_t x, std::int32_t y, std::int32_t z) {
-    SHITSUKAN_ASSERT(R_ >= 0);
+    SHITSUKAN_REQUIRE_BUILT(R_ >= 0, "TypeIIILattice::init()", "a TypeIIILattice");
     const std::int32_t last = std::int32_t(1) << R_;
     SHITSUKAN_ASSERT(x >= 0 && y >= 0 && z >= 0 && x <= last && y <= last && z <= last);
     // The unit cell whose lower corner is the node (the last node uses the last cell).
@@ -157,7 +157,7 @@ Status TypeIIILattice::node_value_checked(std::int32_t x, std::int32_t y, std::i
 }
 
 float TypeIIILattice::turbulence(Vec3 p) {
-    SHITSUKAN_ASSERT(R_ >= 0);
+    SHITSUKAN_REQUIRE_BUILT(R_ >= 0, "TypeIIILattice::init()", "a TypeIIILattice");
     const int cells = 1 << R_;
     int ix, iy, iz;
     float fx, fy, fz;

@@ -9,7 +9,7 @@
 // Coordinates are lattice coordinates: node (i, j, k) sits at P = (i, j, k), the lattice
 // fills [0, 2^R]^3 (R = 6: [0, 64]^3). Objects are mapped into it by the caller (the
 // figures use (32 + 30x, 32 - 30z, 32 + 30y) for objects inside [-1, 1]^3, y up, so the
-// texture's z is the object's up axis; see paper_figures/okada1987/okada_common.hpp).
+// texture's z is the object's up axis: object_to_lattice in solid/object_mapping.hpp).
 // Outside the lattice: turbulence() clamps each coordinate to [0, 2^R] (the boundary
 // values continue outwards, constant along the normal); NaN coordinates are treated as 0.
 // turbulence_checked() refuses such points with out_of_range / invalid_argument instead.
@@ -70,7 +70,8 @@ Status check_lattice_point(Vec3 p, int R);  // invalid_argument for NaN/inf, out
 // order i + 2j + 4k, then eq. (6). Inline: a renderer calls it once per pixel, and the call
 // itself would cost as much as a fifth of the lookup.
 inline float turbulence(const LatticeView& lattice, Vec3 p) {
-    SHITSUKAN_ASSERT(lattice.values != nullptr && lattice.side >= 2);
+    SHITSUKAN_REQUIRE_BUILT(lattice.values != nullptr && lattice.side >= 2,
+                            "build_fractal_lattice()", "turbulence() on an empty LatticeView");
     const int cells = lattice.side - 1;
     int ix, iy, iz;
     float fx, fy, fz;
