@@ -91,6 +91,7 @@
 
 // leather
 #include "shitsukan/leather/edge_perturbation.hpp"
+#include "shitsukan/leather/leather.hpp"
 #include "shitsukan/leather/maps.hpp"
 #include "shitsukan/leather/products.hpp"
 #include "shitsukan/leather/relief.hpp"
@@ -114,6 +115,7 @@
 #include "shitsukan/wrinkly/wr_ist_axis.hpp"
 #include "shitsukan/wrinkly/wr_surface.hpp"
 #include "shitsukan/wrinkly/wr_tessellation.hpp"
+#include "shitsukan/wrinkly/wrinkly.hpp"
 
 // bark
 #include "shitsukan/bark/bark.hpp"
