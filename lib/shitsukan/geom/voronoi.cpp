@@ -1,9 +1,11 @@
 #include "shitsukan/geom/voronoi.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "shitsukan/core/assert.hpp"
 #include "shitsukan/geom/delaunay.hpp"
+#include "shitsukan/geom/double_double.hpp"
 #include "shitsukan/geom/polygon.hpp"
 #include "shitsukan/geom/predicates.hpp"
 
@@ -20,12 +22,19 @@ int find_root(std::vector<int>& parent, int t) {
     return t;
 }
 
-// Circumcentre of a, b, c, computed relative to a (the lexicographically smallest).
+// Circumcentre of a, b, c, relative to a (the lexicographically smallest), in double-double:
+// the differences are exact and the determinants keep ~106 bits, so three sites an ulp apart
+// (whose determinant rounds to 0 in doubles: a NaN vertex) still give the correctly rounded
+// centre. d != 0 for every triangle of the triangulation (exact orient2d > 0).
 Vec2d circumcentre(Vec2d a, Vec2d b, Vec2d c) {
-    double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
-    double d = 2.0 * (bx * cy - by * cx);
-    double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
-    return {a.x + (cy * b2 - by * c2) / d, a.y + (bx * c2 - cx * b2) / d};
+    const DoubleDouble bx = dd_diff(b.x, a.x), by = dd_diff(b.y, a.y);
+    const DoubleDouble cx = dd_diff(c.x, a.x), cy = dd_diff(c.y, a.y);
+    const DoubleDouble d = dd_scale(dd_sub(dd_mul(bx, cy), dd_mul(by, cx)), 2.0);
+    const DoubleDouble b2 = dd_add(dd_mul(bx, bx), dd_mul(by, by));
+    const DoubleDouble c2 = dd_add(dd_mul(cx, cx), dd_mul(cy, cy));
+    const DoubleDouble ux = dd_div(dd_sub(dd_mul(cy, b2), dd_mul(by, c2)), d);
+    const DoubleDouble uy = dd_div(dd_sub(dd_mul(bx, c2), dd_mul(cx, b2)), d);
+    return {dd_round(dd_add(dd_from(a.x), ux)), dd_round(dd_add(dd_from(a.y), uy))};
 }
 
 }  // namespace
@@ -35,6 +44,15 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
     if (out == nullptr)
         return Status::error(StatusCode::invalid_argument, "voronoi_cells: out is null");
     SHITSUKAN_TRY(check_convex_region(region, region_count));
+    for (int i = 0; i < region_count; ++i)  // the clipping's exact sides need the range too
+        for (double c : {region[i].x, region[i].y})
+            if (c != 0.0 &&
+                !(std::fabs(c) >= kDelaunayMinCoordinate && std::fabs(c) <= kDelaunayMaxCoordinate))
+                return Status::error(StatusCode::invalid_argument,
+                                     "voronoi_cells: region vertex %d = (%g, %g): each coordinate "
+                                     "must be 0 or of magnitude in [%g, %g] (exact predicates)",
+                                     i, region[i].x, region[i].y, kDelaunayMinCoordinate,
+                                     kDelaunayMaxCoordinate);
     Vec2d lo = region[0], hi = region[0];
     for (int i = 0; i < region_count; ++i) {
         lo = {std::min(lo.x, region[i].x), std::min(lo.y, region[i].y)};
@@ -112,10 +130,15 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
                 if (g != last_group) {
                     ClipVertex cv;
                     cv.p = centre[std::size_t(g)];
+                    cv.has_bisector = true;
+                    cv.bisector[0] = pts[std::size_t(s)];
                     poly.push_back(cv);
                     if (first_group < 0) first_group = g;
                     last_group = g;
                 }
+                // the Voronoi edge leaving this vertex lies on the bisector of s and the site
+                // across the Delaunay edge (s, v[i + 2]) that the walk crosses last in a group
+                poly.back().bisector[1] = pts[std::size_t(tri.v[(i + 2) % 3])];
                 t = tri.n[(i + 1) % 3];  // across the edge (s, v[i + 2]): next triangle CCW
                 SHITSUKAN_ASSERT(t >= 0);
             } while (t != t0);
