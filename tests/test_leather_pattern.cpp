@@ -438,3 +438,44 @@ TEST_CASE("perturbation honours p (issue 13.1): fig. 10 grows rougher panel by p
         CHECK(rasterize_scale_labels(pat, 256, 256, labels.data()).ok());
     }
 }
+
+TEST_CASE("stage order (issue 13.2): fig. 5's stage-1 curves are fig. 7's row boundaries") {
+    for (std::uint32_t seed : {1u, 2u, 7u})
+        for (float p : {0.015f, 0.03f}) {
+            ScaleParams prm = fig07();
+            prm.seed = seed;
+            prm.perturbation.p = p;
+            ScaleDivision steps;
+            ScalePattern pat;
+            REQUIRE(generate_scale_pattern(prm, &pat, &steps).ok());
+            const ScalePattern& s1 = steps.stage1_pattern;
+            REQUIRE(s1.polygon_count() == steps.stage1.face_count());
+            // every point of every bent stage-1 outline is a vertex of the final pattern, bit
+            // for bit (the stage-2 cells fill the bent stage-1 polygons)
+            std::vector<std::pair<float, float>> final_points;
+            for (const Vec2& v : pat.vertices) final_points.push_back({v.x, v.y});
+            std::sort(final_points.begin(), final_points.end());
+            int missing = 0, bent = 0;
+            for (const Vec2& v : s1.vertices) {
+                missing += !std::binary_search(final_points.begin(), final_points.end(),
+                                               std::make_pair(v.x, v.y));
+                bent += v.x != 0.0f && v.x != 1.0f && v.y != 0.0f && v.y != 1.0f;
+            }
+            CHECK(missing == 0);
+            CHECK(bent > 100);  // the curves are really bent, not just corners
+            // both levels tile the square and stay star-shaped from their centroids
+            CHECK(pattern_area(s1) == doctest::Approx(1.0).epsilon(1e-9));
+            CHECK(pattern_area(pat) == doctest::Approx(1.0).epsilon(1e-9));
+            CHECK(count_not_star(s1) == 0);
+            CHECK(count_not_star(pat) == 0);
+            std::vector<std::int32_t> labels(256 * 256);
+            CHECK(rasterize_scale_labels(pat, 256, 256, labels.data()).ok());
+            CHECK(rasterize_scale_labels(s1, 256, 256, labels.data()).ok());
+            // and each final scale lies in its own bent stage-1 polygon: its centroid does
+            for (int f = 0; f < pat.polygon_count(); ++f) {
+                int n1;
+                const Vec2* outline = s1.polygon(steps.cell_stage1[std::size_t(f)], &n1);
+                CHECK(point_in_polygon(outline, n1, pat.centroids[std::size_t(f)]));
+            }
+        }
+}

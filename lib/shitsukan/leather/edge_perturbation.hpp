@@ -37,6 +37,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/geom/planar_subdivision.hpp"
@@ -71,6 +72,22 @@ void midpoint_displacement(Vec2d a, Vec2d b, const PerturbationParams& prm, std:
 Status perturb_subdivision(const PlanarSubdivision& sub, const PerturbationParams& prm,
                            std::uint32_t seed, float width, float height, ScalePattern* out,
                            PerturbationReport* report = nullptr);
+
+// tokai1994's stage order (§3.1): the stage-1 curves are bent first and the stage-2 cells fill
+// the bent stage-1 polygons. `cells` is the final (straight) subdivision of the straight
+// stage-1 polygons `stage1` (cell_stage1: final polygon -> stage-1 polygon), as divide_scales
+// makes it. Each stage-1 edge gets ONE curve (as in perturb_subdivision, written to
+// stage1_out: fig. 5); the final polygons take the pieces of that curve between their
+// junctions, the junctions moved onto it (the stage-2 edges are the straight cells' edges with
+// their stage-1 ends on the curve), and each stage-2 edge then gets its own curve. So fig. 5's
+// curves are fig. 7's row boundaries, point for point. The tiling is kept by the same final
+// check as above, on both levels: every polygon counter-clockwise, star-shaped from its own
+// float centroid and winding once (then polygons sharing their edges point for point tile the
+// rectangle); a curve that breaks it is scaled down, a stage-1 curve in both patterns at once.
+Status perturb_two_stage(const PlanarSubdivision& stage1, const PlanarSubdivision& cells,
+                         const std::vector<int>& cell_stage1, const PerturbationParams& prm,
+                         std::uint32_t seed, float width, float height, ScalePattern* stage1_out,
+                         ScalePattern* out, PerturbationReport* report = nullptr);
 
 // The same output without perturbation (p = 0): the straight polygons as a ScalePattern.
 Status subdivision_to_pattern(const PlanarSubdivision& sub, float width, float height,

@@ -279,9 +279,10 @@ Status generate_scale_pattern(const ScaleParams& prm, ScalePattern* pattern, Sca
     ScaleDivision local;
     ScaleDivision* div = steps ? steps : &local;
     SHITSUKAN_TRY(divide_scales(prm, div));
-    // processing 4 on the final polygons
-    return perturb_subdivision(div->cells, prm.perturbation, prm.seed, prm.width, prm.height,
-                               pattern, &div->perturbation);
+    // processing 4 in the paper's order: the stage-1 curves first, the stage-2 cells in them
+    return perturb_two_stage(div->stage1, div->cells, div->cell_stage1, prm.perturbation,
+                             prm.seed, prm.width, prm.height, &div->stage1_pattern, pattern,
+                             &div->perturbation);
 }
 
 }  // namespace shitsukan
