@@ -66,7 +66,8 @@ all: deps
 
 # ---- packages: installed when missing (apt-get as root), otherwise named ----
 REQUIRED := /usr/include/doctest/doctest.h:doctest-dev /usr/include/stb/stb_image_write.h:libstb-dev
-BENCH_REQUIRED := /usr/include/libnoise/noise.h:libnoise-dev /usr/include/boost/polygon/voronoi.hpp:libboost-dev
+BENCH_REQUIRED := /usr/include/libnoise/noise.h:libnoise-dev /usr/include/boost/polygon/voronoi.hpp:libboost-dev \
+                  /usr/include/CGAL/Delaunay_triangulation_2.h:libcgal-dev
 define ensure_packages
 	@missing=""; for pair in $(1); do f=$${pair%%:*}; p=$${pair##*:}; \
 	  [ -f "$$f" ] || missing="$$missing $$p"; done; \
@@ -139,7 +140,7 @@ $(BUILD)/paper_figures: $(FIG_OBJS) $(LIBRARY)
 	$(CXX) $(CXXFLAGS) -o $@ $(FIG_OBJS) $(LIBRARY)
 
 $(BUILD)/bench: $(BENCH_OBJS) $(LIBRARY)
-	$(CXX) $(CXXFLAGS) -o $@ $(BENCH_OBJS) $(LIBRARY) -lnoise
+	$(CXX) $(CXXFLAGS) -o $@ $(BENCH_OBJS) $(LIBRARY) -lnoise -lmpfr -lgmp
 
 $(BUILD)/examples/%: $(BUILD)/obj/examples/%.o $(LIBRARY)
 	@mkdir -p $(@D)

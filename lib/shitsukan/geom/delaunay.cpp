@@ -63,6 +63,8 @@ public:
         dt_.triangles.push_back({{n, n + 2, n + 3}, {-1, -1, 0}});
         mark_.assign(2, -1);
         out_mark_.assign(2, -1);
+        starting_at_.assign(dt_.points.size(), -1);
+        ending_at_.assign(dt_.points.size(), -1);
         last_ = 0;
     }
 
@@ -140,6 +142,17 @@ public:
             }
             boundary_[k].created = slot;
         }
+        // The cavity's boundary is one cycle: each vertex starts one boundary edge and ends
+        // one, so the new triangles find their neighbours through two vertex-indexed tables
+        // (a scan of the boundary per edge was quadratic in the cavity size).
+        for (const BoundaryEdge& e : boundary_) {
+            starting_at_[std::size_t(e.u)] = -1;
+            ending_at_[std::size_t(e.w)] = -1;
+        }
+        for (const BoundaryEdge& e : boundary_) {
+            starting_at_[std::size_t(e.u)] = e.created;
+            ending_at_[std::size_t(e.w)] = e.created;
+        }
         for (const BoundaryEdge& e : boundary_) {
             DelaunayTriangle& tri = dt_.triangles[std::size_t(e.created)];
             tri.v[0] = p;
@@ -147,12 +160,8 @@ public:
             tri.v[2] = e.w;
             tri.n[0] = e.outside;
             if (e.outside >= 0) dt_.triangles[std::size_t(e.outside)].n[e.outside_slot] = e.created;
-            tri.n[1] = -1;
-            tri.n[2] = -1;
-            for (const BoundaryEdge& f : boundary_) {
-                if (f.u == e.w) tri.n[1] = f.created;  // across w -> p
-                if (f.w == e.u) tri.n[2] = f.created;  // across p -> u
-            }
+            tri.n[1] = starting_at_[std::size_t(e.w)];  // across w -> p: the edge from w
+            tri.n[2] = ending_at_[std::size_t(e.u)];    // across p -> u: the edge into u
             if (tri.n[1] < 0 || tri.n[2] < 0) return false;
             mark_[std::size_t(e.created)] = -1;
         }
@@ -163,6 +172,7 @@ public:
 private:
     DelaunayTriangulation& dt_;
     std::vector<int> mark_, out_mark_, cavity_;
+    std::vector<int> starting_at_, ending_at_;  // per point: new triangle of its boundary edge
     std::vector<BoundaryEdge> boundary_;
     int last_ = 0;
 };
@@ -266,7 +276,7 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
     builder.start_frame();
     for (std::size_t k = 0; k < order.size(); ++k) {
         int i = order[k].i;
-        if (k > 0 && points[order[k - 1].i] == points[i]) {
+        if (k > 0 && out->points[k - 1] == out->points[k]) {  // sequential, not random reads
             int first = order[k - 1].i;
             out->duplicate_of[std::size_t(i)] = out->duplicate_of[std::size_t(first)] >= 0
                                                     ? out->duplicate_of[std::size_t(first)]
