@@ -225,3 +225,17 @@ TEST_CASE("voronoi robust: seeded stress, every ok result tiles its region") {
     MESSAGE("voronoi stress: " << checked << " ok results, every one a tiling");
     CHECK(checked > 2000);
 }
+
+TEST_CASE("fuzz finding: sites 2e-40 apart seen from 5 away are refused, not a NaN vertex") {
+    // The double-double determinant loses the 2e-40 difference next to terms of size 30; the
+    // clip points of such a bisector fall back to interpolation. Before: a NaN vertex and
+    // cells covering 6.5 times the square with an ok Status.
+    const Vec2d sites[4] = {{0.5, 1e-40}, {0.5, 3e-40}, {0.5, 0.1}, {0.5, -0.1}};
+    VoronoiCells cells;
+    Status s = voronoi_cells(sites, 4, kSquare, 4, &cells);
+    CHECK(s.code() == StatusCode::degenerate);
+    CHECK(std::string(s.message()).find("cannot be constructed") != std::string::npos);
+    // the same rows 1e-12 apart are constructed and tile the square
+    const Vec2d near[4] = {{0.5, 1e-12}, {0.5, 3e-12}, {0.5, 0.1}, {0.5, -0.1}};
+    require_tiling(near, 4, kSquare, 4);
+}

@@ -479,3 +479,47 @@ TEST_CASE("stage order (issue 13.2): fig. 5's stage-1 curves are fig. 7's row bo
             }
         }
 }
+
+TEST_CASE("fuzz finding: fig. 7 scaled to 1e-30 (the two-stage assembly read a stage-1 vertex "
+          "with a final vertex's index)") {
+    ScaleParams prm = fig07();
+    prm.width = prm.height = 1e-30f;
+    prm.D = prm.d = 1e-31f;
+    prm.perturbation.p = 1e-33f;
+    ScalePattern pat;
+    ScaleDivision steps;
+    REQUIRE(generate_scale_pattern(prm, &pat, &steps).ok());
+    CHECK(pat.polygon_count() == 154);
+    CHECK(pattern_area(pat) == doctest::Approx(1e-60).epsilon(1e-6));
+    CHECK(pattern_area(steps.stage1_pattern) == doctest::Approx(1e-60).epsilon(1e-6));
+}
+
+TEST_CASE("fuzz finding: a subnormal height (9e-41) is refused, it left gaps in the pattern") {
+    ScaleParams prm = fig07();
+    prm.width = 3.814697265625e-06f;
+    prm.height = 9.183549615799121e-41f;  // subnormal float
+    prm.D = 0.099609375f;
+    prm.a = 0.5f;
+    ScalePattern pat;
+    Status s = generate_scale_pattern(prm, &pat);
+    CHECK(s.code() == StatusCode::invalid_argument);
+    CHECK(std::string(s.message()).find("normal") != std::string::npos);
+    prm.height = std::numeric_limits<float>::min();  // the smallest normal float is accepted
+    prm.width = prm.D = prm.d = prm.height;
+    CHECK(generate_scale_pattern(prm, &pat).ok());
+}
+
+TEST_CASE("fuzz finding: a region thinner than one seed spacing is refused (it gave no scales)") {
+    ScaleParams prm = fig07();
+    prm.width = 3.814697265625e-06f;
+    prm.height = 7.809722961688017e-29f;
+    prm.D = 0.099609375f;
+    ScalePattern pat;
+    CHECK(generate_scale_pattern(prm, &pat).code() == StatusCode::invalid_argument);
+    prm = fig07();
+    prm.height = 0.05f;  // thinner than D = 0.1
+    CHECK(generate_scale_pattern(prm, &pat).code() == StatusCode::invalid_argument);
+    prm.height = 0.1f;  // exactly one row
+    REQUIRE(generate_scale_pattern(prm, &pat).ok());
+    CHECK(pattern_area(pat) == doctest::Approx(0.1).epsilon(1e-6));
+}

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 #include "shitsukan/core/assert.hpp"
 #include "shitsukan/geom/delaunay.hpp"
@@ -32,6 +33,12 @@ Vec2d circumcentre_dd(Vec2d a, Vec2d b, Vec2d c) {
     const DoubleDouble bx = dd_diff(b.x, a.x), by = dd_diff(b.y, a.y);
     const DoubleDouble cx = dd_diff(c.x, a.x), cy = dd_diff(c.y, a.y);
     const DoubleDouble d = dd_scale(dd_sub(dd_mul(bx, cy), dd_mul(by, cx)), 2.0);
+    // d carries ~2^-104 of its terms' size as error: when it is not far above that (sites
+    // 1e-40 apart seen from 5 away), the centre cannot be constructed: NaN, reported by the
+    // caller as a Status
+    const double terms = std::fabs(bx.hi * cy.hi) + std::fabs(by.hi * cx.hi);
+    if (!(std::fabs(d.hi) > std::ldexp(terms, -94)))
+        return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
     const DoubleDouble b2 = dd_add(dd_mul(bx, bx), dd_mul(by, by));
     const DoubleDouble c2 = dd_add(dd_mul(cx, cx), dd_mul(cy, cy));
     const DoubleDouble ux = dd_div(dd_sub(dd_mul(cy, b2), dd_mul(by, c2)), d);
@@ -162,8 +169,15 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
     for (int t = 0; t < tcount; ++t) {
         if (root[std::size_t(t)] != t) continue;
         const int* b = &best[std::size_t(t) * 3];
-        centre[std::size_t(t)] =
-            circumcentre(pts[std::size_t(b[0])], pts[std::size_t(b[1])], pts[std::size_t(b[2])]);
+        const Vec2d p0 = pts[std::size_t(b[0])], p1 = pts[std::size_t(b[1])],
+                    p2 = pts[std::size_t(b[2])];
+        centre[std::size_t(t)] = circumcentre(p0, p1, p2);
+        if (!is_finite(centre[std::size_t(t)]))
+            return Status::error(StatusCode::degenerate,
+                                 "voronoi_cells: the Voronoi vertex of (%.17g, %.17g), (%.17g, "
+                                 "%.17g), (%.17g, %.17g) cannot be constructed in double-double: "
+                                 "the sites are closer than ~2^-94 of their distances",
+                                 p0.x, p0.y, p1.x, p1.y, p2.x, p2.y);
     }
 
     // Walk around each site: the groups of its triangles, counter-clockwise, each once. Sites

@@ -546,7 +546,7 @@ Status perturb_two_stage(const PlanarSubdivision& s1, const PlanarSubdivision& c
                 if (!(lambda[g] > 0.0)) continue;
                 const double ds = frame1[g].l / n;
                 double sa = 0.0, sb = frame1[g].l;
-                bool up = s1.vertices[std::size_t(vs)] == frame1[g].a;
+                bool up = first_level && s1.vertices[std::size_t(vs)] == frame1[g].a;
                 if (!first_level) {  // (a corner's vertex_s may be on another stage-1 edge)
                     sa = chord_s(frame1[g], cells.vertices[std::size_t(vs)]);
                     sb = chord_s(frame1[g], cells.vertices[std::size_t(ve)]);

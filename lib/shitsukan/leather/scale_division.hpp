@@ -30,7 +30,9 @@
 //            Voronoi division of stage 2 is computed in the straight, convex stage-1 polygons
 //            and carried onto the bent ones: the same cells up to the bend, and exact.)
 //
-// Parameters (validated, Status on error): width, height > 0; D > 0 (chosen default 0.1: ten
+// Parameters (validated, Status on error): width, height > 0 and D > 0, all three normal
+// floats (subnormal sizes left gaps in the float pattern), D <= min(width, height) (chosen:
+// one scale must fit across; thinner regions left rows without cells); D > 0 (chosen default 0.1: ten
 // rows on the unit square); d >= 0 (default 1.0 D); a in [0, 1]; edge_ratio in (0.05, 1];
 // perturbation.p >= 0. NaN anywhere is refused.
 //
