@@ -14,6 +14,7 @@
 #include "shitsukan/solid/lattice_store.hpp"
 #include "shitsukan/wrinkly/hierarchical_sampling.hpp"
 #include "shitsukan/wrinkly/ist_digits.hpp"
+#include "shitsukan/wrinkly/ist_original.hpp"
 
 using namespace shitsukan;
 
@@ -88,4 +89,30 @@ TEST_CASE("load_lattice: refuses NaN values and trailing bytes") {
     CHECK(s.code() == StatusCode::io_error);
     CHECK(std::string(s.message()).find("bytes after") != std::string::npos);
     for (const std::string& p : {ok, nan, extra}) std::remove(p.c_str());
+}
+
+TEST_CASE("original IST: K beyond double resolution is refused; accepted ones stay in [0, 1]") {
+    IstOriginal ist;
+    ist.crossing_all = 9;  // 19 parts a step
+    ist.iterations = 33;   // 19^33: sub-intervals 1e-42 wide; forward(1) gave 1 + 2^-52
+    Status s = ist_original_check(ist);
+    CHECK(s.code() == StatusCode::out_of_range);
+    CHECK(std::string(s.message()).find("2^-45") != std::string::npos);
+    int checked = 0;
+    for (int b = 1; b <= 3; ++b)
+        for (int m = 0; m <= 15; ++m)
+            for (int k = 0; k <= 40; ++k) {
+                ist.base_intervals = b;
+                ist.crossing_all = m;
+                ist.iterations = k;
+                if (!ist_original_check(ist)) continue;
+                for (int i = 0; i <= 32; ++i) {
+                    const double v = ist_original_forward(ist, i / 32.0);
+                    REQUIRE((v >= 0.0 && v <= 1.0));
+                    const double w = ist_original_inverse(ist, v);
+                    REQUIRE((w >= 0.0 && w <= 1.0));
+                }
+                ++checked;
+            }
+    CHECK(checked > 300);
 }
