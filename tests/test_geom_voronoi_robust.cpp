@@ -13,6 +13,7 @@
 #include "shitsukan/geom/delaunay.hpp"
 #include "shitsukan/geom/double_double.hpp"
 #include "shitsukan/geom/polygon.hpp"
+#include "shitsukan/geom/predicates.hpp"
 #include "shitsukan/geom/voronoi.hpp"
 
 using namespace shitsukan;
@@ -238,4 +239,44 @@ TEST_CASE("fuzz finding: sites 2e-40 apart seen from 5 away are refused, not a N
     // the same rows 1e-12 apart are constructed and tile the square
     const Vec2d near[4] = {{0.5, 1e-12}, {0.5, 3e-12}, {0.5, 0.1}, {0.5, -0.1}};
     require_tiling(near, 4, kSquare, 4);
+}
+
+TEST_CASE("fuzz finding: a triangle reaching 1e34 (area 0.4): exact checks, no wrong cells") {
+    const Vec2d tri[3] = {{1.0507238912670181e+34, 0.0250244140625}, {-31.625, 0}, {0, 0}};
+    CHECK(check_convex_region(tri, 3).ok());  // exact: counter-clockwise, area > 0
+    CHECK(polygon_area(tri, 3) == 0.0);       // the documented limit of double shoelace areas
+    CHECK(orient2d_exact(tri[0], tri[1], tri[2]) > 0.0);
+    // sites 10 apart next to frame points 5e34 away: refused by name, or cells with area
+    const Vec2d sites[2] = {{0, 0}, {-10, 0.01}};
+    VoronoiCells cells;
+    Status s = voronoi_cells(sites, 2, tri, 3, &cells);
+    if (!s.ok()) {
+        CHECK(s.code() == StatusCode::degenerate);
+        return;
+    }
+    double twice = 0.0;
+    for (int c = 0; c < 2; ++c) {
+        int k;
+        const Vec2d* v = cells.cell(c, &k);
+        for (int i = 1; i + 1 < k; ++i) twice += orient2d_exact(v[0], v[i], v[i + 1]);
+    }
+    CHECK(twice > 0.0);
+}
+
+TEST_CASE("fuzz finding: a site 2.3e48 away and one at 25600 from a unit hexagon") {
+    // The bisector meets the hexagon's edge lines ~1e48 away; its construction was judged
+    // against the hexagon's size instead of the point's, fell back to interpolating between
+    // vertices 1e49 apart, and gave the far site a clockwise cell of area -6e15.
+    Vec2d hex[6];
+    for (int i = 0; i < 6; ++i)
+        hex[i] = {std::cos(i * 3.141592653589793 / 3), std::sin(i * 3.141592653589793 / 3)};
+    const Vec2d sites[2] = {{2.3346204133704415e+48, 24624}, {-25600, 0.5078125}};
+    VoronoiCells cells;
+    REQUIRE(voronoi_cells(sites, 2, hex, 6, &cells).ok());
+    int k0, k1;
+    cells.cell(0, &k0);
+    const Vec2d* v1 = cells.cell(1, &k1);
+    CHECK(k0 == 0);
+    REQUIRE(k1 == 6);
+    CHECK(polygon_area(v1, k1) == doctest::Approx(polygon_area(hex, 6)).epsilon(1e-15));
 }

@@ -175,15 +175,16 @@ bool bisector_meets_line(Vec2d s, Vec2d t, Vec2d b0, Vec2d b1, Vec2d* x) {
     const DoubleDouble den = dd_scale(dd_add(dd_mul(ex, dx), dd_mul(ey, dy)), 2.0);
     if (den.hi == 0.0) return false;
     // num and den carry ~2^-104 of their terms' size as error; if that could move the point
-    // by more than ~2^-60 of the coordinates (sites far closer to each other than to the
+    // by more than ~2^-60 of its own coordinates (sites far closer to each other than to the
     // line), the interpolation between the edge's end points is used instead
     const double num_terms = tx.hi * tx.hi + ty.hi * ty.hi + sx.hi * sx.hi + sy.hi * sy.hi;
     const double den_terms = 2.0 * (std::fabs(ex.hi * dx.hi) + std::fabs(ey.hi * dy.hi));
     const double e_len = std::fabs(ex.hi) + std::fabs(ey.hi);
     const double u_error = std::ldexp(num_terms + std::fabs(num.hi / den.hi) * den_terms, -100) /
                            std::fabs(den.hi);
-    const double mag = std::fabs(b0.x) + std::fabs(b0.y) + e_len;
-    if (!(u_error * e_len <= std::ldexp(mag, -60))) return false;
+    const double u_estimate = std::fabs(num.hi / den.hi);
+    const double mag = std::fabs(b0.x) + std::fabs(b0.y) + e_len * (1.0 + u_estimate);
+    if (!(u_error * e_len <= std::ldexp(mag, -60))) return false;  // relative to the point
     const DoubleDouble u = dd_div(num, den);
     *x = {dd_round(dd_add(dd_from(b0.x), dd_mul(u, ex))),
           dd_round(dd_add(dd_from(b0.y), dd_mul(u, ey)))};

@@ -50,6 +50,8 @@
 
 namespace shitsukan {
 
+// (double shoelace: a polygon whose area is far below its coordinates times an ulp, e.g. a
+// triangle of area 0.4 reaching 1e34, comes out 0; check_convex_region is exact)
 double polygon_area(const Vec2d* v, int n);
 double polygon_area(const Vec2* v, int n);  // accumulated in double
 Vec2d polygon_centroid(const Vec2d* v, int n);
