@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "shitsukan/geom/bezier_patch.hpp"
 #include "shitsukan/image/image_view.hpp"
 #include "shitsukan/solid/lattice_store.hpp"
 #include "shitsukan/wrinkly/hierarchical_sampling.hpp"
@@ -115,4 +116,32 @@ TEST_CASE("original IST: K beyond double resolution is refused; accepted ones st
                 ++checked;
             }
     CHECK(checked > 300);
+}
+
+TEST_CASE("Bezier patch normal: unit length on a tiny patch and next to a cusp") {
+    // n = du x dv has components ~1e-26 here: their squares underflow float and a plain
+    // normalize() returned normals of the wrong length (1.076 was measured near a cusp).
+    // sizes 1e-13 .. 1e-9: n's squares pass through the subnormal range (at 1.7e-12 the old
+    // normals were 27 % short)
+    float worst = 0.0f;
+    for (float size = 1e-13f; size < 1e-9f; size *= 1.1f) {
+        BezierPatch patch;
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j)
+                patch.p[i][j] = Vec3{float(i), float(j), 0.1f * float(i * j)} * size;
+        for (float u : {0.0f, 0.3f, 1.0f})
+            for (float v : {0.0f, 0.7f, 1.0f}) {
+                const PatchPoint q = patch_point(patch, u, v);
+                worst = std::fmax(worst, std::fabs(length(q.normal) - 1.0f));
+            }
+    }
+    CHECK(worst < 1e-5f);
+    BezierPatch cusp;  // the whole u = 0 edge collapsed to one point
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            cusp.p[i][j] = i == 0 ? Vec3{0, 0, 0} : Vec3{float(i), float(j) * 1e-12f * float(i), 0};
+    for (float v : {0.0f, 0.5f, 1.0f}) {
+        const PatchPoint q = patch_point(cusp, 0.0f, v);
+        CHECK(length(q.normal) == doctest::Approx(1.0f).epsilon(1e-5));
+    }
 }
