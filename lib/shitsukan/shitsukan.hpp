@@ -46,6 +46,7 @@
 #include "shitsukan/geom/bezier_patch_mesh.hpp"
 #include "shitsukan/geom/block_letters.hpp"
 #include "shitsukan/geom/delaunay.hpp"
+#include "shitsukan/geom/double_double.hpp"
 #include "shitsukan/geom/isotropic_remesh.hpp"
 #include "shitsukan/geom/marching_tetrahedra.hpp"
 #include "shitsukan/geom/mesh.hpp"
