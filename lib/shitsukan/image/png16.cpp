@@ -1,5 +1,7 @@
 #include "shitsukan/image/png16.hpp"
 
+#include <algorithm>
+
 #include <cstdio>
 #include <vector>
 
@@ -152,6 +154,55 @@ private:
     std::uint32_t adler_ = 1;
 };
 
+int paeth(int a, int b, int c) {  // PNG spec 9.4: the predictor closest to a + b - c
+    const int p = a + b - c, pa = p > a ? p - a : a - p, pb = p > b ? p - b : b - p,
+              pc = p > c ? p - c : c - p;
+    return (pa <= pb && pa <= pc) ? a : (pb <= pc ? b : c);
+}
+
+// The raw image with each row filtered (PNG spec 9: None, Sub, Up, Average, Paeth on bytes,
+// bpp = bytes per pixel) by the filter with the smallest sum of |byte as signed| (the spec's
+// suggested heuristic, 12.8): smooth height maps become runs of small differences.
+template <class SampleFn>
+void filtered_rows(int width, int height, int channels, int bits, SampleFn sample,
+                   std::vector<std::uint8_t>* out) {
+    const std::size_t bpp = std::size_t(channels) * (bits == 16 ? 2 : 1);
+    const std::size_t n = std::size_t(width) * bpp;
+    std::vector<std::uint8_t> prev(n, 0), cur(n), trial(n);
+    out->resize((n + 1) * std::size_t(height));
+    for (int y = 0; y < height; ++y) {
+        std::uint8_t* p = cur.data();
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < channels; ++c) {
+                const std::uint16_t v = sample(x, y, c);
+                if (bits == 16) *p++ = std::uint8_t(v >> 8);
+                *p++ = std::uint8_t(v & 0xFF);
+            }
+        std::uint8_t* dst = out->data() + (n + 1) * std::size_t(y);
+        std::uint64_t best = ~std::uint64_t(0);
+        for (int type = 0; type < 5; ++type) {
+            std::uint64_t cost = 0;
+            for (std::size_t i = 0; i < n; ++i) {
+                const int a = i >= bpp ? cur[i - bpp] : 0, b = prev[i],
+                          c = i >= bpp ? prev[i - bpp] : 0;
+                const int pred = type == 0 ? 0
+                                 : type == 1 ? a
+                                 : type == 2 ? b
+                                 : type == 3 ? (a + b) / 2
+                                             : paeth(a, b, c);
+                trial[i] = std::uint8_t((cur[i] - pred) & 0xFF);
+                cost += trial[i] < 128 ? trial[i] : 256 - trial[i];
+            }
+            if (cost < best) {
+                best = cost;
+                dst[0] = std::uint8_t(type);
+                std::copy(trial.begin(), trial.end(), dst + 1);
+            }
+        }
+        prev.swap(cur);
+    }
+}
+
 // Encode rows of `channels` samples of `bits` (8 or 16) bits; sample(x, y, c) gives each value.
 template <class SampleFn>
 Status encode_png(const char* path, int width, int height, int channels, int bits, bool empty,
@@ -171,6 +222,15 @@ Status encode_png(const char* path, int width, int height, int channels, int bit
                              "cannot write %s: %d x %d x %d samples need %llu bytes, more than "
                              "one PNG chunk holds (2147483647)",
                              path, width, height, channels, (unsigned long long)idat_bytes);
+    // Compressed when the library has a deflate compressor (stb_image_write's zlib, image_io.cpp)
+    // and the filtered image fits its int sizes: every row filtered first (filtered_rows).
+    std::vector<std::uint8_t> compressed;
+    bool use_compressed = false;
+    if (bits == 16 && raw_bytes < 0x7FFF0000ull) {
+        std::vector<std::uint8_t> filtered;
+        filtered_rows(width, height, channels, bits, sample, &filtered);
+        use_compressed = detail::zlib_compress(filtered.data(), filtered.size(), &compressed);
+    }
     std::FILE* f = std::fopen(path, "wb");
     if (!f) return Status::error(StatusCode::io_error, "cannot open %s for writing", path);
 
@@ -189,6 +249,18 @@ Status encode_png(const char* path, int width, int height, int channels, int bit
     png.begin_chunk(13, "IHDR");
     png.chunk_data(ihdr, 13);
     png.end_chunk();
+
+    if (use_compressed) {
+        png.begin_chunk(std::uint32_t(compressed.size()), "IDAT");
+        png.chunk_data(compressed.data(), compressed.size());
+        png.end_chunk();
+        png.begin_chunk(0, "IEND");
+        png.end_chunk();
+        bool ok = png.ok();
+        ok = (std::fclose(f) == 0) && ok;
+        if (!ok) return Status::error(StatusCode::io_error, "writing %s failed", path);
+        return Status::success();
+    }
 
     png.begin_chunk(std::uint32_t(idat_bytes), "IDAT");
     StoredDeflate z(png, std::size_t(raw_bytes));
