@@ -229,7 +229,9 @@ Status encode_png(const char* path, int width, int height, int channels, int bit
     if (bits == 16 && raw_bytes < 0x7FFF0000ull) {
         std::vector<std::uint8_t> filtered;
         filtered_rows(width, height, channels, bits, sample, &filtered);
-        use_compressed = detail::zlib_compress(filtered.data(), filtered.size(), &compressed);
+        // Noise does not shrink: then the stored blocks, which are never bigger.
+        use_compressed = detail::zlib_compress(filtered.data(), filtered.size(), &compressed) &&
+                         compressed.size() < idat_bytes;
     }
     std::FILE* f = std::fopen(path, "wb");
     if (!f) return Status::error(StatusCode::io_error, "cannot open %s for writing", path);

@@ -13,7 +13,7 @@
 // is compressed when the library has a deflate compressor (built with stb_image_write, see
 // image_io.hpp: png_compressed()): each row is first filtered (None, Sub, Up, Average or
 // Paeth, whichever gives the smallest sum of bytes, PNG spec 12.8), then the whole image is
-// deflated; a smooth 4096 x 4096 height map shrinks from 33.6 MB to a few MB. Without a
+// deflated (kept only when smaller than the stored form: noise does not shrink); a smooth 4096 x 4096 height map shrinks from 33.6 MB to a few MB. Without a
 // compressor, and for 8-bit fallback PNGs, the deflate data are stored, uncompressed blocks
 // of at most 65535 bytes (about as big as the raw samples, one filter byte 0 per row),
 // streamed through a one-row buffer. Views with a stride are handled.
