@@ -1,6 +1,7 @@
 // Tests for lib/shitsukan/image/pfm, image_read and the compressed 16-bit PNG: PFM round trip
 // bit for bit (gray and RGB, rows in order), 16-bit PNGs read back through stb_image sample
-// for sample, a smooth 4096 x 4096 height map smaller than the stored encoding.
+// for sample, a smooth 4096 x 4096 height map over 2x smaller than the stored encoding,
+// zlib_deflate's streams inflate back (through stb_image) for edge-case inputs.
 #include <doctest/doctest.h>
 
 #include <unistd.h>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "shitsukan/core/prng.hpp"
+#include "shitsukan/image/deflate.hpp"
 #include "shitsukan/image/image_io.hpp"
 #include "shitsukan/image/image_read.hpp"
 #include "shitsukan/image/pfm.hpp"
@@ -108,8 +110,7 @@ TEST_CASE("16-bit PNG: gray and RGB read back through stb_image, every sample") 
     CHECK(read_image("/nonexistent.png", &a).code() == StatusCode::io_error);
 }
 
-TEST_CASE("16-bit PNG: a smooth 4096 x 4096 height map is compressed (filtered rows + deflate)") {
-    if (!png_compressed()) return;  // a build without a deflate compressor stores
+TEST_CASE("16-bit PNG: a smooth 4096 x 4096 height map is over 2x smaller than stored") {
     const int n = 4096;
     Gray16Image height(n, n);
     for (int y = 0; y < n; ++y)
@@ -123,11 +124,44 @@ TEST_CASE("16-bit PNG: a smooth 4096 x 4096 height map is compressed (filtered r
     const long stored = long(n) * (1 + 2 * n) + 8 + 25 + 12 + 12 + 2 + 4 + 5 * ((2L * n * n) / 65535 + 1);
     const long got = file_size(path);
     MESSAGE("4096^2 16-bit height map: " << got << " bytes (stored encoding " << stored << ")");
-    CHECK(double(got) < 0.6 * double(stored));  // stb's deflate (fixed Huffman codes): 1.8x
+    // 2.37x measured; zlib -9 on the same filtered rows gives 2.4x: PNG's byte-wise filters
+    // have no planar (a + b - c) predictor, so a smooth slope leaves first differences of
+    // ~100 units whose low bytes do not compress. The issue's 3x is not reachable this way.
+    CHECK(got * 2 < stored);
     LoadedImage back;
     if (image_reading_available()) {
         REQUIRE(read_image(path.c_str(), &back).ok());
         CHECK(back.sample(1234, 3210, 0) == height.at(1234, 3210));
     }
     std::remove(path.c_str());
+}
+
+TEST_CASE("zlib_deflate: streams inflate back (stb_image) for empty, tiny, runs, long input") {
+    if (!image_reading_available()) return;
+    // Checked through 16-bit PNGs of 1 x n: the encoder keeps deflate only when smaller, so
+    // use compressible rows (runs, ramps) and one that is not (noise).
+    Pcg32 rng(1, 2);
+    for (int kind = 0; kind < 4; ++kind) {
+        const int w = kind == 0 ? 1 : 3000, h = kind == 3 ? 200 : 2;
+        Gray16Image g(w, h);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                g.at(x, y) = kind == 1 ? std::uint16_t(7)
+                             : kind == 2 ? std::uint16_t(x * 3 + y)
+                                         : std::uint16_t((x / 40) * 1000 + (rng.next_u32() & 1));
+        const std::string path = temp_path("z16.png");
+        REQUIRE(write_png16(path.c_str(), g.view()).ok());
+        LoadedImage back;
+        Status s = read_image(path.c_str(), &back);
+        REQUIRE_MESSAGE(s.ok(), s.message());
+        int wrong = 0;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) wrong += back.sample(x, y, 0) != g.at(x, y);
+        CHECK(wrong == 0);
+        std::remove(path.c_str());
+    }
+    std::vector<std::uint8_t> z;
+    REQUIRE(zlib_deflate(nullptr, 0, &z).ok());
+    CHECK(z.size() >= 2 + 1 + 4);
+    CHECK(zlib_deflate(nullptr, 5, &z).code() == StatusCode::invalid_argument);
 }

@@ -1,4 +1,5 @@
 #include "shitsukan/image/png16.hpp"
+#include "shitsukan/image/deflate.hpp"
 
 #include <algorithm>
 
@@ -222,15 +223,14 @@ Status encode_png(const char* path, int width, int height, int channels, int bit
                              "cannot write %s: %d x %d x %d samples need %llu bytes, more than "
                              "one PNG chunk holds (2147483647)",
                              path, width, height, channels, (unsigned long long)idat_bytes);
-    // Compressed when the library has a deflate compressor (stb_image_write's zlib, image_io.cpp)
-    // and the filtered image fits its int sizes: every row filtered first (filtered_rows).
+    // 16-bit images: every row filtered (filtered_rows), then deflated (deflate.hpp); noise
+    // does not shrink, so the stored blocks are kept when they are smaller.
     std::vector<std::uint8_t> compressed;
     bool use_compressed = false;
     if (bits == 16 && raw_bytes < 0x7FFF0000ull) {
         std::vector<std::uint8_t> filtered;
         filtered_rows(width, height, channels, bits, sample, &filtered);
-        // Noise does not shrink: then the stored blocks, which are never bigger.
-        use_compressed = detail::zlib_compress(filtered.data(), filtered.size(), &compressed) &&
+        use_compressed = zlib_deflate(filtered.data(), filtered.size(), &compressed).ok() &&
                          compressed.size() < idat_bytes;
     }
     std::FILE* f = std::fopen(path, "wb");

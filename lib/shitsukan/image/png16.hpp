@@ -10,13 +10,15 @@
 // (length, type, data, CRC-32 of type + data): IHDR (size, bit depth 16, colour type 0 =
 // gray or 2 = RGB, no interlace), one IDAT holding a zlib stream (RFC 1950: header 78 01,
 // the deflate data, the Adler-32 of the raw bytes) and IEND. The deflate data (RFC 1951)
-// is compressed when the library has a deflate compressor (built with stb_image_write, see
-// image_io.hpp: png_compressed()): each row is first filtered (None, Sub, Up, Average or
-// Paeth, whichever gives the smallest sum of bytes, PNG spec 12.8), then the whole image is
-// deflated (kept only when smaller than the stored form: noise does not shrink); a smooth 4096 x 4096 height map shrinks from 33.6 MB to a few MB. Without a
-// compressor, and for 8-bit fallback PNGs, the deflate data are stored, uncompressed blocks
-// of at most 65535 bytes (about as big as the raw samples, one filter byte 0 per row),
-// streamed through a one-row buffer. Views with a stride are handled.
+// is compressed by the library's own deflate (image/deflate.hpp: LZ77 + dynamic Huffman
+// codes, no dependency): each row is first filtered (None, Sub, Up, Average or Paeth,
+// whichever gives the smallest sum of bytes, PNG spec 12.8), then the whole image is deflated,
+// kept only when smaller than the stored form (noise does not shrink). Measured at 4096 x
+// 4096: a leather height map 33.6 MB -> 14.9 MB (2.26x), a smooth sine map -> 14.2 MB
+// (2.37x); zlib -9 on the same filtered rows gives 14.4 MB: PNG's byte-wise filters have no
+// planar predictor, so the low bytes of a slope stay near-random. The stored
+// form, the 8-bit fallback of write_png, is made of uncompressed blocks of at most 65535
+// bytes, streamed through a one-row buffer. Views with a stride are handled.
 // Errors: empty image or path -> invalid_argument; an image whose data would not fit one
 // PNG chunk (2^31 - 1 bytes) -> too_large; open or write failures -> io_error (the path
 // is in the message). Host side (stdio).
@@ -24,7 +26,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <vector>
 
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/image/image.hpp"
@@ -49,9 +50,6 @@ std::uint32_t crc32_update(std::uint32_t crc, const std::uint8_t* data, std::siz
 std::uint32_t crc32(const std::uint8_t* data, std::size_t size);     // PNG / zlib CRC-32
 std::uint32_t adler32_update(std::uint32_t adler, const std::uint8_t* data, std::size_t size);
 std::uint32_t adler32(const std::uint8_t* data, std::size_t size);   // zlib Adler-32
-// zlib (RFC 1950) compression of data into *out by the deflate compressor the library was
-// built with (stb_image_write's); false, *out untouched, in a build without one.
-bool zlib_compress(const std::uint8_t* data, std::size_t size, std::vector<std::uint8_t>* out);
 // The same encoder at bit depth 8 (stored deflate blocks): write_png's fallback when the
 // library is built without stb_image_write (image_io.hpp).
 Status write_png8_stored(const char* path, const std::uint8_t* pixels, int width, int height,
