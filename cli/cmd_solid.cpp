@@ -1,6 +1,7 @@
 // cli/cmd_solid.cpp — `shitsukan marble` and `shitsukan wood` (okada1987 §2.2, §4; okada1989).
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "flags.hpp"
@@ -16,6 +17,34 @@
 #include "shitsukan/solid/periodic_lattice.hpp"
 
 namespace shitsukan::cli {
+namespace {
+
+// "a,b,c" -> up to `max` numbers; false on anything else.
+bool parse_numbers(const std::string& text, float* out, int count) {
+    std::size_t p = 0;
+    for (int k = 0; k < count; ++k) {
+        const std::size_t comma = text.find(',', p);
+        if ((k < count - 1) == (comma == std::string::npos)) return false;
+        double d;
+        if (!parse_double(text.substr(p, comma == std::string::npos ? std::string::npos
+                                                                    : comma - p).c_str(), &d))
+            return false;
+        out[k] = float(d);
+        p = comma + 1;
+    }
+    return true;
+}
+
+bool parse_colour(const std::string& text, Vec3* out) {
+    float v[3];
+    if (!parse_numbers(text, v, 3)) return false;
+    for (float c : v)
+        if (c < 0.0f || c > 255.0f) return false;
+    *out = Vec3{v[0], v[1], v[2]};
+    return true;
+}
+
+}  // namespace
 
 int run_solid(int argc, char** argv, bool wood) {
     const FractalParams defaults = okada1987_lattice_params();
@@ -27,7 +56,8 @@ int run_solid(int argc, char** argv, bool wood) {
     float k2 = kOkada1987WoodK2, x0 = kOkada1987WoodAxis.x, y0 = kOkada1987WoodAxis.y;
     float at = -1.0f;
     bool tileable = false;
-    std::string out = wood ? "wood.png" : "marble.png", obj, view, pfm;
+    std::string out = wood ? "wood.png" : "marble.png", obj, view, pfm, stripes_text;
+    std::string i_min_text, i_max_text;
 
     FlagSet f(wood ? "wood" : "marble",
               wood ? "okada1987 §4.2 wood: G = sin(k2·r) about the axis (x0, y0) along z (eq. (10)),\n"
@@ -54,7 +84,14 @@ int run_solid(int argc, char** argv, bool wood) {
                  "okada1989 eq. (8): 0 = okada1987's six stripes; > 0 one layer every this");
         f.number("w", &w, 0.001, 1000, "okada1989 eq. (8): width of the layer's flat top");
         f.number("alpha", &alpha, 0.001, 1000, "okada1989 eq. (8): decay of the layer's skirt");
+        f.text("stripes", &stripes_text,
+               "okada1987 eq. (8): your own layers c,w,alpha;c,w,alpha;... (default: the six "
+               "chosen ones)");
     }
+    f.text("i-min", &i_min_text, wood ? "eq. (12): colour I_min r,g,b 0..255 (summer wood, chosen)"
+                                      : "eq. (12): colour I_min r,g,b 0..255 (impurity, chosen)");
+    f.text("i-max", &i_max_text, wood ? "eq. (12): colour I_max r,g,b 0..255 (winter wood, chosen)"
+                                      : "eq. (12): colour I_max r,g,b 0..255 (limestone, chosen)");
     f.integer("size", &size, 8, 16384, "image side in pixels");
     f.choice("plane", &plane, "xz|xy|yz", "slice plane (xz: layers/grain, xy: across the axis)");
     f.number("at", &at, -1, 4096, "slice position on the third axis (-1 = the middle, 2^(R-1))");
@@ -90,6 +127,34 @@ int run_solid(int argc, char** argv, bool wood) {
         material.layer_period = layer_period > 0.0f ? layer_period : kOkada1989LayerPeriod;
         if (tileable) material.layer_period = tileable_layer_period(material.layer_period, R);
     }
+    std::vector<MarbleStripe> own;
+    if (!stripes_text.empty()) {
+        if (layer_period > 0.0f || tileable)
+            return f.fail("--stripes is okada1987's sum of layers; not with --layer-period or "
+                          "--tileable (one repeated layer)");
+        std::size_t p = 0;
+        while (p <= stripes_text.size() && own.size() < 64) {
+            const std::size_t semi = stripes_text.find(';', p);
+            float v[3];
+            if (!parse_numbers(stripes_text.substr(p, semi == std::string::npos ? std::string::npos
+                                                                               : semi - p),
+                               v, 3) ||
+                !(v[1] > 0.0f) || !(v[2] > 0.0f))
+                return f.fail("--stripes must be c,w,alpha triples separated by ';' (w, alpha > "
+                              "0; at most 64) (got \"%s\")", stripes_text.c_str());
+            own.push_back(MarbleStripe{v[0], v[1], v[2]});
+            if (semi == std::string::npos) break;
+            p = semi + 1;
+        }
+        material.marble.stripes = own.data();
+        material.marble.count = int(own.size());
+    }
+    if (!i_min_text.empty() && !parse_colour(i_min_text, &material.i_min))
+        return f.fail("--i-min must be r,g,b with each in [0, 255] (got \"%s\")",
+                      i_min_text.c_str());
+    if (!i_max_text.empty() && !parse_colour(i_max_text, &material.i_max))
+        return f.fail("--i-max must be r,g,b with each in [0, 255] (got \"%s\")",
+                      i_max_text.c_str());
     Status s = validate_solid_material(material);
     if (!s) return f.fail_status(s);
 

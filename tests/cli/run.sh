@@ -52,6 +52,8 @@ good marble --size 64 -o m.png -- m.png
 good marble --size 64 --tileable --pfm m.pfm -o mt.png -- mt.png m.pfm
 good marble --size 64 --layer-period 8 --w 2 --alpha 0.7 --plane xy --at 10 -o ml.png -- ml.png
 good wood --size 64 --k2 2 --x0 30 --y0 30 -o w.png -- w.png
+good marble --size 64 --stripes "20,3,0.8;44,1.5,1.2" --i-min 10,20,30 --i-max 250,240,230 \
+     -o ms.png -- ms.png
 good leather --size 96 --section concave --pfm --obj-step 8 -o croc -- croc_height16.png \
      croc_normal.png croc_pattern.svg croc_height.pfm croc_relief.obj
 good leather --size 64 --control "0,0.1,0.5,0.1,0.8,0.12,1,0" --D 0.2 --d 0.2 -o own -- \
@@ -87,6 +89,10 @@ refused "--beta must be a number" marble --beta nan
 refused "--plane must be one of xz|xy|yz" marble --plane diagonal
 refused "unknown flag --bogus" marble --bogus
 refused "--tileable" wood --tileable
+refused "--stripes must be c,w,alpha triples" marble --stripes "1,2"
+refused "--stripes must be c,w,alpha triples" marble --stripes "1,0,1"
+refused "--i-max must be r,g,b with each in [0, 255]" marble --i-max 1,2,300
+refused "--i-min must be r,g,b" wood --i-min red
 refused "--view needs --obj" marble --view x.png
 refused "-o needs a value" marble -o
 refused "--a must be a number in [0, 1]" leather --a 2

@@ -204,6 +204,29 @@ void filtered_rows(int width, int height, int channels, int bits, SampleFn sampl
     }
 }
 
+// The IDAT of stored deflate blocks, streamed row by row (filter type None).
+template <class SampleFn>
+void write_stored_idat(PngWriter& png, int width, int height, int channels, int bits,
+                       std::uint64_t row_bytes, std::uint64_t raw_bytes, std::uint64_t idat_bytes,
+                       SampleFn sample) {
+    png.begin_chunk(std::uint32_t(idat_bytes), "IDAT");
+    StoredDeflate z(png, std::size_t(raw_bytes));
+    z.header();
+    std::vector<std::uint8_t> row(static_cast<std::size_t>(row_bytes));
+    for (int y = 0; y < height && png.ok(); ++y) {
+        row[0] = 0;  // filter type None
+        std::uint8_t* p = row.data() + 1;
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < channels; ++c) {
+                std::uint16_t v = sample(x, y, c);
+                if (bits == 16) *p++ = std::uint8_t(v >> 8);  // big-endian samples
+                *p++ = std::uint8_t(v & 0xFF);
+            }
+        z.write(row.data(), row.size());
+    }
+    z.finish();
+}
+
 // Encode rows of `channels` samples of `bits` (8 or 16) bits; sample(x, y, c) gives each value.
 template <class SampleFn>
 Status encode_png(const char* path, int width, int height, int channels, int bits, bool empty,
@@ -255,31 +278,10 @@ Status encode_png(const char* path, int width, int height, int channels, int bit
     if (use_compressed) {
         png.begin_chunk(std::uint32_t(compressed.size()), "IDAT");
         png.chunk_data(compressed.data(), compressed.size());
-        png.end_chunk();
-        png.begin_chunk(0, "IEND");
-        png.end_chunk();
-        bool ok = png.ok();
-        ok = (std::fclose(f) == 0) && ok;
-        if (!ok) return Status::error(StatusCode::io_error, "writing %s failed", path);
-        return Status::success();
+    } else {
+        write_stored_idat(png, width, height, channels, bits, row_bytes, raw_bytes, idat_bytes,
+                          sample);
     }
-
-    png.begin_chunk(std::uint32_t(idat_bytes), "IDAT");
-    StoredDeflate z(png, std::size_t(raw_bytes));
-    z.header();
-    std::vector<std::uint8_t> row(static_cast<std::size_t>(row_bytes));
-    for (int y = 0; y < height && png.ok(); ++y) {
-        row[0] = 0;  // filter type None
-        std::uint8_t* p = row.data() + 1;
-        for (int x = 0; x < width; ++x)
-            for (int c = 0; c < channels; ++c) {
-                std::uint16_t v = sample(x, y, c);
-                if (bits == 16) *p++ = std::uint8_t(v >> 8);  // big-endian samples
-                *p++ = std::uint8_t(v & 0xFF);
-            }
-        z.write(row.data(), row.size());
-    }
-    z.finish();
     png.end_chunk();
 
     png.begin_chunk(0, "IEND");
@@ -290,6 +292,7 @@ Status encode_png(const char* path, int width, int height, int channels, int bit
     if (!ok) return Status::error(StatusCode::io_error, "writing %s failed", path);
     return Status::success();
 }
+
 
 }  // namespace
 
