@@ -30,6 +30,7 @@
 // image
 #include "shitsukan/image/canvas.hpp"
 #include "shitsukan/image/colormap.hpp"
+#include "shitsukan/image/deflate.hpp"
 #include "shitsukan/image/float_convert.hpp"
 #include "shitsukan/image/font.hpp"
 #include "shitsukan/image/image.hpp"
