@@ -64,7 +64,7 @@ EXAMPLES   := $(EXAMPLE_SRCS:examples/%.cpp=$(BUILD)/examples/%)
 LIBRARY    := $(BUILD)/libshitsukan.a
 
 .PHONY: all test test-sanitize figures examples bench check-small check-api test-consumers \
-        install deps bench-deps consumer-deps clean cli test-cli
+        install deps bench-deps consumer-deps clean fuzz fuzz-deps figures-determinism cli test-cli
 
 # The top-level targets run one at a time (each builds in parallel inside its own sub-make), so
 # `make -j test figures` cannot build the library twice at once.
@@ -88,7 +88,7 @@ test-cli: deps
 # ---- packages: installed when missing (apt-get as root), otherwise named ----
 REQUIRED := /usr/include/doctest/doctest.h:doctest-dev /usr/include/stb/stb_image_write.h:libstb-dev
 BENCH_REQUIRED := /usr/include/libnoise/noise.h:libnoise-dev /usr/include/boost/polygon/voronoi.hpp:libboost-dev \
-                  /usr/include/CGAL/Surface_mesh.h:libcgal-dev
+                  /usr/include/CGAL/Surface_mesh.h:libcgal-dev /usr/include/CGAL/Delaunay_triangulation_2.h:libcgal-dev
 CONSUMER_REQUIRED := /usr/bin/cmake:cmake /usr/bin/pkg-config:pkg-config /usr/bin/git:git
 define ensure_packages
 	@missing=""; for pair in $(1); do f=$${pair%%:*}; p=$${pair##*:}; \
@@ -111,6 +111,59 @@ bench-deps: deps
 
 consumer-deps: deps
 	$(call ensure_packages,$(CONSUMER_REQUIRED))
+
+# ---- fuzzing: libFuzzer harnesses (clang, ASan + UBSan) over the public entry points ----
+# `make fuzz` builds fuzz/fuzz_*.cpp against the library compiled with the sanitizers, then
+# runs each harness for FUZZ_SECONDS from its committed seed corpus (fuzz/corpus/<name>/) and
+# fails on any finding (the input is saved as $(BUILD)/fuzz/crash-*). New interesting inputs
+# go to $(BUILD)/fuzz/corpus-<name>/, not into the repository.
+FUZZ_REQUIRED := /usr/bin/clang++:clang
+FUZZ_CXX     ?= clang++
+FUZZ_SECONDS ?= 20
+FUZZ_FLAGS   := -std=c++17 -O1 -g -fno-omit-frame-pointer -ffp-contract=off \
+                -fsanitize=address,undefined -fno-sanitize-recover=all
+FUZZ_SRCS    := $(sort $(wildcard fuzz/fuzz_*.cpp))
+FUZZERS      := $(FUZZ_SRCS:fuzz/%.cpp=$(BUILD)/fuzz/%)
+FUZZ_OBJS    := $(LIB_SRCS:%.cpp=$(BUILD)/fuzzobj/%.o)
+
+fuzz-deps:
+	$(call ensure_packages,$(FUZZ_REQUIRED))
+
+fuzz: fuzz-deps
+	@$(SUBMAKE) $(FUZZERS)
+	@for f in $(FUZZERS); do name=$$(basename $$f); \
+	  mkdir -p $(BUILD)/fuzz/corpus-$$name; \
+	  log=$(BUILD)/fuzz/$$name.log; \
+	  if ! $$f -max_total_time=$(FUZZ_SECONDS) -timeout=1 -rss_limit_mb=2048 -print_final_stats=1 \
+	       -artifact_prefix=$(BUILD)/fuzz/ $(BUILD)/fuzz/corpus-$$name fuzz/corpus/$$name \
+	       > $$log 2>&1; then \
+	    tail -40 $$log; echo "fuzz: $$name FOUND A DEFECT (input saved under $(BUILD)/fuzz/)"; exit 1; fi; \
+	  runs=$$(sed -n 's/^stat::number_of_executed_units: *//p' $$log); \
+	  echo "fuzz: $$name: $$runs executions in $(FUZZ_SECONDS) s, no finding"; \
+	done
+
+$(BUILD)/fuzz/%: fuzz/%.cpp fuzz/fuzz_input.hpp $(FUZZ_OBJS)
+	@mkdir -p $(@D)
+	$(FUZZ_CXX) $(CPPFLAGS) $(FUZZ_FLAGS) -fsanitize=fuzzer -o $@ $< $(FUZZ_OBJS)
+
+$(BUILD)/fuzzobj/%.o: %.cpp $(FLAGS_STAMP)
+	@mkdir -p $(@D)
+	$(FUZZ_CXX) $(CPPFLAGS) $(FUZZ_FLAGS) -MMD -MP -c $< -o $@
+
+# ---- determinism: the quick figures from g++ and from clang++ must be the same files ----
+# (images, SVG, CSV, OBJ; the .md notes and tables carry measured times and are not compared)
+figures-determinism: deps fuzz-deps
+	@$(SUBMAKE) $(BUILD)/paper_figures
+	@$(MAKE) --no-print-directory SHITSUKAN_SUBMAKE=1 -j$(JOBS) BUILD=$(BUILD)/clang CXX=clang++ CI= \
+	  $(BUILD)/clang/paper_figures
+	@rm -rf $(BUILD)/det-gcc $(BUILD)/det-clang
+	$(BUILD)/paper_figures --quick --out $(BUILD)/det-gcc > /dev/null
+	$(BUILD)/clang/paper_figures --quick --out $(BUILD)/det-clang > /dev/null
+	@cd $(BUILD)/det-gcc && find . -type f ! -name '*.md' | LC_ALL=C sort | xargs sha256sum > ../det-gcc.sha
+	@cd $(BUILD)/det-clang && find . -type f ! -name '*.md' | LC_ALL=C sort | xargs sha256sum > ../det-clang.sha
+	@if diff $(BUILD)/det-gcc.sha $(BUILD)/det-clang.sha > $(BUILD)/det.diff; then \
+	  echo "figures-determinism: $$(wc -l < $(BUILD)/det-gcc.sha) files identical between g++ and clang++"; \
+	else echo "figures-determinism: g++ and clang++ outputs differ:"; cat $(BUILD)/det.diff; exit 1; fi
 
 # ---- the two set-up commands ----
 test: deps
@@ -210,7 +263,7 @@ $(BUILD)/paper_figures: $(FIG_OBJS) $(LIBRARY)
 	$(CXX) $(CXXFLAGS) -o $@ $(FIG_OBJS) $(LIBRARY)
 
 $(BUILD)/bench: $(BENCH_OBJS) $(LIBRARY)
-	$(CXX) $(CXXFLAGS) -o $@ $(BENCH_OBJS) $(LIBRARY) -lnoise
+	$(CXX) $(CXXFLAGS) -o $@ $(BENCH_OBJS) $(LIBRARY) -lnoise -lmpfr -lgmp
 
 $(CLI): $(CLI_OBJS) $(LIBRARY)
 	$(CXX) $(CXXFLAGS) -o $@ $(CLI_OBJS) $(LIBRARY)

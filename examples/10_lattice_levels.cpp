@@ -48,19 +48,12 @@ int main() {
                         return v.at(x + (axis == 0) * sign * h, y + (axis == 1) * sign * h,
                                     z + (axis == 2) * sign * h);
                     };
-                    float mean;
-                    if (c.odd_count == 1) {
-                        int axis = c.odd_axes == 1 ? 0 : (c.odd_axes == 2 ? 1 : 2);
-                        mean = edge_midpoint(at(axis, -1), at(axis, +1), 0.0f);
-                    } else if (c.odd_count == 2) {
-                        int a = (c.odd_axes & 1) ? 0 : 1, b = (c.odd_axes & 4) ? 2 : 1;
-                        const float e[4] = {at(a, -1), at(a, +1), at(b, -1), at(b, +1)};
-                        mean = face_centre(e, 0.0f);
-                    } else {
-                        const float f[6] = {at(0, -1), at(0, +1), at(1, -1),
-                                            at(1, +1), at(2, -1), at(2, +1)};
-                        mean = cube_centre(f, 0.0f);
+                    float parents[6];  // the parent rule (fractal_node.hpp), g = 0
+                    for (int k = 0; k < 2 * c.odd_count; ++k) {
+                        const ParentStep p = parent_step(c.odd_axes, k);
+                        parents[k] = at(p.axis, p.sign);
                     }
+                    const float mean = node_from_parents(c.odd_count, parents, 0.0f);
                     const double eps = double(v.at(x, y, z) - mean);
                     sum += eps, sum2 += eps * eps, ++count;
                 }

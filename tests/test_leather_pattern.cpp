@@ -393,3 +393,133 @@ TEST_CASE("bad input: a clear status, no crash") {
     REQUIRE(rasterize_scale_labels(huge, 2, 2, labels.data()).ok());
     CHECK(std::count(labels.begin(), labels.end(), 0) == 4);
 }
+
+TEST_CASE("perturbation honours p (issue 13.1): curves that fit keep the requested amplitude") {
+    // Small p on large square scales: no curve comes near its fan triangles' sides or turns
+    // back around a centroid, so every edge keeps exactly the requested curve.
+    SeedLayout s;
+    REQUIRE(square_lattice_seeds(1, 1, 0.25f, 0.0f, 3, &s).ok());
+    PlanarSubdivision sub;
+    REQUIRE(divide_single_stage(s.moved.data(), int(s.moved.size()), 1, 1, &sub).ok());
+    PerturbationParams prm;
+    prm.p = 0.002f;
+    ScalePattern pat;
+    PerturbationReport rep;
+    REQUIRE(perturb_subdivision(sub, prm, 3, 1, 1, &pat, &rep).ok());
+    CHECK(rep.edges > 0);
+    CHECK(rep.shrunk == 0);
+    CHECK(rep.requested_rms > 0.0);
+    CHECK(rep.realised_rms == rep.requested_rms);
+    CHECK(pattern_area(pat) == doctest::Approx(1.0).epsilon(1e-9));
+}
+
+TEST_CASE("perturbation honours p (issue 13.1): fig. 10 grows rougher panel by panel") {
+    // The old slope cap realised 57 % of the requested RMS on fig. 7 and made p = 0.015 and
+    // p = 0.03 look alike; now only the edges that would break the tiling or a scale's star
+    // shape are scaled down.
+    double previous = 0.0;
+    for (float p : {0.0075f, 0.015f, 0.03f}) {
+        ScaleParams prm = fig07();
+        prm.perturbation.p = p;
+        ScaleDivision steps;
+        ScalePattern pat;
+        REQUIRE(generate_scale_pattern(prm, &pat, &steps).ok());
+        const PerturbationReport& r = steps.perturbation;
+        MESSAGE("p = " << p << ": realised RMS " << r.realised_rms << " of " << r.requested_rms
+                       << ", " << r.shrunk << " of " << r.edges << " edges scaled down");
+        CHECK(r.realised_rms > 1.2 * previous);
+        CHECK(r.realised_rms <= r.requested_rms);
+        CHECK(r.shrunk < r.edges);
+        if (p == 0.015f) CHECK(r.realised_rms >= 0.7 * r.requested_rms);
+        previous = r.realised_rms;
+        CHECK(pattern_area(pat) == doctest::Approx(1.0).epsilon(1e-9));
+        CHECK(count_not_star(pat) == 0);
+        std::vector<std::int32_t> labels(256 * 256);
+        CHECK(rasterize_scale_labels(pat, 256, 256, labels.data()).ok());
+    }
+}
+
+TEST_CASE("stage order (issue 13.2): fig. 5's stage-1 curves are fig. 7's row boundaries") {
+    for (std::uint32_t seed : {1u, 2u, 7u})
+        for (float p : {0.015f, 0.03f}) {
+            ScaleParams prm = fig07();
+            prm.seed = seed;
+            prm.perturbation.p = p;
+            ScaleDivision steps;
+            ScalePattern pat;
+            REQUIRE(generate_scale_pattern(prm, &pat, &steps).ok());
+            const ScalePattern& s1 = steps.stage1_pattern;
+            REQUIRE(s1.polygon_count() == steps.stage1.face_count());
+            // every point of every bent stage-1 outline is a vertex of the final pattern, bit
+            // for bit (the stage-2 cells fill the bent stage-1 polygons)
+            std::vector<std::pair<float, float>> final_points;
+            for (const Vec2& v : pat.vertices) final_points.push_back({v.x, v.y});
+            std::sort(final_points.begin(), final_points.end());
+            int missing = 0, bent = 0;
+            for (const Vec2& v : s1.vertices) {
+                missing += !std::binary_search(final_points.begin(), final_points.end(),
+                                               std::make_pair(v.x, v.y));
+                bent += v.x != 0.0f && v.x != 1.0f && v.y != 0.0f && v.y != 1.0f;
+            }
+            CHECK(missing == 0);
+            CHECK(bent > 100);  // the curves are really bent, not just corners
+            // both levels tile the square and stay star-shaped from their centroids
+            CHECK(pattern_area(s1) == doctest::Approx(1.0).epsilon(1e-9));
+            CHECK(pattern_area(pat) == doctest::Approx(1.0).epsilon(1e-9));
+            CHECK(count_not_star(s1) == 0);
+            CHECK(count_not_star(pat) == 0);
+            std::vector<std::int32_t> labels(256 * 256);
+            CHECK(rasterize_scale_labels(pat, 256, 256, labels.data()).ok());
+            CHECK(rasterize_scale_labels(s1, 256, 256, labels.data()).ok());
+            // and each final scale lies in its own bent stage-1 polygon: its centroid does
+            for (int f = 0; f < pat.polygon_count(); ++f) {
+                int n1;
+                const Vec2* outline = s1.polygon(steps.cell_stage1[std::size_t(f)], &n1);
+                CHECK(point_in_polygon(outline, n1, pat.centroids[std::size_t(f)]));
+            }
+        }
+}
+
+TEST_CASE("fuzz finding: fig. 7 scaled to 1e-30 (the two-stage assembly read a stage-1 vertex "
+          "with a final vertex's index)") {
+    ScaleParams prm = fig07();
+    prm.width = prm.height = 1e-30f;
+    prm.D = prm.d = 1e-31f;
+    prm.perturbation.p = 1e-33f;
+    ScalePattern pat;
+    ScaleDivision steps;
+    REQUIRE(generate_scale_pattern(prm, &pat, &steps).ok());
+    CHECK(pat.polygon_count() == 154);
+    CHECK(pattern_area(pat) == doctest::Approx(1e-60).epsilon(1e-6));
+    CHECK(pattern_area(steps.stage1_pattern) == doctest::Approx(1e-60).epsilon(1e-6));
+}
+
+TEST_CASE("fuzz finding: a subnormal height (9e-41) is refused, it left gaps in the pattern") {
+    ScaleParams prm = fig07();
+    prm.width = 3.814697265625e-06f;
+    prm.height = 9.183549615799121e-41f;  // subnormal float
+    prm.D = 0.099609375f;
+    prm.a = 0.5f;
+    ScalePattern pat;
+    Status s = generate_scale_pattern(prm, &pat);
+    CHECK(s.code() == StatusCode::invalid_argument);
+    CHECK(std::string(s.message()).find("normal") != std::string::npos);
+    prm.height = std::numeric_limits<float>::min();  // the smallest normal float is accepted
+    prm.width = prm.D = prm.d = prm.height;
+    CHECK(generate_scale_pattern(prm, &pat).ok());
+}
+
+TEST_CASE("fuzz finding: a region thinner than one seed spacing is refused (it gave no scales)") {
+    ScaleParams prm = fig07();
+    prm.width = 3.814697265625e-06f;
+    prm.height = 7.809722961688017e-29f;
+    prm.D = 0.099609375f;
+    ScalePattern pat;
+    CHECK(generate_scale_pattern(prm, &pat).code() == StatusCode::invalid_argument);
+    prm = fig07();
+    prm.height = 0.05f;  // thinner than D = 0.1
+    CHECK(generate_scale_pattern(prm, &pat).code() == StatusCode::invalid_argument);
+    prm.height = 0.1f;  // exactly one row
+    REQUIRE(generate_scale_pattern(prm, &pat).ok());
+    CHECK(pattern_area(pat) == doctest::Approx(0.1).epsilon(1e-6));
+}

@@ -31,18 +31,12 @@ float correction(const LatticeView& v, int x, int y, int z, int* level) {
         return v.at(x + (ax == 0 ? sign * h : 0), y + (ax == 1 ? sign * h : 0),
                     z + (ax == 2 ? sign * h : 0));
     };
-    float mean;
-    if (c.odd_count == 1) {
-        int ax = c.odd_axes == 1 ? 0 : (c.odd_axes == 2 ? 1 : 2);
-        mean = edge_midpoint(at(ax, -1), at(ax, +1), 0.0f);
-    } else if (c.odd_count == 2) {
-        int a = (c.odd_axes & 1) ? 0 : 1, b = (c.odd_axes & 4) ? 2 : 1;
-        const float e[4] = {at(a, -1), at(a, +1), at(b, -1), at(b, +1)};
-        mean = face_centre(e, 0.0f);
-    } else {
-        const float f[6] = {at(0, -1), at(0, +1), at(1, -1), at(1, +1), at(2, -1), at(2, +1)};
-        mean = cube_centre(f, 0.0f);
+    float parents[6];  // the parent rule of fractal_node.hpp
+    for (int k = 0; k < 2 * c.odd_count; ++k) {
+        const ParentStep p = parent_step(c.odd_axes, k);
+        parents[k] = at(p.axis, p.sign);
     }
+    const float mean = c.odd_count ? node_from_parents(c.odd_count, parents, 0.0f) : v.at(x, y, z);
     return v.at(x, y, z) - mean;
 }
 
@@ -54,6 +48,26 @@ struct Moments {
 };
 
 }  // namespace
+
+TEST_CASE("the parent rule: odd axes in order x-, x+, y-, y+, z-, z+") {
+    // An edge midpoint on y (mask 2): y-, y+.
+    CHECK(parent_step(2, 0).axis == 1);
+    CHECK(parent_step(2, 0).sign == -1);
+    CHECK(parent_step(2, 1).axis == 1);
+    CHECK(parent_step(2, 1).sign == +1);
+    // A face centre on x and z (mask 5): x-, x+, z-, z+.
+    const int face[4] = {0, 0, 2, 2};
+    for (int k = 0; k < 4; ++k) {
+        CHECK(parent_step(5, k).axis == face[k]);
+        CHECK(parent_step(5, k).sign == (k % 2 ? 1 : -1));
+    }
+    // The cube centre (mask 7): x-, x+, y-, y+, z-, z+.
+    for (int k = 0; k < 6; ++k) CHECK(parent_step(7, k).axis == k / 2);
+    const float p6[6] = {1, 2, 3, 4, 5, 6};
+    CHECK(node_from_parents(1, p6, 0.5f) == 2.0f);   // (1 + 2)/2 + 0.5, eq. (1)
+    CHECK(node_from_parents(2, p6, 0.0f) == 2.5f);   // (1+2+3+4)/4, eq. (3)
+    CHECK(node_from_parents(3, p6, 0.0f) == 3.5f);   // 21/6, eq. (4)
+}
 
 TEST_CASE("lattice side is 2^R + 1 and the node classes follow eqs. (1)-(4)") {
     CHECK(lattice_side(6) == 65);

@@ -50,6 +50,7 @@
 #include "shitsukan/geom/bezier_patch_mesh.hpp"
 #include "shitsukan/geom/block_letters.hpp"
 #include "shitsukan/geom/delaunay.hpp"
+#include "shitsukan/geom/double_double.hpp"
 #include "shitsukan/geom/isotropic_remesh.hpp"
 #include "shitsukan/geom/marching_tetrahedra.hpp"
 #include "shitsukan/geom/mesh.hpp"
@@ -97,6 +98,7 @@
 
 // leather
 #include "shitsukan/leather/edge_perturbation.hpp"
+#include "shitsukan/leather/leather.hpp"
 #include "shitsukan/leather/maps.hpp"
 #include "shitsukan/leather/products.hpp"
 #include "shitsukan/leather/relief.hpp"
@@ -120,6 +122,7 @@
 #include "shitsukan/wrinkly/wr_ist_axis.hpp"
 #include "shitsukan/wrinkly/wr_surface.hpp"
 #include "shitsukan/wrinkly/wr_tessellation.hpp"
+#include "shitsukan/wrinkly/wrinkly.hpp"
 
 // bark
 #include "shitsukan/bark/bark.hpp"

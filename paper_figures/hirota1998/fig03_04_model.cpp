@@ -147,14 +147,18 @@ SHITSUKAN_FIGURE(hirota_fig04, "hirota1998", "fig04",
         const std::int32_t l = regions.label[node];
         return l >= 0 && regions.regions[std::size_t(l)].nodes >= 40;
     };
-    for (const BreakEvent& e : run->run.breaks) {
-        const BarkSpring& s = bark.net.springs[e.spring];
-        const int r = bark.row_of(int(s.i));
-        if (s.family != 2 || r < 4 || r > run->params.N_H - 5) continue;
-        if (!big(s.i) || !big(s.j) || regions.label[s.i] == regions.label[s.j]) continue;
-        const float w = crack_ribbon(bark, e.spring, T, W).width;
-        if (w > widest) widest = w, pick = e.spring;
-    }
+    // (Quick mode's small cylinder may have no such pair: then any broken diagonal will do.)
+    for (int pass = 0; pass < 2 && widest < 0; ++pass)
+        for (const BreakEvent& e : run->run.breaks) {
+            const BarkSpring& s = bark.net.springs[e.spring];
+            const int r = bark.row_of(int(s.i));
+            if (s.family != 2 || r < 3 || r > run->params.N_H - 4) continue;
+            if (pass == 0 &&
+                (!big(s.i) || !big(s.j) || regions.label[s.i] == regions.label[s.j]))
+                continue;
+            const float w = crack_ribbon(bark, e.spring, T, W).width;
+            if (w > widest) widest = w, pick = e.spring;
+        }
     if (widest < 0)
         return Status::error(StatusCode::not_supported, "fig04: no broken diagonal to show");
     const CrackRibbon focus = crack_ribbon(bark, pick, T, W);

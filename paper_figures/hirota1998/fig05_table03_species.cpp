@@ -1,5 +1,6 @@
 // hirota1998 fig. 5 (the barks of camphor, Chinese tallow and pine) and Table 3 (the size of
 // the regions bounded by cracks), from the same three runs.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -53,7 +54,8 @@ Status render_trunk(const SpeciesRun& s, const RgbImage& map, float px_per_cm, R
     const ImageView<const Rgb8> tex = map.const_view();
     auto shader = [&](const Fragment& f) {
         // uv is the unrolled position over (C, H): texel = uv times the map's scale.
-        const int x = clamp(int(f.uv.x * C * px_per_cm), 0, tex.width - 1);
+        const int filled = std::max(1, int(C * px_per_cm));  // columns the map really covers
+        const int x = clamp(int(f.uv.x * C * px_per_cm), 0, filled - 1);
         const int y = clamp(int(float(tex.height) - f.uv.y * H * px_per_cm), 0, tex.height - 1);
         const Rgb8 c = tex.at(x, y);
         const Vec3 base{float(c.r) / 255.0f, float(c.g) / 255.0f, float(c.b) / 255.0f};
@@ -121,7 +123,8 @@ SHITSUKAN_FIGURE(hirota_fig05, "hirota1998", "fig05",
         for (int y = 0; y < render_h; ++y)
             for (int x = 0; x < col; ++x) out.at(i * col + x, header + y) = render.at(x, y);
         // The window: 13 cm of the map (its middle), full height.
-        const int ww = int(window_cm * px_per_cm), x0 = (map.width() - ww) / 2;
+        const int ww = std::min(int(window_cm * px_per_cm), map.width());  // quick: whole map
+        const int x0 = (map.width() - ww) / 2;
         const int ox = i * col + (col - ww) / 2, oy = header + render_h + gap;
         for (int y = 0; y < map.height() && oy + y < out.height(); ++y)
             for (int x = 0; x < ww; ++x) out.at(ox + x, oy + y) = map.at(x0 + x, y);

@@ -87,18 +87,17 @@ SHITSUKAN_FIGURE(tokai_fig05, "tokai1994", "fig05",
     ScaleParams prm;
     record_scale_params(ctx, prm);
     ScaleDivision steps;
-    SHITSUKAN_TRY(divide_scales(prm, &steps));
-    ScalePattern stage1;
-    PerturbationReport report;
-    SHITSUKAN_TRY(perturb_subdivision(steps.stage1, prm.perturbation, prm.seed, prm.width,
-                                      prm.height, &stage1, &report));
+    ScalePattern final_pattern;
+    SHITSUKAN_TRY(generate_scale_pattern(prm, &final_pattern, &steps));
+    const ScalePattern& stage1 = steps.stage1_pattern;
+    int interior = 0;
+    for (const PlanarSubdivision::Edge& e : steps.stage1.edges) interior += e.right >= 0;
     ctx.note(fmt(
-        "%d stage-1 polygons, edges perturbed (processing 4, %d interior edges). Left and right "
-        "polygons meet along the centre line in a zig-zag: the joint pattern of §2 (2). "
-        "Stated deviation: the final pattern (fig. 7) divides the straight stage-1 polygons and "
-        "perturbs every final edge once, so a stage-1 edge is bent piece by piece between the "
-        "stage-2 junctions rather than as this one curve (scale_division.hpp).",
-        stage1.polygon_count(), report.edges));
+        "%d stage-1 polygons, each of the %d interior stage-1 edges bent once (processing 4) "
+        "before stage 2, as the paper orders it: these curves are fig. 7's row boundaries point "
+        "for point (perturb_two_stage). Left and right polygons meet along the centre line in a "
+        "zig-zag: the joint pattern of §2 (2).",
+        stage1.polygon_count(), interior));
     const int size = ctx.quick() ? 256 : 512, margin = size / 32;
     const Frame f{float(margin), float(margin), float(size - 2 * margin)};
     return save_png_and_svg(ctx, size, size, [&](Canvas& c) {

@@ -33,8 +33,13 @@ Status panels_figure(FigureContext& ctx, const std::vector<Panel>& panels, const
     for (std::size_t i = 0; i < panels.size(); ++i) {
         ScaleDivision steps;
         SHITSUKAN_TRY(generate_scale_pattern(panels[i].prm, &patterns[i], &steps));
-        note += fmt(" %s: %d scales, largest edge offset %.4f.", panels[i].label.c_str(),
-                    patterns[i].polygon_count(), steps.perturbation.max_offset);
+        const PerturbationReport& r = steps.perturbation;
+        note += fmt(" %s: %d scales, RMS edge offset %.5f of %.5f requested (%.0f %%; %d of %d "
+                    "edges scaled down), largest offset %.4f.",
+                    panels[i].label.c_str(), patterns[i].polygon_count(), r.realised_rms,
+                    r.requested_rms, r.requested_rms > 0 ? 100.0 * r.realised_rms / r.requested_rms
+                                                         : 100.0,
+                    r.shrunk, r.edges, r.max_offset);
     }
     ctx.note(note);
     return save_png_and_svg(ctx, width, height, [&](Canvas& c) {
@@ -64,12 +69,15 @@ SHITSUKAN_FIGURE(tokai_fig07, "tokai1994", "fig07",
             "centre line vs %.4f at 0.1-0.2 W, ratio %.2f (feature (3)).",
             st.cells, st.mean_corners, st.edge_width, st.centre_width, st.edge_to_centre));
     ctx.note(fmt(
-        "%d scales in %d stage-1 polygons; %d interior edges perturbed once each (max offset "
-        "%.4f). "
+        "%d scales in %d stage-1 polygons; %d interior edges perturbed once each with p = 0.015: "
+        "RMS offset %.5f of %.5f requested (%.0f %%), %d edges scaled down to keep the tiling, "
+        "max offset %.4f. "
         "Look for (1) near-quadrilateral scales in regular rows, (2) the joint pattern along the "
         "centre line, (3) scales narrowing toward the left and right edges.",
         pattern.polygon_count(), steps.stage1.face_count(), steps.perturbation.edges,
-        steps.perturbation.max_offset));
+        steps.perturbation.realised_rms, steps.perturbation.requested_rms,
+        100.0 * steps.perturbation.realised_rms / steps.perturbation.requested_rms,
+        steps.perturbation.shrunk, steps.perturbation.max_offset));
     const int size = ctx.quick() ? 256 : 512, margin = size / 32;
     const Frame f{float(margin), float(margin), float(size - 2 * margin)};
     SHITSUKAN_TRY(save_png_and_svg(ctx, size, size, [&](Canvas& c) {
@@ -134,8 +142,8 @@ SHITSUKAN_FIGURE(tokai_fig10, "tokai1994", "fig10", "Effect of the perturbation 
     }
     ctx.chosen("p values", "0, 0.0075, 0.015, 0.03", "the paper's values are not printed");
     ctx.note(
-        "The tiling bound (edge_perturbation.hpp) caps each level's amplitude by the slope the "
-        "two neighbouring scales allow: the coarse level of a D-sized scale saturates near "
-        "p = 0.016, so p = 0.03 looks almost like p = 0.015 (compare the largest offsets).");
+        "Each curve is made with the requested p; only the curves that would leave their fan "
+        "triangles or break a scale's star shape are scaled down (edge_perturbation.hpp), so "
+        "the panels grow rougher from left to right: compare the realised RMS offsets.");
     return panels_figure(ctx, panels, "p (d = 1.0 D, a = 0.25)");
 }

@@ -80,7 +80,8 @@ void record_scale_params(FigureContext& ctx, const ScaleParams& prm) {
             prm.perturbation.levels, double(prm.perturbation.decay)),
         "midpoint displacement is cited without details");
     ctx.chosen("perturbation bound",
-               fmt("slope <= %g x min(fan-triangle base angles, star-shape bound)",
+               fmt("requested p kept; a curve leaving %g of its fan triangles' height, or "
+                   "turning back around its scale's centroid, is scaled down just enough",
                    double(prm.perturbation.safety)),
                "keeps the polygons a tiling and star-shaped (edge_perturbation.hpp)");
     ctx.chosen("random seed", fmt("%u", prm.seed),

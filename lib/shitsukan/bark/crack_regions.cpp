@@ -38,44 +38,59 @@ void strong_springs(const BarkCylinder& bark, float t, std::vector<std::uint8_t>
     }
 }
 
-Status measure_regions(const BarkCylinder& bark, float t, const Vec3* W, RegionReport* out,
-                       int min_nodes) {
-    if (!out || !W)
-        return Status::error(StatusCode::invalid_argument, "measure_regions: null argument");
-    if (!(is_finite(t) && t >= 0.0f))
-        return Status::error(StatusCode::invalid_argument,
-                             "measure_regions: time must be >= 0 (got %g)", double(t));
-    *out = RegionReport{};
-    const SpringNetwork& net = bark.net;
-    const int n = net.node_count();
-    std::vector<std::uint8_t> strong;
-    strong_springs(bark, t, &strong);
+namespace {
 
-    // Step 2: components over strong springs (union-find; roots are the smallest node).
+// Step 2: connected components over strong springs (union-find; roots are the smallest node).
+// component[p] numbers them in order of their first node; size[k] counts their nodes.
+void strong_components(const SpringNetwork& net, const std::vector<std::uint8_t>& strong,
+                       std::vector<std::int32_t>* component, std::vector<std::int32_t>* size) {
+    const int n = net.node_count();
     std::vector<std::int32_t> parent(static_cast<std::size_t>(n));
     for (int p = 0; p < n; ++p) parent[std::size_t(p)] = p;
     for (std::size_t s = 0; s < net.springs.size(); ++s) {
         if (!strong[s]) continue;
-        int a = find_root(parent, int(net.springs[s].i)), b = find_root(parent, int(net.springs[s].j));
+        const int a = find_root(parent, int(net.springs[s].i));
+        const int b = find_root(parent, int(net.springs[s].j));
         if (a != b) parent[std::size_t(std::max(a, b))] = std::min(a, b);
     }
-    std::vector<std::int32_t> component(static_cast<std::size_t>(n), -1), size;
+    component->assign(static_cast<std::size_t>(n), -1);
+    size->clear();
     for (int p = 0; p < n; ++p) {
         const int root = find_root(parent, p);
-        if (component[std::size_t(root)] < 0) {
-            component[std::size_t(root)] = std::int32_t(size.size());
-            size.push_back(0);
+        if ((*component)[std::size_t(root)] < 0) {
+            (*component)[std::size_t(root)] = std::int32_t(size->size());
+            size->push_back(0);
         }
-        component[std::size_t(p)] = component[std::size_t(root)];
-        ++size[std::size_t(component[std::size_t(p)])];
+        (*component)[std::size_t(p)] = (*component)[std::size_t(root)];
+        ++(*size)[std::size_t((*component)[std::size_t(p)])];
     }
-    out->components = int(size.size());
+}
 
-    // Step 3: extents by a walk over strong springs carrying the unrolled position.
+// The cell a node stands for, grown to time t (width around, height along).
+struct GrownCell {
+    float C, width, height, full;  // circumference, cell, "full height" extent
+};
+
+GrownCell grown_cell(const BarkCylinder& bark, float t) {
     const float et = hoop_strain(bark.params, t), ez = axial_strain(bark.params, t);
-    const float C = bark.circumference * (1.0f + et);
-    const float cell_w = bark.a_h * (1.0f + et), cell_h = bark.params.species.L0 * (1.0f + ez);
-    const float full = (float(bark.params.N_H) - 1.5f) * cell_h;
+    GrownCell g;
+    g.C = bark.circumference * (1.0f + et);
+    g.width = bark.a_h * (1.0f + et);
+    g.height = bark.params.species.L0 * (1.0f + ez);
+    g.full = (float(bark.params.N_H) - 1.5f) * g.height;
+    return g;
+}
+
+// Step 3: each component's extents, by a walk over strong springs carrying the unrolled
+// position across the seam; a walk that meets a node again half a circumference away closes
+// around the trunk.
+void region_extents(const BarkCylinder& bark, float t, const Vec3* W,
+                    const std::vector<std::uint8_t>& strong,
+                    const std::vector<std::int32_t>& component,
+                    const std::vector<std::int32_t>& size, int min_nodes, RegionReport* out) {
+    const SpringNetwork& net = bark.net;
+    const int n = net.node_count();
+    const GrownCell cell = grown_cell(bark, t);
     std::vector<Vec3> pos(static_cast<std::size_t>(n));
     std::vector<std::uint8_t> seen(static_cast<std::size_t>(n), 0);
     std::vector<std::uint32_t> stack;
@@ -97,7 +112,7 @@ Status measure_regions(const BarkCylinder& bark, float t, const Vec3* W, RegionR
                 if (!strong[s]) continue;
                 const Vec3 x = pos[p] + spring_offset(bark, net.springs[s], p, t, W);
                 if (seen[q]) {
-                    if (std::fabs(x.x - pos[q].x) > 0.5f * C) region.wraps = true;
+                    if (std::fabs(x.x - pos[q].x) > 0.5f * cell.C) region.wraps = true;
                     continue;
                 }
                 seen[q] = 1;
@@ -106,18 +121,20 @@ Status measure_regions(const BarkCylinder& bark, float t, const Vec3* W, RegionR
                 stack.push_back(q);
             }
         }
-        if (region.nodes < min_nodes) continue;
-        region.width = region.wraps ? C : std::min(C, hi.x - lo.x + cell_w);
-        region.height = hi.y - lo.y + cell_h;
-        region.full_height = hi.y - lo.y >= full;
+        if (region.nodes < min_nodes) continue;  // step 4: crumbs are not regions
+        region.width = region.wraps ? cell.C : std::min(cell.C, hi.x - lo.x + cell.width);
+        region.height = hi.y - lo.y + cell.height;
+        region.full_height = hi.y - lo.y >= cell.full;
         region_of_component[std::size_t(comp)] = std::int32_t(out->regions.size());
         out->regions.push_back(region);
     }
     out->label.resize(static_cast<std::size_t>(n));
     for (int p = 0; p < n; ++p)
         out->label[std::size_t(p)] = region_of_component[std::size_t(component[std::size_t(p)])];
+}
 
-    // Step 4: Table 3's mean and max, width and height separately.
+// Table 3: mean and max of width and of height, separately.
+void table3_statistics(RegionReport* out) {
     double sw = 0, sh = 0;
     for (const BarkRegion& r : out->regions) {
         sw += r.width, sh += r.height;
@@ -129,21 +146,23 @@ Status measure_regions(const BarkCylinder& bark, float t, const Vec3* W, RegionR
         out->mean_width = float(sw / double(out->regions.size()));
         out->mean_height = float(sh / double(out->regions.size()));
     }
+}
 
-    // Intercepts: changes of component around each ring and along each column.
+// The text's "crack spacings": changes of component around each ring and along each column.
+void crack_intercepts(const BarkCylinder& bark, float t,
+                      const std::vector<std::int32_t>& component, RegionReport* out) {
     const int N_R = bark.params.N_R, N_H = bark.params.N_H;
+    const GrownCell cell = grown_cell(bark, t);
     double iw = 0, ih = 0;
     int nw = 0, nh = 0;
+    auto comp = [&](int c, int r) { return component[std::size_t(bark.node(c, r))]; };
     for (int r = 0; r < N_H; ++r) {
         std::vector<int> cuts;
-        for (int c = 0; c < N_R; ++c) {
-            const int c1 = c + 1 == N_R ? 0 : c + 1;
-            if (component[std::size_t(bark.node(c, r))] != component[std::size_t(bark.node(c1, r))])
-                cuts.push_back(c);
-        }
+        for (int c = 0; c < N_R; ++c)
+            if (comp(c, r) != comp(c + 1 == N_R ? 0 : c + 1, r)) cuts.push_back(c);
         for (std::size_t k = 0; k < cuts.size(); ++k) {
-            int gap = k + 1 < cuts.size() ? cuts[k + 1] - cuts[k] : cuts[0] + N_R - cuts[k];
-            const float w = float(gap) * cell_w;
+            const int gap = k + 1 < cuts.size() ? cuts[k + 1] - cuts[k] : cuts[0] + N_R - cuts[k];
+            const float w = float(gap) * cell.width;
             iw += w, ++nw;
             out->intercept_max_width = std::max(out->intercept_max_width, w);
         }
@@ -151,9 +170,9 @@ Status measure_regions(const BarkCylinder& bark, float t, const Vec3* W, RegionR
     for (int c = 0; c < N_R; ++c) {
         int last = -1;
         for (int r = 0; r + 1 < N_H; ++r)
-            if (component[std::size_t(bark.node(c, r))] != component[std::size_t(bark.node(c, r + 1))]) {
+            if (comp(c, r) != comp(c, r + 1)) {
                 if (last >= 0) {
-                    const float h = float(r - last) * cell_h;
+                    const float h = float(r - last) * cell.height;
                     ih += h, ++nh;
                     out->intercept_max_height = std::max(out->intercept_max_height, h);
                 }
@@ -163,6 +182,26 @@ Status measure_regions(const BarkCylinder& bark, float t, const Vec3* W, RegionR
     }
     if (nw) out->intercept_mean_width = float(iw / nw);
     if (nh) out->intercept_mean_height = float(ih / nh);
+}
+
+}  // namespace
+
+Status measure_regions(const BarkCylinder& bark, float t, const Vec3* W, RegionReport* out,
+                       int min_nodes) {
+    if (!out || !W)
+        return Status::error(StatusCode::invalid_argument, "measure_regions: null argument");
+    if (!(is_finite(t) && t >= 0.0f))
+        return Status::error(StatusCode::invalid_argument,
+                             "measure_regions: time must be >= 0 (got %g)", double(t));
+    *out = RegionReport{};
+    std::vector<std::uint8_t> strong;
+    strong_springs(bark, t, &strong);                       // step 1
+    std::vector<std::int32_t> component, size;
+    strong_components(bark.net, strong, &component, &size);  // step 2
+    out->components = int(size.size());
+    region_extents(bark, t, W, strong, component, size, min_nodes, out);  // steps 3-4
+    table3_statistics(out);
+    crack_intercepts(bark, t, component, out);
     return Status::success();
 }
 

@@ -1,6 +1,8 @@
 // hirota1998 §3.1, Fig. 3: the two-layer cylinder (see cylinder_lattice.hpp).
 #include "shitsukan/bark/cylinder_lattice.hpp"
 
+#include <algorithm>
+
 #include "shitsukan/core/hash.hpp"
 #include "shitsukan/core/scalar.hpp"
 
@@ -51,45 +53,39 @@ Vec3 corner_position(const BarkCylinder& bark, Vec3 reference, std::uint32_t p, 
     return cylinder_anchor(bark, reference, t) + W[p] * t;
 }
 
-Status build_cylinder(const CylinderParams& params, BarkCylinder* out, bool reverse_springs) {
-    if (!out)
-        return Status::error(StatusCode::invalid_argument, "build_cylinder: out is null");
-    SHITSUKAN_TRY(validate(params));
-    BarkCylinder& b = *out;
-    b = BarkCylinder{};
-    b.params = params;
-    const int N_R = params.N_R, N_H = params.N_H;
-    const float L0 = params.species.L0;
-    b.R0 = initial_radius(params);
-    b.H0 = initial_height(params);
-    b.a_h = column_spacing(params);
-    b.circumference = float(N_R) * b.a_h;
+namespace {
 
-    // Nodes: u = c·a_h, z = (r + p/2)·L0.
+// §3.1, Table 1: node (c, r) at u = c·a_h, z = (r + p/2)·L0 (p = c mod 2).
+void place_nodes(BarkCylinder& b) {
+    const int N_R = b.params.N_R, N_H = b.params.N_H;
     SpringNetwork& net = b.net;
     net.dim = 2;
-    const int n = N_R * N_H;
-    net.X.resize(static_cast<std::size_t>(n));
+    net.X.resize(static_cast<std::size_t>(N_R * N_H));
     for (int c = 0; c < N_R; ++c)
         for (int r = 0; r < N_H; ++r)
-            net.X[std::size_t(b.node(c, r))] = {float(c) * b.a_h,
-                                                (float(r) + 0.5f * float(c & 1)) * L0, 0.0f};
+            net.X[std::size_t(b.node(c, r))] = {
+                float(c) * b.a_h, (float(r) + 0.5f * float(c & 1)) * b.params.species.L0, 0.0f};
+}
 
-    // Springs in (c, r, dir) order, or reversed.
+// The springs in (c, r, dir) order (or reversed): ends, direction, family, growth rate, the
+// hashed critical strain, the canonical key.
+void make_springs(BarkCylinder& b, bool reverse_springs) {
+    const CylinderParams& params = b.params;
+    const int N_R = params.N_R, N_H = params.N_H;
+    SpringNetwork& net = b.net;
     struct Coord {
         int c, r, dir;
     };
     std::vector<Coord> coords;
-    coords.reserve(std::size_t(3 * n));
+    coords.reserve(std::size_t(3 * N_R * N_H));
     for (int c = 0; c < N_R; ++c)
         for (int r = 0; r < N_H; ++r)
             for (int dir = 0; dir < 3; ++dir) {
                 int c2, r2;
                 if (spring_end(N_R, N_H, c, r, dir, &c2, &r2)) coords.push_back({c, r, dir});
             }
-    if (reverse_springs)
-        for (std::size_t a = 0, z = coords.size() - 1; a < z; ++a, --z) std::swap(coords[a], coords[z]);
-    b.spring_index.assign(std::size_t(3 * n), -1);
+    if (reverse_springs) std::reverse(coords.begin(), coords.end());
+    b.spring_index.assign(std::size_t(3 * N_R * N_H), -1);
     const float rate_u = params.delta_r / b.R0, rate_z = params.delta_h / b.H0;
     net.springs.resize(coords.size());
     for (std::size_t s = 0; s < coords.size(); ++s) {
@@ -100,7 +96,7 @@ Status build_cylinder(const CylinderParams& params, BarkCylinder* out, bool reve
         sp.i = std::uint32_t(b.node(k.c, k.r));
         sp.j = std::uint32_t(b.node(c2, r2));
         sp.n = kDirection[k.dir];
-        sp.l0 = L0;
+        sp.l0 = params.species.L0;
         sp.family = k.dir == 0 ? 1 : 2;  // 1 = axial, 2 = circumferential (MODEL.md §2.2)
         // §3.1: the anchors pull the spring at g_s = (dr/R0) n_u^2 + (dh/H0) n_z^2.
         sp.growth_rate = rate_u * sp.n.x * sp.n.x + rate_z * sp.n.y * sp.n.y;
@@ -109,68 +105,86 @@ Status build_cylinder(const CylinderParams& params, BarkCylinder* out, bool reve
         sp.key = cylinder_spring_key(k.c, k.r, k.dir);
         b.spring_index[std::size_t(3 * b.node(k.c, k.r) + k.dir)] = std::int32_t(s);
     }
+}
 
-    // Triangles of the lattice, corners seam-corrected (MODEL.md §1.1):
-    //   T_up(c, r)    = {(c, r), (c, r+1), up-right(c, r)}
-    //   T_right(c, r) = {(c, r), up-right(c, r), down-right(c, r)}
+// The lattice's triangles with seam-corrected corners (MODEL.md §1.1):
+//   T_up(c, r)    = {(c, r), (c, r+1), up-right(c, r)}
+//   T_right(c, r) = {(c, r), up-right(c, r), down-right(c, r)}
+void make_triangles(BarkCylinder& b) {
+    const int N_R = b.params.N_R, N_H = b.params.N_H;
     auto corner = [&](int c, int r, int from_c) {
-        Vec3 x = net.X[std::size_t(b.node(c, r))];
+        Vec3 x = b.net.X[std::size_t(b.node(c, r))];
         if (c < from_c) x.x += b.circumference;  // across the seam
         return x;
+    };
+    auto triangle = [&](const int (&cr)[3][2], const int (&spring)[3], int c) {
+        ConnectionTriangle t;
+        for (int k = 0; k < 3; ++k) {
+            t.node[k] = std::uint32_t(b.node(cr[k][0], cr[k][1]));
+            t.spring[k] = std::uint32_t(spring[k]);
+            t.corner[k] = corner(cr[k][0], cr[k][1], c);
+        }
+        b.triangles.push_back(t);
     };
     for (int c = 0; c < N_R; ++c) {
         const int p = c & 1, c1 = c + 1 == N_R ? 0 : c + 1;
         for (int r = 0; r < N_H; ++r) {
-            if (r + 1 < N_H && r + p < N_H) {
-                ConnectionTriangle t;
-                t.node[0] = std::uint32_t(b.node(c, r));
-                t.node[1] = std::uint32_t(b.node(c, r + 1));
-                t.node[2] = std::uint32_t(b.node(c1, r + p));
-                t.spring[0] = std::uint32_t(b.spring(c, r, 0));
-                t.spring[1] = std::uint32_t(b.spring(c, r + 1, 2));
-                t.spring[2] = std::uint32_t(b.spring(c, r, 1));
-                t.corner[0] = corner(c, r, c), t.corner[1] = corner(c, r + 1, c);
-                t.corner[2] = corner(c1, r + p, c);
-                b.triangles.push_back(t);
-            }
-            if (r + p < N_H && r + p - 1 >= 0) {
-                ConnectionTriangle t;
-                t.node[0] = std::uint32_t(b.node(c, r));
-                t.node[1] = std::uint32_t(b.node(c1, r + p));
-                t.node[2] = std::uint32_t(b.node(c1, r + p - 1));
-                t.spring[0] = std::uint32_t(b.spring(c, r, 1));
-                t.spring[1] = std::uint32_t(b.spring(c1, r + p - 1, 0));
-                t.spring[2] = std::uint32_t(b.spring(c, r, 2));
-                t.corner[0] = corner(c, r, c), t.corner[1] = corner(c1, r + p, c);
-                t.corner[2] = corner(c1, r + p - 1, c);
-                b.triangles.push_back(t);
-            }
+            if (r + 1 < N_H && r + p < N_H)
+                triangle({{c, r}, {c, r + 1}, {c1, r + p}},
+                         {b.spring(c, r, 0), b.spring(c, r + 1, 2), b.spring(c, r, 1)}, c);
+            if (r + p < N_H && r + p - 1 >= 0)
+                triangle({{c, r}, {c1, r + p}, {c1, r + p - 1}},
+                         {b.spring(c, r, 1), b.spring(c1, r + p - 1, 0), b.spring(c, r, 2)}, c);
         }
     }
-    b.spring_triangles.assign(2 * net.springs.size(), -1);
+    b.spring_triangles.assign(2 * b.net.springs.size(), -1);
     for (std::size_t t = 0; t < b.triangles.size(); ++t)
         for (std::uint32_t s : b.triangles[t].spring) {
             std::int32_t* slot = &b.spring_triangles[2 * s];
             slot[slot[0] < 0 ? 0 : 1] = std::int32_t(t);
         }
+}
 
-    // §5.1 connection areas -> k = E_f·S/l0 (S = face·D), k_sh = G·A/D.
+// §5.1 connection areas -> k = E_f·S/l0 (S = face·D), k_sh = G·A/D.
+Status set_constants(BarkCylinder& b) {
+    SpringNetwork& net = b.net;
+    const int n = net.node_count();
     b.node_area.resize(static_cast<std::size_t>(n));
     b.spring_face.resize(net.springs.size());
     SHITSUKAN_TRY(connection_areas(b.triangles.data(), int(b.triangles.size()), n,
                                    int(net.springs.size()), b.node_area.data(),
                                    b.spring_face.data()));
-    const SpeciesParams& sp = params.species;
+    const SpeciesParams& sp = b.params.species;
     for (std::size_t s = 0; s < net.springs.size(); ++s) {
         BarkSpring& spring = net.springs[s];
         const float E = spring.family == 1 ? sp.E1 : sp.E2;
-        spring.k = spring_constant(E, b.spring_face[s] * params.D, spring.l0);
+        spring.k = spring_constant(E, b.spring_face[s] * b.params.D, spring.l0);
     }
     net.k_anchor.resize(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i)
-        net.k_anchor[std::size_t(i)] = shear_spring_constant(sp.G, b.node_area[std::size_t(i)],
-                                                             params.D);
-    return finalize_network(net);
+        net.k_anchor[std::size_t(i)] =
+            shear_spring_constant(sp.G, b.node_area[std::size_t(i)], b.params.D);
+    return Status::success();
+}
+
+}  // namespace
+
+Status build_cylinder(const CylinderParams& params, BarkCylinder* out, bool reverse_springs) {
+    if (!out)
+        return Status::error(StatusCode::invalid_argument, "build_cylinder: out is null");
+    SHITSUKAN_TRY(validate(params));
+    BarkCylinder& b = *out;
+    b = BarkCylinder{};
+    b.params = params;
+    b.R0 = initial_radius(params);  // Table 1
+    b.H0 = initial_height(params);
+    b.a_h = column_spacing(params);
+    b.circumference = float(params.N_R) * b.a_h;
+    place_nodes(b);
+    make_springs(b, reverse_springs);
+    make_triangles(b);
+    SHITSUKAN_TRY(set_constants(b));
+    return finalize_network(b.net);
 }
 
 }  // namespace shitsukan

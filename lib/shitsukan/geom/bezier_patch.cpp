@@ -46,7 +46,10 @@ PatchPoint patch_point(const BezierPatch& patch, float u, float v) {
             scale = length(du) * length(dv);
         }
     }
-    q.normal = length(n) > 0.0f ? normalize(n) : Vec3{0, 0, 1};
+    // Scaled by its largest component first: near a cusp (or on a tiny patch) the squares of
+    // n's components underflow and a plain normalize() gave normals 1.076 long.
+    const float big = std::fmax(std::fabs(n.x), std::fmax(std::fabs(n.y), std::fabs(n.z)));
+    q.normal = big > 0.0f ? normalize(n / big) : Vec3{0, 0, 1};
     return q;
 }
 

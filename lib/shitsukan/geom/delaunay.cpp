@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdint>
 
-#include "shitsukan/core/assert.hpp"
 #include "shitsukan/geom/predicates.hpp"
 
 namespace shitsukan {
@@ -37,6 +36,14 @@ bool coordinate_in_range(double v) {
     return m == 0.0 || (m >= kDelaunayMinCoordinate && m <= kDelaunayMaxCoordinate);
 }
 
+// A coordinate below the range moved away from the data (direction -1: down, +1: up) onto 0
+// or onto the smallest coordinate of the range.
+double outward_into_range(double v, double direction) {
+    if (v == 0.0 || std::fabs(v) >= kDelaunayMinCoordinate) return v;
+    if ((v > 0.0) == (direction > 0.0)) return direction * kDelaunayMinCoordinate;
+    return 0.0;
+}
+
 struct BoundaryEdge {
     int u, w;          // the edge u -> w as it runs in the cavity triangle (counter-clockwise)
     int outside;       // triangle beyond it, -1 at the frame
@@ -56,6 +63,8 @@ public:
         dt_.triangles.push_back({{n, n + 2, n + 3}, {-1, -1, 0}});
         mark_.assign(2, -1);
         out_mark_.assign(2, -1);
+        starting_at_.assign(dt_.points.size(), -1);
+        ending_at_.assign(dt_.points.size(), -1);
         last_ = 0;
     }
 
@@ -87,9 +96,11 @@ public:
                         dt_.points[std::size_t(tri.v[2])], dt_.points[std::size_t(p)]) > 0.0;
     }
 
-    void insert(int p) {
+    // False if the point's triangle does not hold it in its circumcircle (cannot happen with
+    // exact predicates inside the coordinate range; reported rather than trusted).
+    bool insert(int p) {
         const int start = locate(p);
-        SHITSUKAN_ASSERT(circle_contains(start, p));
+        if (!circle_contains(start, p)) return false;
         // Collect the cavity: the connected triangles whose circumcircle strictly holds p.
         cavity_.clear();
         boundary_.clear();
@@ -131,6 +142,17 @@ public:
             }
             boundary_[k].created = slot;
         }
+        // The cavity's boundary is one cycle: each vertex starts one boundary edge and ends
+        // one, so the new triangles find their neighbours through two vertex-indexed tables
+        // (a scan of the boundary per edge was quadratic in the cavity size).
+        for (const BoundaryEdge& e : boundary_) {
+            starting_at_[std::size_t(e.u)] = -1;
+            ending_at_[std::size_t(e.w)] = -1;
+        }
+        for (const BoundaryEdge& e : boundary_) {
+            starting_at_[std::size_t(e.u)] = e.created;
+            ending_at_[std::size_t(e.w)] = e.created;
+        }
         for (const BoundaryEdge& e : boundary_) {
             DelaunayTriangle& tri = dt_.triangles[std::size_t(e.created)];
             tri.v[0] = p;
@@ -138,21 +160,19 @@ public:
             tri.v[2] = e.w;
             tri.n[0] = e.outside;
             if (e.outside >= 0) dt_.triangles[std::size_t(e.outside)].n[e.outside_slot] = e.created;
-            tri.n[1] = -1;
-            tri.n[2] = -1;
-            for (const BoundaryEdge& f : boundary_) {
-                if (f.u == e.w) tri.n[1] = f.created;  // across w -> p
-                if (f.w == e.u) tri.n[2] = f.created;  // across p -> u
-            }
-            SHITSUKAN_ASSERT(tri.n[1] >= 0 && tri.n[2] >= 0);
+            tri.n[1] = starting_at_[std::size_t(e.w)];  // across w -> p: the edge from w
+            tri.n[2] = ending_at_[std::size_t(e.u)];    // across p -> u: the edge into u
+            if (tri.n[1] < 0 || tri.n[2] < 0) return false;
             mark_[std::size_t(e.created)] = -1;
         }
         last_ = boundary_[0].created;
+        return true;
     }
 
 private:
     DelaunayTriangulation& dt_;
     std::vector<int> mark_, out_mark_, cavity_;
+    std::vector<int> starting_at_, ending_at_;  // per point: new triangle of its boundary edge
     std::vector<BoundaryEdge> boundary_;
     int last_ = 0;
 };
@@ -198,6 +218,10 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
                 return Status::error(StatusCode::invalid_argument,
                                      "build_delaunay: the box to cover reaches %g, beyond %g", c,
                                      kDelaunayMaxCoordinate);
+        // coordinates below the range only need covering: move them outward onto 0 or the
+        // smallest coordinate of the range (the box grows by at most 1e-50)
+        cover_lo = {outward_into_range(cover_lo.x, -1.0), outward_into_range(cover_lo.y, -1.0)};
+        cover_hi = {outward_into_range(cover_hi.x, 1.0), outward_into_range(cover_hi.y, 1.0)};
         lo_x = std::min(lo_x, cover_lo.x);
         hi_x = std::max(hi_x, cover_hi.x);
         lo_y = std::min(lo_y, cover_lo.y);
@@ -208,12 +232,17 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
     // The frame: a square 10 half-extents out, so frame points never fall near the data.
     double cx = 0.5 * (lo_x + hi_x), cy = 0.5 * (lo_y + hi_y);
     double half = std::max(hi_x - lo_x, hi_y - lo_y) * 0.5;
-    if (!(half > 0.0)) half = std::max(1.0, std::fabs(cx) + std::fabs(cy));
+    // Points far narrower than their coordinates ((0, 0.5) and (1e-17, 0.5)) would put the
+    // frame within rounding of the data (0.5 + 5e-17 == 0.5): at least 2^-20 of the magnitude.
+    half = std::max(half, std::ldexp(std::max(std::fabs(cx), std::fabs(cy)), -20));
+    if (!(half > 0.0)) half = 1.0;
     double m = 10.0 * half;
-    out->points.push_back({cx - m, cy - m});
-    out->points.push_back({cx + m, cy - m});
-    out->points.push_back({cx + m, cy + m});
-    out->points.push_back({cx - m, cy + m});
+    const double fx0 = outward_into_range(cx - m, -1.0), fx1 = outward_into_range(cx + m, 1.0);
+    const double fy0 = outward_into_range(cy - m, -1.0), fy1 = outward_into_range(cy + m, 1.0);
+    out->points.push_back({fx0, fy0});
+    out->points.push_back({fx1, fy0});
+    out->points.push_back({fx1, fy1});
+    out->points.push_back({fx0, fy1});
 
     // Insertion order: Hilbert index, then coordinates, then index (duplicates end adjacent,
     // the smallest index first).
@@ -247,14 +276,18 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
     builder.start_frame();
     for (std::size_t k = 0; k < order.size(); ++k) {
         int i = order[k].i;
-        if (k > 0 && points[order[k - 1].i] == points[i]) {
+        if (k > 0 && out->points[k - 1] == out->points[k]) {  // sequential, not random reads
             int first = order[k - 1].i;
             out->duplicate_of[std::size_t(i)] = out->duplicate_of[std::size_t(first)] >= 0
                                                     ? out->duplicate_of[std::size_t(first)]
                                                     : first;
             continue;
         }
-        builder.insert(int(k));
+        if (!builder.insert(int(k)))
+            return Status::error(StatusCode::degenerate,
+                                 "build_delaunay: point %d = (%.17g, %.17g) could not be inserted "
+                                 "(its triangle's circle does not hold it)",
+                                 i, points[i].x, points[i].y);
     }
     if (!keep_hilbert_numbering) {
         std::copy(points, points + count, out->points.begin());

@@ -9,7 +9,11 @@
 //   dt.point_triangle[i]     one triangle incident to point i (-1 for a duplicate point)
 //   dt.duplicate_of[i]       -1, or the smallest index of an identical earlier point
 //
-// Coordinate range: each coordinate is 0 or has magnitude in [1e-50, 1e50] (else a Status).
+// Coordinate range: each coordinate is 0 or has magnitude in [1e-50, 1e50] (else a Status);
+// a box to cover may reach below 1e-50 (it is widened onto the range). The frame is at least
+// 2^-20 of the coordinates' magnitude wide, so points far narrower than their coordinates
+// ((0, 0.5) and (1e-17, 0.5)) still get a frame distinct from them. An insertion that finds no
+// cavity is reported as a Status (degenerate), never an abort.
 // The in-circle determinant is a degree-4 polynomial of coordinate differences; outside this
 // range its products (or their rounding-error terms) overflow or underflow, the "exact" sign
 // is lost and the insertion could not find its cavity.

@@ -2,18 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include "shitsukan/geom/double_double.hpp"
 #include "shitsukan/geom/predicates.hpp"
 
 namespace shitsukan {
 namespace {
 
 template <class V> double area_of(const V* v, int n) {
+    if (n < 3) return 0.0;
+    // Relative to the first vertex: far from the origin the products x * y would cancel.
+    const double ox = double(v[0].x), oy = double(v[0].y);
     double twice = 0.0;
-    for (int i = 0; i < n; ++i) {
-        const V& a = v[i];
-        const V& b = v[(i + 1) % n];
-        twice += double(a.x) * double(b.y) - double(b.x) * double(a.y);
+    for (int i = 1; i + 1 < n; ++i) {
+        double ax = double(v[i].x) - ox, ay = double(v[i].y) - oy;
+        double bx = double(v[i + 1].x) - ox, by = double(v[i + 1].y) - oy;
+        twice += ax * by - bx * ay;
     }
     return 0.5 * twice;
 }
@@ -79,6 +84,9 @@ Vec2d polygon_centroid(const Vec2* v, int n) { return centroid_of(v, n); }
 bool point_in_polygon(const Vec2d* v, int n, Vec2d q) { return inside_of<Vec2d, double>(v, n, q); }
 bool point_in_polygon(const Vec2* v, int n, Vec2 q) { return inside_of<Vec2, double>(v, n, q); }
 
+// 0 for a direction in [0, pi) (measured from +x), 1 for [pi, 2 pi).
+int direction_half(Vec2d d) { return (d.y < 0.0 || (d.y == 0.0 && d.x < 0.0)) ? 1 : 0; }
+
 Status check_convex_region(const Vec2d* region, int m) {
     if (region == nullptr || m < 3)
         return Status::error(StatusCode::invalid_argument,
@@ -89,34 +97,117 @@ Status check_convex_region(const Vec2d* region, int m) {
                                  "region: vertex %d = (%g, %g) is not finite", i, region[i].x,
                                  region[i].y);
     }
+    for (int i = 0; i < m; ++i)
+        if (region[i] == region[(i + 1) % m])
+            return Status::error(StatusCode::invalid_argument,
+                                 "region: vertices %d and %d are the same point (%g, %g)", i,
+                                 (i + 1) % m, region[i].x, region[i].y);
+    int left_turns = 0, wraps = 0;
     for (int i = 0; i < m; ++i) {
-        if (orient2d(region[i], region[(i + 1) % m], region[(i + 2) % m]) < 0.0)
+        const Vec2d a = region[i], b = region[(i + 1) % m], c = region[(i + 2) % m];
+        const double o = orient2d(a, b, c);
+        if (o < 0.0)
             return Status::error(StatusCode::invalid_argument,
                                  "region: not convex and counter-clockwise at vertex %d",
                                  (i + 1) % m);
+        // straight on: the next edge must not turn back along this one (exact: the edges are
+        // collinear, so comparing coordinates decides the direction)
+        if (o == 0.0 && ((b.x - a.x > 0.0) != (c.x - b.x > 0.0) ||
+                         (b.x - a.x < 0.0) != (c.x - b.x < 0.0) ||
+                         (b.y - a.y > 0.0) != (c.y - b.y > 0.0) ||
+                         (b.y - a.y < 0.0) != (c.y - b.y < 0.0)))
+            return Status::error(StatusCode::invalid_argument,
+                                 "region: the outline turns back at vertex %d", (i + 1) % m);
+        left_turns += o > 0.0;
+        // every turn is in [0, pi): the direction angle passes 2 pi -> 0 exactly when it goes
+        // from the lower half to the upper half
+        wraps += direction_half(b - a) == 1 && direction_half(c - b) == 0;
     }
-    double area = polygon_area(region, m);
-    if (!(area > 0.0))
+    if (left_turns == 0)
         return Status::error(StatusCode::invalid_argument,
-                             "region: empty (area %g); need a convex counter-clockwise polygon",
-                             area);
+                             "region: all %d vertices are collinear (area 0)", m);
+    if (wraps != 1)
+        return Status::error(StatusCode::invalid_argument,
+                             "region: the outline winds %d times around (must be once: a convex "
+                             "counter-clockwise polygon)",
+                             wraps);
     return Status::success();
 }
 
 double clip_snap_distance(const Vec2d* region, int m) {
     // Snap distance: rounded Voronoi vertices of a lattice that should lie ON the boundary
-    // (x = 7 * (1/7) ...) miss it by an ulp and would leave cells 1e-17 wide.
-    double diameter = 0.0;
+    // miss it by an ulp and would leave cells 1e-17 wide. Relative to the smaller of the
+    // diameter and the width (the largest distance of a vertex from an edge's line, smallest
+    // over the edges), so a thin region is not snapped away.
+    double diameter = 0.0, width = std::numeric_limits<double>::infinity();
     for (int i = 0; i < m; ++i)
         for (int j = i + 1; j < m; ++j)
             diameter = std::max(diameter, length(region[i] - region[j]));
-    return kClipSnapRelative * diameter;
+    for (int k = 0; k < m; ++k) {
+        const Vec2d b0 = region[k], e = region[(k + 1) % m] - b0;
+        const double el = length(e);
+        if (!(el > 0.0)) continue;
+        double reach = 0.0;
+        for (int i = 0; i < m; ++i) reach = std::max(reach, std::fabs(cross(e, region[i] - b0)) / el);
+        width = std::min(width, reach);
+    }
+    return kClipSnapRelative * std::min(diameter, width);
 }
 
 void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, int m,
                            std::vector<ClipVertex>* scratch) {
     clip_to_convex_region(poly, region, m, clip_snap_distance(region, m), scratch);
 }
+
+namespace {
+
+// The point where the bisector of s and t meets the line b0 -> b1, in double-double:
+// X = b0 + u (b1 - b0), u = (|t - b0|^2 - |s - b0|^2) / (2 (b1 - b0) . (t - s)). s, t in
+// lexicographic order, so both cells of the edge get the same bits. False when parallel.
+bool bisector_meets_line(Vec2d s, Vec2d t, Vec2d b0, Vec2d b1, Vec2d* x) {
+    if (lex_less(t, s)) std::swap(s, t);
+    const DoubleDouble sx = dd_diff(s.x, b0.x), sy = dd_diff(s.y, b0.y);
+    const DoubleDouble tx = dd_diff(t.x, b0.x), ty = dd_diff(t.y, b0.y);
+    const DoubleDouble ex = dd_diff(b1.x, b0.x), ey = dd_diff(b1.y, b0.y);
+    const DoubleDouble dx = dd_diff(t.x, s.x), dy = dd_diff(t.y, s.y);
+    const DoubleDouble num = dd_sub(dd_add(dd_mul(tx, tx), dd_mul(ty, ty)),
+                                    dd_add(dd_mul(sx, sx), dd_mul(sy, sy)));
+    const DoubleDouble den = dd_scale(dd_add(dd_mul(ex, dx), dd_mul(ey, dy)), 2.0);
+    if (den.hi == 0.0) return false;
+    // num and den carry ~2^-104 of their terms' size as error; if that could move the point
+    // by more than ~2^-60 of its own coordinates (sites far closer to each other than to the
+    // line), the interpolation between the edge's end points is used instead
+    const double num_terms = tx.hi * tx.hi + ty.hi * ty.hi + sx.hi * sx.hi + sy.hi * sy.hi;
+    const double den_terms = 2.0 * (std::fabs(ex.hi * dx.hi) + std::fabs(ey.hi * dy.hi));
+    const double e_len = std::fabs(ex.hi) + std::fabs(ey.hi);
+    const double u_error = std::ldexp(num_terms + std::fabs(num.hi / den.hi) * den_terms, -100) /
+                           std::fabs(den.hi);
+    const double u_estimate = std::fabs(num.hi / den.hi);
+    const double mag = std::fabs(b0.x) + std::fabs(b0.y) + e_len * (1.0 + u_estimate);
+    if (!(u_error * e_len <= std::ldexp(mag, -60))) return false;  // relative to the point
+    const DoubleDouble u = dd_div(num, den);
+    *x = {dd_round(dd_add(dd_from(b0.x), dd_mul(u, ex))),
+          dd_round(dd_add(dd_from(b0.y), dd_mul(u, ey)))};
+    return is_finite(*x);
+}
+
+// The point where the line a0 -> a1 meets the line b0 -> b1 (double-double). False when
+// parallel.
+bool lines_meet(Vec2d a0, Vec2d a1, Vec2d b0, Vec2d b1, Vec2d* x) {
+    // a0 + u (a1 - a0) on line b: u = cross(b1 - b0, b0 - a0) / cross(b1 - b0, a1 - a0)
+    const DoubleDouble ex = dd_diff(b1.x, b0.x), ey = dd_diff(b1.y, b0.y);
+    const DoubleDouble fx = dd_diff(a1.x, a0.x), fy = dd_diff(a1.y, a0.y);
+    const DoubleDouble gx = dd_diff(b0.x, a0.x), gy = dd_diff(b0.y, a0.y);
+    const DoubleDouble num = dd_sub(dd_mul(ex, gy), dd_mul(ey, gx));
+    const DoubleDouble den = dd_sub(dd_mul(ex, fy), dd_mul(ey, fx));
+    if (den.hi == 0.0) return false;
+    const DoubleDouble u = dd_div(num, den);
+    *x = {dd_round(dd_add(dd_from(a0.x), dd_mul(u, fx))),
+          dd_round(dd_add(dd_from(a0.y), dd_mul(u, fy)))};
+    return is_finite(*x);
+}
+
+}  // namespace
 
 void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, int m, double snap,
                            std::vector<ClipVertex>* scratch) {
@@ -159,7 +250,13 @@ void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, i
             const ClipVertex& nxt = in[std::size_t((i + 1) % n)];
             double sc = side[i];
             double sn = side[(i + 1) % n];
-            if (sc >= 0.0) out.push_back(cur);
+            if (sc >= 0.0) {
+                out.push_back(cur);
+                if (sc == 0.0 && sn <= 0.0) {  // the boundary continues along edge k
+                    out.back().has_bisector = false;
+                    out.back().along = k;
+                }
+            }
             if ((sc > 0.0 && sn < 0.0) || (sc < 0.0 && sn > 0.0)) {
                 // canonical order of the segment's end points: the same bits from both cells
                 const ClipVertex* a = &cur;
@@ -171,14 +268,36 @@ void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, i
                     sa = sn;
                     sb = sc;
                 }
-                double t = sa / (sa - sb);
                 ClipVertex x;
-                x.p = {a->p.x + t * (b->p.x - a->p.x), a->p.y + t * (b->p.y - a->p.y)};
+                bool made = false;
+                if (cur.has_bisector) {
+                    made = bisector_meets_line(cur.bisector[0], cur.bisector[1], b0, b1, &x.p);
+                } else if (cur.along >= 0) {
+                    const int j = cur.along;
+                    if ((j + 1) % m == k)
+                        x.p = b0, made = true;  // consecutive region edges: their vertex
+                    else if ((k + 1) % m == j)
+                        x.p = b1, made = true;
+                    else
+                        made = lines_meet(region[j], region[(j + 1) % m], b0, b1, &x.p);
+                }
+                if (!made) {
+                    double t = sa / (sa - sb);
+                    x.p = {a->p.x + t * (b->p.x - a->p.x), a->p.y + t * (b->p.y - a->p.y)};
+                }
                 if (b0.x == b1.x) x.p.x = b0.x;  // on an axis-parallel edge: exact coordinate
                 if (b0.y == b1.y) x.p.y = b0.y;
                 add_label(x, k);
                 for (int j = 0; j < 2; ++j)
                     if (a->on[j] >= 0 && has_label(*b, a->on[j])) add_label(x, a->on[j]);
+                if (sc > 0.0) {  // leaving: the boundary continues along edge k
+                    x.along = k;
+                } else {  // entering: the rest of the cut edge
+                    x.has_bisector = cur.has_bisector;
+                    x.bisector[0] = cur.bisector[0];
+                    x.bisector[1] = cur.bisector[1];
+                    x.along = cur.along;
+                }
                 out.push_back(x);
             }
         }

@@ -5,13 +5,22 @@
 //   Vec2d m = polygon_centroid(v, n);        // area centroid (the "m" of tokai1994 fig. 12)
 //   bool in = point_in_polygon(v, n, q);     // crossing rule, half-open: see below
 //   Status s = check_convex_region(r, m);    // r: m >= 3 vertices, convex, CCW, area > 0
-//                                            // (collinear vertices allowed)
+//                                            // (collinear vertices allowed, see below)
 //   clip_to_convex_region(poly, r, m, &scratch);  // Sutherland-Hodgman, exact sides
 //
 // point_in_polygon counts crossings of the ray from q toward +x with the edges, each edge
 // taken as half-open in y ([ymin, ymax)) and crossing x computed from the edge's lower end
 // point, so a point on an edge shared by two polygons (same end points, bit for bit) is
 // inside exactly one of them. Float and double versions.
+//
+// polygon_area and polygon_centroid work relative to the first vertex, so a polygon far from
+// the origin keeps its digits (and its sign).
+//
+// check_convex_region is exact (orient2d): every turn is to the left or straight on, no edge
+// has length 0, no straight-on vertex turns back (a spike), and the edge directions go round
+// exactly once (a doubly wound pentagram-like outline turns left everywhere and is refused).
+// So a region that passes is a convex counter-clockwise polygon with area > 0, whatever its
+// position or scale.
 //
 // Clipping (Sutherland & Hodgman 1974) against each region edge k in turn: a vertex is kept
 // when the EXACT orientation (predicates.hpp) puts it inside or on the edge's line, an
@@ -20,8 +29,17 @@
 // the same bits; on an axis-parallel region edge the fixed coordinate is copied exactly. Each
 // vertex records up to two region edges it lies on (ClipVertex::on), which lets a caller find
 // the parts of a cell's boundary that run along the region's boundary. A vertex closer than
-// kClipSnapRelative * (region diameter) to an edge's line is moved onto it (chosen here: the
-// rounded lattice vertex 7 * (1/7) misses x = 1 by an ulp and would leave a cell 1e-17 wide).
+// kClipSnapRelative * min(region diameter, region width) to an edge's line is moved onto it
+// (chosen here: a rounded lattice vertex that should lie on x = 1 can miss it by an ulp and
+// would leave a cell 1e-17 wide; the width keeps a thin region from being snapped away).
+//
+// Where the edge leaving a vertex carries its SUPPORT (ClipVertex::bisector: the two sites
+// whose bisector it lies on, or ClipVertex::along: the region edge it runs along), the
+// intersection with a region edge is constructed from that support and the region edge alone,
+// in double-double (double_double.hpp), with the two sites in lexicographic order: the point
+// is then correctly rounded and independent of how far away the edge's end points are (a
+// Voronoi vertex 1e9 away no longer drags the clip point off by 1e-7). Without a support the
+// intersection is interpolated between the end points.
 // Cost: area, centroid and containment O(n); clipping O(n m) for n cell and m region vertices.
 #pragma once
 
@@ -32,6 +50,8 @@
 
 namespace shitsukan {
 
+// (double shoelace: a polygon whose area is far below its coordinates times an ulp, e.g. a
+// triangle of area 0.4 reaching 1e34, comes out 0; check_convex_region is exact)
 double polygon_area(const Vec2d* v, int n);
 double polygon_area(const Vec2* v, int n);  // accumulated in double
 Vec2d polygon_centroid(const Vec2d* v, int n);
@@ -46,6 +66,10 @@ constexpr double kClipSnapRelative = 1e-12;
 struct ClipVertex {
     Vec2d p;
     int on[2] = {-1, -1};  // region edges (index k: region[k] -> region[k + 1]) through p
+    // Support of the edge from this vertex to the next one (optional, see above).
+    Vec2d bisector[2] = {};     // the edge lies on the bisector of these two sites ...
+    bool has_bisector = false;  // ... when true
+    int along = -1;             // or on region edge `along` (>= 0)
 };
 
 // poly: a convex counter-clockwise polygon, replaced by its part inside the region (possibly

@@ -208,6 +208,56 @@ double incircle_exact(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
     return expansion_sign_value(tl, total);
 }
 
+namespace {
+
+// e = p - q for two products taken exactly (4 components at most).
+int two_products_diff(double a, double b, double c, double d, double* e) {
+    double p[2], q[2];
+    two_product(a, b, p[1], p[0]);
+    two_product(c, d, q[1], q[0]);
+    q[0] = -q[0];
+    q[1] = -q[1];
+    return fast_expansion_sum(2, p, 2, q, e);
+}
+
+// lift * cross with lift = x^2 + y^2, exactly (x, y doubles; cross an expansion of <= 4).
+int lifted_term(double x, double y, const double* cross_e, int cl, double* out) {
+    double xc[8], xxc[16], yc[8], yyc[16];
+    int l1 = scale_expansion(cl, cross_e, x, xc);
+    int l2 = scale_expansion(l1, xc, x, xxc);
+    int l3 = scale_expansion(cl, cross_e, y, yc);
+    int l4 = scale_expansion(l3, yc, y, yyc);
+    return fast_expansion_sum(l2, xxc, l4, yyc, out);
+}
+
+// The in-circle determinant exactly; when the six coordinate differences are exact in doubles
+// (two_diff leaves no tail: nearby points, Sterbenz), Shewchuk's stage B alone is exact and
+// ~10x cheaper than the general expansion (what lattices, whose determinants are exactly 0,
+// spend their time on). Only the sign and zero-ness of the result are specified.
+double incircle_exact_differences(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
+    double adx, bdx, cdx, ady, bdy, cdy, t[6];
+    two_diff(a.x, d.x, adx, t[0]);
+    two_diff(b.x, d.x, bdx, t[1]);
+    two_diff(c.x, d.x, cdx, t[2]);
+    two_diff(a.y, d.y, ady, t[3]);
+    two_diff(b.y, d.y, bdy, t[4]);
+    two_diff(c.y, d.y, cdy, t[5]);
+    if (t[0] != 0.0 || t[1] != 0.0 || t[2] != 0.0 || t[3] != 0.0 || t[4] != 0.0 || t[5] != 0.0)
+        return incircle_exact(a, b, c, d);
+    double bc[4], ca[4], ab[4], adet[32], bdet[32], cdet[32], abdet[64], fin[96];
+    int bcl = two_products_diff(bdx, cdy, cdx, bdy, bc);
+    int cal = two_products_diff(cdx, ady, adx, cdy, ca);
+    int abl = two_products_diff(adx, bdy, bdx, ady, ab);
+    int al = lifted_term(adx, ady, bc, bcl, adet);
+    int bl = lifted_term(bdx, bdy, ca, cal, bdet);
+    int cl = lifted_term(cdx, cdy, ab, abl, cdet);
+    int abl2 = fast_expansion_sum(al, adet, bl, bdet, abdet);
+    int fl = fast_expansion_sum(abl2, abdet, cl, cdet, fin);
+    return expansion_sign_value(fl, fin);
+}
+
+}  // namespace
+
 double incircle(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
     double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
     double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
@@ -223,7 +273,7 @@ double incircle(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
                        (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
     const double errbound = (10.0 + 96.0 * kEpsilon) * kEpsilon;  // Shewchuk's iccerrboundA
     if (std::fabs(det) > errbound * permanent) return det;
-    return incircle_exact(a, b, c, d);
+    return incircle_exact_differences(a, b, c, d);
 }
 
 }  // namespace shitsukan

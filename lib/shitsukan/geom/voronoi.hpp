@@ -17,7 +17,11 @@
 // (incircle == 0) are merged, so a lattice cell has exactly 4 or 6 vertices, never a
 // zero-length edge. Each Voronoi vertex is computed once, as the circumcentre of the three
 // lexicographically smallest sites on its circle, so every cell around it gets the same bits,
-// whatever the order of the input or of insertion. Vertices are rounded doubles.
+// whatever the order of the input or of insertion. Vertices are correctly rounded doubles:
+// the circumcentre and the points where a cell edge (a bisector) meets a region edge are
+// constructed in double-double from the sites and the region (double_double.hpp, polygon.hpp),
+// never from the far ends of an edge, so sites an ulp apart, sites 1e8 away from a small
+// region and thin regions all give cells that tile the region.
 //
 // Stated cases: a duplicate site (same bits as an earlier one) gets an EMPTY cell; the first
 // occurrence owns the region. Collinear sites give parallel strips. A single site owns the
@@ -51,7 +55,8 @@ struct VoronoiCells {
     }
 };
 
-// sites: count >= 1 finite points. region: a convex counter-clockwise polygon, area > 0.
+// sites: count >= 1 finite points. region: a convex counter-clockwise polygon, area > 0
+// (check_convex_region, exact). Sites and region coordinates: 0 or magnitude in [1e-50, 1e50].
 Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int region_count,
                      VoronoiCells* out);
 

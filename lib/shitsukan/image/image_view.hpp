@@ -43,17 +43,23 @@ template <class P> struct ImageView {
     }
     // The rectangle [x0, x0+w) x [y0, y0+h), clipped to this view.
     ImageView subview(int x0, int y0, int w, int h) const {
-        if (x0 < 0) {
-            w += x0;
-            x0 = 0;
+        // in 64 bits: x0 + w and w + x0 overflow int for large arguments
+        long long lx = x0, ly = y0, lw = w, lh = h;
+        if (lx < 0) {
+            lw += lx;
+            lx = 0;
         }
-        if (y0 < 0) {
-            h += y0;
-            y0 = 0;
+        if (ly < 0) {
+            lh += ly;
+            ly = 0;
         }
-        if (x0 + w > width) w = width - x0;
-        if (y0 + h > height) h = height - y0;
-        if (w <= 0 || h <= 0 || empty()) return ImageView{};
+        if (lx + lw > width) lw = width - lx;
+        if (ly + lh > height) lh = height - ly;
+        if (lw <= 0 || lh <= 0 || empty()) return ImageView{};
+        x0 = int(lx);
+        y0 = int(ly);
+        w = int(lw);
+        h = int(lh);
         return ImageView{pixels + std::size_t(y0) * std::size_t(stride) + std::size_t(x0), w, h,
                          stride};
     }

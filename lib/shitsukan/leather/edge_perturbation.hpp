@@ -15,24 +15,29 @@
 // hashed from the seed, the bit patterns of A and B and the midpoint's index (core/hash.hpp),
 // so the curve does not depend on which polygon asks first. Points: A + s (B - A) + f(s) n.
 //
-// Bound that keeps the tiling (chosen here, and why it suffices). Each polygon is convex
-// before perturbation; let c be its centroid. The fan triangles (A, B, c) over all edges of
-// all polygons partition the region. Let G bound the curve's slope |f'| against its chord.
-// (i) If G < tan of the four base angles of the edge's two fan triangles, the curve lies in
-// the rhombus |f(s)| <= G min(s, l - s), inside the union of its two fan triangles: curves of
-// different edges cannot cross or touch, so no gap, no overlap, no self-intersection.
-// (ii) If moreover |s - s0| G + G min(s, l - s) < h along the chord for both neighbours (h:
-// distance from c to the chord's line, s0: c's foot), the angle seen from c grows
-// monotonically along the curve, so every polygon stays star-shaped from c (the relief step
-// casts rays from the centroid). G = safety · min(bounds (i), (ii)), safety = 0.6.
-// The slope of a midpoint-displacement curve is at most sum_k amp_k / (l / 2^k), so G is
-// enforced by capping each level's amplitude: level k gets the share 2^-k / (1 - 2^-L) of
-// G (coarse bends keep their amplitude, fine wiggles give way first). Edges on the outer
+// The requested amplitude, and what keeps the tiling (chosen here). Every curve is first made
+// with the requested p; only a curve that would break the tiling is scaled down, as a whole
+// (offsets lambda f, lambda < 1), just enough. Each polygon is convex before perturbation; let
+// c be its centroid. The fan triangles (A, B, c) over all edges of all polygons partition the
+// region. A curve is accepted when (i) every point stays strictly inside `safety` times the
+// height of the fan triangle on its side of the chord: curves of different edges then lie in
+// disjoint triangles and cannot cross or touch (no gap, no overlap, no self-intersection: the
+// curve is a graph over its chord); and (ii) seen from both centres the curve turns
+// monotonically, so every polygon stays star-shaped from c. lambda is 1 when the curve fits,
+// else the largest value that fits (bisection to 2^-20). Finally every polygon, rounded to
+// float, must be counter-clockwise and star-shaped from its own float centroid (the relief
+// step casts rays from it); a polygon that is not halves its bent edges and is checked again
+// (after 12 halvings the edges go straight: the polygon is convex again). The report gives the
+// RMS offset requested and realised and the number of edges scaled down. Edges on the outer
 // boundary stay straight: the union of the polygons is the rectangle exactly.
-// Cost: O(E 2^L) time and memory for E interior edges and L levels.
+// (Until 2026-11 every edge's slope was capped by a bound at 0.6 of the worst case: fig. 7
+// realised 57 % of the requested RMS and fig. 10's p = 0.015 and p = 0.03 looked alike.)
+// Cost: O(E 2^L) time and memory for E interior edges and L levels (x 20 for the edges that
+// need the bisection).
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/geom/planar_subdivision.hpp"
@@ -44,15 +49,17 @@ struct PerturbationParams {
     float p = 0.015f;     // given (fig. 7): first-level amplitude, pattern units (W = 1)
     int levels = 4;       // chosen: 2^4 = 16 segments per edge, smooth at 512 px
     float decay = 0.5f;   // chosen: amplitude halves with the segment (H = 1)
-    float safety = 0.6f;  // chosen: fraction of the tiling bound actually used
+    float safety = 0.6f;  // chosen: share of the fan triangle's height a curve may use
 };
 
 constexpr int kMaxPerturbationLevels = 10;
 
 struct PerturbationReport {
-    int edges = 0;            // interior edges perturbed
-    int clamped = 0;          // edges where some level's amplitude was capped by the bound
-    double max_offset = 0.0;  // largest |f| over all edges
+    int edges = 0;               // interior edges perturbed
+    int shrunk = 0;              // edges scaled down (lambda < 1) to keep the tiling
+    double max_offset = 0.0;     // largest realised |f| over all edges
+    double requested_rms = 0.0;  // RMS offset of the curves made with the requested p
+    double realised_rms = 0.0;   // RMS offset after scaling down (== requested: p honoured)
 };
 
 // The offsets f[0 .. 2^levels] of the edge a-b (any order: the canonical order is used inside).
@@ -65,6 +72,22 @@ void midpoint_displacement(Vec2d a, Vec2d b, const PerturbationParams& prm, std:
 Status perturb_subdivision(const PlanarSubdivision& sub, const PerturbationParams& prm,
                            std::uint32_t seed, float width, float height, ScalePattern* out,
                            PerturbationReport* report = nullptr);
+
+// tokai1994's stage order (§3.1): the stage-1 curves are bent first and the stage-2 cells fill
+// the bent stage-1 polygons. `cells` is the final (straight) subdivision of the straight
+// stage-1 polygons `stage1` (cell_stage1: final polygon -> stage-1 polygon), as divide_scales
+// makes it. Each stage-1 edge gets ONE curve (as in perturb_subdivision, written to
+// stage1_out: fig. 5); the final polygons take the pieces of that curve between their
+// junctions, the junctions moved onto it (the stage-2 edges are the straight cells' edges with
+// their stage-1 ends on the curve), and each stage-2 edge then gets its own curve. So fig. 5's
+// curves are fig. 7's row boundaries, point for point. The tiling is kept by the same final
+// check as above, on both levels: every polygon counter-clockwise, star-shaped from its own
+// float centroid and winding once (then polygons sharing their edges point for point tile the
+// rectangle); a curve that breaks it is scaled down, a stage-1 curve in both patterns at once.
+Status perturb_two_stage(const PlanarSubdivision& stage1, const PlanarSubdivision& cells,
+                         const std::vector<int>& cell_stage1, const PerturbationParams& prm,
+                         std::uint32_t seed, float width, float height, ScalePattern* stage1_out,
+                         ScalePattern* out, PerturbationReport* report = nullptr);
 
 // The same output without perturbation (p = 0): the straight polygons as a ScalePattern.
 Status subdivision_to_pattern(const PlanarSubdivision& sub, float width, float height,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "shitsukan/geom/polygon.hpp"
 #include "shitsukan/geom/predicates.hpp"
@@ -58,6 +59,21 @@ Status check_scale_params(const ScaleParams& prm) {
     if (!(prm.D > 0.0f) || !is_finite(prm.D))
         return Status::error(StatusCode::invalid_argument,
                              "scale pattern: seed spacing D must be > 0 (got %g)", double(prm.D));
+    // subnormal sizes lose their digits in the float pattern: cells with gaps (fuzz finding)
+    for (float v : {prm.width, prm.height, prm.D})
+        if (!std::isnormal(v))
+            return Status::error(StatusCode::invalid_argument,
+                                 "scale pattern: width, height and D must be normal floats "
+                                 "(>= %g; got %g x %g, D %g)",
+                                 double(std::numeric_limits<float>::min()), double(prm.width),
+                                 double(prm.height), double(prm.D));
+    // chosen: at least one seed spacing across each side; a region thinner than one scale
+    // (aspect 5e22 under D) left the stage-2 rows without cells (fuzz finding)
+    if (prm.D > std::min(prm.width, prm.height))
+        return Status::error(StatusCode::invalid_argument,
+                             "scale pattern: seed spacing D = %g must fit the region %g x %g "
+                             "(D <= the shorter side)",
+                             double(prm.D), double(prm.width), double(prm.height));
     if (!(prm.d >= 0.0f) || !is_finite(prm.d))
         return Status::error(StatusCode::invalid_argument,
                              "scale pattern: distance d from the centre line must be >= 0 (got %g)",
@@ -279,9 +295,10 @@ Status generate_scale_pattern(const ScaleParams& prm, ScalePattern* pattern, Sca
     ScaleDivision local;
     ScaleDivision* div = steps ? steps : &local;
     SHITSUKAN_TRY(divide_scales(prm, div));
-    // processing 4 on the final polygons
-    return perturb_subdivision(div->cells, prm.perturbation, prm.seed, prm.width, prm.height,
-                               pattern, &div->perturbation);
+    // processing 4 in the paper's order: the stage-1 curves first, the stage-2 cells in them
+    return perturb_two_stage(div->stage1, div->cells, div->cell_stage1, prm.perturbation,
+                             prm.seed, prm.width, prm.height, &div->stage1_pattern, pattern,
+                             &div->perturbation);
 }
 
 }  // namespace shitsukan

@@ -23,13 +23,16 @@
 //            from its two sides are split at each other's end points (T junctions become
 //            vertices), so the final polygons share every edge and form one planar
 //            subdivision;
-//   processing 4 once on the final subdivision (edge_perturbation.hpp).
-// Deviation (stated): the paper perturbs stage-1 edges before dividing stage 2. Here stage 2
-// divides the straight (convex) stage-1 polygons and every final edge, including the pieces
-// of stage-1 edges, is perturbed once at the end: each final polygon is then convex before
-// perturbation, which the tiling bound of edge_perturbation.hpp needs.
+//   processing 4 in the paper's order (perturb_two_stage, edge_perturbation.hpp): each
+//            stage-1 edge bent once into one curve (fig. 5), the stage-2 cells filling the
+//            bent stage-1 polygons (their junctions moved onto the curves), then each stage-2
+//            edge bent. Fig. 7's row boundaries are fig. 5's curves point for point. (The
+//            Voronoi division of stage 2 is computed in the straight, convex stage-1 polygons
+//            and carried onto the bent ones: the same cells up to the bend, and exact.)
 //
-// Parameters (validated, Status on error): width, height > 0; D > 0 (chosen default 0.1: ten
+// Parameters (validated, Status on error): width, height > 0 and D > 0, all three normal
+// floats (subnormal sizes left gaps in the float pattern), D <= min(width, height) (chosen:
+// one scale must fit across; thinner regions left rows without cells); D > 0 (chosen default 0.1: ten
 // rows on the unit square); d >= 0 (default 1.0 D); a in [0, 1]; edge_ratio in (0.05, 1];
 // perturbation.p >= 0. NaN anywhere is refused.
 //
@@ -72,6 +75,7 @@ struct ScaleDivision {
     std::vector<int> stage2_row;   // stage-2 seed -> stage-1 polygon of its row
     PlanarSubdivision cells;       // final polygons, before perturbation
     std::vector<int> cell_stage1;  // final polygon -> stage-1 polygon
+    ScalePattern stage1_pattern;   // the bent stage-1 polygons (fig. 5; generate_scale_pattern)
     PerturbationReport perturbation;
 };
 

@@ -46,34 +46,19 @@ void for_each_new_node(const LevelStep& s, int odd_count, F&& visit) {
     }
 }
 
-// Step (1), eq. (1): each of the 12 edge midpoints of every cell of the previous level.
-void compute_edge_midpoints(const LevelStep& s) {
-    for_each_new_node(s, 1, [&](int x, int y, int z, int mask) {
-        int axis = mask == 1 ? 0 : (mask == 2 ? 1 : 2);
-        std::int64_t i = s.index(x, y, z), d = s.stride[axis] * s.h;
-        s.v[i] = edge_midpoint(s.v[i - d], s.v[i + d], s.g(x, y, z));
-    });
-}
-
-// Step (2), eq. (3): each face centre from the four edge midpoints of step (1).
-void compute_face_centres(const LevelStep& s) {
-    for_each_new_node(s, 2, [&](int x, int y, int z, int mask) {
-        int a = (mask & 1) ? 0 : 1;          // first odd axis
-        int b = (mask & 4) ? 2 : 1;          // second odd axis
-        std::int64_t i = s.index(x, y, z), da = s.stride[a] * s.h, db = s.stride[b] * s.h;
-        const float edge[4] = {s.v[i - da], s.v[i + da], s.v[i - db], s.v[i + db]};
-        s.v[i] = face_centre(edge, s.g(x, y, z));
-    });
-}
-
-// Step (3), eq. (4): each cube centre from its six face centres of step (2).
-void compute_cube_centres(const LevelStep& s) {
-    for_each_new_node(s, 3, [&](int x, int y, int z, int) {
-        std::int64_t i = s.index(x, y, z);
-        std::int64_t dx = s.stride[0] * s.h, dy = s.stride[1] * s.h, dz = s.stride[2] * s.h;
-        const float face[6] = {s.v[i - dx], s.v[i + dx], s.v[i - dy],
-                               s.v[i + dy], s.v[i - dz], s.v[i + dz]};
-        s.v[i] = cube_centre(face, s.g(x, y, z));
+// One step of okada1987 §2.2: every new node with `odd_count` odd axes from its parents (the
+// parent rule of fractal_node.hpp): step (1), eq. (1), the edge midpoints (1 odd axis); step
+// (2), eq. (3), the face centres from step (1)'s edge midpoints (2); step (3), eq. (4), the
+// cube centres from step (2)'s face centres (3).
+void compute_new_nodes(const LevelStep& s, int odd_count) {
+    for_each_new_node(s, odd_count, [&](int x, int y, int z, int mask) {
+        const std::int64_t i = s.index(x, y, z);
+        float parents[6];
+        for (int k = 0; k < 2 * odd_count; ++k) {
+            const ParentStep p = parent_step(mask, k);
+            parents[k] = s.v[i + p.sign * s.stride[p.axis] * s.h];
+        }
+        s.v[i] = node_from_parents(odd_count, parents, s.g(x, y, z));
     });
 }
 
@@ -114,9 +99,9 @@ Status build_fractal_lattice(const FractalParams& params, float* buffer, std::si
         LevelStep s{buffer, side, {1, side, side * side}, R, 1 << (R - n),
                     level_amplitude(n, params.beta), &params, &rng,
                     hash_start(params.seed, kLatticeStream)};
-        compute_edge_midpoints(s);
-        compute_face_centres(s);
-        compute_cube_centres(s);
+        compute_new_nodes(s, 1);  // step (1), eq. (1): the 12 edge midpoints of every cell
+        compute_new_nodes(s, 2);  // step (2), eq. (3): the face centres
+        compute_new_nodes(s, 3);  // step (3), eq. (4): the cube centres
     }
     out->values = buffer;
     out->R = R;

@@ -7,6 +7,8 @@
 //   float dp = face_centre(edge_values, g * L);             // eq. (3), four edge midpoints
 //   float dc = cube_centre(face_values, g * L);             // eq. (4), six face centres
 //   float g  = node_gaussian(seed, x, y, z);                // N(0, 1) of the node (hash)
+//   ParentStep p = parent_step(c.odd_axes, i);              // the parent rule, i < 2·odd_count
+//   float d  = node_from_parents(c.odd_count, parents, g * L);  // eq. (1), (3) or (4)
 //
 // Lattice coordinates are integers 0..2^R on each axis. A node first appears at level
 // n = R - t, where 2^t is the largest power of two dividing all three coordinates (t capped
@@ -62,6 +64,22 @@ inline float node_gaussian_from(std::uint64_t start, std::int32_t x, std::int32_
     return gaussian_from_bits(hash_coords_from(start, x, y, z));
 }
 
+// The parent rule, written once (Types I, II and III, the tests and example 10 all use it):
+// a node that is an odd multiple of h on the axes in `odd_axes` (bit 0 x, bit 1 y, bit 2 z)
+// has 2·odd_count parents, the neighbours at distance h along its odd axes, in the canonical
+// order x-, x+, y-, y+, z-, z+ (even axes skipped). Parent i is one step of h along `axis` in
+// direction `sign`.
+struct ParentStep {
+    int axis = 0;  // 0 x, 1 y, 2 z
+    int sign = -1;
+};
+
+inline ParentStep parent_step(int odd_axes, int i) {
+    int skip = i / 2, axis = 0;
+    while (!((odd_axes >> axis) & 1) || skip-- > 0) ++axis;  // the (i/2)-th odd axis
+    return ParentStep{axis, (i % 2) ? +1 : -1};
+}
+
 // okada1987 eq. (1): D_e = (D_v1 + D_v2)/2 + g·L_r, the edge midpoint from its two ends.
 inline float edge_midpoint(float dv1, float dv2, float g_times_l) {
     return (dv1 + dv2) * 0.5f + g_times_l;
@@ -76,6 +94,13 @@ inline float face_centre(const float edge[4], float g_times_l) {
 // okada1987 eq. (4): D_c = (1/6)·sum of the six face centres + g·L_r.
 inline float cube_centre(const float face[6], float g_times_l) {
     return (face[0] + face[1] + face[2] + face[3] + face[4] + face[5]) / 6.0f + g_times_l;
+}
+
+// A node from its parents in parent_step's order: eq. (1), (3) or (4) by its odd-axis count.
+inline float node_from_parents(int odd_count, const float* parents, float g_times_l) {
+    if (odd_count == 1) return edge_midpoint(parents[0], parents[1], g_times_l);
+    if (odd_count == 2) return face_centre(parents, g_times_l);
+    return cube_centre(parents, g_times_l);
 }
 
 }  // namespace shitsukan

@@ -1,6 +1,7 @@
 // Host side: owning Type I lattice, file save/load.
 #include "shitsukan/solid/lattice_store.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 
@@ -128,15 +129,29 @@ Status load_lattice(const std::string& path, FractalLattice* out, std::uint64_t 
     std::vector<float> values(side * side * side);
     unsigned char chunk[4096 * 4];
     bool ok = true;
+    std::size_t bad = values.size();  // first value that is not finite
     for (std::size_t i = 0; ok && i < values.size(); i += 4096) {
         std::size_t n = values.size() - i < 4096 ? values.size() - i : 4096;
         ok = std::fread(chunk, 1, 4 * n, f) == 4 * n;
-        for (std::size_t j = 0; ok && j < n; ++j)
+        for (std::size_t j = 0; ok && j < n; ++j) {
             values[i + j] = bits_float(get_u32(chunk + 4 * j));
+            if (bad == values.size() && !std::isfinite(values[i + j])) bad = i + j;
+        }
     }
+    const bool trailing = ok && std::fgetc(f) != EOF;
     std::fclose(f);
     if (!ok)
         return Status::error(StatusCode::io_error, "load_lattice: %s is truncated", path.c_str());
+    if (trailing)
+        return Status::error(StatusCode::io_error,
+                             "load_lattice: %s has bytes after its %zu values (not a lattice "
+                             "file of R = %d)",
+                             path.c_str(), values.size(), p.R);
+    if (bad < values.size())
+        return Status::error(StatusCode::io_error,
+                             "load_lattice: %s: value %zu is not finite (%g); D(P) promises a "
+                             "number",
+                             path.c_str(), bad, double(values[bad]));
     out->values_.swap(values);
     out->params_ = p;
     out->view_.values = out->values_.data();

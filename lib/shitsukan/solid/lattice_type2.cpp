@@ -39,34 +39,18 @@ float TypeIILattice::compute(std::int32_t x, std::int32_t y, std::int32_t z) {
     auto found = list_.find(key);
     if (found != list_.end()) return found->second;
 
-    const std::int32_t h = c.half;
-    const std::int32_t step[3][3] = {{h, 0, 0}, {0, h, 0}, {0, 0, h}};
-    auto parent = [&](int axis, int sign) {
-        return compute(x + sign * step[axis][0], y + sign * step[axis][1],
-                       z + sign * step[axis][2]);
-    };
-    // Parents first (recursively), then the node's own g: the order a sequential stream sees.
+    // Parents first (recursively, in the parent rule's order), then the node's own g: the
+    // order a sequential stream sees.
     float parents[6];
-    int axis = c.odd_axes == 1 ? 0 : (c.odd_axes == 2 ? 1 : 2);
-    int a = (c.odd_axes & 1) ? 0 : 1, b = (c.odd_axes & 4) ? 2 : 1;
-    if (c.odd_count == 1) {
-        parents[0] = parent(axis, -1), parents[1] = parent(axis, +1);
-    } else if (c.odd_count == 2) {
-        parents[0] = parent(a, -1), parents[1] = parent(a, +1);
-        parents[2] = parent(b, -1), parents[3] = parent(b, +1);
-    } else {
-        for (int i = 0; i < 6; ++i) parents[i] = parent(i / 2, (i % 2) ? +1 : -1);
+    for (int k = 0; k < 2 * c.odd_count; ++k) {
+        const ParentStep p = parent_step(c.odd_axes, k);
+        const std::int32_t d = p.sign * c.half;
+        parents[k] = compute(x + (p.axis == 0 ? d : 0), y + (p.axis == 1 ? d : 0),
+                             z + (p.axis == 2 ? d : 0));
     }
     const float g = params_.noise == NoiseSource::hash ? node_gaussian(params_.seed, x, y, z)
                                                        : rng_.gaussian();
-    const float g_times_l = g * amplitude_[c.level];
-    float value;
-    if (c.odd_count == 1)
-        value = edge_midpoint(parents[0], parents[1], g_times_l);  // eq. (1)
-    else if (c.odd_count == 2)
-        value = face_centre(parents, g_times_l);                    // eq. (3)
-    else
-        value = cube_centre(parents, g_times_l);                    // eq. (4)
+    const float value = node_from_parents(c.odd_count, parents, g * amplitude_[c.level]);
     list_.emplace(key, value);
     return value;
 }

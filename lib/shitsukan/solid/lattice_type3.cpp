@@ -44,34 +44,24 @@ void TypeIIILattice::subdivide(int n, const float corners[8], std::int32_t x0, s
         for (int j = 0; j < 2; ++j)
             for (int i = 0; i < 2; ++i)
                 grid[grid_index(2 * i, 2 * j, 2 * k)] = corners[i + 2 * j + 4 * k];
-    // Step (1), eq. (1): the 12 edge midpoints (exactly one grid index is 1).
-    for (int c = 0; c <= 2; c += 2)
-        for (int b = 0; b <= 2; b += 2) {
-            grid[grid_index(1, b, c)] =
-                edge_midpoint(grid[grid_index(0, b, c)], grid[grid_index(2, b, c)], g(1, b, c));
-            grid[grid_index(b, 1, c)] =
-                edge_midpoint(grid[grid_index(b, 0, c)], grid[grid_index(b, 2, c)], g(b, 1, c));
-            grid[grid_index(b, c, 1)] =
-                edge_midpoint(grid[grid_index(b, c, 0)], grid[grid_index(b, c, 2)], g(b, c, 1));
-        }
-    // Step (2), eq. (3): the 6 face centres from the face's four edge midpoints, in the
-    // order (first odd axis -, +, second odd axis -, +).
-    for (int e = 0; e <= 2; e += 2) {
-        const float yz[4] = {grid[grid_index(e, 0, 1)], grid[grid_index(e, 2, 1)],
-                             grid[grid_index(e, 1, 0)], grid[grid_index(e, 1, 2)]};
-        grid[grid_index(e, 1, 1)] = face_centre(yz, g(e, 1, 1));
-        const float xz[4] = {grid[grid_index(0, e, 1)], grid[grid_index(2, e, 1)],
-                             grid[grid_index(1, e, 0)], grid[grid_index(1, e, 2)]};
-        grid[grid_index(1, e, 1)] = face_centre(xz, g(1, e, 1));
-        const float xy[4] = {grid[grid_index(0, 1, e)], grid[grid_index(2, 1, e)],
-                             grid[grid_index(1, 0, e)], grid[grid_index(1, 2, e)]};
-        grid[grid_index(1, 1, e)] = face_centre(xy, g(1, 1, e));
-    }
-    // Step (3), eq. (4): the centre from the six face centres x-, x+, y-, y+, z-, z+.
-    const float faces[6] = {grid[grid_index(0, 1, 1)], grid[grid_index(2, 1, 1)],
-                            grid[grid_index(1, 0, 1)], grid[grid_index(1, 2, 1)],
-                            grid[grid_index(1, 1, 0)], grid[grid_index(1, 1, 2)]};
-    grid[grid_index(1, 1, 1)] = cube_centre(faces, g(1, 1, 1));
+    // Steps (1)-(3), eqs. (1), (3), (4): the 12 edge midpoints, the 6 face centres, the
+    // centre. A grid position is an odd multiple of h on the axes where its index is 1; its
+    // parents (the parent rule of fractal_node.hpp) are one grid step away along those axes.
+    for (int odd_count = 1; odd_count <= 3; ++odd_count)
+        for (int c = 0; c <= 2; ++c)
+            for (int b = 0; b <= 2; ++b)
+                for (int a = 0; a <= 2; ++a) {
+                    const int odd_axes = (a == 1) | ((b == 1) << 1) | ((c == 1) << 2);
+                    if ((a == 1) + (b == 1) + (c == 1) != odd_count) continue;
+                    float parents[6];
+                    for (int k = 0; k < 2 * odd_count; ++k) {
+                        const ParentStep p = parent_step(odd_axes, k);
+                        parents[k] = grid[grid_index(a + (p.axis == 0 ? p.sign : 0),
+                                                     b + (p.axis == 1 ? p.sign : 0),
+                                                     c + (p.axis == 2 ? p.sign : 0))];
+                    }
+                    grid[grid_index(a, b, c)] = node_from_parents(odd_count, parents, g(a, b, c));
+                }
     block.x0 = x0, block.y0 = y0, block.z0 = z0;
     ++subdivisions_;
 }

@@ -11,10 +11,13 @@ namespace shitsukan {
 
 namespace {
 
+// B N^k, saturated just above kMaxHierarchicalSamples (the product overflowed a long for
+// large k); -1 for arguments without intervals (B < 1, N < 1, k < 0).
 long small_intervals(int base_intervals, int division, int k) {
+    if (base_intervals < 1 || division < 1 || k < 0) return -1;
     long m = base_intervals;
-    for (int i = 0; i < k; ++i) m *= division;
-    return m;
+    for (int i = 0; i < k && m <= kMaxHierarchicalSamples; ++i) m *= division;
+    return m > kMaxHierarchicalSamples ? kMaxHierarchicalSamples + 1 : m;
 }
 
 // Hash streams for the jitter of each attribute (hash.hpp: one stream per independent use).
@@ -24,6 +27,7 @@ enum : std::uint32_t { kStreamHeight = 20, kStreamColor = 21, kStreamTransparenc
 
 std::vector<float> hierarchical_sample_positions(int base_intervals, int division, int k) {
     const long m = small_intervals(base_intervals, division, k);
+    if (m < 1 || m > kMaxHierarchicalSamples) return {};  // see the header
     std::vector<float> x(std::size_t(m + 2));
     x[0] = 0.0f;  // boundary sample (fig. 20: the surface is open)
     for (long i = 0; i < m; ++i) x[std::size_t(i + 1)] = float((double(i) + 0.5) / double(m));

@@ -54,6 +54,8 @@ constexpr long kMaxHierarchicalSamples = 8L * 1024 * 1024;  // per step, both ax
 
 // Sample positions of step k along one axis, in the surface parameter [0, 1]:
 // 0, (i + 1/2)/(B·N^k) for i = 0 .. B·N^k - 1, and 1 (B base intervals, N division).
+// Empty when B < 1, N < 1, k < 0 or B·N^k > kMaxHierarchicalSamples (no overflow, no huge
+// allocation).
 std::vector<float> hierarchical_sample_positions(int base_intervals, int division, int k);
 
 // Weights of the samples first .. first+3 for interpolating at u (sample positions `x`, count

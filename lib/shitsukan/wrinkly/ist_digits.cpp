@@ -186,7 +186,7 @@ Status ist_digits_inverse_checked(const IstAxis& axis, const IstDigits& in, IstD
 }
 
 const char* ist_digits_format(const IstDigits& alpha, int base_label, char* buf, int size) {
-    SHITSUKAN_ASSERT(buf != nullptr && size > 0);
+    if (buf == nullptr || size <= 0) return "";  // nothing fits, not even the terminator
     static const char kDigitChars[] = "0123456789abcdefghijklmnopqrstuv";  // N <= kIstMaxN
     // The string may come from a user (not checked): a label sum that would overflow an int,
     // a digit that is not base-32 ('?') or more digits than the array holds are all printable.

@@ -2,6 +2,7 @@
 // fujimoto2000 §2.1: the original IST with a crossing number M_i per base interval.
 #include "shitsukan/wrinkly/ist_original.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "shitsukan/core/assert.hpp"
@@ -196,6 +197,24 @@ Status ist_original_check(const IstOriginal& ist) {
                                      "original IST: edges must increase: x_%d = %g, x_%d = %g",
                                      i, ist.edges[i], i + 1, ist.edges[i + 1]);
     }
+    // The resolution the header promises: the finest sub-interval, (base width) / prod
+    // (2 M + 1) over K steps, must stay above 2^-45 (beyond, widths round to 0 and the inverse
+    // divided 0 by 0: NaN, then int(NaN)). Bounded with the largest M and the narrowest base.
+    {
+        int widest = 0;
+        for (int i = 0; i < ist.base_intervals; ++i)
+            widest = std::max(widest, 2 * ist_original_crossing(ist, i) + 1);
+        double narrowest = 1.0 / ist.base_intervals;
+        if (ist.edges != nullptr)
+            for (int i = 0; i < ist.base_intervals; ++i)
+                narrowest = std::min(narrowest, ist.edges[i + 1] - ist.edges[i]);
+        const double finest = narrowest / std::pow(double(widest), double(ist.iterations));
+        if (!(finest >= std::ldexp(1.0, -45)))
+            return Status::error(StatusCode::out_of_range,
+                                 "original IST: K = %d steps of up to %d parts leave "
+                                 "sub-intervals %g wide, below the 2^-45 that doubles resolve",
+                                 ist.iterations, widest, finest);
+    }
     return Status::success();
 }
 
@@ -239,7 +258,8 @@ double ist_original_forward(const IstOriginal& ist, double u) {
     IstPoint point;
     ist_original_start(ist, u, &point);
     for (int k = 1; k <= ist.iterations; ++k) ist_original_step(ist, &point);
-    return point.u;
+    // the steps' roundings can leave u an ulp above 1 (or below 0): the axis is [0, 1]
+    return point.u < 0.0 ? 0.0 : (point.u > 1.0 ? 1.0 : point.u);
 }
 
 double ist_original_inverse(const IstOriginal& ist, double q) {
@@ -251,7 +271,7 @@ double ist_original_inverse(const IstOriginal& ist, double q) {
         locate(ist, o.compressed, k - 1, &a, &z);  // the parent sub-interval on u^{k-1}
         const int n = 2 * ist_original_crossing(ist, o.source) + 1;
         // The part o.part of [a, z), at the same relative place as `compressed` in [a, z).
-        double rel = (o.compressed - a) / (z - a);
+        double rel = z > a ? (o.compressed - a) / (z - a) : 0.0;  // never 0 / 0
         rel = rel < 0.0 ? 0.0 : (rel > 1.0 ? 1.0 : rel);
         q = a + (z - a) * (double(o.part) + rel) / double(n);
     }

@@ -28,7 +28,9 @@
 // home and takes the place of the missing source (the fully-connected exchange left undone).
 // Cyclic axis: base intervals wrap.
 // Ranges: 1 <= B <= kIstMaxBase, 0 <= M_i <= 15, 0 <= K <= kIstMaxIterations; double
-// precision resolves the sub-intervals while prod (2 M + 1) stays below about 2^45.
+// precision resolves the sub-intervals while prod (2 M + 1) stays below about 2^45, and
+// ist_original_check refuses K, M and edges whose finest sub-interval would be narrower than
+// 2^-45 (there the inverse used to divide 0 by 0). forward() returns values in [0, 1].
 #pragma once
 
 #include "shitsukan/core/status.hpp"

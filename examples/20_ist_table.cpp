@@ -1,8 +1,8 @@
-// ist_table — print every sub-interval number alpha^0 and its image alpha^K under an IST
+// Lesson 20 (ist_table): print every sub-interval number alpha^0 and its image alpha^K under an IST
 // (fujimoto2000 §2.3): watch the scale reversal of eq. (7) and eq. (12).
 //
-//   ist_table                           N = 3, K = 2, unit-IST (the default table)
-//   ist_table N K [kind] [options]
+//   20_ist_table                         N = 3, K = 2, unit-IST (the default table)
+//   20_ist_table N K [kind] [options]
 //     kind     unit | fully | none | fig6b | fig7a | fig7c | table:d0:s0,d1:s1,...
 //              (table: group g goes to base interval + d_g, slot s_g; N entries)
 //     options  --bases B        number of base intervals of a connected IST (default 5)

@@ -1,0 +1,24 @@
+// shitsukan/wrinkly/wrinkly.hpp — fujimoto2000, "Formalization and Superposed Construction of
+// Wrinkly Surface" (Fujimoto, Ohno, IPSJ Journal, 2000): the files in the order to read them
+// beside the paper, and everything in one include.
+//
+//   §2 (the IST family)           ist.hpp                its own reading order: axis, formula,
+//                                                        digits, procedure, original IST
+//   §3.1, the control mesh        control_mesh.hpp       WR control points: position, height
+//   §3, eq. (15)                  wr_axis.hpp,           one axis's (F^k)^{-1}; an IST as that
+//                                 wr_ist_axis.hpp        axis
+//   §3, eq. (15)                  wr_surface.hpp         the wrinkly (WR) surface
+//   §4.1, eqs. (16)-(19)          superposition.hpp      the superposed WR surface
+//   §4.2, eq. (20)                hierarchical_sampling.hpp  sampling without the staircase
+//   §4.2, §5                      wr_tessellation.hpp    adaptive polygonisation
+//
+// Manual: see wr_surface.hpp (a WR surface) and superposition.hpp (mountains).
+#pragma once
+#include "shitsukan/wrinkly/ist.hpp"
+#include "shitsukan/wrinkly/control_mesh.hpp"
+#include "shitsukan/wrinkly/wr_axis.hpp"
+#include "shitsukan/wrinkly/wr_ist_axis.hpp"
+#include "shitsukan/wrinkly/wr_surface.hpp"
+#include "shitsukan/wrinkly/superposition.hpp"
+#include "shitsukan/wrinkly/hierarchical_sampling.hpp"
+#include "shitsukan/wrinkly/wr_tessellation.hpp"
