@@ -30,21 +30,13 @@ void periodic_step(float* v, int R, int n, int odd_count, float amplitude, std::
                                                        std::int32_t(y) & mask_n,
                                                        std::int32_t(z) & mask_n) *
                                     amplitude;
-                    if (odd_count == 1) {  // eq. (1)
-                        const int axis = mask == 1 ? 0 : (mask == 2 ? 1 : 2);
-                        const std::int64_t d = stride[axis] * h;
-                        v[i] = edge_midpoint(v[i - d], v[i + d], g);
-                    } else if (odd_count == 2) {  // eq. (3)
-                        const int a = (mask & 1) ? 0 : 1, b = (mask & 4) ? 2 : 1;
-                        const std::int64_t da = stride[a] * h, db = stride[b] * h;
-                        const float edge[4] = {v[i - da], v[i + da], v[i - db], v[i + db]};
-                        v[i] = face_centre(edge, g);
-                    } else {  // eq. (4)
-                        const std::int64_t dx = h, dy = stride[1] * h, dz = stride[2] * h;
-                        const float face[6] = {v[i - dx], v[i + dx], v[i - dy],
-                                               v[i + dy], v[i - dz], v[i + dz]};
-                        v[i] = cube_centre(face, g);
+                    // eqs. (1), (3), (4) through the one parent rule (fractal_node.hpp)
+                    float parents[6];
+                    for (int k = 0; k < 2 * odd_count; ++k) {
+                        const ParentStep ps = parent_step(mask, k);
+                        parents[k] = v[i + ps.sign * stride[ps.axis] * h];
                     }
+                    v[i] = node_from_parents(odd_count, parents, g);
                 }
     }
 }
