@@ -3,6 +3,7 @@
 #   make figures   install missing packages, build, render every paper figure
 #   make test      install missing packages, build and run the tests
 #   make all | test-sanitize | examples | bench | check-small | install PREFIX=... | deps | clean
+#   make cli       the `shitsukan` command-line tool (build/shitsukan; cli/); make test-cli runs it
 #   make check-api        headers compile alone, umbrella header complete, only shitsukan
 #                         symbols exported, a program with its own stb links, PNGs without
 #                         the stb header, dropped Status is a compile error under -Werror
@@ -39,6 +40,7 @@ FIG_SRCS     := $(shell find paper_figures -name '*.cpp' -not -path 'paper_figur
 TEST_SRCS    := $(sort $(wildcard tests/*.cpp))
 BENCH_SRCS   := $(sort $(wildcard tests/bench/*.cpp))
 EXAMPLE_SRCS := $(sort $(wildcard examples/*.cpp))
+CLI_SRCS     := $(sort $(wildcard cli/*.cpp))
 # Files that promise the small-device rules (no allocation, no exceptions) carry the line
 # "// small-device: yes"; `make check-small` holds them to it.
 SMALL_SRCS   := $(shell grep -rl '^// small-device: yes' lib 2>/dev/null | LC_ALL=C sort)
@@ -52,6 +54,8 @@ LIB_OBJS   := $(LIB_SRCS:%.cpp=$(BUILD)/obj/%.o)
 FIG_OBJS   := $(FIG_SRCS:%.cpp=$(BUILD)/obj/%.o)
 TEST_OBJS  := $(TEST_SRCS:%.cpp=$(BUILD)/obj/%.o)
 BENCH_OBJS := $(BENCH_SRCS:%.cpp=$(BUILD)/obj/%.o)
+CLI_OBJS   := $(CLI_SRCS:%.cpp=$(BUILD)/obj/%.o)
+CLI        := $(BUILD)/shitsukan
 SAN_OBJS   := $(LIB_SRCS:%.cpp=$(BUILD)/san/%.o) $(TEST_SRCS:%.cpp=$(BUILD)/san/%.o)
 SMALL_CPPS := $(filter %.cpp,$(SMALL_SRCS))
 SMALL_HPPS := $(filter %.hpp,$(SMALL_SRCS))
@@ -60,7 +64,7 @@ EXAMPLES   := $(EXAMPLE_SRCS:examples/%.cpp=$(BUILD)/examples/%)
 LIBRARY    := $(BUILD)/libshitsukan.a
 
 .PHONY: all test test-sanitize figures examples bench check-small check-api test-consumers \
-        install deps bench-deps consumer-deps clean fuzz fuzz-deps figures-determinism
+        install deps bench-deps consumer-deps clean fuzz fuzz-deps figures-determinism cli test-cli
 
 # The top-level targets run one at a time (each builds in parallel inside its own sub-make), so
 # `make -j test figures` cannot build the library twice at once.
@@ -70,7 +74,16 @@ ifndef SHITSUKAN_SUBMAKE
 endif
 
 all: deps
-	@$(SUBMAKE) $(LIBRARY) $(EXAMPLES) $(BUILD)/paper_figures
+	@$(SUBMAKE) $(LIBRARY) $(EXAMPLES) $(BUILD)/paper_figures $(CLI)
+
+cli:
+	@$(SUBMAKE) $(CLI)
+
+# The tool's tests run the binary: good runs make their files, each bad flag exits 2 with a
+# one-line message naming it (tests/cli/run.sh).
+test-cli: deps
+	@$(SUBMAKE) $(CLI)
+	bash tests/cli/run.sh $(CLI)
 
 # ---- packages: installed when missing (apt-get as root), otherwise named ----
 REQUIRED := /usr/include/doctest/doctest.h:doctest-dev /usr/include/stb/stb_image_write.h:libstb-dev
@@ -252,6 +265,9 @@ $(BUILD)/paper_figures: $(FIG_OBJS) $(LIBRARY)
 $(BUILD)/bench: $(BENCH_OBJS) $(LIBRARY)
 	$(CXX) $(CXXFLAGS) -o $@ $(BENCH_OBJS) $(LIBRARY) -lnoise -lmpfr -lgmp
 
+$(CLI): $(CLI_OBJS) $(LIBRARY)
+	$(CXX) $(CXXFLAGS) -o $@ $(CLI_OBJS) $(LIBRARY)
+
 $(BUILD)/examples/%: $(BUILD)/obj/examples/%.o $(LIBRARY)
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) -o $@ $< $(LIBRARY)
@@ -274,16 +290,17 @@ $(BUILD)/small/%.o: %.cpp $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CXX) $(CPPFLAGS) $(CXXFLAGS) $(SMALL_FLAGS) -MMD -MP -c $< -o $@
 
-# ---- install: headers, static library, pkg-config file, CMake package ----
+# ---- install: headers, static library, the shitsukan tool, pkg-config file, CMake package ----
 # Needs only a compiler: no test framework, no apt-get (without the stb header write_png
 # uses the library's own, uncompressed PNG encoder). The version is core/config.hpp's.
 VERSION := $(shell sed -n 's/^\#define SHITSUKAN_VERSION_STRING "\(.*\)"/\1/p' lib/shitsukan/core/config.hpp)
 VERSION_MAJOR := $(word 1,$(subst ., ,$(VERSION)))
 VERSION_MINOR := $(word 2,$(subst ., ,$(VERSION)))
 install:
-	@$(SUBMAKE) $(LIBRARY)
+	@$(SUBMAKE) $(LIBRARY) $(CLI)
 	@mkdir -p $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib/pkgconfig \
-	  $(DESTDIR)$(PREFIX)/lib/cmake/shitsukan
+	  $(DESTDIR)$(PREFIX)/lib/cmake/shitsukan $(DESTDIR)$(PREFIX)/bin
+	install -m 755 $(CLI) $(DESTDIR)$(PREFIX)/bin/shitsukan
 	cd lib && find shitsukan -name '*.hpp' -exec install -D -m 644 {} $(DESTDIR)$(PREFIX)/include/{} \;
 	install -m 644 $(LIBRARY) $(DESTDIR)$(PREFIX)/lib/libshitsukan.a
 	sed -e 's|@SHITSUKAN_PC_PREFIX@|$(PREFIX)|' -e 's|@SHITSUKAN_PC_INCLUDEDIR@|$${prefix}/include|' \

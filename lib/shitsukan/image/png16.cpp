@@ -1,4 +1,7 @@
 #include "shitsukan/image/png16.hpp"
+#include "shitsukan/image/deflate.hpp"
+
+#include <algorithm>
 
 #include <cstdio>
 #include <vector>
@@ -152,6 +155,78 @@ private:
     std::uint32_t adler_ = 1;
 };
 
+int paeth(int a, int b, int c) {  // PNG spec 9.4: the predictor closest to a + b - c
+    const int p = a + b - c, pa = p > a ? p - a : a - p, pb = p > b ? p - b : b - p,
+              pc = p > c ? p - c : c - p;
+    return (pa <= pb && pa <= pc) ? a : (pb <= pc ? b : c);
+}
+
+// The raw image with each row filtered (PNG spec 9: None, Sub, Up, Average, Paeth on bytes,
+// bpp = bytes per pixel) by the filter with the smallest sum of |byte as signed| (the spec's
+// suggested heuristic, 12.8): smooth height maps become runs of small differences.
+template <class SampleFn>
+void filtered_rows(int width, int height, int channels, int bits, SampleFn sample,
+                   std::vector<std::uint8_t>* out) {
+    const std::size_t bpp = std::size_t(channels) * (bits == 16 ? 2 : 1);
+    const std::size_t n = std::size_t(width) * bpp;
+    std::vector<std::uint8_t> prev(n, 0), cur(n), trial(n);
+    out->resize((n + 1) * std::size_t(height));
+    for (int y = 0; y < height; ++y) {
+        std::uint8_t* p = cur.data();
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < channels; ++c) {
+                const std::uint16_t v = sample(x, y, c);
+                if (bits == 16) *p++ = std::uint8_t(v >> 8);
+                *p++ = std::uint8_t(v & 0xFF);
+            }
+        std::uint8_t* dst = out->data() + (n + 1) * std::size_t(y);
+        std::uint64_t best = ~std::uint64_t(0);
+        for (int type = 0; type < 5; ++type) {
+            std::uint64_t cost = 0;
+            for (std::size_t i = 0; i < n; ++i) {
+                const int a = i >= bpp ? cur[i - bpp] : 0, b = prev[i],
+                          c = i >= bpp ? prev[i - bpp] : 0;
+                const int pred = type == 0 ? 0
+                                 : type == 1 ? a
+                                 : type == 2 ? b
+                                 : type == 3 ? (a + b) / 2
+                                             : paeth(a, b, c);
+                trial[i] = std::uint8_t((cur[i] - pred) & 0xFF);
+                cost += trial[i] < 128 ? trial[i] : 256 - trial[i];
+            }
+            if (cost < best) {
+                best = cost;
+                dst[0] = std::uint8_t(type);
+                std::copy(trial.begin(), trial.end(), dst + 1);
+            }
+        }
+        prev.swap(cur);
+    }
+}
+
+// The IDAT of stored deflate blocks, streamed row by row (filter type None).
+template <class SampleFn>
+void write_stored_idat(PngWriter& png, int width, int height, int channels, int bits,
+                       std::uint64_t row_bytes, std::uint64_t raw_bytes, std::uint64_t idat_bytes,
+                       SampleFn sample) {
+    png.begin_chunk(std::uint32_t(idat_bytes), "IDAT");
+    StoredDeflate z(png, std::size_t(raw_bytes));
+    z.header();
+    std::vector<std::uint8_t> row(static_cast<std::size_t>(row_bytes));
+    for (int y = 0; y < height && png.ok(); ++y) {
+        row[0] = 0;  // filter type None
+        std::uint8_t* p = row.data() + 1;
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < channels; ++c) {
+                std::uint16_t v = sample(x, y, c);
+                if (bits == 16) *p++ = std::uint8_t(v >> 8);  // big-endian samples
+                *p++ = std::uint8_t(v & 0xFF);
+            }
+        z.write(row.data(), row.size());
+    }
+    z.finish();
+}
+
 // Encode rows of `channels` samples of `bits` (8 or 16) bits; sample(x, y, c) gives each value.
 template <class SampleFn>
 Status encode_png(const char* path, int width, int height, int channels, int bits, bool empty,
@@ -171,6 +246,16 @@ Status encode_png(const char* path, int width, int height, int channels, int bit
                              "cannot write %s: %d x %d x %d samples need %llu bytes, more than "
                              "one PNG chunk holds (2147483647)",
                              path, width, height, channels, (unsigned long long)idat_bytes);
+    // 16-bit images: every row filtered (filtered_rows), then deflated (deflate.hpp); noise
+    // does not shrink, so the stored blocks are kept when they are smaller.
+    std::vector<std::uint8_t> compressed;
+    bool use_compressed = false;
+    if (bits == 16 && raw_bytes < 0x7FFF0000ull) {
+        std::vector<std::uint8_t> filtered;
+        filtered_rows(width, height, channels, bits, sample, &filtered);
+        use_compressed = zlib_deflate(filtered.data(), filtered.size(), &compressed).ok() &&
+                         compressed.size() < idat_bytes;
+    }
     std::FILE* f = std::fopen(path, "wb");
     if (!f) return Status::error(StatusCode::io_error, "cannot open %s for writing", path);
 
@@ -190,22 +275,13 @@ Status encode_png(const char* path, int width, int height, int channels, int bit
     png.chunk_data(ihdr, 13);
     png.end_chunk();
 
-    png.begin_chunk(std::uint32_t(idat_bytes), "IDAT");
-    StoredDeflate z(png, std::size_t(raw_bytes));
-    z.header();
-    std::vector<std::uint8_t> row(static_cast<std::size_t>(row_bytes));
-    for (int y = 0; y < height && png.ok(); ++y) {
-        row[0] = 0;  // filter type None
-        std::uint8_t* p = row.data() + 1;
-        for (int x = 0; x < width; ++x)
-            for (int c = 0; c < channels; ++c) {
-                std::uint16_t v = sample(x, y, c);
-                if (bits == 16) *p++ = std::uint8_t(v >> 8);  // big-endian samples
-                *p++ = std::uint8_t(v & 0xFF);
-            }
-        z.write(row.data(), row.size());
+    if (use_compressed) {
+        png.begin_chunk(std::uint32_t(compressed.size()), "IDAT");
+        png.chunk_data(compressed.data(), compressed.size());
+    } else {
+        write_stored_idat(png, width, height, channels, bits, row_bytes, raw_bytes, idat_bytes,
+                          sample);
     }
-    z.finish();
     png.end_chunk();
 
     png.begin_chunk(0, "IEND");
@@ -216,6 +292,7 @@ Status encode_png(const char* path, int width, int height, int channels, int bit
     if (!ok) return Status::error(StatusCode::io_error, "writing %s failed", path);
     return Status::success();
 }
+
 
 }  // namespace
 

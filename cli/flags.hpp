@@ -1,0 +1,70 @@
+// cli/flags.hpp — the flags of one `shitsukan` subcommand: every paper parameter under the
+// paper's name, with its default and range; `--help` prints them with the paper's section.
+//
+//   FlagSet f("marble", "okada1987 §4.1 marble ...", "usage line");
+//   f.number("k", &k, 0, 1000, "okada1987 eq. (9): contribution of the turbulence");
+//   int rc = f.parse(argc, argv);    // kParsed, 0 after --help, 2 on a bad flag (message printed)
+//
+// A bad flag or value prints ONE line to stderr naming the flag and its range, e.g.
+//   shitsukan marble: --k must be a number in [0, 1000] (got "abc")
+// and the command exits with 2. Values: "--name value" or "--name=value"; switches take none.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "shitsukan/core/progress.hpp"
+#include "shitsukan/core/status.hpp"
+
+namespace shitsukan::cli {
+
+constexpr int kParsed = -1;
+
+class FlagSet {
+public:
+    FlagSet(const char* command, const char* about, const char* usage);
+    void number(const char* name, float* value, double lo, double hi, const char* help);
+    void integer(const char* name, int* value, long lo, long hi, const char* help);
+    void seed(std::uint32_t* value, const char* help);
+    void text(const char* name, std::string* value, const char* help);
+    // choices: "a|b|c"; *value is the index of the chosen one
+    void choice(const char* name, int* value, const char* choices, const char* help);
+    void toggle(const char* name, bool* value, const char* help);
+
+    int parse(int argc, char** argv);
+    bool given(const char* name) const;
+    // One line "shitsukan <command>: <message>" on stderr; returns 2.
+    int fail(const char* format, ...) const;
+    // A library error: "shitsukan <command>: <message>"; returns 1.
+    int fail_status(const Status& s) const;
+    const char* command() const { return command_; }
+    bool quiet() const { return quiet_; }
+    // A progress line on stderr ("shitsukan marble: baking  42%"), unless --quiet.
+    Progress progress(const char* stage);
+
+private:
+    enum class Kind { number, integer, seed, text, choice, toggle };
+    struct Flag {
+        std::string name;
+        Kind kind;
+        void* value;
+        double lo = 0, hi = 0;
+        std::string choices, help, default_text;
+        bool given = false;
+    };
+    void add(Flag f);
+    void print_help() const;
+    const char* command_;
+    const char* about_;
+    const char* usage_;
+    std::vector<Flag> flags_;
+    bool quiet_ = false;
+    std::string stage_;
+};
+
+// Whole-string number parsing (no trailing junk, finite).
+bool parse_double(const char* text, double* out);
+bool parse_long(const char* text, long* out);
+
+}  // namespace shitsukan::cli

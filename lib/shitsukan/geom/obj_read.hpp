@@ -1,0 +1,41 @@
+// shitsukan/geom/obj_read.hpp — Wavefront OBJ input: positions, uv, normals, faces (a
+// teacher's own mesh for the solid textures and the bake).
+//
+// Manual
+//   TriangleMesh mesh;
+//   Status s = read_obj("teapot.obj", &mesh);     // error: "teapot.obj:12: ..." (line number)
+//   s = read_obj_text(text, length, "inline", &mesh);   // the same from memory
+//
+// Read: "v x y z" (and "v x y z r g b", the vertex-colour extension write_obj writes; kept
+// when every vertex has one), "vt u v [w]", "vn x y z", "f a b c ..." with corners v, v/t,
+// v//n or v/t/n, indices from 1 or negative (relative to the end, -1 = the last so far).
+// Polygons are split into a fan (a b c, a c d, ...). Each distinct (v, vt, vn) corner becomes
+// one vertex of the TriangleMesh (its attributes are per vertex). Ignored: comments and the
+// grouping/material/smoothing statements (o g s usemtl mtllib), points and lines (p l),
+// and any other statement (curves, ...), which readers are told to skip. Without vn in the
+// file the normals are computed (area-weighted, compute_vertex_normals); without vt the
+// mesh has no uv (uvs empty). A face's corners must either all have vt or all not.
+// Errors (invalid_argument, "path:line: what"): a number that is not one or not finite, a
+// wrong count of numbers, an index 0 or out of range (an index refers to the elements defined
+// ABOVE it), a face with fewer than 3 corners, a corner that is not v, v/t, v//n or v/t/n.
+// A file without faces -> degenerate. A line longer than kObjMaxLine, more than
+// kObjMaxElements elements -> too_large. A missing file -> io_error. No input crashes the
+// reader (tests/data/obj_malformed, and the sanitizer run).
+// Host side (std::vector, std::unordered_map).
+#pragma once
+
+#include <cstddef>
+
+#include "shitsukan/core/status.hpp"
+#include "shitsukan/geom/mesh.hpp"
+
+namespace shitsukan {
+
+constexpr std::size_t kObjMaxLine = 1u << 16;      // 64 KiB per line
+constexpr std::size_t kObjMaxElements = 1u << 26;  // 67 M vertices / corners
+
+Status read_obj(const char* path, TriangleMesh* out);
+// `name` is used in the messages in place of a path.
+Status read_obj_text(const char* text, std::size_t length, const char* name, TriangleMesh* out);
+
+}  // namespace shitsukan

@@ -1,0 +1,36 @@
+// shitsukan/image/image_read.hpp — reading images (PNG 8 and 16 bit, JPEG, BMP, TGA, PGM/PPM,
+// ...) through stb_image, compiled privately like stb_image_write (no stbi_* symbol leaves
+// the library).
+//
+// Manual
+//   LoadedImage img;
+//   Status s = read_image("photo.png", &img);      // img.width, height, channels (1..4), bits
+//   std::uint16_t v = img.sample(x, y, 0);         // 0..255 (bits 8) or 0..65535 (bits 16)
+//   bool ok = image_reading_available();           // false in a build without stb_image.h
+//
+// 16-bit PNGs keep their 16 bits (bits = 16); every other file is read as 8-bit.
+// Errors: a missing or undecodable file -> io_error with stb_image's reason; a build without
+// the stb_image header -> not_supported. Host side.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "shitsukan/core/status.hpp"
+
+namespace shitsukan {
+
+struct LoadedImage {
+    int width = 0, height = 0, channels = 0, bits = 8;
+    std::vector<std::uint16_t> samples;  // width·height·channels, top row first
+    std::uint16_t sample(int x, int y, int c) const {
+        return samples[(std::size_t(y) * std::size_t(width) + std::size_t(x)) *
+                           std::size_t(channels) +
+                       std::size_t(c)];
+    }
+};
+
+Status read_image(const char* path, LoadedImage* out);
+bool image_reading_available();
+
+}  // namespace shitsukan

@@ -1,0 +1,126 @@
+#!/usr/bin/env bash
+# tests/cli/run.sh BINARY — the `shitsukan` tool's tests (make test-cli): each good run exits 0
+# and makes its files (non-empty, the right kind); each bad flag or value exits 2 with ONE line
+# on stderr naming the flag. Last line: "cli tests: N passed, 0 failed".
+set -u
+BIN="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"
+ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
+WORK="$(mktemp -d /tmp/shitsukan_cli.XXXXXX)"
+trap 'rm -rf "$WORK"' EXIT
+cd "$WORK"
+pass=0
+fail=0
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
+
+# good RUN-ARGS... -- FILES...: exit 0 and every file exists, non-empty, PNGs with the signature
+good() {
+    local args=() files=() seen=0
+    for a in "$@"; do
+        if [ "$a" = "--" ]; then seen=1; continue; fi
+        if [ $seen = 0 ]; then args+=("$a"); else files+=("$a"); fi
+    done
+    if ! "$BIN" "${args[@]}" --quiet > out.txt 2> err.txt; then
+        bad "shitsukan ${args[*]} exited $? ($(head -c 300 err.txt))"; return
+    fi
+    for f in "${files[@]}"; do
+        if [ ! -s "$f" ]; then bad "shitsukan ${args[*]}: $f missing or empty"; return; fi
+        case "$f" in
+        *.png) if [ "$(head -c 4 "$f" | od -An -c | tr -d ' ')" != "211PNG" ]; then
+                   bad "$f is not a PNG"; return; fi ;;
+        *.pfm) if ! head -c 2 "$f" | grep -q '^P[Ff]'; then bad "$f is not a PFM"; return; fi ;;
+        *.obj) if ! grep -q '^f ' "$f"; then bad "$f has no faces"; return; fi ;;
+        *.svg) if ! grep -q '<svg' "$f"; then bad "$f is not SVG"; return; fi ;;
+        esac
+    done
+    ok
+}
+
+# refused WANT-IN-MESSAGE RUN-ARGS...: exit 2, exactly one stderr line containing the text
+refused() {
+    local want="$1"; shift
+    "$BIN" "$@" > out.txt 2> err.txt
+    local rc=$?
+    if [ $rc != 2 ]; then bad "shitsukan $* exited $rc, not 2 ($(head -c 200 err.txt))"; return; fi
+    if [ "$(wc -l < err.txt)" != 1 ]; then bad "shitsukan $*: stderr is not one line:"; cat err.txt; return; fi
+    if ! grep -qF -- "$want" err.txt; then bad "shitsukan $*: message lacks '$want': $(cat err.txt)"; return; fi
+    ok
+}
+
+# --- good runs ---
+good marble --size 64 -o m.png -- m.png
+good marble --size 64 --tileable --pfm m.pfm -o mt.png -- mt.png m.pfm
+good marble --size 64 --layer-period 8 --w 2 --alpha 0.7 --plane xy --at 10 -o ml.png -- ml.png
+good wood --size 64 --k2 2 --x0 30 --y0 30 -o w.png -- w.png
+good marble --size 64 --stripes "20,3,0.8;44,1.5,1.2" --i-min 10,20,30 --i-max 250,240,230 \
+     -o ms.png -- ms.png
+good leather --size 96 --section concave --pfm --obj-step 8 -o croc -- croc_height16.png \
+     croc_normal.png croc_pattern.svg croc_height.pfm croc_relief.obj
+good leather --size 64 --control "0,0.1,0.5,0.1,0.8,0.12,1,0" --D 0.2 --d 0.2 -o own -- \
+     own_height16.png own_normal.png
+good wrinkly --mesh "$ROOT/examples/data/ridge.mesh" --grid-level 2 --size 64 -o wr -- wr.obj wr.png
+good wrinkly --mesh "$ROOT/examples/data/ridge.mesh" --form superposed --delta 0.6 --K 3 \
+     --grid-level 2 --size 64 -o sp -- sp.obj sp.png
+good bark --species pine --N_R 16 --N_H 12 -o pine -- pine_cracks.png pine.svg pine_nodes.csv \
+     pine_springs.csv pine_triangles.csv pine_trunk.obj
+good bark --species chinese_tallow --N_R 16 --N_H 12 --no-csv --kappa1 1.05 -o t -- t_cracks.png
+good ist --N 3 --K 2 --
+good version --
+# marble baked onto an OBJ's uv map (the trunk the bark run wrote has uv), and a view
+good marble --obj pine_trunk.obj --size 64 --view view.png -o baked.png -- baked.png view.png
+# the tileable marble's PFM: 64 x 64 floats; ist prints N^K = 9 pairs after 2 comments
+if [ "$(sed -n 2p m.pfm)" = "64 64" ]; then ok; else bad "m.pfm header $(sed -n 2p m.pfm)"; fi
+"$BIN" ist --N 3 --K 2 > ist.txt
+if [ "$(grep -vc '^#' ist.txt)" = 9 ] && grep -q '^12 21$' ist.txt; then ok; else bad "ist table"; cat ist.txt; fi
+# help cites the paper and exits 0
+for c in marble wood leather wrinkly bark ist; do
+    if "$BIN" $c --help > help.txt && grep -qE 'okada|tokai|fujimoto|hirota|§' help.txt; then ok
+    else bad "$c --help"; fi
+done
+
+# --- refused: exit 2, one line naming the flag ---
+refused "--k must be a number in [0, 1000]" marble --k abc
+refused "--k must be a number in [0, 1000]" marble --k 1e9
+refused "--R must be an integer in [1, 8]" marble --R 12
+refused "--size must be an integer in [8, 16384]" marble --size 3
+refused "--size must be an integer" wood --size 1.5
+refused "--seed must be an integer in [0, 4294967295]" marble --seed -4
+refused "--beta must be a number" marble --beta nan
+refused "--plane must be one of xz|xy|yz" marble --plane diagonal
+refused "unknown flag --bogus" marble --bogus
+refused "--tileable" wood --tileable
+refused "--stripes must be c,w,alpha triples" marble --stripes "1,2"
+refused "--stripes must be c,w,alpha triples" marble --stripes "1,0,1"
+refused "--i-max must be r,g,b with each in [0, 255]" marble --i-max 1,2,300
+refused "--i-min must be r,g,b" wood --i-min red
+refused "--view needs --obj" marble --view x.png
+refused "-o needs a value" marble -o
+refused "--a must be a number in [0, 1]" leather --a 2
+refused "--section must be one of convex|concave|two_segment" leather --section flat
+refused "--control must be 8 numbers" leather --control "1,2,3"
+refused "--control: " leather --control "0,0,1,1,0,0.5,0.1,0"
+refused "--D must be a number" leather --D 0
+refused "--mesh is required" wrinkly
+refused "--N must be an integer in [2, 32]" wrinkly --N 1
+refused "--delta must be" wrinkly --delta 1.5
+refused "--species must be one of camphor|chinese_tallow|pine" bark --species oak
+refused "--N_R must be an even integer" bark --N_R 17
+refused "--kappa1 must be a number" bark --kappa1 0.9
+refused "--K must be an integer in [0, 40]" ist --K 99
+refused "--kind must be one of" ist --kind spiral
+refused "--N, --K, --bases" ist --N 10 --K 7
+refused "unknown command" frobnicate
+refused "takes no value" marble --tileable=yes
+refused "unexpected argument" marble stray
+# a malformed control-mesh file: exit 1 with the line number
+printf '2 2\n0 0 0 0\n1 0 0 x\n' > broken.mesh
+"$BIN" wrinkly --mesh broken.mesh > out.txt 2> err.txt
+rc=$?
+if [ $rc = 1 ] && grep -q 'broken.mesh:3:' err.txt; then ok; else bad "broken.mesh: rc $rc $(cat err.txt)"; fi
+printf 'v 0 0 0\nf 1 2 3\n' > broken.obj
+"$BIN" marble --obj broken.obj > out.txt 2> err.txt
+rc=$?
+if [ $rc = 1 ] && grep -q 'broken.obj:2:' err.txt; then ok; else bad "broken.obj: rc $rc $(cat err.txt)"; fi
+
+echo "cli tests: $pass passed, $fail failed"
+[ $fail = 0 ]
