@@ -135,8 +135,7 @@ SHITSUKAN_FIGURE(hirota_fig05, "hirota1998", "fig05",
                       double(s.regions.mean_height)),
                   Rgb8{20, 20, 20}, 1);
         page.text({float(i * col + 8), float(oy + map.height() + 20)},
-                  fmt("%zu breaks, %zu regions, %.2f s", s.run.breaks.size(),
-                      s.regions.regions.size(), s.seconds),
+                  fmt("%zu breaks, %zu regions", s.run.breaks.size(), s.regions.regions.size()),
                   Rgb8{90, 90, 90}, 1);
         SHITSUKAN_TRY(write_crack_svg(s.bark, T, s.bark.net.W.data(),
                                       ctx.path(fmt("_%d.svg", i + 1)).c_str(), px_per_cm));
