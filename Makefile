@@ -8,6 +8,9 @@
 #                         the stb header, dropped Status is a compile error under -Werror
 #   make test-consumers   installs cmake/pkg-config if missing; builds tests/consumer four ways
 #                         (add_subdirectory, FetchContent, find_package, pkg-config)
+#   make test-mcu         installs the Arm toolchain, newlib and QEMU if missing; runs
+#                         ports/cortex-m's transcript on the host, a Cortex-M4F and a Cortex-M7
+#                         (QEMU mps2-an386 / mps2-an500) and requires identical transcripts
 #
 # Sources are discovered: any lib/shitsukan/**/*.cpp is part of the library, any
 # paper_figures/**/*.cpp part of the figures driver, tests/*.cpp part of the test runner,
@@ -60,7 +63,7 @@ EXAMPLES   := $(EXAMPLE_SRCS:examples/%.cpp=$(BUILD)/examples/%)
 LIBRARY    := $(BUILD)/libshitsukan.a
 
 .PHONY: all test test-sanitize figures examples bench check-small check-api test-consumers \
-        install deps bench-deps consumer-deps clean
+        test-mcu install deps bench-deps consumer-deps mcu-deps clean
 
 # The top-level targets run one at a time (each builds in parallel inside its own sub-make), so
 # `make -j test figures` cannot build the library twice at once.
@@ -77,6 +80,11 @@ REQUIRED := /usr/include/doctest/doctest.h:doctest-dev /usr/include/stb/stb_imag
 BENCH_REQUIRED := /usr/include/libnoise/noise.h:libnoise-dev /usr/include/boost/polygon/voronoi.hpp:libboost-dev \
                   /usr/include/CGAL/Surface_mesh.h:libcgal-dev
 CONSUMER_REQUIRED := /usr/bin/cmake:cmake /usr/bin/pkg-config:pkg-config /usr/bin/git:git
+MCU_NEWLIB := /usr/lib/arm-none-eabi/newlib/thumb/v7e-m+fp/hard
+MCU_REQUIRED := /usr/bin/arm-none-eabi-g++:gcc-arm-none-eabi \
+                $(MCU_NEWLIB)/libc_nano.a:libnewlib-arm-none-eabi \
+                $(MCU_NEWLIB)/libstdc++.a:libstdc++-arm-none-eabi-newlib \
+                /usr/bin/qemu-system-arm:qemu-system-arm
 define ensure_packages
 	@missing=""; for pair in $(1); do f=$${pair%%:*}; p=$${pair##*:}; \
 	  [ -f "$$f" ] || missing="$$missing $$p"; done; \
@@ -98,6 +106,9 @@ bench-deps: deps
 
 consumer-deps: deps
 	$(call ensure_packages,$(CONSUMER_REQUIRED))
+
+mcu-deps: deps
+	$(call ensure_packages,$(MCU_REQUIRED))
 
 # ---- the two set-up commands ----
 test: deps
@@ -179,6 +190,50 @@ check-api: deps
 
 test-consumers: consumer-deps
 	JOBS=$(JOBS) CXX=$(CXX) bash tests/consumer/run.sh
+
+# ---- microcontrollers: ports/cortex-m (see its README.md) ----
+# The small-device files (and render/solid_mesh.cpp, the figures' solid-texture shader) are
+# compiled for each core with arm-none-eabi-g++ -Os, newlib-nano, no exceptions, no RTTI;
+# ports/cortex-m/test_mcu.sh runs the three transcripts and compares them.
+MCU_CXX    := arm-none-eabi-g++
+MCU_DIR    := $(BUILD)/mcu
+MCU_SRCS   := $(SMALL_CPPS) lib/shitsukan/render/solid_mesh.cpp ports/cortex-m/transcript.cpp \
+              ports/cortex-m/semihosting.cpp ports/cortex-m/startup.cpp ports/cortex-m/device_main.cpp
+MCU_FLAGS  := -std=c++17 -Os -Wall -Wextra $(if $(CI),-Werror) -ffp-contract=off -fno-exceptions \
+              -fno-rtti -fno-threadsafe-statics -fno-use-cxa-atexit -ffunction-sections \
+              -fdata-sections -DSHITSUKAN_SMALL_DEVICE -Ilib -Iports/cortex-m
+MCU_CPU_m4 := -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard
+MCU_CPU_m7 := -mcpu=cortex-m7 -mthumb -mfpu=fpv5-d16 -mfloat-abi=hard
+MCU_LDFLAGS := --specs=nano.specs --specs=nosys.specs -nostartfiles -Wl,--gc-sections \
+               -T ports/cortex-m/mps2.ld
+
+test-mcu: mcu-deps
+	@$(SUBMAKE) $(MCU_DIR)/m4/transcript.elf $(MCU_DIR)/m7/transcript.elf \
+	  $(MCU_DIR)/host_transcript $(MCU_DIR)/png_fnv $(BUILD)/paper_figures
+	bash ports/cortex-m/test_mcu.sh $(MCU_DIR) $(BUILD)/paper_figures
+
+$(MCU_DIR)/host_transcript: ports/cortex-m/host_main.cpp ports/cortex-m/transcript.cpp \
+                            ports/cortex-m/transcript.hpp $(LIBRARY)
+	@mkdir -p $(@D)
+	$(CXX) $(CPPFLAGS) $(CXXFLAGS) -Iports/cortex-m -o $@ ports/cortex-m/host_main.cpp \
+	  ports/cortex-m/transcript.cpp $(LIBRARY)
+
+$(MCU_DIR)/png_fnv: tests/mcu/png_fnv.cpp
+	@mkdir -p $(@D)
+	$(CXX) -std=c++17 -O2 -w -o $@ $<
+
+define mcu_core
+$(MCU_DIR)/$(1)/%.o: %.cpp $(FLAGS_STAMP)
+	@mkdir -p $$(@D)
+	$(MCU_CXX) $(MCU_CPU_$(1)) $(MCU_FLAGS) -MMD -MP -c $$< -o $$@
+
+$(MCU_DIR)/$(1)/transcript.elf: $(MCU_SRCS:%.cpp=$(MCU_DIR)/$(1)/%.o) ports/cortex-m/mps2.ld
+	$(MCU_CXX) $(MCU_CPU_$(1)) $(MCU_LDFLAGS) -Wl,-Map=$$(@:.elf=.map) -o $$@ \
+	  $(MCU_SRCS:%.cpp=$(MCU_DIR)/$(1)/%.o)
+	@arm-none-eabi-size $$@
+endef
+$(eval $(call mcu_core,m4))
+$(eval $(call mcu_core,m7))
 
 # ---- linking ----
 $(LIBRARY): $(LIB_OBJS)

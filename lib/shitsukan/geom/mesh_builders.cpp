@@ -4,6 +4,7 @@
 
 #include "shitsukan/core/assert.hpp"
 #include "shitsukan/geom/block_letters.hpp"
+#include "shitsukan/geom/mesh_arrays.hpp"
 #include "shitsukan/geom/triangulate.hpp"
 
 namespace shitsukan {
@@ -40,32 +41,17 @@ void add_oriented(TriangleMesh* m, std::uint32_t a, std::uint32_t b, std::uint32
 
 Status make_box(Vec3 lo, Vec3 hi, TriangleMesh* out) {
     if (!out) return Status::error(StatusCode::invalid_argument, "make_box: null output");
-    if (!is_finite(lo) || !is_finite(hi) || !(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
-        return Status::error(StatusCode::invalid_argument,
-                             "make_box: need finite corners with min < max on every axis "
-                             "(got (%g,%g,%g) .. (%g,%g,%g))",
-                             double(lo.x), double(lo.y), double(lo.z), double(hi.x), double(hi.y),
-                             double(hi.z));
+    // The caller-array builder (mesh_arrays.hpp) is the one box: same vertices, same order.
+    Vec3 positions[kBoxVertexCount], normals[kBoxVertexCount];
+    Vec2 uvs[kBoxVertexCount];
+    std::uint32_t indices[3 * kBoxTriangleCount];
+    MeshView box;
+    SHITSUKAN_TRY(make_box_arrays(lo, hi, positions, normals, uvs, kBoxVertexCount, indices,
+                                  3 * kBoxTriangleCount, &box));
     *out = TriangleMesh();
-    // Each face: normal axis, sign; its four corners get their own vertices (flat normals).
-    for (int axis = 0; axis < 3; ++axis) {
-        for (int sign = -1; sign <= 1; sign += 2) {
-            Vec3 n{};
-            n[axis] = float(sign);
-            int u_axis = (axis + 1) % 3, v_axis = (axis + 2) % 3;
-            std::uint32_t base = std::uint32_t(out->positions.size());
-            for (int k = 0; k < 4; ++k) {
-                int du = (k == 1 || k == 2), dv = (k >= 2);
-                Vec3 p;
-                p[axis] = sign > 0 ? hi[axis] : lo[axis];
-                p[u_axis] = du ? hi[u_axis] : lo[u_axis];
-                p[v_axis] = dv ? hi[v_axis] : lo[v_axis];
-                out->add_vertex(p, n, Vec2{float(du), float(dv)});
-            }
-            add_oriented(out, base, base + 1, base + 2, n);
-            add_oriented(out, base, base + 2, base + 3, n);
-        }
-    }
+    for (int i = 0; i < box.vertex_count; ++i) out->add_vertex(positions[i], normals[i], uvs[i]);
+    for (int t = 0; t < box.triangle_count; ++t)
+        out->add_triangle(indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]);
     return Status::success();
 }
 
