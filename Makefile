@@ -84,7 +84,7 @@ MCU_NEWLIB := /usr/lib/arm-none-eabi/newlib/thumb/v7e-m+fp/hard
 MCU_REQUIRED := /usr/bin/arm-none-eabi-g++:gcc-arm-none-eabi \
                 $(MCU_NEWLIB)/libc_nano.a:libnewlib-arm-none-eabi \
                 $(MCU_NEWLIB)/libstdc++.a:libstdc++-arm-none-eabi-newlib \
-                /usr/bin/qemu-system-arm:qemu-system-arm
+                /usr/bin/qemu-system-arm:qemu-system-arm /usr/bin/clang++:clang
 define ensure_packages
 	@missing=""; for pair in $(1); do f=$${pair%%:*}; p=$${pair##*:}; \
 	  [ -f "$$f" ] || missing="$$missing $$p"; done; \
@@ -197,8 +197,10 @@ test-consumers: consumer-deps
 # ports/cortex-m/test_mcu.sh runs the three transcripts and compares them.
 MCU_CXX    := arm-none-eabi-g++
 MCU_DIR    := $(BUILD)/mcu
-MCU_SRCS   := $(SMALL_CPPS) lib/shitsukan/render/solid_mesh.cpp ports/cortex-m/transcript.cpp \
-              ports/cortex-m/semihosting.cpp ports/cortex-m/startup.cpp ports/cortex-m/device_main.cpp
+MCU_SRCS   := $(filter-out lib/shitsukan/core/assert.cpp,$(SMALL_CPPS)) \
+              lib/shitsukan/render/solid_mesh.cpp ports/cortex-m/transcript.cpp \
+              ports/cortex-m/semihosting.cpp ports/cortex-m/startup.cpp \
+              ports/cortex-m/device_main.cpp ports/cortex-m/assert_handler.cpp
 MCU_FLAGS  := -std=c++17 -Os -Wall -Wextra $(if $(CI),-Werror) -ffp-contract=off -fno-exceptions \
               -fno-rtti -fno-threadsafe-statics -fno-use-cxa-atexit -ffunction-sections \
               -fdata-sections -DSHITSUKAN_SMALL_DEVICE -Ilib -Iports/cortex-m
@@ -209,8 +211,16 @@ MCU_LDFLAGS := --specs=nano.specs --specs=nosys.specs -nostartfiles -Wl,--gc-sec
 
 test-mcu: mcu-deps
 	@$(SUBMAKE) $(MCU_DIR)/m4/transcript.elf $(MCU_DIR)/m7/transcript.elf \
-	  $(MCU_DIR)/host_transcript $(MCU_DIR)/png_fnv $(BUILD)/paper_figures
+	  $(MCU_DIR)/host_transcript $(MCU_DIR)/host_clang_O0 $(MCU_DIR)/png_fnv $(BUILD)/paper_figures
 	bash ports/cortex-m/test_mcu.sh $(MCU_DIR) $(BUILD)/paper_figures
+
+# The same program built by clang at -O0 (library sources included): same bits as gcc -O2.
+MCU_HOST_SRCS := $(filter-out ports/cortex-m/semihosting.cpp ports/cortex-m/startup.cpp \
+                   ports/cortex-m/device_main.cpp ports/cortex-m/assert_handler.cpp,$(MCU_SRCS)) \
+                 lib/shitsukan/core/assert.cpp ports/cortex-m/host_main.cpp
+$(MCU_DIR)/host_clang_O0: $(MCU_HOST_SRCS) $(FLAGS_STAMP)
+	@mkdir -p $(@D)
+	clang++ -std=c++17 -O0 -ffp-contract=off -Ilib -Iports/cortex-m -o $@ $(MCU_HOST_SRCS)
 
 $(MCU_DIR)/host_transcript: ports/cortex-m/host_main.cpp ports/cortex-m/transcript.cpp \
                             ports/cortex-m/transcript.hpp $(LIBRARY)

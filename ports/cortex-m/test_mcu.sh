@@ -10,6 +10,13 @@ figures="${2:-build/paper_figures}"
 fail=0
 
 "$dir/host_transcript" > "$dir/host.txt" || { echo "test-mcu: host transcript failed"; cat "$dir/host.txt"; exit 1; }
+"$dir/host_clang_O0" > "$dir/host_clang_O0.txt" || { echo "test-mcu: clang -O0 transcript failed"; exit 1; }
+if cmp -s "$dir/host.txt" "$dir/host_clang_O0.txt"; then
+    echo "test-mcu: host clang -O0 transcript == host gcc -O2 transcript"
+else
+    echo "test-mcu: host clang -O0 transcript differs from gcc -O2:"; diff "$dir/host.txt" "$dir/host_clang_O0.txt" || true
+    fail=1
+fi
 for pair in m4:mps2-an386 m7:mps2-an500; do
     core=${pair%%:*}; machine=${pair##*:}
     rm -f "$dir/$core.txt"
@@ -41,5 +48,5 @@ else
     fail=1
 fi
 grep -q '^end ok$' "$dir/host.txt" || { echo "test-mcu: the transcript reports errors"; fail=1; }
-[ "$fail" = 0 ] && echo "test-mcu: host, Cortex-M4F and Cortex-M7 transcripts are identical"
+[ "$fail" = 0 ] && echo "test-mcu: host (gcc -O2, clang -O0), Cortex-M4F and Cortex-M7 (gcc -Os) transcripts are identical"
 exit "$fail"

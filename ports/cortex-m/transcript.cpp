@@ -11,6 +11,7 @@
 
 #include <cstdint>
 
+#include "shitsukan/core/detmath.hpp"
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/core/vec.hpp"
 #include "shitsukan/geom/mesh_arrays.hpp"
@@ -89,6 +90,32 @@ bool check(const Status& s, const char* what) {
     put("\n");
     ++g_failures;
     return false;
+}
+
+// ---- deterministic maths ----
+void section_detmath() {
+    Fnv h;
+    for (int i = 0; i < 4096; ++i) {
+        const float x = float(i - 2048) * 0.0123f, u = float(i) / 4096.0f;
+        h.f(det_sinf(x * 37.0f));
+        h.f(det_cosf(x));
+        h.f(det_tanf(x));
+        h.f(det_expf(x * 0.5f));
+        h.f(det_logf(u + 0.001f));
+        h.f(det_powf(u * 1.7f, 1.0f + float(i % 97)));
+        h.f(det_acosf(u * 2.0f - 1.0f));
+        h.f(det_atan2f(x, u - 0.5f));
+    }
+    put("detmath fnv ");
+    put_hash(h);
+    const float samples[] = {det_sinf(1.0e22f), det_cosf(3.14159274f), det_tanf(1.5f),
+                             det_powf(0.87f, 37.5f), det_expf(-7.25f), det_acosf(-0.3f),
+                             det_atan2f(-2.0f, -3.0f)};
+    for (float v : samples) {
+        put(" ");
+        put_float(v);
+    }
+    put("\n");
 }
 
 // ---- lattice ----
@@ -312,6 +339,7 @@ int run_transcript(WriteFn write) {
     g_write = write;
     g_failures = 0;
     put("shitsukan transcript 1\n");
+    section_detmath();
     section_lattice();
     section_slice("marble", okada1987_marble(kOkada1987MarbleK));
     section_slice("wood", okada1987_wood(kOkada1987WoodK));

@@ -1,4 +1,5 @@
 #include "shitsukan/geom/mesh_builders.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 #include <cmath>
 
@@ -67,8 +68,8 @@ Status make_uv_sphere(float radius, int slices, int stacks, TriangleMesh* out) {
         double theta = kPiD * i / stacks;
         for (int j = 0; j <= slices; ++j) {
             double phi = 2.0 * kPiD * (j == slices ? 0 : j) / slices;
-            Vec3 n{float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)),
-                   float(-std::sin(theta) * std::sin(phi))};
+            Vec3 n{float(det_sin(theta) * det_cos(phi)), float(det_cos(theta)),
+                   float(-det_sin(theta) * det_sin(phi))};
             if (i == 0 || i == stacks) n = Vec3{0.0f, i == 0 ? 1.0f : -1.0f, 0.0f};
             out->add_vertex(n * radius, n, Vec2{float(j) / slices, float(i) / stacks});
         }
@@ -114,7 +115,7 @@ Status make_torus(float major_radius, float minor_radius, int major_segments, in
     std::vector<Vec2d> circle;
     for (int k = 0; k <= minor_segments; ++k) {
         double v = 2.0 * kPiD * (k == minor_segments ? 0 : k) / minor_segments;
-        circle.push_back({major_radius + minor_radius * std::cos(v), minor_radius * std::sin(v)});
+        circle.push_back({major_radius + minor_radius * det_cos(v), minor_radius * det_sin(v)});
     }
     return make_revolution(circle.data(), int(circle.size()), major_segments, out);
 }
@@ -197,7 +198,7 @@ Status make_revolution(const Vec2d* profile, int count, int segments, TriangleMe
     for (const Ring& ring : rings)
         for (int j = 0; j <= segments; ++j) {
             double phi = 2.0 * kPiD * (j == segments ? 0 : j) / segments;
-            double c = std::cos(phi), s = -std::sin(phi);
+            double c = det_cos(phi), s = -det_sin(phi);
             Vec3 p{float(ring.r * c), float(ring.y), float(ring.r * s)};
             Vec3 nn{float(ring.normal.x * c), float(ring.normal.y), float(ring.normal.x * s)};
             out->add_vertex(p, nn, Vec2{float(j) / segments, float(ring.v)});
@@ -347,8 +348,8 @@ Status make_sphere_without_octant(float radius, int n, TriangleMesh* out) {
             for (int j = 0; i + j <= n; ++j) {
                 Vec3 p = sphere_point(sx * i, sy * j, sz * (n - i - j));
                 Vec3 nn = normalize(p);
-                float u = 0.5f + std::atan2(-nn.z, nn.x) / kTwoPi,
-                      v = std::acos(clamp(nn.y, -1.0f, 1.0f)) / kPi;
+                float u = 0.5f + det_atan2(-nn.z, nn.x) / kTwoPi,
+                      v = det_acos(clamp(nn.y, -1.0f, 1.0f)) / kPi;
                 idx[std::size_t(i * (n + 1) + j)] = out->add_vertex(p, nn, {u, v});
             }
         for (int i = 0; i < n; ++i)
