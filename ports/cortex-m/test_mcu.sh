@@ -48,5 +48,7 @@ else
     fail=1
 fi
 grep -q '^end ok$' "$dir/host.txt" || { echo "test-mcu: the transcript reports errors"; fail=1; }
+echo "test-mcu: footprint of the Cortex-M4F transcript firmware by module (-Os, newlib-nano):"
+bash "$(dirname "$0")/footprint.sh" "$dir/m4/transcript.map"
 [ "$fail" = 0 ] && echo "test-mcu: host (gcc -O2, clang -O0), Cortex-M4F and Cortex-M7 (gcc -Os) transcripts are identical"
 exit "$fail"
