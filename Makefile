@@ -63,7 +63,7 @@ EXAMPLES   := $(EXAMPLE_SRCS:examples/%.cpp=$(BUILD)/examples/%)
 LIBRARY    := $(BUILD)/libshitsukan.a
 
 .PHONY: all test test-sanitize figures examples bench check-small check-api test-consumers \
-        test-mcu install deps bench-deps consumer-deps mcu-deps clean
+        test-mcu bench-mcu install deps bench-deps consumer-deps mcu-deps clean
 
 # The top-level targets run one at a time (each builds in parallel inside its own sub-make), so
 # `make -j test figures` cannot build the library twice at once.
@@ -214,6 +214,16 @@ test-mcu: mcu-deps
 	  $(MCU_DIR)/host_transcript $(MCU_DIR)/host_clang_O0 $(MCU_DIR)/png_fnv $(BUILD)/paper_figures
 	bash ports/cortex-m/test_mcu.sh $(MCU_DIR) $(BUILD)/paper_figures
 
+# Instructions per lattice node / marble pixel / rasterized pixel on the Cortex-M4F (QEMU
+# -icount: one instruction per ns of virtual time, read from the MPS2 timer).
+MCU_BENCH_SRCS := $(filter-out ports/cortex-m/transcript.cpp ports/cortex-m/device_main.cpp,$(MCU_SRCS)) \
+                  ports/cortex-m/bench_main.cpp
+bench-mcu: mcu-deps
+	@$(SUBMAKE) $(MCU_DIR)/m4/bench.elf
+	@qemu-system-arm -M mps2-an386 -icount shift=0 -display none -monitor none -serial none \
+	  -chardev stdio,id=semi -semihosting-config enable=on,target=native,chardev=semi \
+	  -kernel $(MCU_DIR)/m4/bench.elf
+
 # The same program built by clang at -O0 (library sources included): same bits as gcc -O2.
 MCU_HOST_SRCS := $(filter-out ports/cortex-m/semihosting.cpp ports/cortex-m/startup.cpp \
                    ports/cortex-m/device_main.cpp ports/cortex-m/assert_handler.cpp,$(MCU_SRCS)) \
@@ -236,6 +246,9 @@ define mcu_core
 $(MCU_DIR)/$(1)/%.o: %.cpp $(FLAGS_STAMP)
 	@mkdir -p $$(@D)
 	$(MCU_CXX) $(MCU_CPU_$(1)) $(MCU_FLAGS) -MMD -MP -c $$< -o $$@
+
+$(MCU_DIR)/$(1)/bench.elf: $(MCU_BENCH_SRCS:%.cpp=$(MCU_DIR)/$(1)/%.o) ports/cortex-m/mps2.ld
+	$(MCU_CXX) $(MCU_CPU_$(1)) $(MCU_LDFLAGS) -o $$@ $(MCU_BENCH_SRCS:%.cpp=$(MCU_DIR)/$(1)/%.o)
 
 $(MCU_DIR)/$(1)/transcript.elf: $(MCU_SRCS:%.cpp=$(MCU_DIR)/$(1)/%.o) ports/cortex-m/mps2.ld
 	$(MCU_CXX) $(MCU_CPU_$(1)) $(MCU_LDFLAGS) -Wl,-Map=$$(@:.elf=.map) -o $$@ \
