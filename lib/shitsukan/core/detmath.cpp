@@ -41,7 +41,7 @@ constexpr const double* kInvFactorial = kInvFactorialTable.v;
 }  // namespace
 
 double det_log(double x) {
-    if (!(x > 0.0)) return x == 0.0 ? -HUGE_VAL : NAN;
+    if (!(x > 0.0)) return x == 0.0 ? -HUGE_VAL : double(NAN);
     if (std::isinf(x)) return x;
     int e = 0;
     double m = std::frexp(x, &e);      // x = m·2^e, m in [0.5, 1): exact
