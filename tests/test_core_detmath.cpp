@@ -112,6 +112,18 @@ TEST_CASE("det_expf, det_logf: within 1 ulp over their domains") {
     CHECK(det_expf(-110.0f) == 0.0f);
 }
 
+TEST_CASE("det_expf_fast: float arithmetic only, within 2 ulp over its domain") {
+    Worst e = scan([](float x) { return det_expf_fast(x); },
+                   [](long double x) { return expl(x); }, 0.0f, 104.0f, 257);
+    MESSAGE("exp (float arithmetic) worst " << e.err << " ulp at " << e.x);
+    CHECK(e.err < 2.0);
+    CHECK(det_expf_fast(0.0f) == 1.0f);
+    CHECK(std::isinf(det_expf_fast(89.0f)));
+    CHECK(det_expf_fast(-104.0f) == 0.0f);
+    CHECK(det_expf_fast(88.5f) > 2.0e38f);
+    CHECK(det_expf_fast(-100.0f) > 0.0f);  // subnormal results are not flushed
+}
+
 TEST_CASE("det_powf: within 1 ulp, exact powers exact, C99 special values") {
     Pcg32 rng(12, 7);
     Worst w;

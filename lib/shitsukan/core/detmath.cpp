@@ -394,4 +394,40 @@ double det_pow(double x, double y) {
     return x < 0.0 && y_odd ? -r : r;
 }
 
+
+// ---- float arithmetic only (hot paths on a single-precision FPU) ----
+float det_expf_fast(float x) {
+    if (x != x) return x;
+    if (x > 88.7228394f) return HUGE_VALF;
+    if (x < -103.972084f) return 0.0f;
+    // x = k·ln2 + r, |r| <= ln2/2 (about): ln2 = hi + lo with hi of 12 significant bits, so
+    // k·hi is exact for |k| <= 2^12 and x - k·hi is exact (Sterbenz) near the reduction.
+    constexpr float kLn2HiF = 0x1.62ep-1f;
+    constexpr float kLn2LoF = 0x1.0bfbe8p-15f;
+    const float k = std::floor(x * 1.44269502f + 0.5f);
+    const float r = (x - k * kLn2HiF) - k * kLn2LoF;
+    // e^r by Taylor to r^7/7! (the next term is < 3e-9 relative for |r| <= 0.35), Horner.
+    float p = 1.0f / 5040.0f;
+    p = p * r + 1.0f / 720.0f;
+    p = p * r + 1.0f / 120.0f;
+    p = p * r + 1.0f / 24.0f;
+    p = p * r + 1.0f / 6.0f;
+    p = p * r + 0.5f;
+    p = p * r + 1.0f;
+    p = p * r + 1.0f;
+    // times 2^k, built from its bits (k = 128 and subnormal results in two exact steps).
+    int ki = int(k);
+    if (ki > 127) {
+        p *= 2.0f;
+        ki -= 1;
+    } else if (ki < -126) {
+        p *= 0x1p-64f;
+        ki += 64;
+    }
+    const std::uint32_t bits = std::uint32_t(ki + 127) << 23;
+    float scale;
+    __builtin_memcpy(&scale, &bits, sizeof scale);
+    return p * scale;
+}
+
 }  // namespace shitsukan
