@@ -71,7 +71,7 @@ EXAMPLES   := $(EXAMPLE_SRCS:examples/%.cpp=$(BUILD)/examples/%)
 LIBRARY    := $(BUILD)/libshitsukan.a
 
 .PHONY: all test test-sanitize figures examples bench check-small check-api test-consumers \
-        test-mcu bench-mcu install deps bench-deps consumer-deps mcu-deps clean
+        test-mcu bench-mcu footprint-mcu install deps bench-deps consumer-deps mcu-deps clean
 
 # The top-level targets run one at a time (each builds in parallel inside its own sub-make), so
 # `make -j test figures` cannot build the library twice at once.
@@ -243,6 +243,26 @@ bench-mcu: mcu-deps
 	@qemu-system-arm -M mps2-an386 -icount shift=0 -display none -monitor none -serial none \
 	  -chardev stdio,id=semi -semihosting-config enable=on,target=native,chardev=semi \
 	  -kernel $(MCU_DIR)/m4/bench.elf
+
+# The firmwares of the README's footprint table (ports/cortex-m/footprint_main.cpp), M4F -Os
+# newlib-nano, Type III row cache off: built, run, measured (flash = text + data, RAM = data +
+# bss + the main stack's high-water mark).
+MCU_FP_SRCS := $(filter-out ports/cortex-m/transcript.cpp ports/cortex-m/device_main.cpp \
+                 lib/shitsukan/render/solid_mesh.cpp,$(MCU_SRCS)) ports/cortex-m/footprint_main.cpp
+MCU_FP_FLAGS := $(MCU_CPU_m4) $(MCU_FLAGS) -DSHITSUKAN_TYPE3_ROW_CACHE=0
+MCU_FP_STACK := 8192
+footprint-mcu: mcu-deps
+	@mkdir -p $(MCU_DIR)/footprint
+	@for v in LATTICE MARBLE; do \
+	  $(MCU_CXX) $(MCU_FP_FLAGS) -DFOOTPRINT_$$v $(MCU_LDFLAGS) -Wl,--defsym=STACK_SIZE=$(MCU_FP_STACK) \
+	    -o $(MCU_DIR)/footprint/$$v.elf $(MCU_FP_SRCS) || exit 1; \
+	  out=$$(qemu-system-arm -M mps2-an386 -display none -monitor none -serial none \
+	    -chardev stdio,id=semi -semihosting-config enable=on,target=native,chardev=semi \
+	    -kernel $(MCU_DIR)/footprint/$$v.elf) || { echo "footprint-mcu: $$v failed"; exit 1; }; \
+	  echo "$$out"; stack=$$(echo "$$out" | sed -n 's/.*main stack used \([0-9]*\) bytes/\1/p'); \
+	  arm-none-eabi-size $(MCU_DIR)/footprint/$$v.elf | awk -v v=$$v -v s=$$stack -v r=$(MCU_FP_STACK) 'NR == 2 { \
+	    printf "footprint: %s firmware (M4F, -Os, newlib-nano): flash %d bytes, RAM %d bytes (data %d + bss %d + stack used %d)\n", \
+	    v, $$1 + $$2, $$2 + $$3 - r + s, $$2, $$3 - r, s }'; done
 
 # The same program built by clang at -O0 (library sources included): same bits as gcc -O2.
 MCU_HOST_SRCS := $(filter-out ports/cortex-m/semihosting.cpp ports/cortex-m/startup.cpp \
