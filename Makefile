@@ -9,6 +9,9 @@
 #                         the stb header, dropped Status is a compile error under -Werror
 #   make test-consumers   installs cmake/pkg-config if missing; builds tests/consumer four ways
 #                         (add_subdirectory, FetchContent, find_package, pkg-config)
+#   make test-mcu         installs the Arm toolchain, newlib and QEMU if missing; runs
+#                         ports/cortex-m's transcript on the host, a Cortex-M4F and a Cortex-M7
+#                         (QEMU mps2-an386 / mps2-an500) and requires identical transcripts
 #
 # Sources are discovered: any lib/shitsukan/**/*.cpp is part of the library, any
 # paper_figures/**/*.cpp part of the figures driver, tests/*.cpp part of the test runner,
@@ -33,7 +36,21 @@ override CPPFLAGS := -Ilib -Ipaper_figures $(CPPFLAGS)
 # a container forbids it.
 ASAN_OPTIONS ?= detect_leaks=1
 SAN_FLAGS := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
-SMALL_FLAGS := -fno-exceptions -fno-rtti -DSHITSUKAN_SMALL_DEVICE
+SMALL_FLAGS := -fno-exceptions -fno-rtti -DSHITSUKAN_SMALL_DEVICE -Wdouble-promotion -fstack-usage
+# check-small's stack budget per function (bytes, from -fstack-usage; chosen: a quarter of the
+# 16 KB main stack ports/cortex-m reserves, so a call chain of a few library frames fits).
+# Known over it, listed rather than hidden: geom/predicates.cpp's incircle_exact (37.8 KB of
+# expansion arithmetic), issue 12 -- not used by the Cortex-M transcript.
+empty :=
+space := $(empty) $(empty)
+STACK_BUDGET := 4096
+STACK_OVER_BUDGET_KNOWN := incircle_exact
+# C library calls that may allocate (stdio buffers, printf's float and wide paths in newlib) or
+# pull stdio into a firmware. Known users, listed rather than hidden (issue 12, left): Status
+# messages (vsnprintf), the default assert handler (fprintf, abort: a port links its own,
+# ports/cortex-m/assert_handler.cpp), IST digit labels (snprintf).
+STDIO_CALLS := v?sn?printf|v?fprintf|printf|puts|fputs|fopen|fwrite|fflush|strdup|strndup|stderr|stdout|abort
+STDIO_KNOWN := core/status.o core/assert.o wrinkly/ist_digits.o
 
 LIB_SRCS     := $(shell find lib -name '*.cpp' 2>/dev/null | LC_ALL=C sort)
 FIG_SRCS     := $(shell find paper_figures -name '*.cpp' -not -path 'paper_figures/out/*' 2>/dev/null | LC_ALL=C sort)
@@ -64,7 +81,8 @@ EXAMPLES   := $(EXAMPLE_SRCS:examples/%.cpp=$(BUILD)/examples/%)
 LIBRARY    := $(BUILD)/libshitsukan.a
 
 .PHONY: all test test-sanitize figures examples bench check-small check-api test-consumers \
-        install deps bench-deps consumer-deps clean fuzz fuzz-deps figures-determinism cli test-cli
+        install deps bench-deps consumer-deps mcu-deps clean fuzz fuzz-deps figures-determinism \
+        cli test-cli test-mcu bench-mcu footprint-mcu
 
 # The top-level targets run one at a time (each builds in parallel inside its own sub-make), so
 # `make -j test figures` cannot build the library twice at once.
@@ -90,6 +108,11 @@ REQUIRED := /usr/include/doctest/doctest.h:doctest-dev /usr/include/stb/stb_imag
 BENCH_REQUIRED := /usr/include/libnoise/noise.h:libnoise-dev /usr/include/boost/polygon/voronoi.hpp:libboost-dev \
                   /usr/include/CGAL/Surface_mesh.h:libcgal-dev /usr/include/CGAL/Delaunay_triangulation_2.h:libcgal-dev
 CONSUMER_REQUIRED := /usr/bin/cmake:cmake /usr/bin/pkg-config:pkg-config /usr/bin/git:git
+MCU_NEWLIB := /usr/lib/arm-none-eabi/newlib/thumb/v7e-m+fp/hard
+MCU_REQUIRED := /usr/bin/arm-none-eabi-g++:gcc-arm-none-eabi \
+                $(MCU_NEWLIB)/libc_nano.a:libnewlib-arm-none-eabi \
+                $(MCU_NEWLIB)/libstdc++.a:libstdc++-arm-none-eabi-newlib \
+                /usr/bin/qemu-system-arm:qemu-system-arm /usr/bin/clang++:clang
 define ensure_packages
 	@missing=""; for pair in $(1); do f=$${pair%%:*}; p=$${pair##*:}; \
 	  [ -f "$$f" ] || missing="$$missing $$p"; done; \
@@ -165,6 +188,9 @@ figures-determinism: deps fuzz-deps
 	  echo "figures-determinism: $$(wc -l < $(BUILD)/det-gcc.sha) files identical between g++ and clang++"; \
 	else echo "figures-determinism: g++ and clang++ outputs differ:"; cat $(BUILD)/det.diff; exit 1; fi
 
+mcu-deps: deps
+	$(call ensure_packages,$(MCU_REQUIRED))
+
 # ---- the two set-up commands ----
 test: deps
 	@$(SUBMAKE) $(BUILD)/tests
@@ -193,13 +219,29 @@ check-small: $(SMALL_OBJS)
 	@bad=$$(nm -C --undefined-only $(SMALL_OBJS) 2>/dev/null | \
 	  grep -E ' (operator new|operator delete|malloc|calloc|realloc|free|__cxa_throw|__cxa_allocate_exception)' | sort -u); \
 	if [ -n "$$bad" ]; then echo "check-small: allocation or exceptions in small-device files:"; echo "$$bad"; exit 1; fi; \
+	stdio=$$(nm -A --undefined-only $(SMALL_OBJS) 2>/dev/null | grep -E ' U ($(STDIO_CALLS))$$' | \
+	  grep -v -E '$(subst $(space),|,$(STDIO_KNOWN)):' || true); \
+	if [ -n "$$stdio" ]; then echo "check-small: C library calls that may allocate or pull in stdio:"; echo "$$stdio"; exit 1; fi; \
 	for f in $(SMALL_SRCS); do \
 	  h=$$($(CXX) $(CPPFLAGS) -std=c++17 -M $$f | tr ' ' '\n' | \
 	      grep -E '/bits/(stl_vector|basic_string|unique_ptr|stl_map|stl_list|stl_deque|hashtable)\.h' | sort -u); \
 	  if [ -n "$$h" ]; then echo "check-small: $$f includes host containers:"; echo "$$h"; exit 1; fi; \
 	done; \
-	echo "check-small: $(words $(SMALL_CPPS)) small-device .cpp files compile with -fno-exceptions -fno-rtti and allocate nothing;"; \
-	echo "check-small: all $(words $(SMALL_SRCS)) small-device files ($(words $(SMALL_CPPS)) .cpp, $(words $(SMALL_HPPS)) headers) include no std containers or strings"
+	for h in $(SMALL_HPPS:lib/%=%); do printf '#include "%s"\n' "$$h" | \
+	  $(CXX) $(CPPFLAGS) $(CXXFLAGS) $(filter-out -fstack-usage,$(SMALL_FLAGS)) -fsyntax-only -x c++ - || \
+	  { echo "check-small: header $$h does not compile alone under the small-device flags"; exit 1; }; done; \
+	su=$$(cat $(SMALL_OBJS:.o=.su)); \
+	unbounded=$$(printf '%s\n' "$$su" | awk -F'\t' '$$3 ~ /dynamic/ && $$3 !~ /bounded/'); \
+	if [ -n "$$unbounded" ]; then echo "check-small: unbounded stack (VLA/alloca):"; echo "$$unbounded"; exit 1; fi; \
+	over=$$(printf '%s\n' "$$su" | awk -F'\t' -v b=$(STACK_BUDGET) '$$2 > b' | grep -v -E '$(subst $(space),|,$(STACK_OVER_BUDGET_KNOWN))' || true); \
+	if [ -n "$$over" ]; then echo "check-small: functions over the $(STACK_BUDGET)-byte stack budget:"; echo "$$over"; exit 1; fi; \
+	deepest=$$(printf '%s\n' "$$su" | grep -v -E '$(subst $(space),|,$(STACK_OVER_BUDGET_KNOWN))' | sort -t'	' -k2 -n -r | head -1 | awk -F'\t' '{ print $$2 " bytes: " $$1 }'); \
+	known=$$(printf '%s\n' "$$su" | grep -E '$(subst $(space),|,$(STACK_OVER_BUDGET_KNOWN))' | awk -F'\t' '{ print $$2 " bytes: " $$1 }'); \
+	echo "check-small: $(words $(SMALL_CPPS)) small-device .cpp files compile with -fno-exceptions -fno-rtti -Wdouble-promotion and allocate nothing;"; \
+	echo "check-small: all $(words $(SMALL_SRCS)) small-device files ($(words $(SMALL_CPPS)) .cpp, $(words $(SMALL_HPPS)) headers) include no std containers or strings; the $(words $(SMALL_HPPS)) headers compile alone under the same flags"; \
+	echo "check-small: stack per function <= $(STACK_BUDGET) bytes (-fstack-usage), deepest $$deepest"; \
+	echo "check-small: KNOWN over budget (issue 12, left): $$known"; \
+	echo "check-small: no stdio or allocating C library call ($(STDIO_CALLS)) outside the KNOWN users $(STDIO_KNOWN) (issue 12, left)"
 
 # Using the library from outside: see check-api / test-consumers in the header of this file.
 HEADERS := $(shell find lib -name '*.hpp' 2>/dev/null | LC_ALL=C sort)
@@ -245,6 +287,93 @@ check-api: deps
 
 test-consumers: consumer-deps
 	JOBS=$(JOBS) CXX=$(CXX) bash tests/consumer/run.sh
+
+# ---- microcontrollers: ports/cortex-m (see its README.md) ----
+# The small-device files (and render/solid_mesh.cpp, the figures' solid-texture shader) are
+# compiled for each core with arm-none-eabi-g++ -Os, newlib-nano, no exceptions, no RTTI;
+# ports/cortex-m/test_mcu.sh runs the three transcripts and compares them.
+MCU_CXX    := arm-none-eabi-g++
+MCU_DIR    := $(BUILD)/mcu
+MCU_SRCS   := $(filter-out lib/shitsukan/core/assert.cpp,$(SMALL_CPPS)) \
+              lib/shitsukan/render/solid_mesh.cpp ports/cortex-m/transcript.cpp \
+              ports/cortex-m/semihosting.cpp ports/cortex-m/startup.cpp \
+              ports/cortex-m/device_main.cpp ports/cortex-m/assert_handler.cpp
+MCU_FLAGS  := -std=c++17 -Os -Wall -Wextra $(if $(CI),-Werror) -ffp-contract=off -fno-exceptions \
+              -fno-rtti -fno-threadsafe-statics -fno-use-cxa-atexit -ffunction-sections \
+              -fdata-sections -DSHITSUKAN_SMALL_DEVICE -Ilib -Iports/cortex-m
+MCU_CPU_m4 := -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard
+MCU_CPU_m7 := -mcpu=cortex-m7 -mthumb -mfpu=fpv5-d16 -mfloat-abi=hard
+MCU_LDFLAGS := --specs=nano.specs --specs=nosys.specs -nostartfiles -Wl,--gc-sections \
+               -T ports/cortex-m/mps2.ld
+
+test-mcu: mcu-deps
+	@$(SUBMAKE) $(MCU_DIR)/m4/transcript.elf $(MCU_DIR)/m7/transcript.elf \
+	  $(MCU_DIR)/host_transcript $(MCU_DIR)/host_clang_O0 $(MCU_DIR)/png_fnv $(BUILD)/paper_figures
+	bash ports/cortex-m/test_mcu.sh $(MCU_DIR) $(BUILD)/paper_figures
+
+# Instructions per lattice node / marble pixel / rasterized pixel on the Cortex-M4F (QEMU
+# -icount: one instruction per ns of virtual time, read from the MPS2 timer).
+MCU_BENCH_SRCS := $(filter-out ports/cortex-m/transcript.cpp ports/cortex-m/device_main.cpp,$(MCU_SRCS)) \
+                  ports/cortex-m/bench_main.cpp
+bench-mcu: mcu-deps
+	@$(SUBMAKE) $(MCU_DIR)/m4/bench.elf
+	@qemu-system-arm -M mps2-an386 -icount shift=0 -display none -monitor none -serial none \
+	  -chardev stdio,id=semi -semihosting-config enable=on,target=native,chardev=semi \
+	  -kernel $(MCU_DIR)/m4/bench.elf
+
+# The firmwares of the README's footprint table (ports/cortex-m/footprint_main.cpp), M4F -Os
+# newlib-nano, Type III row cache off: built, run, measured (flash = text + data, RAM = data +
+# bss + the main stack's high-water mark).
+MCU_FP_SRCS := $(filter-out ports/cortex-m/transcript.cpp ports/cortex-m/device_main.cpp \
+                 lib/shitsukan/render/solid_mesh.cpp,$(MCU_SRCS)) ports/cortex-m/footprint_main.cpp
+MCU_FP_FLAGS := $(MCU_CPU_m4) $(MCU_FLAGS) -DSHITSUKAN_TYPE3_ROW_CACHE=0
+MCU_FP_STACK := 8192
+footprint-mcu: mcu-deps
+	@mkdir -p $(MCU_DIR)/footprint
+	@for v in LATTICE MARBLE; do \
+	  $(MCU_CXX) $(MCU_FP_FLAGS) -DFOOTPRINT_$$v $(MCU_LDFLAGS) -Wl,--defsym=STACK_SIZE=$(MCU_FP_STACK) \
+	    -o $(MCU_DIR)/footprint/$$v.elf $(MCU_FP_SRCS) || exit 1; \
+	  out=$$(qemu-system-arm -M mps2-an386 -display none -monitor none -serial none \
+	    -chardev stdio,id=semi -semihosting-config enable=on,target=native,chardev=semi \
+	    -kernel $(MCU_DIR)/footprint/$$v.elf) || { echo "footprint-mcu: $$v failed"; exit 1; }; \
+	  echo "$$out"; stack=$$(echo "$$out" | sed -n 's/.*main stack used \([0-9]*\) bytes/\1/p'); \
+	  arm-none-eabi-size $(MCU_DIR)/footprint/$$v.elf | awk -v v=$$v -v s=$$stack -v r=$(MCU_FP_STACK) 'NR == 2 { \
+	    printf "footprint: %s firmware (M4F, -Os, newlib-nano): flash %d bytes, RAM %d bytes (data %d + bss %d + stack used %d)\n", \
+	    v, $$1 + $$2, $$2 + $$3 - r + s, $$2, $$3 - r, s }'; done
+
+# The same program built by clang at -O0 (library sources included): same bits as gcc -O2.
+MCU_HOST_SRCS := $(filter-out ports/cortex-m/semihosting.cpp ports/cortex-m/startup.cpp \
+                   ports/cortex-m/device_main.cpp ports/cortex-m/assert_handler.cpp,$(MCU_SRCS)) \
+                 lib/shitsukan/core/assert.cpp ports/cortex-m/host_main.cpp
+$(MCU_DIR)/host_clang_O0: $(MCU_HOST_SRCS) $(FLAGS_STAMP)
+	@mkdir -p $(@D)
+	clang++ -std=c++17 -O0 -ffp-contract=off -Ilib -Iports/cortex-m -o $@ $(MCU_HOST_SRCS)
+
+$(MCU_DIR)/host_transcript: ports/cortex-m/host_main.cpp ports/cortex-m/transcript.cpp \
+                            ports/cortex-m/transcript.hpp $(LIBRARY)
+	@mkdir -p $(@D)
+	$(CXX) $(CPPFLAGS) $(CXXFLAGS) -Iports/cortex-m -o $@ ports/cortex-m/host_main.cpp \
+	  ports/cortex-m/transcript.cpp $(LIBRARY)
+
+$(MCU_DIR)/png_fnv: tests/mcu/png_fnv.cpp
+	@mkdir -p $(@D)
+	$(CXX) -std=c++17 -O2 -w -o $@ $<
+
+define mcu_core
+$(MCU_DIR)/$(1)/%.o: %.cpp $(FLAGS_STAMP)
+	@mkdir -p $$(@D)
+	$(MCU_CXX) $(MCU_CPU_$(1)) $(MCU_FLAGS) -MMD -MP -c $$< -o $$@
+
+$(MCU_DIR)/$(1)/bench.elf: $(MCU_BENCH_SRCS:%.cpp=$(MCU_DIR)/$(1)/%.o) ports/cortex-m/mps2.ld
+	$(MCU_CXX) $(MCU_CPU_$(1)) $(MCU_LDFLAGS) -o $$@ $(MCU_BENCH_SRCS:%.cpp=$(MCU_DIR)/$(1)/%.o)
+
+$(MCU_DIR)/$(1)/transcript.elf: $(MCU_SRCS:%.cpp=$(MCU_DIR)/$(1)/%.o) ports/cortex-m/mps2.ld
+	$(MCU_CXX) $(MCU_CPU_$(1)) $(MCU_LDFLAGS) -Wl,-Map=$$(@:.elf=.map) -o $$@ \
+	  $(MCU_SRCS:%.cpp=$(MCU_DIR)/$(1)/%.o)
+	@arm-none-eabi-size $$@
+endef
+$(eval $(call mcu_core,m4))
+$(eval $(call mcu_core,m7))
 
 # ---- linking ----
 $(LIBRARY): $(LIB_OBJS)

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "shitsukan/core/detmath.hpp"
 #include "shitsukan/geom/obj.hpp"
 #include "shitsukan/image/image_io.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
@@ -30,7 +31,7 @@ int main() {
             WrControlPoint& p = mesh.at(c, r);
             p.position = {float(c) - 3.0f, 0.0f, 3.0f - float(r)};
             p.height =
-                0.2f + 0.6f * std::exp(-0.15f * float((c - 3) * (c - 3) + (r - 3) * (r - 3)));
+                0.2f + 0.6f * det_expf(-0.15f * float((c - 3) * (c - 3) + (r - 3) * (r - 3)));
             p.color = {1.0f - float(c) / 6.0f, 0.3f, float(c) / 6.0f};
         }
     WrSurface surface;

@@ -16,6 +16,7 @@
 #include "shitsukan/wrinkly/superposition.hpp"
 #include "shitsukan/wrinkly/wr_ist_axis.hpp"
 #include "shitsukan/wrinkly/wr_tessellation.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 using namespace shitsukan;
 
@@ -27,8 +28,8 @@ int main() {
             for (int c = 0; c < 8; ++c) {
                 WrControlPoint& p = mesh.at(c, r);
                 p.position = {float(c) - 3.5f, 0.0f, 3.5f - float(r)};
-                const float d = float(r) - 4.0f - 0.8f * std::sin(float(c));
-                p.height = 0.1f + 1.6f * std::exp(-0.5f * d * d);
+                const float d = float(r) - 4.0f - 0.8f * det_sin(float(c));
+                p.height = 0.1f + 1.6f * det_expf(-0.5f * d * d);
                 p.color = {0.75f, 0.7f, 0.6f};
                 p.delta = delta;
             }

@@ -21,6 +21,7 @@
 #include "shitsukan/raster/blinn1977.hpp"
 #include "shitsukan/raster/bump_mapping.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 using namespace shitsukan;
 
@@ -46,13 +47,13 @@ struct Shader {
         raw.b = normalize(ty);
         raw.n = f.normal;
         Vec3 bad = perturb_normal(raw, m);
-        *angle_sum += std::acos(clamp(dot(good, bad), -1.0f, 1.0f));
+        *angle_sum += det_acos(clamp(dot(good, bad), -1.0f, 1.0f));
         ++*count;
         Blinn1977Material leather;
         PointLight lights[2] = {{{-3, 4, 4}, {1, 1, 1}}, {{4, 1, 2}, {0.3f, 0.3f, 0.35f}}};
         Vec3 c = shade_blinn1977(leather, f.world_position, orthonormal ? good : bad, camera->eye,
                                  lights, 2);
-        auto g = [](float v) { return to_byte(std::pow(clamp(v, 0.0f, 1.0f), 1.0f / 2.2f)); };
+        auto g = [](float v) { return to_byte(det_pow(clamp(v, 0.0f, 1.0f), 1.0f / 2.2f)); };
         return Rgb8{g(c.x), g(c.y), g(c.z)};
     }
 };

@@ -325,14 +325,14 @@ TEST_CASE("tiny lattices (R = 0, 1, 2): the three types still agree") {
 
 TEST_CASE("eqs. (1)-(4) by hand on an R = 2 lattice: face centres from the EDGE MIDPOINTS") {
     // Written out from the paper without the library's node helpers: g of node (x, y, z) is
-    // hash_gaussian(seed, 0, x, y, z) (hash noise), L_r^(n) = exp(-(n-1)·beta).
+    // node_gaussian(seed, x, y, z) (hash noise), L_r^(n) = exp(-(n-1)·beta).
     FractalParams p;
     p.R = 2;
     p.beta = 0.7f;
     for (int i = 0; i < 8; ++i) p.corners[i] = float(i * i) * 0.5f - 3.0f;  // unequal corners
     LatticeView v;
     std::vector<float> values = build_type1(p, &v);
-    auto g = [&](int x, int y, int z) { return double(hash_gaussian(p.seed, 0, x, y, z)); };
+    auto g = [&](int x, int y, int z) { return double(node_gaussian(p.seed, x, y, z)); };
     auto at = [&](int x, int y, int z) { return double(v.at(x, y, z)); };
     const double tol = 1e-5;
     for (int n = 1; n <= 2; ++n) {

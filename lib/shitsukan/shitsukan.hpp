@@ -54,6 +54,7 @@
 #include "shitsukan/geom/isotropic_remesh.hpp"
 #include "shitsukan/geom/marching_tetrahedra.hpp"
 #include "shitsukan/geom/mesh.hpp"
+#include "shitsukan/geom/mesh_arrays.hpp"
 #include "shitsukan/geom/mesh_builders.hpp"
 #include "shitsukan/geom/mesh_fit.hpp"
 #include "shitsukan/geom/mesh_topology.hpp"

@@ -28,6 +28,7 @@
 #include "shitsukan/core/hash.hpp"
 #include "shitsukan/core/scalar.hpp"
 #include "shitsukan/geom/obj.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 namespace shitsukan::fujimoto2000 {
 namespace {
@@ -63,7 +64,7 @@ WrControlMesh fig15_mesh() {
     const int n = 11;
     return square_control_mesh(n, 1.5f, [&](int c, int r, float x, float z, WrControlPoint& p) {
         p.position.y = 0.35f * (1.0f - (x * x + z * z) / 4.5f);
-        p.height = 0.25f + 0.12f * std::sin(1.7f * float(c) + 0.9f * float(r)) +
+        p.height = 0.25f + 0.12f * det_sin(1.7f * float(c) + 0.9f * float(r)) +
                    0.16f * (hash_uniform(15, 0, c, r) - 0.5f);
         p.color = column_color(float(c) / float(n - 1));
     });

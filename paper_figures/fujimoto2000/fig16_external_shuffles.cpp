@@ -13,6 +13,7 @@
 #include "driver/figure.hpp"
 #include "fujimoto2000/wr_figure_common.hpp"
 #include "shitsukan/core/hash.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 namespace shitsukan::fujimoto2000 {
 namespace {
@@ -25,7 +26,7 @@ using figures::fmt;
 WrControlMesh fig16_mesh() {
     return square_control_mesh(8, 1.5f, [](int c, int r, float x, float z, WrControlPoint& p) {
         p.position.y = 0.3f * (1.0f - (x * x + z * z) / 4.5f);
-        p.height = 0.22f + 0.1f * std::sin(1.3f * float(c) - 0.8f * float(r)) +
+        p.height = 0.22f + 0.1f * det_sin(1.3f * float(c) - 0.8f * float(r)) +
                    0.14f * (hash_uniform(16, 0, c, r) - 0.5f);
         p.color = {0.85f, 0.82f, 0.74f};
     });

@@ -17,6 +17,7 @@
 #include "fujimoto2000/wr_figure_common.hpp"
 #include "shitsukan/core/hash.hpp"
 #include "shitsukan/core/scalar.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 namespace shitsukan::fujimoto2000 {
 namespace {
@@ -55,9 +56,9 @@ WrControlMesh fig17_mesh(bool changed) {
 WrControlMesh fig18_mesh(bool changed) {
     return square_control_mesh(
         11, 1.5f, [changed](int c, int r, float x, float z, WrControlPoint& p) {
-            const float d = z + 0.1f - 0.35f * std::sin(1.6f * x);  // distance from a winding ridge
+            const float d = z + 0.1f - 0.35f * det_sin(1.6f * x);  // distance from a winding ridge
             p.height = 0.05f +
-                       0.55f * std::exp(-3.0f * d * d) * (0.65f + 0.6f * hash_uniform(18, 0, c, r));
+                       0.55f * det_expf(-3.0f * d * d) * (0.65f + 0.6f * hash_uniform(18, 0, c, r));
             if (changed && (r == 2 || r == 3) && (c == 7 || c == 8)) p.height += 0.45f;
             p.color = height_color(p.height, 0.65f);
         });

@@ -13,6 +13,7 @@
 
 #include "driver/figure.hpp"
 #include "fujimoto2000/wr_figure_common.hpp"
+#include "shitsukan/core/detmath.hpp"
 #include "shitsukan/core/hash.hpp"
 #include "shitsukan/core/scalar.hpp"
 #include "shitsukan/geom/obj.hpp"
@@ -61,9 +62,9 @@ WrControlMesh terrain_mesh(float delta) {
             const float g = green_mask(x, z);
             float h =
                 1.9f *
-                    std::exp(-((x + 0.9f) * (x + 0.9f) / 1.6f + (z + 1.0f) * (z + 1.0f) / 1.6f)) +
+                    det_expf(-((x + 0.9f) * (x + 0.9f) / 1.6f + (z + 1.0f) * (z + 1.0f) / 1.6f)) +
                 1.1f *
-                    std::exp(-((x + 2.0f) * (x + 2.0f) / 0.8f + (z - 1.2f) * (z - 1.2f) / 1.4f)) +
+                    det_expf(-((x + 2.0f) * (x + 2.0f) / 0.8f + (z - 1.2f) * (z - 1.2f) / 1.4f)) +
                 0.3f * hash_uniform(21, 0, c, r);
             h = (1.0f - g) * h + g * (0.06f + 0.08f * hash_uniform(21, 1, c, r));
             p.position = {x, 0.0f, z};

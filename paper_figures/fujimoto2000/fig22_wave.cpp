@@ -14,6 +14,7 @@
 #include "shitsukan/core/scalar.hpp"
 #include "shitsukan/image/image_io.hpp"
 #include "shitsukan/image/raster_canvas.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 namespace shitsukan::fujimoto2000 {
 namespace {
@@ -35,9 +36,9 @@ WrControlMesh wave_mesh(float delta) {
             WrControlPoint& p = m.at(c, r);
             const float x = -3.5f + 7.0f * float(c) / float(cols - 1);
             const float z = 2.0f - 4.0f * float(r) / float(rows - 1);
-            const float crest = std::exp(-(float(r) - 3.5f) * (float(r) - 3.5f) / 0.8f) *
-                                (0.7f + 0.3f * std::sin(1.3f * float(c)));
-            p.position = {x, 0.3f * std::sin(0.9f * x + 0.5f * z), z};
+            const float crest = det_expf(-(float(r) - 3.5f) * (float(r) - 3.5f) / 0.8f) *
+                                (0.7f + 0.3f * det_sin(1.3f * float(c)));
+            p.position = {x, 0.3f * det_sin(0.9f * x + 0.5f * z), z};
             p.height = 0.1f + 0.9f * crest + 0.05f * hash_uniform(22, 0, c, r);
             p.direction = normalize(Vec3{0.0f, 1.0f, crest});
             p.color = lerp(Vec3{0.05f, 0.22f, 0.42f}, Vec3{0.95f, 0.97f, 1.0f},

@@ -18,6 +18,7 @@
 #include "shitsukan/core/scalar.hpp"
 #include "shitsukan/geom/obj.hpp"
 #include "shitsukan/image/image_io.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 namespace shitsukan::fujimoto2000 {
 namespace {
@@ -48,12 +49,12 @@ WrControlMesh flame_mesh(const Setting& s) {
             const float t = float(r) / float(rows - 1);  // 0 bottom .. 1 top
             const float theta = (-75.0f + 150.0f * float(c) / float(cols - 1)) * kPi / 180.0f;
             const float radius = 0.9f * (1.0f - 0.75f * t);
-            p.position = {radius * std::sin(theta), 3.2f * t, radius * std::cos(theta)};
-            const float tongue = 0.45f + 0.55f * std::cos(2.2f * float(c) + s.phase);
-            p.height = 0.1f + 1.3f * std::pow(t, 1.5f) * tongue * (1.0f + (s.tip_scale - 1.0f) * t);
+            p.position = {radius * det_sin(theta), 3.2f * t, radius * det_cos(theta)};
+            const float tongue = 0.45f + 0.55f * det_cos(2.2f * float(c) + s.phase);
+            p.height = 0.1f + 1.3f * det_pow(t, 1.5f) * tongue * (1.0f + (s.tip_scale - 1.0f) * t);
             const float lean = s.lean * (0.3f + t);
-            p.direction = normalize(Vec3{std::sin(lean) + 0.3f * std::sin(theta), std::cos(lean),
-                                         0.3f * std::cos(theta)});
+            p.direction = normalize(Vec3{det_sin(lean) + 0.3f * det_sin(theta), det_cos(lean),
+                                         0.3f * det_cos(theta)});
             const Vec3 base{1.0f, 0.95f, 0.62f}, mid{1.0f, 0.55f, 0.10f}, tip{0.85f, 0.12f, 0.03f};
             p.color = t < 0.5f ? lerp(base, mid, 2.0f * t) : lerp(mid, tip, 2.0f * t - 1.0f);
             p.transparency = 0.05f + 0.7f * t;

@@ -9,6 +9,7 @@
 #include "shitsukan/core/scalar.hpp"
 #include "driver/figure.hpp"
 #include "shitsukan/image/raster_canvas.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 namespace shitsukan::fujimoto2000 {
 
@@ -20,15 +21,15 @@ Camera shot_camera(const Shot& s, int width, int height) {
 
 float shot_pixels_per_unit(const Shot& s, int height) {
     const float dist = length(s.eye - s.target);
-    return 0.5f * float(height) / (std::tan(0.5f * s.fov_degrees * kPi / 180.0f) * dist);
+    return 0.5f * float(height) / (det_tan(0.5f * s.fov_degrees * kPi / 180.0f) * dist);
 }
 
 Shot zoom_shot(const Shot& s, Vec3 target, float factor) {
     Shot z = s;
     z.eye = target + (s.eye - s.target);
     z.target = target;
-    const float t = std::tan(0.5f * s.fov_degrees * kPi / 180.0f) / factor;
-    z.fov_degrees = 2.0f * std::atan(t) * 180.0f / kPi;
+    const float t = det_tan(0.5f * s.fov_degrees * kPi / 180.0f) / factor;
+    z.fov_degrees = 2.0f * det_atan(t) * 180.0f / kPi;
     return z;
 }
 

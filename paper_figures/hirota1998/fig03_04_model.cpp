@@ -9,6 +9,7 @@
 #include "shitsukan/image/image.hpp"
 #include "shitsukan/image/raster_canvas.hpp"
 #include "shitsukan/raster/camera.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 using namespace shitsukan;
 using namespace shitsukan::figures;
@@ -53,7 +54,7 @@ SHITSUKAN_FIGURE(hirota_fig03, "hirota1998", "fig03",
     auto world = [&](std::uint32_t node, float radius) {
         const Vec3 x = bark.net.X[node];
         const float angle = x.x / R0;
-        return Vec3{radius * std::sin(angle), x.y, radius * std::cos(angle)};
+        return Vec3{radius * det_sin(angle), x.y, radius * det_cos(angle)};
     };
     auto angle_of = [&](std::uint32_t node) {
         float angle = bark.net.X[node].x / R0;
@@ -64,7 +65,7 @@ SHITSUKAN_FIGURE(hirota_fig03, "hirota1998", "fig03",
         return a > -0.55f * kPi && a < -0.05f * kPi;
     };
     auto front = [&](std::uint32_t node) {  // hidden-line rule: the half facing the viewer
-        return std::cos(angle_of(node)) > -0.05f;
+        return det_cos(angle_of(node)) > -0.05f;
     };
     const Rgb8 axial{40, 90, 200}, diagonal{200, 50, 40}, shear{30, 150, 60}, inner{120, 120, 120};
     std::vector<Segment> segs;

@@ -10,6 +10,7 @@
 #include "shitsukan/image/raster_canvas.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
 #include "shitsukan/raster/shading.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 using namespace shitsukan;
 using namespace shitsukan::figures;
@@ -41,7 +42,7 @@ Status render_trunk(const SpeciesRun& s, const RgbImage& map, float px_per_cm, R
     const float C = s.bark.circumference * (1.0f + hoop_strain(s.params, T));
     const int ss = 3, w = target.width * ss, h = target.height * ss;
     // chosen here: a slightly raised front view that fits the trunk's height.
-    const float dist = 0.62f * H / std::tan(0.5f * 30.0f * kPi / 180.0f) + R;
+    const float dist = 0.62f * H / det_tan(0.5f * 30.0f * kPi / 180.0f) + R;
     Camera cam = perspective_camera({0.0f, 0.62f * H, dist}, {0.0f, 0.5f * H, 0.0f}, {0, 1, 0},
                                     30.0f, w, h, 1.0f, 4.0f * dist);
     RgbImage big(w, h);

@@ -14,6 +14,7 @@
 #include "shitsukan/image/raster_canvas.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
 #include "shitsukan/raster/shading.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 using namespace shitsukan;
 using namespace shitsukan::figures;
@@ -110,13 +111,13 @@ SHITSUKAN_FIGURE(hirota_fig09, "hirota1998", "fig09",
         if (k < 0) continue;
         tris.push_back({flat(t.corner[0]), flat(t.corner[1]), flat(t.corner[2])});
         const Vec2 c = flat((t.corner[0] + t.corner[1] + t.corner[2]) * (1.0f / 3.0f));
-        boundary.push_back({std::atan2(c.y, c.x), c, true, -1});
+        boundary.push_back({det_atan2(c.y, c.x), c, true, -1});
         for (int j : {k, (k + 2) % 3}) {  // the two edges at N1: (k, k+1) and (k+2, k)
             const int s = int(t.spring[j]);
             const Vec2 mid = flat((t.corner[j] + t.corner[(j + 1) % 3]) * 0.5f);
             bool seen = false;
             for (const Corner& q : boundary) seen = seen || (!q.centroid && q.spring == s);
-            if (!seen) boundary.push_back({std::atan2(mid.y, mid.x), mid, false, s});
+            if (!seen) boundary.push_back({det_atan2(mid.y, mid.x), mid, false, s});
             const int other = int(t.node[j]) == n1 ? int(t.node[(j + 1) % 3]) : int(t.node[j]);
             if (std::find(neighbours.begin(), neighbours.end(), other) == neighbours.end())
                 neighbours.push_back(other);

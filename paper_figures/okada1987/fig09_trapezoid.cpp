@@ -3,6 +3,7 @@
 
 #include "okada1987/okada_common.hpp"
 #include "okada1987/okada_plot.hpp"
+#include "shitsukan/core/detmath.hpp"
 #include "shitsukan/image/raster_canvas.hpp"
 
 using namespace shitsukan;
@@ -32,6 +33,6 @@ SHITSUKAN_FIGURE(okada1987_fig09, "okada1987", "fig09", "Trapezoid with exponent
     c.line(cc, axes.to_pixel(32.0, 1.0), Rgb8{120, 120, 120}, 1.0f);
     c.text({cc.x + 3, cc.y - 12}, "c", okada::kInk);
     c.text({axes.corner.x + 8, axes.corner.y + 6}, "alpha = 0.35 (bold), 1.0, 0.15", okada::kInk);
-    ctx.note(fmt("At d = 1/alpha beyond the edge the skirt is e^-1 = %.3f.", std::exp(-1.0)));
+    ctx.note(fmt("At d = 1/alpha beyond the edge the skirt is e^-1 = %.3f.", det_exp(-1.0)));
     return ctx.save_png(img.view());
 }

@@ -5,6 +5,7 @@
 #include "okada1987/okada_common.hpp"
 #include "okada1987/okada_plot.hpp"
 #include "shitsukan/image/raster_canvas.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 using namespace shitsukan;
 using figures::fmt;
@@ -61,7 +62,7 @@ SHITSUKAN_FIGURE(okada1989_fig07, "okada1989", "fig07",
     const Axes axes = okada::panel_axes(340, 40, 280, 220, 0.0, 24.0, -1.1, 1.1);
     SHITSUKAN_TRY(draw_axes(c, axes, {"", "r (lattice units)", "G = sin(k2 r)"}));
     SHITSUKAN_TRY(plot_function(
-        c, axes, [](double r) { return std::sin(okada::kWoodK2 * float(r)); }, 401,
+        c, axes, [](double r) { return det_sin(okada::kWoodK2 * float(r)); }, 401,
         Rgb8{150, 80, 30}, 2.0f));
     ctx.note("Concentric rings about the axis; wood displaces the point along the radius "
              "(u of eq. (11)) before this function is read.");

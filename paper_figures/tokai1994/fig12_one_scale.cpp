@@ -8,6 +8,7 @@
 #include "shitsukan/geom/polygon.hpp"
 #include "shitsukan/image/canvas.hpp"
 #include "shitsukan/leather/relief.hpp"
+#include "shitsukan/core/detmath.hpp"
 #include "tokai1994/fig11_19_common.hpp"
 
 using namespace shitsukan;
@@ -66,7 +67,7 @@ SHITSUKAN_FIGURE(tokai1994_fig12, "tokai1994", "fig12",
     Vec2 p = at_x.edge_point;
     for (int k = 0; k < 16; ++k) {  // more r axes, with the x-y part of eq. (4) on the slope
         float a = kTwoPi * (float(k) + 0.5f) / 16.0f;
-        Vec2 dir{std::cos(a), std::sin(a)};
+        Vec2 dir{det_cos(a), det_sin(a)};
         EdgeHit hit = scale_edge_point(poly, n, m, m + dir * 0.01f);
         cv.line(top(m), top(hit.p), Rgb8{170, 170, 170}, 1.0f * s);
         Vec2 q = m + (hit.p - m) * 0.86f;

@@ -14,6 +14,7 @@
 #include "shitsukan/raster/camera.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
 #include "shitsukan/raster/wireframe.hpp"
+#include "shitsukan/core/detmath.hpp"
 #include "tokai1994/fig11_19_common.hpp"
 
 using namespace shitsukan;
@@ -145,14 +146,14 @@ SHITSUKAN_FIGURE(tokai1994_fig17, "tokai1994", "fig17",
             polyline([&](float t) { return patch_point(p, c, t).position; }, 48);
         }
     for (const SphericalSegment& sg : scene.bag.clasp) {
-        const float lat0 = std::asin(sg.cut_below);
+        const float lat0 = det_asin(sg.cut_below);
         for (int k = 0; k < 12; ++k) {
             float lon = kTwoPi * float(k) / 12.0f;
             polyline(
                 [&](float t) {
                     float lat = lat0 + (0.5f * kPi - lat0) * t;
-                    return sg.center + Vec3{std::cos(lat) * std::cos(lon), std::sin(lat),
-                                            std::cos(lat) * std::sin(lon)} *
+                    return sg.center + Vec3{det_cos(lat) * det_cos(lon), det_sin(lat),
+                                            det_cos(lat) * det_sin(lon)} *
                                            sg.radius;
                 },
                 16);
@@ -162,8 +163,8 @@ SHITSUKAN_FIGURE(tokai1994_fig17, "tokai1994", "fig17",
             polyline(
                 [&](float t) {
                     float lon = kTwoPi * t;
-                    return sg.center + Vec3{std::cos(lat) * std::cos(lon), std::sin(lat),
-                                            std::cos(lat) * std::sin(lon)} *
+                    return sg.center + Vec3{det_cos(lat) * det_cos(lon), det_sin(lat),
+                                            det_cos(lat) * det_sin(lon)} *
                                            sg.radius;
                 },
                 32);

@@ -1,5 +1,6 @@
 // The bark's crack network as CSV and SVG, the deformed trunk as a mesh (see bark_export.hpp).
 #include "shitsukan/bark/bark_export.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -144,7 +145,7 @@ Status make_trunk_mesh(const BarkCylinder& bark, float t, const Vec3* W, Triangl
     const float H = bark.H0 * (1.0f + axial_strain(bark.params, t));
     auto add = [&](Vec3 x) {  // unrolled (u, z) -> the trunk
         const float angle = x.x / R;
-        const Vec3 radial{std::sin(angle), 0.0f, std::cos(angle)};
+        const Vec3 radial{det_sin(angle), 0.0f, det_cos(angle)};
         return out->add_vertex({R * radial.x, x.y, R * radial.z}, radial, {x.x / C, x.y / H});
     };
     for (int p = 0; p < n; ++p) add(node_position(bark, std::uint32_t(p), t, W));

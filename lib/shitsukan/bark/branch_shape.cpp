@@ -1,5 +1,6 @@
 // shitsukan/bark/branch_shape.cpp — the trunk-with-branch surface and its §5.2 growth.
 #include "shitsukan/bark/branch_shape.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 #include <cmath>
 
@@ -80,7 +81,7 @@ Status validate_branch_shape(const BranchShapeParams& s) {
 
 Vec3 branch_axis_direction(const BranchShapeParams& s) {
     const double a = double(s.branch_angle_degrees) * kPiD / 180.0;
-    return Vec3{float(std::sin(a)), 0.0f, float(std::cos(a))};
+    return Vec3{float(det_sin(a)), 0.0f, float(det_cos(a))};
 }
 
 float branch_shape_value(const BranchShapeParams& s, Vec3 p) {

@@ -17,7 +17,9 @@
 //
 // Porting: define SHITSUKAN_ASSERT(expr) yourself before including any shitsukan header
 // (e.g. to a breakpoint or an LED blink), or define SHITSUKAN_NO_ASSERT to compile it out
-// (both macros follow these two switches).
+// (both macros follow these two switches). Or keep the macros and link your own
+// shitsukan::detail::assert_failed / unchecked_status instead of core/assert.cpp (whose
+// fprintf + abort pull stdio into a firmware): ports/cortex-m/assert_handler.cpp does that.
 #pragma once
 
 namespace shitsukan::detail {

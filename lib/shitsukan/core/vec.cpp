@@ -1,5 +1,6 @@
 // small-device: yes (no allocation, no exceptions)
 #include "shitsukan/core/vec.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 namespace shitsukan {
 
@@ -27,7 +28,7 @@ Mat4 Mat4::scale(Vec3 s) {
 
 Mat4 Mat4::rotate_x(float a) {
     Mat4 r = identity();
-    float c = std::cos(a), s = std::sin(a);
+    float c = det_cos(a), s = det_sin(a);
     r.m[1][1] = c;
     r.m[1][2] = -s;
     r.m[2][1] = s;
@@ -37,7 +38,7 @@ Mat4 Mat4::rotate_x(float a) {
 
 Mat4 Mat4::rotate_y(float a) {
     Mat4 r = identity();
-    float c = std::cos(a), s = std::sin(a);
+    float c = det_cos(a), s = det_sin(a);
     r.m[0][0] = c;
     r.m[0][2] = s;
     r.m[2][0] = -s;
@@ -47,7 +48,7 @@ Mat4 Mat4::rotate_y(float a) {
 
 Mat4 Mat4::rotate_z(float a) {
     Mat4 r = identity();
-    float c = std::cos(a), s = std::sin(a);
+    float c = det_cos(a), s = det_sin(a);
     r.m[0][0] = c;
     r.m[0][1] = -s;
     r.m[1][0] = s;

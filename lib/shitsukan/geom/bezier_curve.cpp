@@ -79,9 +79,9 @@ Status validate_section(const BezierChain& chain) {
     // >= 0, i.e. b^2 <= ac. This is exact, so an accepted section has one z for each r.
     for (int k = 0; k < chain.count; ++k) {
         const CubicBezier2& s = chain.segments[k];
-        double a = double(s.p[1].x) - s.p[0].x;
-        double b = double(s.p[2].x) - s.p[1].x;
-        double c = double(s.p[3].x) - s.p[2].x;
+        double a = double(s.p[1].x) - double(s.p[0].x);
+        double b = double(s.p[2].x) - double(s.p[1].x);
+        double c = double(s.p[3].x) - double(s.p[2].x);
         bool monotone = a >= 0 && c >= 0 && (b >= 0 || b * b <= a * c);
         if (!monotone)
             return Status::error(StatusCode::invalid_argument,

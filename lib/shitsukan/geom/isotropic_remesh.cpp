@@ -1,5 +1,6 @@
 // shitsukan/geom/isotropic_remesh.cpp — split, collapse, flip, smooth, project (see header).
 #include "shitsukan/geom/isotropic_remesh.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 #include <cmath>
 #include <vector>
@@ -46,7 +47,7 @@ Status check_input(const TriangleMesh& mesh, std::vector<int>* opposite) {
 double triangle_min_angle(Vec3 a, Vec3 b, Vec3 c) {
     auto angle = [](Vec3 p, Vec3 q, Vec3 r) {  // at p
         Vec3 u = q - p, v = r - p;
-        return std::atan2(double(length(cross(u, v))), double(dot(u, v)));
+        return det_atan2(double(length(cross(u, v))), double(dot(u, v)));
     };
     double m = angle(a, b, c);
     m = std::fmin(m, angle(b, c, a));

@@ -1,9 +1,11 @@
 #include "shitsukan/geom/mesh_builders.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 #include <cmath>
 
 #include "shitsukan/core/assert.hpp"
 #include "shitsukan/geom/block_letters.hpp"
+#include "shitsukan/geom/mesh_arrays.hpp"
 #include "shitsukan/geom/triangulate.hpp"
 
 namespace shitsukan {
@@ -40,32 +42,17 @@ void add_oriented(TriangleMesh* m, std::uint32_t a, std::uint32_t b, std::uint32
 
 Status make_box(Vec3 lo, Vec3 hi, TriangleMesh* out) {
     if (!out) return Status::error(StatusCode::invalid_argument, "make_box: null output");
-    if (!is_finite(lo) || !is_finite(hi) || !(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
-        return Status::error(StatusCode::invalid_argument,
-                             "make_box: need finite corners with min < max on every axis "
-                             "(got (%g,%g,%g) .. (%g,%g,%g))",
-                             double(lo.x), double(lo.y), double(lo.z), double(hi.x), double(hi.y),
-                             double(hi.z));
+    // The caller-array builder (mesh_arrays.hpp) is the one box: same vertices, same order.
+    Vec3 positions[kBoxVertexCount], normals[kBoxVertexCount];
+    Vec2 uvs[kBoxVertexCount];
+    std::uint32_t indices[3 * kBoxTriangleCount];
+    MeshView box;
+    SHITSUKAN_TRY(make_box_arrays(lo, hi, positions, normals, uvs, kBoxVertexCount, indices,
+                                  3 * kBoxTriangleCount, &box));
     *out = TriangleMesh();
-    // Each face: normal axis, sign; its four corners get their own vertices (flat normals).
-    for (int axis = 0; axis < 3; ++axis) {
-        for (int sign = -1; sign <= 1; sign += 2) {
-            Vec3 n{};
-            n[axis] = float(sign);
-            int u_axis = (axis + 1) % 3, v_axis = (axis + 2) % 3;
-            std::uint32_t base = std::uint32_t(out->positions.size());
-            for (int k = 0; k < 4; ++k) {
-                int du = (k == 1 || k == 2), dv = (k >= 2);
-                Vec3 p;
-                p[axis] = sign > 0 ? hi[axis] : lo[axis];
-                p[u_axis] = du ? hi[u_axis] : lo[u_axis];
-                p[v_axis] = dv ? hi[v_axis] : lo[v_axis];
-                out->add_vertex(p, n, Vec2{float(du), float(dv)});
-            }
-            add_oriented(out, base, base + 1, base + 2, n);
-            add_oriented(out, base, base + 2, base + 3, n);
-        }
-    }
+    for (int i = 0; i < box.vertex_count; ++i) out->add_vertex(positions[i], normals[i], uvs[i]);
+    for (int t = 0; t < box.triangle_count; ++t)
+        out->add_triangle(indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]);
     return Status::success();
 }
 
@@ -81,8 +68,8 @@ Status make_uv_sphere(float radius, int slices, int stacks, TriangleMesh* out) {
         double theta = kPiD * i / stacks;
         for (int j = 0; j <= slices; ++j) {
             double phi = 2.0 * kPiD * (j == slices ? 0 : j) / slices;
-            Vec3 n{float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)),
-                   float(-std::sin(theta) * std::sin(phi))};
+            Vec3 n{float(det_sin(theta) * det_cos(phi)), float(det_cos(theta)),
+                   float(-det_sin(theta) * det_sin(phi))};
             if (i == 0 || i == stacks) n = Vec3{0.0f, i == 0 ? 1.0f : -1.0f, 0.0f};
             out->add_vertex(n * radius, n, Vec2{float(j) / slices, float(i) / stacks});
         }
@@ -128,7 +115,7 @@ Status make_torus(float major_radius, float minor_radius, int major_segments, in
     std::vector<Vec2d> circle;
     for (int k = 0; k <= minor_segments; ++k) {
         double v = 2.0 * kPiD * (k == minor_segments ? 0 : k) / minor_segments;
-        circle.push_back({major_radius + minor_radius * std::cos(v), minor_radius * std::sin(v)});
+        circle.push_back({major_radius + minor_radius * det_cos(v), minor_radius * det_sin(v)});
     }
     return make_revolution(circle.data(), int(circle.size()), major_segments, out);
 }
@@ -211,7 +198,7 @@ Status make_revolution(const Vec2d* profile, int count, int segments, TriangleMe
     for (const Ring& ring : rings)
         for (int j = 0; j <= segments; ++j) {
             double phi = 2.0 * kPiD * (j == segments ? 0 : j) / segments;
-            double c = std::cos(phi), s = -std::sin(phi);
+            double c = det_cos(phi), s = -det_sin(phi);
             Vec3 p{float(ring.r * c), float(ring.y), float(ring.r * s)};
             Vec3 nn{float(ring.normal.x * c), float(ring.normal.y), float(ring.normal.x * s)};
             out->add_vertex(p, nn, Vec2{float(j) / segments, float(ring.v)});
@@ -361,8 +348,8 @@ Status make_sphere_without_octant(float radius, int n, TriangleMesh* out) {
             for (int j = 0; i + j <= n; ++j) {
                 Vec3 p = sphere_point(sx * i, sy * j, sz * (n - i - j));
                 Vec3 nn = normalize(p);
-                float u = 0.5f + std::atan2(-nn.z, nn.x) / kTwoPi,
-                      v = std::acos(clamp(nn.y, -1.0f, 1.0f)) / kPi;
+                float u = 0.5f + det_atan2(-nn.z, nn.x) / kTwoPi,
+                      v = det_acos(clamp(nn.y, -1.0f, 1.0f)) / kPi;
                 idx[std::size_t(i * (n + 1) + j)] = out->add_vertex(p, nn, {u, v});
             }
         for (int i = 0; i < n; ++i)

@@ -322,7 +322,7 @@ void RasterCanvas::fill_disc(Vec2 center, float radius, Rgb8 color) {
     // The rim as a locally straight edge with the radial normal.
     auto coverage = [&](double px, double py) {
         double dx = px - center.x, dy = py - center.y;
-        double d = std::hypot(dx, dy);
+        double d = std::sqrt(dx * dx + dy * dy);
         if (!antialias_) return d < r ? 1.0 : 0.0;
         double nx = d > 1e-9 ? dx / d : 1.0, ny = d > 1e-9 ? dy / d : 0.0;
         return box_area_below(r - d, std::fabs(nx), std::fabs(ny));
@@ -354,7 +354,7 @@ void RasterCanvas::circle_outline(Vec2 center, float radius, Rgb8 color, float w
     for (int y = y0; y < y1; ++y)
         for (int x = x0; x < x1; ++x) {
             double dx = x + 0.5 - center.x, dy = y + 0.5 - center.y;
-            double rho = std::hypot(dx, dy);
+            double rho = std::sqrt(dx * dx + dy * dy);
             double d = std::fabs(rho - radius);
             double nx = rho > 1e-9 ? dx / rho : 1.0, ny = rho > 1e-9 ? dy / rho : 0.0;
             paint(x, y, color, antialias_ ? band_coverage(d, h, nx, ny) : (d < h ? 1.0f : 0.0f));

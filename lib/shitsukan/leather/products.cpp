@@ -1,4 +1,5 @@
 #include "shitsukan/leather/products.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 #include <cmath>
 
@@ -121,11 +122,11 @@ Status make_belt(const BeltDesign& d, std::vector<BezierPatch>* out) {
     const float total = d.turns * kTwoPi, step = total / float(n);
     auto point = [&](float t) {  // the spiral r(t) = r0 + (r1 - r0) t / total
         float r = d.r0 + (d.r1 - d.r0) * t / total;
-        return Vec3{r * std::cos(t), 0.0f, r * std::sin(t)};
+        return Vec3{r * det_cos(t), 0.0f, r * det_sin(t)};
     };
     auto tangent = [&](float t) {  // dP/dt
         float r = d.r0 + (d.r1 - d.r0) * t / total, dr = (d.r1 - d.r0) / total;
-        return Vec3{dr * std::cos(t) - r * std::sin(t), 0.0f, dr * std::sin(t) + r * std::cos(t)};
+        return Vec3{dr * det_cos(t) - r * det_sin(t), 0.0f, dr * det_sin(t) + r * det_cos(t)};
     };
     out->assign(std::size_t(n), BezierPatch{});
     for (int k = 0; k < n; ++k) {
@@ -155,12 +156,12 @@ Status make_spherical_segment(const SphericalSegment& s, int slices, int stacks,
                              "spherical segment: slices 3..4096, stacks 1..4096 (got %d, %d)",
                              slices, stacks);
     *out = TriangleMesh{};
-    const float lat0 = std::asin(s.cut_below), lat1 = 0.5f * kPi;
+    const float lat0 = det_asin(s.cut_below), lat1 = 0.5f * kPi;
     for (int j = 0; j <= stacks; ++j) {
         float lat = lat0 + (lat1 - lat0) * float(j) / float(stacks);
         for (int i = 0; i <= slices; ++i) {
             float lon = kTwoPi * float(i) / float(slices);
-            Vec3 n{std::cos(lat) * std::cos(lon), std::sin(lat), -std::cos(lat) * std::sin(lon)};
+            Vec3 n{det_cos(lat) * det_cos(lon), det_sin(lat), -det_cos(lat) * det_sin(lon)};
             out->add_vertex(s.center + n * s.radius, n,
                             {float(i) / float(slices), float(j) / float(stacks)});
         }

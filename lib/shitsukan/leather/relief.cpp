@@ -1,5 +1,6 @@
 // small-device: yes (no allocation, no exceptions)
 #include "shitsukan/leather/relief.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 #include <cmath>
 
@@ -127,7 +128,7 @@ bool make_angular_index(const Vec2* polygon, int n, Vec2 m, float* angles) {
     for (int i = 0; i < n; ++i) {
         Vec2 v = polygon[i] - m;
         if (v.x == 0.0f && v.y == 0.0f) return false;
-        float a = std::atan2(v.y, v.x);
+        float a = det_atan2(v.y, v.x);
         if (i > 0) {
             float step = a - angles[i - 1];
             while (step > kPi) step -= kTwoPi;
@@ -140,7 +141,7 @@ bool make_angular_index(const Vec2* polygon, int n, Vec2 m, float* angles) {
         angles[i] = a;
     }
     // Closing the loop must complete exactly one turn.
-    float closing = std::atan2(polygon[0].y - m.y, polygon[0].x - m.x) - angles[n - 1];
+    float closing = det_atan2(polygon[0].y - m.y, polygon[0].x - m.x) - angles[n - 1];
     while (closing * sign <= 0.0f) closing += sign * kTwoPi;
     float total = angles[n - 1] - angles[0] + closing;
     return std::fabs(total * sign - kTwoPi) < 1e-3f;
@@ -149,7 +150,7 @@ bool make_angular_index(const Vec2* polygon, int n, Vec2 m, float* angles) {
 EdgeHit scale_edge_point_indexed(const Vec2* polygon, int n, Vec2 m, Vec2 x, const float* angles) {
     SHITSUKAN_ASSERT(n >= 3);
     Vec2 d = ray_direction(m, x);
-    float theta = std::atan2(d.y, d.x);
+    float theta = det_atan2(d.y, d.x);
     bool ccw = angles[n - 1] > angles[0];
     // Search in increasing order: negate the angles of a clockwise polygon.
     float first = ccw ? angles[0] : -angles[0];

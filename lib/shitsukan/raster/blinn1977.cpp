@@ -1,5 +1,6 @@
 // small-device: yes (no allocation, no exceptions)
 #include "shitsukan/raster/blinn1977.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 #include <cmath>
 
@@ -9,11 +10,11 @@ float blinn1977_distribution(const Blinn1977Material& m, float n_dot_h) {
     float c = clamp(n_dot_h, 0.0f, 1.0f);
     switch (m.distribution) {
         case BlinnDistribution::d1_phong:
-            return std::pow(c, m.c1);  // D1 = cos^c1(alpha)
+            return det_pow(c, m.c1);  // D1 = cos^c1(alpha)
         case BlinnDistribution::d2_gaussian: {
-            float alpha = std::acos(c);
+            float alpha = det_acos(c);
             float a = alpha * m.c2;
-            return std::exp(-a * a);  // D2 = exp(-(alpha c2)^2)
+            return det_expf(-a * a);  // D2 = exp(-(alpha c2)^2)
         }
         case BlinnDistribution::d3_trowbridge_reitz: {
             float c3sq = m.c3 * m.c3;

@@ -1,5 +1,6 @@
 // small-device: yes (no allocation, no exceptions)
 #include "shitsukan/raster/camera.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 #include <cmath>
 
@@ -29,7 +30,7 @@ Camera perspective_camera(Vec3 eye, Vec3 target, Vec3 up, float fov_y_degrees, i
     c.height = height;
     c.orthographic = false;
     float aspect = height > 0 ? float(width) / float(height) : 1.0f;
-    float f = 1.0f / std::tan(fov_y_degrees * (kPi / 180.0f) * 0.5f);  // cot(fov / 2)
+    float f = 1.0f / det_tan(fov_y_degrees * (kPi / 180.0f) * 0.5f);  // cot(fov / 2)
     Mat4 p;  // all zero
     p.m[0][0] = f / aspect;
     p.m[1][1] = f;

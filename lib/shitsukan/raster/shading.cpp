@@ -1,5 +1,6 @@
 // small-device: yes (no allocation, no exceptions)
 #include "shitsukan/raster/shading.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 #include <cmath>
 
@@ -54,7 +55,7 @@ Vec3 shade_blinn_phong(const Material& m, Vec3 base, Vec3 position, Vec3 normal,
         if (dot(normal, l) <= 0.0f) continue;  // no highlight on the unlit side
         float n_dot_h = dot(normal, normalize(l + v));
         if (n_dot_h <= 0.0f) continue;
-        float highlight = std::pow(n_dot_h, m.shininess);
+        float highlight = det_pow(n_dot_h, m.shininess);
         sum += lights[i].color * m.specular_color * (lights[i].intensity * m.specular * highlight);
     }
     return sum;

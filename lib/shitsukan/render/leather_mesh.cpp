@@ -1,4 +1,5 @@
 #include "shitsukan/render/leather_mesh.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 #include <cmath>
 
@@ -48,7 +49,7 @@ void tokai1994_scene_lights(PointLight out[2]) {
 }
 
 Rgb8 to_display_gamma(Vec3 c) {
-    auto g = [](float v) { return to_byte(std::pow(clamp(v, 0.0f, 1.0f), 1.0f / 2.2f)); };
+    auto g = [](float v) { return to_byte(det_pow(clamp(v, 0.0f, 1.0f), 1.0f / 2.2f)); };
     return Rgb8{g(c.x), g(c.y), g(c.z)};
 }
 

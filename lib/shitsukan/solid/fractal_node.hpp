@@ -53,15 +53,16 @@ constexpr std::uint32_t kLatticeStream = 0u;
 constexpr std::uint32_t kQuadtreeStream = 1u;
 
 // g ~ N(0, 1) of the node (x, y, z): the same number whoever asks first (okada1989 §3-3).
+// gaussian_from_bits_float: the lattice's hot path stays in float on a single-precision FPU.
 inline float node_gaussian(std::uint32_t seed, std::int32_t x, std::int32_t y, std::int32_t z) {
-    return hash_gaussian(seed, kLatticeStream, x, y, z);
+    return gaussian_from_bits_float(hash_coords(seed, kLatticeStream, x, y, z));
 }
 
 // The same number with the seed's hash start computed once (a lattice draws millions):
 // node_gaussian_from(hash_start(seed, kLatticeStream), x, y, z) == node_gaussian(seed, x, y, z).
 inline float node_gaussian_from(std::uint64_t start, std::int32_t x, std::int32_t y,
                                 std::int32_t z) {
-    return gaussian_from_bits(hash_coords_from(start, x, y, z));
+    return gaussian_from_bits_float(hash_coords_from(start, x, y, z));
 }
 
 // The parent rule, written once (Types I, II and III, the tests and example 10 all use it):

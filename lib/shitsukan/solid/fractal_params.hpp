@@ -27,7 +27,8 @@
 //            values"), finite. Index = i + 2j + 4k for the corner (i, j, k) in {0, 1}^3.
 //            Default 0 (chosen here: D then has mean 0 everywhere, so k alone sets the scale).
 //   noise    where g comes from: NoiseSource::hash (default) draws g for the node (x, y, z)
-//            as hash_gaussian(seed, 0, x, y, z), so every lattice type gives every node the
+//            as node_gaussian(seed, x, y, z) (fractal_node.hpp: the coordinate hash of stream 0
+//            through gaussian_from_bits_float), so every lattice type gives every node the
 //            same number whatever the order of evaluation (okada1989 Type III's idea);
 //            NoiseSource::sequential draws from one Pcg32(seed) stream in build order, as a
 //            1987 program calling a random-number routine would (Type I and II only).

@@ -24,7 +24,10 @@ Status validate_solid_material(const SolidMaterial& m) {
 }
 
 float solid_density(const SolidMaterial& m, const LatticeView& lattice, Vec3 p) {
-    const float d = turbulence(lattice, p);  // D(P), eq. (6)
+    return solid_density_at(m, p, turbulence(lattice, p));  // D(P), eq. (6)
+}
+
+float solid_density_at(const SolidMaterial& m, Vec3 p, float d) {
     if (m.pattern == SolidPattern::marble && m.layer_period > 0.0f) {
         // okada1989 eqs. (8), (9): the one layer at the displaced z' = z + k·D(P), repeated
         // every period: the two nearest repeats, at t and t - period from z'.

@@ -45,6 +45,8 @@ Status validate_solid_material(const SolidMaterial& material);
 
 // G' in [0, 1] at lattice point p (see above). The lattice must be built (asserted).
 float solid_density(const SolidMaterial& material, const LatticeView& lattice, Vec3 p);
+// The same for a known D(P) = d (e.g. from TypeIIILattice::turbulence, with no lattice table).
+float solid_density_at(const SolidMaterial& material, Vec3 p, float d);
 // eq. (12) for a density: (1 - G')·I_min + G'·I_max.
 Vec3 solid_density_color(const SolidMaterial& material, float density);
 // Both: the colour of the texture at lattice point p.

@@ -1,5 +1,6 @@
 // small-device: yes (wood original function and texture; no allocation)
 #include "shitsukan/solid/wood.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 #include <cmath>
 
@@ -16,7 +17,7 @@ float axis_distance(Vec3 p, const WoodParams& w) {
 }  // namespace
 
 float wood_original(Vec3 p, const WoodParams& params) {
-    return std::sin(params.k2 * axis_distance(p, params));  // eq. (10)
+    return det_sin(params.k2 * axis_distance(p, params));  // eq. (10)
 }
 
 Status wood_radial_direction(Vec3 p, const WoodParams& params, Vec3* u) {

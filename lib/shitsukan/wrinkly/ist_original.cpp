@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "shitsukan/core/assert.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 namespace shitsukan {
 
@@ -208,7 +209,7 @@ Status ist_original_check(const IstOriginal& ist) {
         if (ist.edges != nullptr)
             for (int i = 0; i < ist.base_intervals; ++i)
                 narrowest = std::min(narrowest, ist.edges[i + 1] - ist.edges[i]);
-        const double finest = narrowest / std::pow(double(widest), double(ist.iterations));
+        const double finest = narrowest / det_pow(double(widest), double(ist.iterations));
         if (!(finest >= std::ldexp(1.0, -45)))
             return Status::error(StatusCode::out_of_range,
                                  "original IST: K = %d steps of up to %d parts leave "

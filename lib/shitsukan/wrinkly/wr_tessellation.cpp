@@ -1,4 +1,5 @@
 #include "shitsukan/wrinkly/wr_tessellation.hpp"
+#include "shitsukan/core/detmath.hpp"
 
 #include <cmath>
 
@@ -50,9 +51,9 @@ Status evaluate_wr_grid(const WrSurface& surface, const HierarchicalSampling* sa
         return Status::error(StatusCode::invalid_argument,
                              "the superposed form (eq. 20) needs a HierarchicalSampling");
     const double est = double(surface.axis_u().base_intervals) *
-                       std::pow(double(surface.axis_u().division), o.grid_level) *
+                       det_pow(double(surface.axis_u().division), o.grid_level) *
                        double(surface.axis_v().base_intervals) *
-                       std::pow(double(surface.axis_v().division), o.grid_level) *
+                       det_pow(double(surface.axis_v().division), o.grid_level) *
                        double(o.subdivisions) * double(o.subdivisions);
     if (est > double(kMaxWrVertices))
         return Status::error(
