@@ -143,6 +143,8 @@ consumer-deps: deps
 FUZZ_REQUIRED := /usr/bin/clang++:clang
 FUZZ_CXX     ?= clang++
 FUZZ_SECONDS ?= 20
+# A fixed libFuzzer seed keeps CI's short runs reproducible; FUZZ_SEED=0 picks a random one.
+FUZZ_SEED    ?= 1
 FUZZ_FLAGS   := -std=c++17 -O1 -g -fno-omit-frame-pointer -ffp-contract=off \
                 -fsanitize=address,undefined -fno-sanitize-recover=all
 FUZZ_SRCS    := $(sort $(wildcard fuzz/fuzz_*.cpp))
@@ -157,7 +159,7 @@ fuzz: fuzz-deps
 	@for f in $(FUZZERS); do name=$$(basename $$f); \
 	  mkdir -p $(BUILD)/fuzz/corpus-$$name; \
 	  log=$(BUILD)/fuzz/$$name.log; \
-	  if ! $$f -max_total_time=$(FUZZ_SECONDS) -timeout=1 -rss_limit_mb=2048 -print_final_stats=1 \
+	  if ! $$f -seed=$(FUZZ_SEED) -max_total_time=$(FUZZ_SECONDS) -timeout=1 -rss_limit_mb=2048 -print_final_stats=1 \
 	       -artifact_prefix=$(BUILD)/fuzz/ $(BUILD)/fuzz/corpus-$$name fuzz/corpus/$$name \
 	       > $$log 2>&1; then \
 	    tail -40 $$log; echo "fuzz: $$name FOUND A DEFECT (input saved under $(BUILD)/fuzz/)"; exit 1; fi; \

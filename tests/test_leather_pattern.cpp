@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
@@ -522,4 +523,37 @@ TEST_CASE("fuzz finding: a region thinner than one seed spacing is refused (it g
     prm.height = 0.1f;  // exactly one row
     REQUIRE(generate_scale_pattern(prm, &pat).ok());
     CHECK(pattern_area(pat) == doctest::Approx(0.1).epsilon(1e-6));
+}
+
+TEST_CASE("fuzz finding 7: p = 0.1 with rows far closer than D never returns a pattern that "
+          "does not tile") {
+    // make fuzz (fuzz_scale_pattern, crash-6faf949f...): W 1.0625, H 1, D 0.1, d 0.0314,
+    // a ~ 0, edge ratio 0.6, p 0.1, 1 level, decay 3.6e-35, safety 0.7, seed 828794470: the
+    // perturbed scales' areas did not sum to the rectangle's, with an ok Status.
+    ScaleParams prm;
+    std::uint32_t a_bits = 654319615u;
+    float a;
+    std::memcpy(&a, &a_bits, sizeof a);
+    prm.width = 1.0625f, prm.height = 1.0f, prm.D = 0.1f, prm.d = 0.03144531324505806f;
+    prm.a = a, prm.edge_ratio = 0.6000000238418579f;
+    prm.perturbation.p = 0.10000000149011612f;
+    prm.perturbation.levels = 1;
+    prm.perturbation.decay = 3.5697410149883823e-35f;
+    prm.perturbation.safety = 0.699999988079071f;
+    prm.seed = 828794470u;
+    ScalePattern pat;
+    const Status s = generate_scale_pattern(prm, &pat, nullptr);
+    if (s.ok()) {
+        double area = 0.0;
+        for (int f = 0; f < pat.polygon_count(); ++f) {
+            int n;
+            const Vec2* v = pat.polygon(f, &n);
+            area += polygon_area(v, n);
+        }
+        CHECK(std::fabs(area - 1.0625) <= 1e-6 * 1.0625);
+    } else {
+        MESSAGE(std::string(s.message()));
+        CHECK(s.code() == StatusCode::degenerate);
+        CHECK(pat.polygon_count() == 0);
+    }
 }
