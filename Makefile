@@ -145,6 +145,9 @@ FUZZ_CXX     ?= clang++
 FUZZ_SECONDS ?= 20
 # A fixed libFuzzer seed keeps CI's short runs reproducible; FUZZ_SEED=0 picks a random one.
 FUZZ_SEED    ?= 1
+# 1: a new finding in the timed exploration fails the target. CI uses 0 while fuzz/findings/
+# holds an open finding (the committed corpus replay always fails on a regression).
+FUZZ_STRICT  ?= 1
 FUZZ_FLAGS   := -std=c++17 -O1 -g -fno-omit-frame-pointer -ffp-contract=off \
                 -fsanitize=address,undefined -fno-sanitize-recover=all
 FUZZ_SRCS    := $(sort $(wildcard fuzz/fuzz_*.cpp))
@@ -157,15 +160,24 @@ fuzz-deps:
 fuzz: fuzz-deps
 	@$(SUBMAKE) $(FUZZERS)
 	@for f in $(FUZZERS); do name=$$(basename $$f); \
+	  log=$(BUILD)/fuzz/$$name.replay.log; \
+	  if ! $$f -runs=0 -timeout=1 -rss_limit_mb=2048 fuzz/corpus/$$name > $$log 2>&1; then \
+	    tail -40 $$log; echo "fuzz: $$name FAILS ON ITS COMMITTED CORPUS (a regression)"; exit 1; fi; \
+	  echo "fuzz: $$name: committed corpus ($$(ls fuzz/corpus/$$name | wc -l) inputs) replayed clean"; \
+	done
+	@found=0; for f in $(FUZZERS); do name=$$(basename $$f); \
 	  mkdir -p $(BUILD)/fuzz/corpus-$$name; \
 	  log=$(BUILD)/fuzz/$$name.log; \
 	  if ! $$f -seed=$(FUZZ_SEED) -max_total_time=$(FUZZ_SECONDS) -timeout=1 -rss_limit_mb=2048 -print_final_stats=1 \
 	       -artifact_prefix=$(BUILD)/fuzz/ $(BUILD)/fuzz/corpus-$$name fuzz/corpus/$$name \
 	       > $$log 2>&1; then \
-	    tail -40 $$log; echo "fuzz: $$name FOUND A DEFECT (input saved under $(BUILD)/fuzz/)"; exit 1; fi; \
+	    grep -m1 "contract broken\|ERROR" $$log; \
+	    echo "fuzz: $$name FOUND A DEFECT (input saved under $(BUILD)/fuzz/)"; found=1; continue; fi; \
 	  runs=$$(sed -n 's/^stat::number_of_executed_units: *//p' $$log); \
 	  echo "fuzz: $$name: $$runs executions in $(FUZZ_SECONDS) s, no finding"; \
-	done
+	done; \
+	if [ $$found = 1 ] && [ "$(FUZZ_STRICT)" = 1 ]; then exit 1; fi; \
+	if [ $$found = 1 ]; then echo "fuzz: findings reported, not failing (FUZZ_STRICT=0: open findings in fuzz/findings/)"; fi
 
 $(BUILD)/fuzz/%: fuzz/%.cpp fuzz/fuzz_input.hpp $(FUZZ_OBJS)
 	@mkdir -p $(@D)
