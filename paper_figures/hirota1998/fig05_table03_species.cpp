@@ -53,9 +53,9 @@ Status render_trunk(const SpeciesRun& s, const RgbImage& map, float px_per_cm, R
     Material m;
     m.ambient = 0.25f, m.diffuse = 0.85f;
     const ImageView<const Rgb8> tex = map.const_view();
+    const int filled = std::max(1, int(C * px_per_cm));  // columns the map really covers
     auto shader = [&](const Fragment& f) {
         // uv is the unrolled position over (C, H): texel = uv times the map's scale.
-        const int filled = std::max(1, int(C * px_per_cm));  // columns the map really covers
         const int x = clamp(int(f.uv.x * C * px_per_cm), 0, filled - 1);
         const int y = clamp(int(float(tex.height) - f.uv.y * H * px_per_cm), 0, tex.height - 1);
         const Rgb8 c = tex.at(x, y);

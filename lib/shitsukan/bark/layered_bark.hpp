@@ -122,7 +122,7 @@ public:
     int regions_peeled_in_cycle(int cycle) const;
 
     // Pieces, public for the tests and for teaching:
-    // the growth strain of a layer born at (r_b, s_b) in role radius r at time t
+    // s_z(t) = 1 + (axial growth)·t/T: the axial scale every layer's growth strain uses
     float axial_scale(float t) const;
     // regions of the surface (strong connectivity among alive nodes) that fall off now
     int peel_regions(float t);
