@@ -5,6 +5,7 @@
 #include "shitsukan/core/detmath.hpp"
 #include "shitsukan/core/gaussian.hpp"
 #include "shitsukan/core/hash.hpp"
+#include "shitsukan/core/memory_budget.hpp"
 #include "shitsukan/core/prng.hpp"
 #include "shitsukan/core/scalar.hpp"
 #include "shitsukan/core/status.hpp"
