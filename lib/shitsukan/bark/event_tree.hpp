@@ -22,6 +22,7 @@ namespace shitsukan {
 
 class EventTree {
 public:
+    EventTree() = default;  // no items; assign a sized tree before use
     // n items; key(i) gives item i's canonical key (ties).
     EventTree(std::size_t n, std::function<std::uint64_t(std::uint32_t)> key) : key_(std::move(key)) {
         n_ = int(n);

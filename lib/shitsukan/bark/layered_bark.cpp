@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "shitsukan/bark/event_tree.hpp"
@@ -79,6 +80,7 @@ Status LayeredBark::build(const LayeredParams& params) {
     cp.sigma = params.sigma;
     cp.seed = params.seed;
     SHITSUKAN_TRY(build_cylinder(cp, &lattice_));
+    events_ = EventTree();  // break_until_stable builds it for this lattice
     n_ = lattice_.net.node_count();
     m_ = lattice_.net.spring_count();
 
@@ -210,23 +212,35 @@ void LayeredBark::break_surface_spring(int s, float t) {
 // theirs debond together.
 Status LayeredBark::break_until_stable(float t) {
     const int items = 2 * m_ + n_;  // lattice springs of both layers, then one tie per node
-    auto item_key = [&](std::uint32_t i) {
-        return i < std::uint32_t(2 * m_) ? net_.springs[i].key
-                                         : (std::uint64_t(3) << 60) | (std::uint64_t(i - 2 * m_) << 1);
-    };
-    EventTree tree(std::size_t(items), item_key);
     auto value = [&](int i) {
         const float ratio = i < 2 * m_ ? tension_ratio(i) : shear_ratio(i - 2 * m_);
         return ratio > 0.0f ? 1.0f / ratio : kNever;
     };
-    {
-        std::vector<float> v(static_cast<std::size_t>(items));
-        for (int i = 0; i < items; ++i) v[std::size_t(i)] = value(i);
-        tree.set_all(v.data());
-    }
-    std::vector<std::uint8_t> mark(static_cast<std::size_t>(items), 0);
     std::vector<std::uint32_t> dirty;
     std::vector<float> dirty_values;
+    if (events_.size() != items) {  // the first call: the whole tree, once per run
+        std::vector<std::uint64_t> keys(static_cast<std::size_t>(items));
+        for (int i = 0; i < items; ++i)
+            keys[std::size_t(i)] = i < 2 * m_ ? net_.springs[std::size_t(i)].key
+                                              : (std::uint64_t(3) << 60) | (std::uint64_t(i - 2 * m_) << 1);
+        events_ = EventTree(std::size_t(items), [keys](std::uint32_t i) { return keys[i]; });
+        std::vector<float> v(static_cast<std::size_t>(items));
+        for (int i = 0; i < items; ++i) v[std::size_t(i)] = value(i);
+        events_.set_all(v.data());
+    } else {
+        // Growth, drying and peeling since the last call changed ratios anywhere: every value
+        // is recomputed, but only the leaves whose value changed (bit for bit) are re-sorted,
+        // so the tree equals a fresh one without rebuilding its inner nodes.
+        for (int i = 0; i < items; ++i) {
+            const float v = value(i), old = events_.time(std::uint32_t(i));
+            if (std::memcmp(&v, &old, sizeof v) != 0)
+                dirty.push_back(std::uint32_t(i)), dirty_values.push_back(v);
+        }
+        events_.set_many(dirty, dirty_values);
+    }
+    EventTree& tree = events_;
+    std::vector<std::uint8_t>& mark = event_mark_;
+    if (mark.size() != std::size_t(items)) mark.assign(std::size_t(items), 0);  // left all 0
     auto refresh = [&]() {
         dirty.clear();
         dirty_values.clear();

@@ -48,6 +48,7 @@
 #include <vector>
 
 #include "shitsukan/bark/cylinder_lattice.hpp"
+#include "shitsukan/bark/event_tree.hpp"
 #include "shitsukan/bark/layer_schedule.hpp"
 #include "shitsukan/bark/spring_network.hpp"
 
@@ -164,6 +165,8 @@ private:
     std::vector<LayeredStep> record_;
     std::vector<LayerFrame> frames_;
     std::vector<std::uint32_t> touched_;
+    EventTree events_;                      // break_until_stable's next break, kept across calls
+    std::vector<std::uint8_t> event_mark_;  // its scratch: leaves already refreshed
     int step_peeled_ = 0, step_debonded_ = 0;
 };
 
