@@ -6,7 +6,10 @@
 #   make cli       the `shitsukan` command-line tool (build/shitsukan; cli/); make test-cli runs it
 #   make check-api        headers compile alone, umbrella header complete, only shitsukan
 #                         symbols exported, a program with its own stb links, PNGs without
-#                         the stb header, dropped Status is a compile error under -Werror
+#                         the stb header, dropped Status is a compile error under -Werror,
+#                         README's module map matches the tree
+#   make check-manuals    every header's manual example compiles (and runs, unless compile-only)
+#   make check-lengths    no function in lib/ over 100 lines (tools/function_lengths.py)
 #   make test-consumers   installs cmake/pkg-config if missing; builds tests/consumer four ways
 #                         (add_subdirectory, FetchContent, find_package, pkg-config)
 #   make test-mcu         installs the Arm toolchain, newlib and QEMU if missing; runs
@@ -82,7 +85,7 @@ LIBRARY    := $(BUILD)/libshitsukan.a
 
 .PHONY: all test test-sanitize figures examples bench check-small check-api test-consumers \
         install deps bench-deps consumer-deps mcu-deps clean fuzz fuzz-deps figures-determinism \
-        cli test-cli test-mcu bench-mcu footprint-mcu
+        cli test-cli test-mcu bench-mcu footprint-mcu check-manuals check-lengths
 
 # The top-level targets run one at a time (each builds in parallel inside its own sub-make), so
 # `make -j test figures` cannot build the library twice at once.
@@ -298,6 +301,21 @@ check-api: deps
 	grep -q "nodiscard" $(API_DIR)/dropped_status.log || \
 	  { echo "check-api: dropped_status.cpp failed, but not for nodiscard:"; cat $(API_DIR)/dropped_status.log; exit 1; }
 	@echo "check-api: a dropped Status does not compile under -Werror (nodiscard)"
+	@# 6. README.md's module map lists what the tree holds, and nothing else
+	@python3 tools/check_module_map.py
+
+# Every header's manual example (the lines under "// Manual") compiled into a program of its
+# own against the library and, unless tagged "// Manual (compile-only)", run
+# (tools/extract_manuals.py; sources and programs in build/manuals/).
+check-manuals: deps
+	@$(SUBMAKE) $(LIBRARY)
+	@python3 tools/extract_manuals.py --build --out $(BUILD)/manuals --cxx '$(CXX)' \
+	  --flags '$(CPPFLAGS) $(CXXFLAGS) -O0 -Wno-unused-variable -Wno-unused-but-set-variable' \
+	  --lib $(LIBRARY) -j $(JOBS)
+
+# Issue 16: no function in lib/ over 100 lines (tools/function_lengths.py lists the ones over).
+check-lengths:
+	@python3 tools/function_lengths.py lib
 
 test-consumers: consumer-deps
 	JOBS=$(JOBS) CXX=$(CXX) bash tests/consumer/run.sh
