@@ -11,38 +11,29 @@
 #include "shitsukan/geom/obj.hpp"
 #include "shitsukan/image/image_io.hpp"
 #include "shitsukan/image/raster_canvas.hpp"
+#include "shitsukan/render/bark_crack_map.hpp"
 
 namespace shitsukan::cli {
 namespace {
 
 void bark_progress(float fraction, void* user) { static_cast<Progress*>(user)->report(fraction); }
 
-// The unrolled crack map at t: bark plate colour, every crack as Fig. 4's ribbon (width l - l0,
-// at least 1 px so a fresh crack shows), wrapped around the seam. Colours chosen here: a
-// grey-brown plate, near-black cracks (as the figures).
+// The unrolled crack map at t (render/bark_crack_map.hpp, as the hirota1998 figures draw it):
+// the plates, every crack as Fig. 4's ribbon (width l - l0, at least 1 px so a fresh crack
+// shows), wrapped around the seam, in the figures' colours.
 Status draw_cracks(const BarkCylinder& bark, float t, const Vec3* W, float px_per_cm,
                    RgbImage* out) {
     const float C = bark.circumference * (1.0f + hoop_strain(bark.params, t));
     const float H = initial_height(bark.params) * (1.0f + axial_strain(bark.params, t));
     const int w = std::max(8, int(std::ceil(C * px_per_cm))),
               h = std::max(8, int(std::ceil(H * px_per_cm)));
-    out->resize(w, h, Rgb8{122, 104, 84});
-    std::vector<CrackRibbon> cracks;
-    SHITSUKAN_TRY(crack_ribbons(bark, t, W, &cracks, /*include_weak=*/false));
+    CrackMapStyle style;
+    style.origin = {0.0f, float(h)};
+    style.px_per_cm = px_per_cm;
+    style.min_width_cm = 1.0f / px_per_cm;
+    out->resize(w, h, style.plate);
     RasterCanvas canvas(out->view());
-    const float min_width = 1.0f / px_per_cm;
-    for (const CrackRibbon& r : cracks) {
-        Vec3 quads[2][4];
-        ribbon_quads(r, quads, min_width);
-        for (float shift : {0.0f, -C, C})
-            for (auto& q : quads) {
-                Vec2 pts[4];
-                for (int k = 0; k < 4; ++k)
-                    pts[k] = Vec2{(q[k].x + shift) * px_per_cm, float(h) - q[k].y * px_per_cm};
-                canvas.fill_polygon(pts, 4, Rgb8{28, 22, 18});
-            }
-    }
-    return Status::success();
+    return draw_crack_map(canvas, bark, t, W, style);
 }
 
 }  // namespace

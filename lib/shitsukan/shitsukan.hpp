@@ -144,6 +144,7 @@
 #include "shitsukan/bark/spring_network.hpp"
 
 // render
+#include "shitsukan/render/bark_crack_map.hpp"
 #include "shitsukan/render/leather_mesh.hpp"
 #include "shitsukan/render/solid_bake.hpp"
 #include "shitsukan/render/solid_mesh.hpp"

@@ -3,8 +3,6 @@
 
 #include <chrono>
 
-#include "shitsukan/core/hash.hpp"
-#include "shitsukan/image/raster_canvas.hpp"
 
 namespace shitsukan::figures::bark {
 
@@ -61,69 +59,6 @@ void record_parameters(FigureContext& ctx, const CylinderParams& p) {
     ctx.chosen("spring constants", "k = E S / l0 (S = face length x D), k_sh = G A / D",
                "bar in tension, block in shear, from §5.1's connection areas");
     ctx.chosen("seed", fmt("%u (hash streams 11: springs)", p.seed), "the paper's year");
-}
-
-namespace {
-
-Rgb8 shade(Rgb8 c, float f) {
-    auto ch = [f](std::uint8_t v) {
-        const float x = float(v) * f;
-        return std::uint8_t(x > 255.0f ? 255.0f : x);
-    };
-    return {ch(c.r), ch(c.g), ch(c.b)};
-}
-
-}  // namespace
-
-void draw_crack_map(Canvas& canvas, const BarkCylinder& bark, const RegionReport* regions,
-                    float t, const Vec3* W, Vec2 origin, float scale, float min_width_cm) {
-    const float C = bark.circumference * (1.0f + hoop_strain(bark.params, t));
-    auto to_px = [&](Vec3 p, float shift) {
-        return Vec2{origin.x + (p.x + shift) * scale, origin.y - p.y * scale};
-    };
-    auto* raster = dynamic_cast<RasterCanvas*>(&canvas);
-    if (raster) raster->set_antialias(false);  // plates tile exactly; cracks are smoothed
-    for (const ConnectionTriangle& tri : bark.triangles) {
-        Vec3 x[3];
-        bool beyond = false;
-        for (int k = 0; k < 3; ++k) {
-            x[k] = corner_position(bark, tri.corner[k], tri.node[k], t, W);
-            beyond = beyond || x[k].x > C;
-        }
-        Rgb8 colour = kBarkPlate;
-        if (regions) {
-            const std::int32_t label = regions->label[tri.node[0]];
-            const float f = label < 0 ? 0.8f
-                                      : 0.88f + 0.24f * hash_uniform(7, 5, label);  // chosen here
-            colour = shade(kBarkPlate, f);
-        }
-        for (float shift : {0.0f, -C}) {
-            if (shift != 0.0f && !beyond) continue;
-            const Vec2 pts[3] = {to_px(x[0], shift), to_px(x[1], shift), to_px(x[2], shift)};
-            canvas.fill_polygon(pts, 3, colour);
-        }
-    }
-    if (raster) raster->set_antialias(true);
-    std::vector<CrackRibbon> cracks;
-    if (!crack_ribbons(bark, t, W, &cracks, /*include_weak=*/true).ok()) return;
-    for (const CrackRibbon& r : cracks) {
-        // A weak axial spring is a one-node-wide sliver between two vertical cracks, not a
-        // crack across it: drawn as part of the sliver (chosen here).
-        if (r.weak && bark.net.springs[r.spring].family == 1) continue;
-        Vec3 quads[2][4];
-        ribbon_quads(r, quads, min_width_cm);
-        bool beyond = false;
-        for (auto& q : quads)
-            for (const Vec3& p : q) beyond = beyond || p.x > C;
-        for (float shift : {0.0f, -C}) {
-            if (shift != 0.0f && !beyond) continue;
-            for (auto& q : quads) {
-                const Vec2 pts[4] = {to_px(q[0], shift), to_px(q[1], shift), to_px(q[2], shift),
-                                     to_px(q[3], shift)};
-                canvas.fill_polygon(pts, 4, kCrack);
-            }
-        }
-    }
 }
 
 }  // namespace shitsukan::figures::bark

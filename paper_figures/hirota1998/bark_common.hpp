@@ -1,6 +1,6 @@
 // paper_figures/hirota1998/bark_common.hpp — what the hirota1998 figures share: the species
-// runs (memoised: fig04, fig05 and table03 use the same three simulations), the crack map
-// drawing and the parameter table.
+// runs (memoised: fig04, fig05 and table03 use the same three simulations), the colours and
+// the parameter table.
 #pragma once
 
 #include <map>
@@ -11,6 +11,7 @@
 #include "driver/figure.hpp"
 #include "shitsukan/bark/bark.hpp"
 #include "shitsukan/image/canvas.hpp"
+#include "shitsukan/render/bark_crack_map.hpp"
 
 namespace shitsukan::figures::bark {
 
@@ -51,11 +52,7 @@ void record_parameters(FigureContext& ctx, const CylinderParams& p);
 extern const Rgb8 kBarkPlate;
 extern const Rgb8 kCrack;
 
-// Draws the unrolled bark at time t with W: plates (the lattice triangles, each region's
-// plates slightly lighter or darker, chosen here so the blocks read), cracks as Fig. 4
-// ribbons (weak diagonal springs, a crack opened by sliding, at min_width_cm). (u, z) cm -> pixel (origin.x + u·scale,
-// origin.y - z·scale).
-void draw_crack_map(Canvas& canvas, const BarkCylinder& bark, const RegionReport* regions,
-                    float t, const Vec3* W, Vec2 origin, float scale, float min_width_cm);
+// The crack maps are drawn by the library (render/bark_crack_map.hpp: draw_crack_map), as for
+// `shitsukan bark`; the figures pass these colours and their regions.
 
 }  // namespace shitsukan::figures::bark

@@ -117,8 +117,14 @@ SHITSUKAN_FIGURE(hirota_fig05, "hirota1998", "fig05",
         RgbImage map(int(std::ceil(C * px_per_cm)), int(std::ceil(H * px_per_cm)),
                      Rgb8{250, 250, 248});
         RasterCanvas mc(map.view());
-        draw_crack_map(mc, s.bark, &s.regions, T, s.bark.net.W.data(), {0.0f, float(map.height())},
-                       px_per_cm, min_crack);
+        CrackMapStyle style;
+        style.origin = {0.0f, float(map.height())};
+        style.px_per_cm = px_per_cm;
+        style.min_width_cm = min_crack;
+        style.plate = kBarkPlate;
+        style.crack = kCrack;
+        style.regions = &s.regions;
+        SHITSUKAN_TRY(draw_crack_map(mc, s.bark, T, s.bark.net.W.data(), style));
         RgbImage render(col, render_h);
         SHITSUKAN_TRY(render_trunk(s, map, px_per_cm, render.view()));
         for (int y = 0; y < render_h; ++y)
