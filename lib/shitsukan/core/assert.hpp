@@ -1,7 +1,8 @@
 // shitsukan/core/assert.hpp — checks for programmer bugs (never for user input).
 //
 // Manual
-//   SHITSUKAN_ASSERT(i < n);   aborts with file:line and the expression when false.
+//   int i = 0, n = 3;
+//   SHITSUKAN_ASSERT(i < n);   // aborts with file:line and the expression when false
 // User input is never checked with this macro: public functions validate their arguments
 // and return a Status (status.hpp). An assert firing means a bug inside shitsukan or a
 // broken precondition that the caller was documented to guarantee (e.g. an index).

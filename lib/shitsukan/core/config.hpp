@@ -1,11 +1,13 @@
 // shitsukan/core/config.hpp — version and compile-time switches.
 //
 // Manual
-//   SHITSUKAN_VERSION_STRING  "0.2.0" (also the .pc's Version and the CMake package version;
-//                             CHANGELOG.md says what changed)
-//   SHITSUKAN_NO_ASSERT       define to compile SHITSUKAN_ASSERT checks out.
-//   SHITSUKAN_ASSERT(expr)    define before any shitsukan header to route programmer-bug
-//                             checks to your own handler (see assert.hpp).
+//   std::printf("shitsukan %s\n", SHITSUKAN_VERSION_STRING);  // "0.2.0"
+//   static_assert(SHITSUKAN_VERSION_MAJOR == 0, "the version as numbers too");
+//   // SHITSUKAN_VERSION_STRING is also the .pc's Version and the CMake package version
+//   // (CHANGELOG.md says what changed). Define before any shitsukan header:
+//   //   SHITSUKAN_NO_ASSERT       to compile SHITSUKAN_ASSERT checks out;
+//   //   SHITSUKAN_ASSERT(expr)    to route programmer-bug checks to your own handler
+//   //                             (see assert.hpp).
 #pragma once
 
 #define SHITSUKAN_VERSION_MAJOR 0

@@ -1,12 +1,15 @@
 // shitsukan/core/gaussian.hpp — our own N(0,1): the inverse normal CDF.
 //
 // Manual
-//   double inverse_normal_cdf(double p);   p in (0, 1) -> z with Phi(z) = p
-//   float  gaussian_from_bits(uint64_t b);  53 random bits -> one N(0,1) draw
-//   float  gaussian_from_bits_float(uint64_t b);  the same draw with the central region
-//          (|p - 0.5| <= 0.47575, 95 % of draws) evaluated in float arithmetic: within a few
-//          float ulps of gaussian_from_bits, about 10x fewer instructions on a single-precision
-//          FPU (the fractal lattice's noise, solid/fractal_node.hpp; issue 12)
+//   double z = inverse_normal_cdf(0.975);   // p in (0, 1) -> z with Phi(z) = p: 1.95996...
+//   std::uint64_t bits = 0x123456789abcdULL;  // 53 random bits (a PRNG's or a hash's)
+//   float g = gaussian_from_bits(bits);       // -> one N(0, 1) draw
+//   float h = gaussian_from_bits_float(bits); // the same draw with the central region
+//                                             // (|p - 0.5| <= 0.47575, 95 % of draws) evaluated
+//                                             // in float arithmetic: within a few float ulps of
+//                                             // gaussian_from_bits, about 10x fewer instructions
+//                                             // on a single-precision FPU (the fractal lattice's
+//                                             // noise, solid/fractal_node.hpp; issue 12)
 // Why not the C++ library's normal distribution: its algorithm is implementation-defined, so
 // the same seed gives different numbers under libstdc++, libc++ and MSVC. Why not Box-Muller: it
 // consumes two uniforms and keeps state. The inverse CDF maps one uniform to one Gaussian,

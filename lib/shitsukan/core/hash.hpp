@@ -1,12 +1,15 @@
 // shitsukan/core/hash.hpp — randomness addressed by integer coordinates, not by call order.
 //
 // Manual
-//   uint64_t h = hash_coords(seed, stream, x, y, z);  // any int32 x, y, z
-//   float u = hash_uniform(seed, stream, x, y, z);     // [0, 1), 24 bits
-//   float g = hash_gaussian(seed, stream, x, y, z);    // N(0, 1)
-//   Custom keys: h = hash_start(seed, stream); h = hash_add(h, word); ... uniform_from_bits(h)
-//   (e.g. a Voronoi edge hashes the bit patterns of its two end points, sorted, so both
-//   polygons that share it draw the same numbers).
+//   std::uint32_t seed = 1987, stream = 0;
+//   std::int32_t x = 3, y = -4, z = 5;
+//   std::uint64_t h = hash_coords(seed, stream, x, y, z);  // any int32 x, y, z
+//   float u = hash_uniform(seed, stream, x, y, z);         // [0, 1), 24 bits
+//   float g = hash_gaussian(seed, stream, x, y, z);        // N(0, 1)
+//   // Custom keys: a Voronoi edge hashes the bit patterns of its two end points, sorted, so
+//   // both polygons that share it draw the same numbers.
+//   std::uint64_t k = hash_add(hash_add(hash_start(seed, stream), 0x3f800000u), 0x40000000u);
+//   float v = uniform_from_bits(k);
 //
 // Why: the Type III lattice (okada1989) must give a node the same random number whether it
 // is reached first or last, and a shared polygon edge (tokai1994) must be perturbed the same

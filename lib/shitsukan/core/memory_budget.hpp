@@ -1,13 +1,12 @@
 // shitsukan/core/memory_budget.hpp — one byte budget, checked before every large allocation.
 //
 // Manual
-//   #include "shitsukan/core/memory_budget.hpp"
-//   using namespace shitsukan;
-//   // before allocating n sites' worth of cells:
-//   Status s = check_memory_budget(std::uint64_t(n) * 433, "voronoi_cells: cells of the sites");
+//   std::uint64_t n = 1000;  // before allocating n sites' worth of cells:
+//   Status s = check_memory_budget(n * 433, "voronoi_cells: cells of the sites");
 //   if (!s) return s;              // too_large, message names what, bytes needed and budget
 //   set_memory_budget(64u << 20);  // a caller of your own: at most 64 MiB per request
 //   std::uint64_t b = memory_budget();
+//   set_memory_budget(0);          // back to the default
 //
 // Inputs inside a function's accepted ranges can still ask for more memory than the machine
 // has (1e7 Voronoi sites, a 1e5 x 1e5 image); instead of dying of std::bad_alloc after tens of

@@ -1,12 +1,13 @@
 // shitsukan/core/prng.hpp — the one pseudo-random generator of shitsukan: PCG32.
 //
 // Manual
+//   std::uint64_t seed = 42, stream = 54;
 //   Pcg32 rng(seed, stream);          // stream selects one of 2^63 independent sequences
 //   uint32_t u = rng.next_u32();      // PCG-XSH-RR: 64-bit LCG state, 32-bit output
 //   float f = rng.uniform();          // [0, 1), 24 random bits
-//   float g = rng.uniform(lo, hi);    // [lo, hi)
+//   float g = rng.uniform(-2.0f, 3.0f);  // [lo, hi)
 //   double d = rng.uniform_double();  // [0, 1), 53 random bits
-//   uint32_t k = rng.uniform_int(n);  // [0, n), unbiased (rejection), n >= 1
+//   uint32_t k = rng.uniform_int(6);  // [0, n), unbiased (rejection), n >= 1
 //   float z = rng.gaussian();         // N(0, 1), inverse CDF of 53 bits (gaussian.hpp)
 //   float s = rng.signed_unit();      // [-1, 1): tokai1994's "Rnd"
 //

@@ -1,9 +1,12 @@
 // shitsukan/core/scalar.hpp — clamp, lerp, smoothstep, pi, finiteness checks.
 //
 // Manual
-//   clamp(x, lo, hi), lerp(a, b, t) = a + (b - a)·t, smoothstep(e0, e1, x) (cubic Hermite),
-//   is_finite(x) (false for NaN and ±inf; works under -ffast-math-free builds only, which is
-//   what the Makefile uses), kPi / kTwoPi as float, kPiD as double.
+//   float x = clamp(1.5f, 0.0f, 1.0f);           // 1
+//   float m = lerp(2.0f, 4.0f, 0.25f);            // a + (b - a)·t = 2.5
+//   float s = smoothstep(0.0f, 1.0f, 0.5f);       // cubic Hermite 3t^2 - 2t^3: 0.5
+//   bool ok = is_finite(x) && !is_finite(kPi / 0.0f);  // false for NaN and ±inf (the Makefile
+//                                                 // builds without -ffast-math, which it needs)
+//   double turn = 2.0 * kPiD;                     // kPi, kTwoPi float; kPiD double
 #pragma once
 
 #include <cmath>

@@ -1,8 +1,11 @@
 // shitsukan/core/status.hpp — the result of a public call that takes user values.
 //
 // Manual
-//   Status s = build_lattice(params, buffer, bytes);
-//   if (!s) std::fprintf(stderr, "%s\n", s.message());
+//   #include "shitsukan/core/memory_budget.hpp"
+//   Status s = check_memory_budget(std::uint64_t(1) << 50, "a 1 PiB image");  // any public call
+//   if (!s) std::fprintf(stderr, "%s\n", s.message());  // too_large: "... needs ... bytes ..."
+//   Status bad = Status::error(StatusCode::invalid_argument, "beta must be >= 0 (got %g)", -1.0);
+//   std::printf("%s: %s\n", status_code_name(bad.code()), bad.message());
 //
 //   Status::success()                              the ok value (message "ok")
 //   Status::error(StatusCode::invalid_argument, "beta must be >= 0 (got %g)", beta)

@@ -1,14 +1,18 @@
 // shitsukan/core/vec.hpp — small vectors and a 4x4 matrix.
 //
 // Manual
-//   Vec2, Vec3, Vec4 (float) and Vec2d, Vec3d (double, for the papers' 8-byte splines).
-//   Vec3 a{1, 2, 3}; a + b, a - b, a * s, s * a, a / s, -a, a[i]
-//   dot(a, b), cross(a, b), length(a), length_squared(a), normalize(a) (returns a unchanged
-//   when its length is 0), min/max componentwise (vmin, vmax), is_finite(a).
-//   Mat4: row-major m[row][col], acting on column vectors: p' = M·p.
-//     Mat4::identity(), translate(t), scale(s), rotate_x/y/z(radians), a * b,
-//     transform_point(M, p) (with the divide by w), transform_vector(M, v) (w = 0),
-//     transpose(M), inverse(M, &ok) (general 4x4, cofactors; ok = false when singular).
+//   Vec3 a{1, 2, 3}, b{0, 1, 0};   // Vec2, Vec3, Vec4 (float); Vec2d, Vec3d (double, for the
+//   float s = 2.0f;                 // papers' 8-byte splines)
+//   Vec3 c = a + b - a * s + s * a - a / s - (-a);  float ax = a[0];
+//   float d = dot(a, b), l = length(a), l2 = length_squared(a);
+//   Vec3 n = normalize(cross(a, b));  // normalize returns a unchanged when its length is 0
+//   Vec3 lo = vmin(a, b), hi = vmax(a, b);  bool f = is_finite(a);
+//   // Mat4: row-major m[row][col], acting on column vectors: p' = M·p.
+//   Mat4 M = Mat4::translate({1, 0, 0}) * Mat4::rotate_y(0.5f) * Mat4::scale({2, 2, 2});
+//   Vec3 p = transform_point(M, a);   // with the divide by w
+//   Vec3 v = transform_vector(M, b);  // w = 0
+//   bool ok = false;
+//   Mat4 Mi = inverse(transpose(M), &ok);  // general 4x4, cofactors; ok = false when singular
 // Everything is constexpr-free plain code so a reader can follow it; no allocation.
 #pragma once
 
