@@ -1,6 +1,7 @@
 // shitsukan/geom/basis.hpp — Bernstein and uniform B-spline basis functions, any degree.
 //
 // Manual
+//   float t = 0.25f;
 //   float b[kMaxBasisDegree + 1], db[kMaxBasisDegree + 1];
 //   bernstein_basis(3, t, b, db);        // B_{i,3}(t), i = 0..3, and dB/dt; t in [0, 1]
 //   bspline_basis(3, t, b, db);          // uniform B-spline of degree 3 on one knot span:

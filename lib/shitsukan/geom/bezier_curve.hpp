@@ -2,6 +2,7 @@
 // them used as a function z(r) (the scale cross-section of tokai1994 §3.2, fig. 11, 15).
 //
 // Manual
+//   float t = 0.5f;
 //   CubicBezier2 c{{{0.0f, 0.1f}, {0.51f, 0.1f}, {0.75f, 0.13f}, {0.92f, 0.0f}}};
 //   Vec2 q  = bezier_point(c, t);          // eq. (2), t in [0, 1]
 //   Vec2 dq = bezier_derivative(c, t);     // eq. (3): (dr/dt, dz/dt)

@@ -2,10 +2,14 @@
 //
 // Manual
 //   BezierPatch patch;                       // patch.p[i][j]: 16 control points P_00..P_33,
-//                                            // i along u, j along v
+//   for (int i = 0; i < 4; ++i)              // i along u, j along v (here a gentle bump)
+//       for (int j = 0; j < 4; ++j)
+//           patch.p[i][j] = Vec3{i / 3.0f, j / 3.0f, (i % 3 && j % 3) ? 0.3f : 0.0f};
 //   Status s = validate_patch(patch);        // finite, no collapsed boundary edge, not flat-0
+//   float u = 0.5f, v = 0.25f;
 //   PatchPoint q = patch_point(patch, u, v); // position, dP/du, dP/dv, unit normal; u,v in [0,1]
 //   float len = patch_iso_length(patch, true, v, 32);   // arc length of the u-curve at v
+//   return s;
 //
 // eq. (5): P(u, v) = sum_i sum_j p_ij B_i(u) B_j(v), B_k(u) = 3!/(k!(3-k)!) u^k (1-u)^(3-k)
 // (the Bernstein bases of geom/basis.hpp). The normal is dP/du x dP/dv normalised; where that

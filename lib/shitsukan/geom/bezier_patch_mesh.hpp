@@ -2,12 +2,16 @@
 // into a triangle mesh whose uv are texture coordinates corrected by arc length (tokai1994 §4).
 //
 // Manual
-//   BezierPatch strip[3] = {...};              // strip[k]'s edge u = 1 is strip[k+1]'s u = 0
+//   BezierPatch strip[3];                      // strip[k]'s edge u = 1 is strip[k+1]'s u = 0
+//   for (int k = 0; k < 3; ++k)                // here: three flat unit squares side by side
+//       for (int i = 0; i < 4; ++i)
+//           for (int j = 0; j < 4; ++j) strip[k].p[i][j] = Vec3{k + i / 3.0f, j / 3.0f, 0.0f};
 //   PatchStripOptions opt;                     // defaults below
 //   opt.texture_scale = 0.8f;                  // texture units per world unit
 //   TriangleMesh mesh;
 //   Status s = tessellate_patch_strip(strip, 3, opt, &mesh);
 //   // mesh.uvs[i] = (x, y): the texture point shown at vertex i (texture units, not [0, 1])
+//   return s;
 //
 // §4: the (u, v) of a patch are "quite distorted seen from space" for some control nets, so
 // the texture coordinate is computed from space as well ("空間座標の値も利用して"), for a

@@ -1,13 +1,17 @@
 // shitsukan/geom/delaunay.hpp — Delaunay triangulation of points in the plane (exact predicates).
 //
 // Manual
+//   const Vec2d points[5] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.4, 0.6}};
+//   int n = 5;
 //   DelaunayTriangulation dt;
 //   Status s = build_delaunay(points, n, &dt);   // points: n finite Vec2d, n >= 1
-//   dt.triangles[t].v[0..2]  counter-clockwise point indices (indices >= n are the 4 frame
-//                            points added far outside, see below)
-//   dt.triangles[t].n[i]     the triangle across the edge opposite v[i] (-1 outside the frame)
-//   dt.point_triangle[i]     one triangle incident to point i (-1 for a duplicate point)
-//   dt.duplicate_of[i]       -1, or the smallest index of an identical earlier point
+//   if (!s) return s;
+//   const DelaunayTriangle& t = dt.triangles[0];
+//   // t.v[0..2]  counter-clockwise point indices (indices >= n are the 4 frame points added
+//   //            far outside, see below)
+//   // t.n[i]     the triangle across the edge opposite v[i] (-1 outside the frame)
+//   int any = dt.point_triangle[4];   // one triangle incident to point i (-1 for a duplicate)
+//   int dup = dt.duplicate_of[4];     // -1, or the smallest index of an identical earlier point
 //
 // Coordinate range: each coordinate is 0 or has magnitude in [1e-50, 1e50] (else a Status);
 // a box to cover may reach below 1e-50 (it is widened onto the range). The frame is at least

@@ -2,9 +2,12 @@
 // few geometric constructions that must not lose their digits to cancellation.
 //
 // Manual
-//   DoubleDouble bx = dd_diff(b.x, a.x);            // exact: b.x - a.x as hi + lo
-//   DoubleDouble d = dd_sub(dd_mul(bx, cy), dd_mul(by, cx));
-//   double x = dd_round(dd_add(dd_from(a.x), dd_div(num, d)));
+//   // The intersection of two lines, to double-double precision in the middle steps:
+//   double ax = 0.1, bx_ = 3.7, cx = 0.3, cy = 2.0, by = 0.9;
+//   DoubleDouble bx = dd_diff(bx_, ax);             // exact: bx_ - ax as hi + lo
+//   DoubleDouble d = dd_sub(dd_mul(bx, dd_from(cy)), dd_mul(dd_from(by), dd_from(cx)));
+//   DoubleDouble num = dd_diff(1.0, 0.25);
+//   double x = dd_round(dd_add(dd_from(ax), dd_div(num, d)));
 //
 // Why: the circumcentre of three sites one ulp apart, or the point where a bisector meets a
 // clip line, is a ratio of determinants whose terms cancel almost completely; in doubles the

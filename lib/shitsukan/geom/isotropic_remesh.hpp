@@ -2,15 +2,20 @@
 // implicit surface (the bubble-mesh substitute of hirota1998 §5.1).
 //
 // Manual
-//   float sphere(Vec3 p, const void*) { return length(p) - 1.0f; }
-//   TriangleMesh mesh;                                     // e.g. from marching_tetrahedra()
+//   ImplicitFunction sphere = [](Vec3 p, const void*) { return length(p) - 1.0f; };
+//   MarchingTetrahedraOptions mt;
+//   mt.box_min = {-1.2f, -1.2f, -1.2f};  mt.box_max = {1.2f, 1.2f, 1.2f};  mt.spacing = 0.2f;
+//   TriangleMesh mesh;
+//   Status s = marching_tetrahedra(sphere, nullptr, mt, &mesh);  // or any closed mesh on f = 0
 //   IsotropicRemeshOptions opt;
 //   opt.target_edge_length = 0.1f;                         // L
-//   opt.surface = &sphere;  opt.user = nullptr;            // f = 0 is the surface
+//   opt.surface = sphere;  opt.user = nullptr;             // f = 0 is the surface
 //   IsotropicRemeshStats stats;
-//   Status s = isotropic_remesh(opt, &mesh, &stats);       // mesh replaced in place
+//   if (s) s = isotropic_remesh(opt, &mesh, &stats);       // mesh replaced in place
 //   // stats.after.edge_length_cv, stats.after.fraction_angle_above_25, ...
-//   MeshQuality q;  mesh_quality(mesh, &q);                // the same numbers for any mesh
+//   MeshQuality q;
+//   if (s) s = mesh_quality(mesh, &q);                     // the same numbers for any mesh
+//   return s;
 //
 // hirota1998 §5.1 re-meshes a digitised branch with Shimada's bubble mesh so that the node
 // distances vary little. This is the usual isotropic remeshing loop instead (one pass =

@@ -10,6 +10,7 @@
 //   // A trunk: opt.cut_z_min = opt.cut_z_max = true leaves it open at z = box_min.z and
 //   // z = box_max.z (cut, not capped); its rims lie exactly on those planes.
 //   // A plain function pointer works too: marching_tetrahedra(&f, user_pointer, opt, &mesh).
+//   return s;
 //
 // Algorithm
 //   - The box is divided into nx·ny·nz cubes, n = ceil(extent / spacing) per axis, so the

@@ -2,11 +2,13 @@
 //
 // Manual
 //   TriangleMesh mesh;
-//   uint32_t a = mesh.add_vertex({0,0,0}, {0,0,1}, {0,0});   // position, normal, uv
-//   mesh.add_triangle(a, b, c);                              // counter-clockwise = front
-//   mesh.colors is optional: empty, or one colour per vertex.
-//   render(..., mesh.view(), ...)                             // the rasterizer's MeshView
-//   append(dst, src, transform)                               // merge meshes (builders.hpp)
+//   uint32_t a = mesh.add_vertex({0, 0, 0}, {0, 0, 1}, {0, 0});   // position, normal, uv
+//   uint32_t b = mesh.add_vertex({1, 0, 0}, {0, 0, 1}, {1, 0});
+//   uint32_t c = mesh.add_vertex({0, 1, 0}, {0, 0, 1}, {0, 1});
+//   mesh.add_triangle(a, b, c);                  // counter-clockwise = front
+//   // mesh.colors is optional: empty, or one colour per vertex.
+//   MeshView view = mesh.view();                 // what the rasterizer reads (mesh_view.hpp)
+//   // append(&dst, src, transform) merges meshes (mesh_builders.hpp)
 // Builders (box, sphere, torus, revolution, extrusion, cut faces) are in
 // geom/mesh_builders.hpp; OBJ export in geom/obj.hpp.
 #pragma once

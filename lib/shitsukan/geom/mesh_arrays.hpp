@@ -1,13 +1,14 @@
 // shitsukan/geom/mesh_arrays.hpp — mesh builders into caller arrays (no allocation), for a
 // microcontroller that keeps its mesh in a static array or on the stack.
 //
-// Manual
+// Manual (no allocation: the caller owns the arrays)
 //   Vec3 pos[kBoxVertexCount], nrm[kBoxVertexCount];  Vec2 uv[kBoxVertexCount];
 //   std::uint32_t idx[3 * kBoxTriangleCount];
 //   MeshView box;
 //   Status s = make_box_arrays({-1, -1, -1}, {1, 1, 1}, pos, nrm, uv, kBoxVertexCount, idx,
 //                              3 * kBoxTriangleCount, &box);
 //   // box now points into pos/nrm/uv/idx: draw it with draw_mesh (raster/rasterizer.hpp)
+//   return s;
 //
 // The box is exactly make_box's (geom/mesh_builders.hpp, which calls this): 6 faces of 4
 // vertices each (flat normals, uv (0..1, 0..1) per face), 2 counter-clockwise triangles a

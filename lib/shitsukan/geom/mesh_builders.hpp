@@ -1,23 +1,26 @@
 // shitsukan/geom/mesh_builders.hpp — triangle meshes for the papers' objects.
 //
-// Manual (every builder appends nothing: it replaces *out; returns a Status on bad input)
-//   TriangleMesh m;
-//   make_box({-1,-1,-1}, {1,1,1}, &m);               // 6 faces, per-face normals, uv per face
-//   make_uv_sphere(1.0f, 64, 32, &m);                // poles on the y axis
-//   make_cylinder(0.5f, 0.0f, 2.0f, 48, true, &m);   // axis y from y0 to y1, optional caps
-//   make_torus(1.0f, 0.35f, 64, 32, &m);             // around the y axis, in the xz plane
-//   make_revolution(profile, n, 96, &m);             // profile (r, y) points, r >= 0,
-//                                                    // revolved about the y axis
-//   sample_spline(ctrl, n, 16, &points);             // Catmull-Rom through ctrl, in double
-//   make_extrusion(outline, -0.1f, 0.1f, &m);        // outline[0] outer (any orientation),
-//                                                    // outline[1..] holes; extruded along z
-//   make_block_text("NAGOYA", 1.0f, 0.3f, &m);       // block capitals (block_letters.hpp), y = 0
-//   baseline,
-//                                                    // letter height 1, depth along z
-//   make_sphere_without_octant(1.0f, 24, &m);        // closed: the x,y,z > 0 octant removed,
-//                                                    // three quarter-disc cut faces
-//   append(&dst, src, transform);                    // merge, transforming points and normals
-//   compute_vertex_normals(&m);                      // area-weighted smooth normals
+// Manual (every builder replaces *out, appends nothing; returns a Status on bad input)
+//   TriangleMesh m, dst;
+//   Status s = make_box({-1, -1, -1}, {1, 1, 1}, &m);  // 6 faces, per-face normals, uv per face
+//   if (s) s = make_uv_sphere(1.0f, 64, 32, &m);      // poles on the y axis
+//   if (s) s = make_cylinder(0.5f, 0.0f, 2.0f, 48, true, &m);  // axis y from y0 to y1, caps
+//   if (s) s = make_torus(1.0f, 0.35f, 64, 32, &m);   // around the y axis, in the xz plane
+//   const Vec2d profile[4] = {{0.0, 0.0}, {0.6, 0.1}, {0.4, 0.8}, {0.0, 1.0}};  // (r, y), r >= 0
+//   if (s) s = make_revolution(profile, 4, 96, &m);   // revolved about the y axis
+//   std::vector<Vec2d> points;
+//   if (s) s = sample_spline(profile, 4, 16, &points);  // Catmull-Rom through them, in double
+//   std::vector<std::vector<Vec2>> outline = {{{0, 0}, {2, 0}, {2, 1}, {0, 1}},
+//                                             {{0.5f, 0.3f}, {0.5f, 0.6f}, {1.0f, 0.6f}}};
+//   if (s) s = make_extrusion(outline, -0.1f, 0.1f, &m);  // outline[0] outer (any orientation),
+//                                                         // outline[1..] holes; along z
+//   if (s) s = make_block_text("NAGOYA", 1.0f, 0.3f, &m);  // block capitals (block_letters.hpp),
+//                                                          // baseline y = 0, depth along z
+//   if (s) s = make_sphere_without_octant(1.0f, 24, &m);   // closed: the x,y,z > 0 octant
+//                                                          // removed, three quarter-disc faces
+//   if (s) s = append(&dst, m, Mat4::translate({3, 0, 0}));  // merge, moving points and normals
+//   if (s) s = compute_vertex_normals(&dst);                 // area-weighted smooth normals
+//   return s;
 // Sizes: segment counts 3..4096; radii > 0 and finite. Counter-clockwise front faces,
 // outward normals, closed solids are watertight (shared vertices along seams are duplicated
 // only where normals or uvs differ, never leaving a crack).

@@ -3,7 +3,9 @@
 //
 // Manual
 //   TriangleMesh mesh;  Status s = make_torus(0.64f, 0.28f, 96, 48, &mesh);  // or your own
-//   s = fit_mesh_to_cube(&mesh, 0.92f);   // longest side 2·0.92, centred at the origin
+//   if (s) s = fit_mesh_to_cube(&mesh, 0.92f);   // longest side 2·0.92, centred at the origin
+//   return s;
+//   #include "shitsukan/geom/mesh_builders.hpp"
 //
 // One uniform scale (the proportions are kept) and one shift: the bounding box's centre
 // goes to the origin and its longest side becomes 2·extent. Normals are unchanged (a uniform

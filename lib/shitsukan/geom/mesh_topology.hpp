@@ -1,9 +1,13 @@
 // shitsukan/geom/mesh_topology.hpp — is a triangle mesh a manifold, and what is its shape?
 //
 // Manual
+//   TriangleMesh mesh;
+//   Status s = make_cylinder(0.5f, 0.0f, 1.0f, 16, false, &mesh);  // an open tube
 //   MeshTopology topo;
-//   Status s = mesh_topology(mesh, &topo);       // counts; s explains the first problem found
-//   if (s && topo.boundary_loops == 3 && topo.euler_characteristic == -1) ...  // a pair of pants
+//   if (s) s = mesh_topology(mesh, &topo);       // counts; s explains the first problem found
+//   bool tube = s && topo.boundary_loops == 2 && topo.euler_characteristic == 0;
+//   return s;
+//   #include "shitsukan/geom/mesh_builders.hpp"
 //
 //   std::vector<int> opposite;                   // the half-edge twins of a manifold mesh
 //   Status s = halfedge_opposites(mesh.indices.data(), mesh.triangle_count(),

@@ -1,10 +1,13 @@
 // shitsukan/geom/mesh_view.hpp — an indexed triangle mesh over caller memory.
 //
 // Manual
+//   const Vec3 pos[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+//   const Vec3 nrm[3] = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+//   const std::uint32_t idx[3] = {0, 1, 2};
 //   MeshView m;
-//   m.positions = pos; m.vertex_count = 8;        // required
-//   m.normals = nrm;   m.uvs = uv; m.colors = col; // optional (nullptr = absent)
-//   m.indices = idx;   m.triangle_count = 12;      // 3 indices per triangle, CCW = front
+//   m.positions = pos; m.vertex_count = 3;        // required
+//   m.normals = nrm;                              // optional: uvs, colors too (nullptr = absent)
+//   m.indices = idx;   m.triangle_count = 1;      // 3 indices per triangle, CCW = front
 // This is what the rasterizer reads: plain pointers and counts, no allocation, so a
 // microcontroller can keep a mesh in flash. Host code builds a TriangleMesh (mesh.hpp) and
 // passes mesh.view().

@@ -1,8 +1,12 @@
 // shitsukan/geom/obj.hpp — Wavefront OBJ export.
 //
 // Manual
-//   Status s = write_obj("pot.obj", mesh);   // v (with "r g b" when the mesh has colours,
+//   TriangleMesh mesh;
+//   Status s = make_uv_sphere(1.0f, 16, 8, &mesh);
+//   if (s) s = write_obj("pot.obj", mesh);   // v (with "r g b" when the mesh has colours,
 //                                            // the common vertex-colour extension), vt, vn, f
+//   return s;
+//   #include "shitsukan/geom/mesh_builders.hpp"
 #pragma once
 
 #include "shitsukan/core/status.hpp"

@@ -2,9 +2,13 @@
 // teacher's own mesh for the solid textures and the bake).
 //
 // Manual
+//   const char text[] = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 //   TriangleMesh mesh;
-//   Status s = read_obj("teapot.obj", &mesh);     // error: "teapot.obj:12: ..." (line number)
-//   s = read_obj_text(text, length, "inline", &mesh);   // the same from memory
+//   Status s = read_obj_text(text, sizeof text - 1, "inline", &mesh);  // from memory
+//   if (s) s = write_obj("teapot.obj", mesh);                          // (obj.hpp)
+//   if (s) s = read_obj("teapot.obj", &mesh);     // error: "teapot.obj:12: ..." (line number)
+//   return s;
+//   #include "shitsukan/geom/obj.hpp"
 //
 // Read: "v x y z" (and "v x y z r g b", the vertex-colour extension write_obj writes; kept
 // when every vertex has one), "vt u v [w]", "vn x y z", "f a b c ..." with corners v, v/t,

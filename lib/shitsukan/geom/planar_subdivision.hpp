@@ -2,11 +2,17 @@
 // once and knowing the polygons on its two sides.
 //
 // Manual
+//   // two unit squares side by side, each counter-clockwise
+//   const Vec2d vertices[8] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {1, 0}, {2, 0}, {2, 1}, {1, 1}};
+//   const int offsets[3] = {0, 4, 8};   // polygon f = vertices[offsets[f] .. offsets[f + 1])
+//   int polygon_count = 2;
 //   PlanarSubdivision sub;
 //   Status s = build_planar_subdivision(vertices, offsets, polygon_count, &sub);
-//   // polygon f = vertices[offsets[f] .. offsets[f + 1]), counter-clockwise
-//   for (const auto& e : sub.edges)      // e.v0 -> e.v1 runs counter-clockwise around e.left;
-//       ...                              // e.right is the polygon beyond it, -1 outside
+//   if (!s) return s;
+//   for (const auto& e : sub.edges) {      // e.v0 -> e.v1 runs counter-clockwise around e.left;
+//       int beyond = e.right;              // e.right is the polygon beyond it, -1 outside
+//   }
+//   int f = 0;
 //   for (int k = sub.face_offsets[f]; k < sub.face_offsets[f + 1]; ++k) {
 //       int e = sub.face_edges[k];        // >= 0: edge e run v0 -> v1; < 0: edge ~e run v1 -> v0
 //   }

@@ -1,12 +1,18 @@
 // shitsukan/geom/polygon.hpp — simple polygons: area, centroid, containment, convex clipping.
 //
 // Manual
+//   const Vec2d v[4] = {{0, 0}, {2, 0}, {2, 1}, {0, 1}};
+//   int n = 4;
 //   double a = polygon_area(v, n);           // signed: > 0 counter-clockwise (shoelace)
 //   Vec2d m = polygon_centroid(v, n);        // area centroid (the "m" of tokai1994 fig. 12)
-//   bool in = point_in_polygon(v, n, q);     // crossing rule, half-open: see below
-//   Status s = check_convex_region(r, m);    // r: m >= 3 vertices, convex, CCW, area > 0
+//   bool in = point_in_polygon(v, n, Vec2d{1, 0.5});  // crossing rule, half-open: see below
+//   const Vec2d r[3] = {{0, 0}, {1, 0}, {0, 1}};
+//   Status s = check_convex_region(r, 3);    // r: m >= 3 vertices, convex, CCW, area > 0
 //                                            // (collinear vertices allowed, see below)
-//   clip_to_convex_region(poly, r, m, &scratch);  // Sutherland-Hodgman, exact sides
+//   std::vector<ClipVertex> poly(4), scratch;
+//   for (int i = 0; i < 4; ++i) poly[std::size_t(i)].p = v[i];
+//   clip_to_convex_region(&poly, r, 3, &scratch);  // Sutherland-Hodgman, exact sides
+//   return s;
 //
 // point_in_polygon counts crossings of the ray from q toward +x with the edges, each edge
 // taken as half-open in y ([ymin, ymax)) and crossing x computed from the edge's lower end

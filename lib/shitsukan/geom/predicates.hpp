@@ -1,6 +1,7 @@
 // shitsukan/geom/predicates.hpp — exact geometric predicates on doubles (orientation, in-circle).
 //
 // Manual
+//   Vec2d a{0, 0}, b{1, 0}, c{0, 1}, d{0.5, 0.5};
 //   double o = orient2d(a, b, c);     // > 0: a, b, c counter-clockwise; < 0: clockwise;
 //                                     // 0: collinear
 //   double s = incircle(a, b, c, d);  // a, b, c counter-clockwise: > 0 d inside their circle,

@@ -3,8 +3,15 @@
 //
 // Manual
 //   // 4 x 4 control points, 3 channels (x, y, z), row-major: values[(row·cols + col)·3 + c]
+//   float values[4 * 4 * 3];
+//   for (int row = 0; row < 4; ++row)
+//       for (int col = 0; col < 4; ++col) {
+//           float* v = values + (row * 4 + col) * 3;
+//           v[0] = float(col), v[1] = float(row), v[2] = float((row * col) % 3);
+//       }
 //   TensorGrid g{values, 4, 4, 3};
-//   if (Status s = validate_tensor_grid(SurfaceBasis::bezier, 3, g); !s) ...
+//   if (Status s = validate_tensor_grid(SurfaceBasis::bezier, 3, g); !s) return s;
+//   float u = 0.5f, v = 0.25f;
 //   float p[3], pu[3], pv[3];
 //   evaluate_tensor_surface(SurfaceBasis::bezier, 3, g, u, v, p, pu, pv);  // u, v in [0, 1]
 //

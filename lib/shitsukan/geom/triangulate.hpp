@@ -1,11 +1,14 @@
 // shitsukan/geom/triangulate.hpp — triangulating a planar polygon with holes (ear clipping).
 //
 // Manual
-//   std::vector<std::vector<Vec2>> rings = {outer, hole1, hole2};   // any orientation
+//   std::vector<Vec2> outer = {{0, 0}, {4, 0}, {4, 3}, {0, 3}};
+//   std::vector<Vec2> hole1 = {{1, 1}, {1, 2}, {2, 2}, {2, 1}};
+//   std::vector<std::vector<Vec2>> rings = {outer, hole1};   // any orientation
 //   std::vector<Vec2> points; std::vector<uint32_t> tris;
 //   Status s = triangulate_polygon(rings, &points, &tris);
 //   // points: every ring vertex once (outer first, then holes in the given order)
 //   // tris: counter-clockwise triangles (3 indices each) covering outer minus holes
+//   return s;
 // Algorithm: orient the outer ring counter-clockwise and holes clockwise; join each hole to
 // the polygon by a bridge to its nearest visible vertex (holes taken right to left, as in
 // D. Eberly, "Triangulation by Ear Clipping"), then clip ears. O(n^2) for n vertices: meant

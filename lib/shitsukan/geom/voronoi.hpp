@@ -3,12 +3,15 @@
 //
 // Manual
 //   const Vec2d square[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};   // convex, counter-clockwise
+//   const Vec2d sites[3] = {{0.2, 0.3}, {0.7, 0.2}, {0.5, 0.8}};
+//   int n = 3;
 //   VoronoiCells cells;
 //   Status s = voronoi_cells(sites, n, square, 4, &cells);
+//   if (!s) return s;
 //   for (int i = 0; i < n; ++i) {                  // cell i belongs to sites[i]
 //       int k; const Vec2d* v = cells.cell(i, &k);   // k == 0: empty (see below)
 //   }
-//   cells.on_region_edge[2 * j + 0/1]: the region edges vertex j lies on (-1: none)
+//   // cells.on_region_edge[2 * j + 0/1]: the region edges vertex j lies on (-1: none)
 //
 // Exactness. The combinatorial structure is exact for any finite double input: it is decided
 // only by the signs of orient2d and incircle (predicates.hpp). Four or more cocircular sites

@@ -3,17 +3,20 @@
 // Manual
 //   RgbImage img(640, 480, Rgb8{255, 255, 255});
 //   RasterCanvas canvas(img.view());            // draws into pixels (anti-aliased lines)
-//   SvgCanvas svg(640, 480);                      // records the same calls as SVG elements
-//   Canvas& c = canvas;                           // figure code draws through the interface
+//   SvgCanvas svg(640, 480);                    // records the same calls as SVG elements
+//   Canvas& c = canvas;                         // figure code draws through the interface
+//   const Vec2 points[3] = {{20, 20}, {120, 40}, {60, 140}};
+//   const Rgb8 color{200, 40, 40};
 //   c.line({10, 10}, {200, 50}, Rgb8{0, 0, 0}, 1.5f);
-//   c.polyline(points, n, color, width);   c.polygon_outline(points, n, color, width);
-//   c.fill_polygon(points, n, color);      // even-odd rule, any simple or complex polygon
-//   c.fill_rect({x, y}, {w, h}, color);    c.rect_outline(...);
-//   c.marker({x, y}, MarkerShape::dot, 4.0f, color);
-//   c.text({x, y}, "k = 16", color, 1);     // built-in bitmap font, top-left anchored,
+//   c.polyline(points, 3, color, 2.0f);   c.polygon_outline(points, 3, color, 1.0f);
+//   c.fill_polygon(points, 3, color);     // even-odd rule, any simple or complex polygon
+//   c.fill_rect({300, 20}, {40, 30}, color);    c.rect_outline({300, 20}, {40, 30}, color);
+//   c.marker({400, 100}, MarkerShape::dot, 4.0f, color);
+//   c.text({400, 200}, "k = 16", color, 1);  // built-in bitmap font, top-left anchored,
 //                                            // scale = integer magnification
-//   svg.save("fig02.svg")                    // Status; svg.str() gives the text
-//   Axes: see image/plot.hpp (data -> pixel mapping, ticks, labels, drawn on any Canvas).
+//   svg.line({10, 10}, {200, 50}, Rgb8{0, 0, 0}, 1.5f);
+//   Status s = svg.save("fig02.svg");        // svg.str() gives the text
+//   // Axes: see image/plot.hpp (data -> pixel mapping, ticks, labels, drawn on any Canvas).
 // Coordinates are pixels, x right, y down, (0, 0) the top-left corner of the image.
 // Pixel (i, j) covers [i, i+1) x [j, j+1): the centre of pixel (i, j) is (i + 0.5, j + 0.5).
 //

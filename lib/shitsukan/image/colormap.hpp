@@ -1,10 +1,11 @@
 // shitsukan/image/colormap.hpp — colour maps: a value in [0, 1] -> Rgb8.
 //
 // Manual
+//   float t = 0.75f;
 //   Rgb8 c = colormap(ColorMap::perceptual, 0.25f);
 //   Rgb8 g = colormap(ColorMap::gray, t);        // black .. white
 //   Rgb8 d = colormap(ColorMap::diverging, t);   // blue .. light gray (t = 0.5) .. red
-//   const char* colormap_name(ColorMap::perceptual)   // "perceptual"
+//   const char* name = colormap_name(ColorMap::perceptual);   // "perceptual"
 // t is clamped to [0, 1]; NaN gives kColorMapNaN (magenta) so missing data stays visible.
 // Each map is a few control colours chosen here, joined by straight lines in 8-bit sRGB:
 //   perceptual  seven colours from dark violet through blue, teal and green to yellow, a

@@ -2,8 +2,9 @@
 // LZ77 matches and dynamic Huffman codes: the compressor of the 16-bit PNGs (png16.hpp).
 //
 // Manual
+//   const std::uint8_t data[] = "a row, a row, a row of bytes";
 //   std::vector<std::uint8_t> z;
-//   Status s = zlib_deflate(data, size, &z);      // any zlib inflater reads it back
+//   Status s = zlib_deflate(data, sizeof data, &z);  // any zlib inflater reads it back
 //
 // How (RFC 1951 §3.2): LZ77 over a 32 KiB window, candidates from a hash chain of 3-byte
 // prefixes (at most kDeflateChain tried per position, chosen: 24, most of the gain at a fifth

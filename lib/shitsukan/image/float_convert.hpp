@@ -1,13 +1,16 @@
 // shitsukan/image/float_convert.hpp — show a float image: values -> gray or colour-mapped RGB.
 //
 // Manual
-//   FloatImage height(512, 512);  ...
+//   #include "shitsukan/image/image.hpp"  // owning images; this header works on views
+//   FloatImage height(512, 512);
+//   height.at(3, 4) = 2.0f;                      // ... a height map
 //   GrayImage gray(512, 512);
-//   Status s = float_to_gray(height.view(), gray.view());               // auto range
-//   Status s = float_to_gray(height.view(), gray.view(), {0.0f, 2.5f});  // fixed range
+//   Status s = float_to_gray(height.view(), gray.view());                // auto range
+//   if (s) s = float_to_gray(height.view(), gray.view(), {0.0f, 2.5f});  // fixed range
 //   RgbImage rgb(512, 512);
-//   Status s = float_to_rgb(height.view(), rgb.view(), ColorMap::perceptual);  // auto range
+//   if (s) s = float_to_rgb(height.view(), rgb.view(), ColorMap::perceptual);  // auto range
 //   ValueRange r = value_range(height.view());   // min/max of the finite values
+//   return s;
 // A value v maps to t = (v - lo) / (hi - lo), clamped to [0, 1], then to a byte (gray) or
 // through the colour map (colormap.hpp). Auto range = value_range(src). When lo == hi
 // (a constant image) every finite value maps to t = 0.5, mid-gray (chosen here: neither

@@ -4,8 +4,8 @@
 //   int w = text_width("k = 16", 2);        // (6·6 - 1)·2 = 70 pixels at magnification 2
 //   int h = text_height(2);                 // 18: one line, descenders included
 //   const Glyph& g = font_glyph(U'κ');      // unknown code points give the fallback box
-//   bool on = glyph_pixel(g, col, row);     // col in [0, 5), row in [0, 9)
-//   Canvas::text draws with it (RasterCanvas) or sizes an SVG monospace font to match.
+//   bool on = glyph_pixel(g, 2, 4);         // col in [0, 5), row in [0, 9)
+//   // Canvas::text draws with it (RasterCanvas) or sizes an SVG monospace font to match.
 //
 // Metrics (one cell, before the integer magnification `scale`):
 //   advance 6 px per character (5 glyph columns + 1 px gap), cell height 9 rows:

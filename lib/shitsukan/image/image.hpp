@@ -3,8 +3,8 @@
 // Manual
 //   RgbImage img(512, 512);                   // owning (std::vector)
 //   fill(img.view(), Rgb8{0, 0, 0});          // any view function works on img.view()
-//   img.at(x, y) = Rgb8{255, 0, 0};
-//   GrayImage (uint8_t), FloatImage (float), Gray16Image (uint16_t).
+//   img.at(10, 20) = Rgb8{255, 0, 0};
+//   GrayImage g(4, 4);  FloatImage f(4, 4);  Gray16Image h(4, 4);  // uint8_t, float, uint16_t
 // The views themselves (RgbView, ...) are in image_view.hpp, which allocates nothing and is
 // what small-device code includes.
 #pragma once

@@ -1,9 +1,12 @@
 // shitsukan/image/image_io.hpp — write images as PNG (stb_image_write) or PPM/PGM.
 //
 // Manual
-//   Status s = write_png("out.png", img.view());   // RgbView or GrayView
-//   Status s = write_ppm("out.ppm", rgb_view);     // binary P6
-//   Status s = write_pgm("out.pgm", gray_view);    // binary P5
+//   RgbImage img(64, 32, Rgb8{255, 128, 0});
+//   GrayImage gray(64, 32);
+//   Status s = write_png("out.png", img.view());        // RgbView or GrayView
+//   if (s) s = write_ppm("out.ppm", img.view());        // binary P6
+//   if (s) s = write_pgm("out.pgm", gray.view());       // binary P5
+//   return s;
 // Failures (empty image, unwritable path) come back as a Status with the path in the
 // message; nothing is silent. Views with a stride are handled.
 // PNG: compressed by stb_image_write when the library was built with its header (compiled

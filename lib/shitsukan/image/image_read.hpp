@@ -3,10 +3,16 @@
 // the library).
 //
 // Manual
+//   RgbImage photo(8, 8, Rgb8{10, 20, 30});
+//   Status s = write_png("photo.png", photo.view());  // (image_io.hpp) something to read
 //   LoadedImage img;
-//   Status s = read_image("photo.png", &img);      // img.width, height, channels (1..4), bits
-//   std::uint16_t v = img.sample(x, y, 0);         // 0..255 (bits 8) or 0..65535 (bits 16)
-//   bool ok = image_reading_available();           // false in a build without stb_image.h
+//   bool ok = image_reading_available();              // false in a build without stb_image.h
+//   if (s && ok) s = read_image("photo.png", &img);   // img.width, height, channels (1..4), bits
+//   if (s && ok) {
+//       std::uint16_t v = img.sample(1, 2, 0);        // 0..255 (bits 8) or 0..65535 (bits 16)
+//   }
+//   return s;
+//   #include "shitsukan/image/image_io.hpp"
 //
 // 16-bit PNGs keep their 16 bits (bits = 16); every other file is read as 8-bit.
 // Errors: a missing or undecodable file -> io_error with stb_image's reason; a build without

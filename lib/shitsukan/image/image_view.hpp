@@ -4,10 +4,10 @@
 //   Rgb8 px{255, 128, 0};
 //   Rgb8 buffer[64 * 32];
 //   RgbView view{buffer, 64, 32, 64};        // pixels, width, height, stride (in pixels)
-//   view.at(x, y) = px;                       // x right, y down, (0, 0) top-left
+//   view.at(3, 5) = px;                      // x right, y down, (0, 0) top-left
 //   fill(view, Rgb8{0, 0, 0});
-//   GrayView (uint8_t), FloatView (float), Gray16View (uint16_t, e.g. height maps).
-//   A view with width or height 0 is empty; functions given one do nothing and say so.
+//   // GrayView (uint8_t), FloatView (float), Gray16View (uint16_t, e.g. height maps).
+//   // A view with width or height 0 is empty; functions given one do nothing and say so.
 // Views never own memory; the owning Image (image.hpp, host side) hands out views. Row y starts at
 // pixels + y·stride, so a view can be a band or a window of a larger buffer (subview).
 #pragma once

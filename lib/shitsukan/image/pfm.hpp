@@ -2,10 +2,14 @@
 // without quantisation, read by image tools and game engines' importers.
 //
 // Manual
-//   std::vector<float> h(w * h);                                  // row 0 = the TOP row
-//   Status s = write_pfm("height.pfm", h.data(), w, h, 1);        // "Pf": gray
-//   s = write_pfm("normals.pfm", rgb.data(), w, h, 3);            // "PF": r g b interleaved
-//   PfmImage back;  s = read_pfm("height.pfm", &back);            // the same floats, bit for bit
+//   int w = 16, h = 8;
+//   std::vector<float> height(std::size_t(w * h), 0.5f);          // row 0 = the TOP row
+//   std::vector<float> rgb(std::size_t(w * h * 3), 0.25f);
+//   Status s = write_pfm("height.pfm", height.data(), w, h, 1);   // "Pf": gray
+//   if (s) s = write_pfm("normals.pfm", rgb.data(), w, h, 3);     // "PF": r g b interleaved
+//   PfmImage back;
+//   if (s) s = read_pfm("height.pfm", &back);                     // the same floats, bit for bit
+//   return s;
 //
 // Format: a text header "PF\n" (3 channels) or "Pf\n" (1), "width height\n", a scale
 // "-1.0\n" (negative = little-endian), then the float32 samples row by row from the BOTTOM

@@ -4,12 +4,19 @@
 //   RgbImage img(640, 400, Rgb8{255, 255, 255});
 //   RasterCanvas canvas(img.view());                       // or an SvgCanvas: same calls
 //   Axes axes = axes_in(canvas, 0.0, 6.2832, -1.2, 1.2);   // data area = canvas - margins
-//   draw_axes(canvas, axes, {"sin x", "x", "y"});          // first: the grid stays under data
-//   plot_function(canvas, axes, [](double x) { return std::sin(x); }, 400, Rgb8{0, 0, 200});
-//   plot_series(canvas, axes, xs, ys, n, color, 1.5f);      // polyline through data points
-//   plot_scatter(canvas, axes, xs, ys, n, MarkerShape::circle, 7.0f, color);
-//   plot_heatmap(canvas, axes, field.view(), ColorMap::perceptual, value_range(field.view()));
-//   draw_colorbar(canvas, {x, y}, {16, 200}, ColorMap::perceptual, range);
+//   Status s = draw_axes(canvas, axes, {"sin x", "x", "y"});  // first: the grid stays under data
+//   if (s) s = plot_function(canvas, axes, [](double x) { return std::sin(x); }, 400,
+//                            Rgb8{0, 0, 200});
+//   const float xs[3] = {1, 2, 3}, ys[3] = {0.5f, -0.5f, 0.8f};
+//   if (s) s = plot_series(canvas, axes, xs, ys, 3, Rgb8{200, 0, 0}, 1.5f);  // through the points
+//   if (s) s = plot_scatter(canvas, axes, xs, ys, 3, MarkerShape::circle, 7.0f, Rgb8{0, 120, 0});
+//   FloatImage field(32, 16, 0.3f);
+//   field.at(5, 5) = 1.0f;
+//   if (s) s = plot_heatmap(canvas, axes, field.view(), ColorMap::perceptual,
+//                           value_range(field.view()));
+//   if (s) s = draw_colorbar(canvas, {600, 40}, {16, 200}, ColorMap::perceptual,
+//                            value_range(field.view()));
+//   return s;
 //
 // Axes: the data rectangle [x_lo, x_hi] x [y_lo, y_hi] drawn in the pixel rectangle
 //   corner .. corner + size; x grows to the right and y UPWARDS (mathematical plots).

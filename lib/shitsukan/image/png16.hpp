@@ -4,7 +4,8 @@
 //   Gray16Image height(512, 512);                  // 0 .. 65535 per sample
 //   Status s = write_png16("height.png", height.view());
 //   Rgb16Image rgb(256, 256, Rgb16{65535, 0, 0});
-//   Status s = write_png16("normals.png", rgb.view());
+//   if (s) s = write_png16("normals.png", rgb.view());
+//   return s;
 // stb_image_write only writes 8-bit PNGs, so this is a small encoder of its own, following
 // the PNG specification (ISO/IEC 15948): the 8-byte signature, then chunks
 // (length, type, data, CRC-32 of type + data): IHDR (size, bit depth 16, colour type 0 =

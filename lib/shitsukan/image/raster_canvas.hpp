@@ -5,7 +5,8 @@
 //   RasterCanvas canvas(img.view());          // anti-aliased by default
 //   canvas.line({10.5f, 10.5f}, {200.5f, 50.5f}, Rgb8{0, 0, 0}, 1.5f);
 //   canvas.set_antialias(false);              // exact pixel art from here on
-//   canvas.fill_polygon(points, n, Rgb8{200, 40, 40});
+//   const Vec2 points[4] = {{20, 20}, {100, 20}, {100, 80}, {20, 80}};
+//   canvas.fill_polygon(points, 4, Rgb8{200, 40, 40});
 // Drawing conventions: canvas.hpp. Colours are painted over the pixels: with coverage c in
 // [0, 1] a pixel becomes dst + (color - dst)·c (straight in 8-bit sRGB values, no gamma).
 //

@@ -3,9 +3,11 @@
 // Manual
 //   SvgCanvas svg(640, 480);                       // or SvgCanvas(640, 480, background)
 //   svg.line({10, 10}, {200, 50}, Rgb8{0, 0, 0}, 1.5f);
+//   auto draw_figure = [](Canvas& c) { c.text({20, 20}, "fig. 2", Rgb8{0, 0, 0}, 2); };
 //   draw_figure(svg);                              // the same code that draws a RasterCanvas
 //   Status s = svg.save("fig02.svg");              // io_error with the path on failure
 //   std::string text = svg.str();                  // the whole document
+//   return s;
 // Each call appends one element, in drawing order (later elements paint over earlier ones):
 //   line -> <line>, polyline -> <polyline>, polygon_outline -> <polygon fill="none">,
 //   fill_polygon -> <polygon fill-rule="evenodd">, fill_contours -> <path fill-rule=
