@@ -3,10 +3,15 @@
 // the two scales on its sides still fit each other.
 //
 // Manual
+//   ScaleParams sp;  ScaleDivision steps;            // scale_division.hpp: the cells to bend
+//   Status s = divide_scales(sp, &steps);
 //   PerturbationParams prm;             // p = 0.015 (fig. 7), 4 levels, decay 1/2
 //   ScalePattern pattern;
 //   PerturbationReport report;
-//   Status s = perturb_subdivision(sub, prm, seed, width, height, &pattern, &report);
+//   std::uint32_t seed = 7;
+//   if (s) s = perturb_subdivision(steps.cells, prm, seed, sp.width, sp.height, &pattern, &report);
+//   return s;
+//   #include "shitsukan/leather/scale_division.hpp"
 //
 // Recursion (chosen here; the paper cites midpoint displacement without details): for an
 // edge with end points A, B (taken in lexicographic order, so both neighbours agree) and unit

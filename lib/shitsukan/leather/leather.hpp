@@ -16,8 +16,13 @@
 //   §5, figs. 17-19               products.hpp           the handbag and the belt
 //
 // Manual (a crocodile belly's maps):
-//   ScalePattern pattern;   // from scale_division.hpp's two-stage division (see its manual)
-//   LeatherMaps maps;       // then make_leather_maps(pattern, w, h, section, options, &maps)
+//   ScaleParams prm;        // scale_division.hpp's two-stage division (see its manual)
+//   ScalePattern pattern;
+//   Status s = generate_scale_pattern(prm, &pattern);
+//   LeatherMaps maps;       // then the label, height and normal maps
+//   if (s) s = make_leather_maps(pattern, 256, 256, table1_section(Table1Section::convex),
+//                                ReliefOptions{}, &maps);
+//   return s;
 #pragma once
 #include "shitsukan/leather/seed_layout.hpp"
 #include "shitsukan/leather/scale_division.hpp"

@@ -3,10 +3,16 @@
 // relief mesh for OBJ).
 //
 // Manual
+//   ScaleParams prm;  ScalePattern pattern;
+//   Status s = generate_scale_pattern(prm, &pattern);    // scale_division.hpp
+//   int w = 256, h = 256;
 //   LeatherMaps maps;                               // one call: labels, then the maps
-//   Status s = make_leather_maps(pattern, w, h, table1_section(Table1Section::convex),
+//   if (s) s = make_leather_maps(pattern, w, h, table1_section(Table1Section::convex),
 //                                ReliefOptions{}, &maps);
+//   if (!s) return s;
+//   Vec2 uv{1.7f, -0.4f};
 //   Vec3 n = mirrored_normal_at(maps, uv);           // tiled by mirroring: any (u, v)
+//   #include "shitsukan/leather/scale_division.hpp"
 //
 //   std::vector<int> labels(w * h);                 // pixel -> polygon id, from the pattern's
 //   ...                                             // label function (leather/scale_pattern)

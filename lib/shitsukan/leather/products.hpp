@@ -3,11 +3,15 @@
 //
 // Manual
 //   Handbag bag = make_handbag();                    // the design (chosen here, see below)
+//   PatchStripOptions opt;                           // geom/bezier_patch_mesh.hpp
 //   TriangleMesh body;
-//   tessellate_patch_strip(bag.patches + bag.body_first, bag.body_count, opt, &body);
+//   Status s = tessellate_patch_strip(bag.patches + bag.body_first, bag.body_count, opt, &body);
 //   TriangleMesh clasp;
-//   make_spherical_segment(bag.clasp[0], 24, 12, &clasp);
-//   std::vector<BezierPatch> belt = make_belt(BeltDesign{});   // a coiled strip
+//   if (s) s = make_spherical_segment(bag.clasp[0], 24, 12, &clasp);
+//   std::vector<BezierPatch> belt;
+//   if (s) s = make_belt(BeltDesign{}, &belt);       // a coiled strip
+//   return s;
+//   #include "shitsukan/geom/bezier_patch_mesh.hpp"
 //
 // The paper prints neither the handbag's control points nor its dimensions, only "7 cubic
 // Bezier segments and 2 spherical segments" and the wireframe of fig. 17. Everything below is

@@ -2,6 +2,9 @@
 // normal at a point of a scale polygon from a Bezier cross-section swept around its centroid.
 //
 // Manual
+//   const Vec2 poly[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};  // one scale, counter-clockwise
+//   int n = 4;
+//   Vec2 centroid{0.5f, 0.5f}, x{0.7f, 0.6f};                // its centroid m, a point in it
 //   BezierChain section = table1_section(Table1Section::convex);   // fig. 13(a)
 //   ReliefOptions opt;                                              // defaults below
 //   ReliefSample s;

@@ -7,7 +7,8 @@
 //   ScalePattern pattern;
 //   Status s = generate_scale_pattern(prm, &pattern);   // polygons tiling [0,W] x [0,H]
 //   ScaleDivision steps;                    // optional: every intermediate (figs. 4-6)
-//   generate_scale_pattern(prm, &pattern, &steps);
+//   if (s) s = generate_scale_pattern(prm, &pattern, &steps);
+//   return s;
 //
 //   Single stage (fig. 2, fig. 3): divide_single_stage(seeds, n, W, H, &sub) then
 //   perturb_subdivision(sub, prm.perturbation, seed, W, H, &pattern).

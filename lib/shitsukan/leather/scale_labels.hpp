@@ -1,9 +1,14 @@
 // shitsukan/leather/scale_labels.hpp — the label image of a scale pattern: pixel -> polygon id.
 //
 // Manual
+//   ScaleParams prm;  ScalePattern pattern;
+//   Status s = generate_scale_pattern(prm, &pattern);     // scale_division.hpp
+//   int w = 128, h = 128, i = 10, j = 20;
 //   std::vector<int32_t> labels(size_t(w) * h);
-//   Status s = rasterize_scale_labels(pattern, w, h, labels.data());  // row-major, w per row
+//   if (s) s = rasterize_scale_labels(pattern, w, h, labels.data());  // row-major, w per row
 //   int id = labels[size_t(j) * w + i];   // the polygon holding pixel (i, j)'s centre
+//   return s;
+//   #include "shitsukan/leather/scale_division.hpp"
 //
 // Pixel (i, j) is the point ((i + 1/2) W / w, (j + 1/2) H / h) of the pattern (row 0 at y = 0,
 // no flip). Each polygon is scan-converted with the half-open crossing rule: an edge covers

@@ -2,11 +2,15 @@
 // to the relief (tokai1994 §3.2): the final polygons that tile the pattern rectangle.
 //
 // Manual
+//   ScaleParams prm;
 //   ScalePattern pattern;                       // filled by the two-stage division
+//   Status s = generate_scale_pattern(prm, &pattern);   // scale_division.hpp
 //   for (int i = 0; i < pattern.polygon_count(); ++i) {
 //       int n; const Vec2* v = pattern.polygon(i, &n);   // n vertices, counter-clockwise
-//       Vec2 m = pattern.centroids[i];                   // area centroid ("m" in fig. 12)
+//       Vec2 m = pattern.centroids[std::size_t(i)];      // area centroid ("m" in fig. 12)
 //   }
+//   return s;
+//   #include "shitsukan/leather/scale_division.hpp"
 // The polygons tile [0, width] x [0, height] (no gaps, no overlaps) and may be non-convex
 // after edge perturbation, but each is star-shaped from its centroid (the relief casts a ray
 // from m through x to the boundary point p).

@@ -2,10 +2,14 @@
 // (1) scales are nearly quadrilateral, (3) they narrow from the centre toward the edges.
 //
 // Manual
-//   ScaleDivision steps;  divide_scales(prm, &steps);
-//   ScaleStatistics st;   measure_scale_statistics(steps.cells, prm.width, prm.height, &st);
-//   st.mean_corners       // ~4 for the fig. 7 settings
-//   st.edge_to_centre     // < 1: edge scales narrower than centre scales
+//   ScaleParams prm;
+//   ScaleDivision steps;  Status s = divide_scales(prm, &steps);    // scale_division.hpp
+//   ScaleStatistics st;
+//   if (s) s = measure_scale_statistics(steps.cells, prm.width, prm.height, &st);
+//   // st.mean_corners     ~4 for the fig. 7 settings
+//   // st.edge_to_centre   < 1: edge scales narrower than centre scales
+//   return s;
+//   #include "shitsukan/leather/scale_division.hpp"
 //
 // Measured on the straight polygons (before perturbation). A corner is a vertex where the
 // boundary turns (|sin| of the turn > 1e-9): T junctions of a neighbour's edge, which lie on

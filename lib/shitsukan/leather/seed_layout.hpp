@@ -4,12 +4,13 @@
 // Manual
 //   SeedLayout s;
 //   Status st = square_lattice_seeds(1, 1, 0.1f, 0.2f, 7, &s);  // fig. 3 (e)-(h): x and y
-//   st = triangular_lattice_seeds(1, 1, 0.1f, 0.2f, 7, &s);     // fig. 3 (a)-(d)
-//   st = stage1_seeds(1, 1, 0.1f, 0.1f, 0.25f, 7, &s);          // fig. 4: W, H, D, d, a, seed
+//   if (st) st = triangular_lattice_seeds(1, 1, 0.1f, 0.2f, 7, &s);  // fig. 3 (a)-(d)
+//   if (st) st = stage1_seeds(1, 1, 0.1f, 0.1f, 0.25f, 7, &s);  // fig. 4: W, H, D, d, a, seed
 //   Stage2Columns c;
-//   st = stage2_columns(1, 0.1f, 0.5f, &c);          // fig. 6: W, D, edge ratio -> columns
-//   st = stage2_row_seeds(c, 0.25f, 0.5, 3, 7, &s);  // one row: a, y, row id, seed; along x
-//   s.original[i] = the lattice point, s.moved[i] = after eq. (1)
+//   if (st) st = stage2_columns(1, 0.1f, 0.5f, &c);       // fig. 6: W, D, edge ratio -> columns
+//   if (st) st = stage2_row_seeds(c, 0.25f, 0.5, 3, 7, &s);  // one row: a, y, row id, seed
+//   if (!st) return st;
+//   Vec2d lattice_point = s.original[0], moved = s.moved[0];  // before and after eq. (1)
 //
 // Parameters: width, height > 0 (the pattern rectangle [0, W] x [0, H]); D > 0 the seed
 // spacing, at most 4096 seeds per row or column; a in [0, 1] the relative displacement

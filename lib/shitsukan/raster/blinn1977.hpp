@@ -5,7 +5,9 @@
 // Manual
 //   Blinn1977Material leather;                 // defaults below (a dark-brown glossy leather)
 //   PointLight lights[2] = {{{4, 5, 6}, {0.8f, 0.8f, 0.8f}}, {{-5, 2, 3}, {0.4f, 0.4f, 0.45f}}};
+//   Vec3 point{0, 0, 0}, normal{0, 0, 1}, eye{0, 1, 5};
 //   Vec3 rgb = shade_blinn1977(leather, point, normal, eye, lights, 2);   // linear, may be > 1
+//   Vec3 n = normal, l = normalize(Vec3{4, 5, 6}), e = normalize(eye);
 //   float s = blinn1977_specular(leather, n, l, e);     // the D·G·F/(N·E) term
 //
 // The model (Blinn 1977, after Torrance and Sparrow): with unit N, L (to the light), E (to the

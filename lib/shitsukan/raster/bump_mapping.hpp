@@ -2,12 +2,21 @@
 // surfaces", cited as ref. 19 by tokai1994 §4) with a normal map in an orthonormal tangent frame.
 //
 // Manual
+//   TriangleMesh mesh;                                 // any mesh with uvs
+//   Status s = make_uv_sphere(1.0f, 16, 8, &mesh);
+//   if (!s) return s;
 //   Vec3 dpdx, dpdy;                                   // once per triangle
-//   triangle_texture_tangents(p0, p1, p2, uv0, uv1, uv2, &dpdx, &dpdy);
+//   triangle_texture_tangents(mesh.positions[0], mesh.positions[1], mesh.positions[2],
+//                             mesh.uvs[0], mesh.uvs[1], mesh.uvs[2], &dpdx, &dpdy);
 //   // or for a whole mesh, into caller buffers of mesh.triangle_count entries:
-//   Status s = mesh_texture_tangents(mesh.view(), dpdx_buf, dpdy_buf, capacity);
-//   TangentFrame f = orthonormal_tangent_frame(interpolated_normal, dpdx, dpdy);
+//   const int capacity = mesh.view().triangle_count;
+//   std::vector<Vec3> dpdx_buf(static_cast<std::size_t>(capacity)), dpdy_buf(dpdx_buf);
+//   s = mesh_texture_tangents(mesh.view(), dpdx_buf.data(), dpdy_buf.data(), capacity);
+//   Vec3 interpolated_normal{0, 0, 1}, leather_normal = normalize(Vec3{0.1f, 0.0f, 1.0f});
+//   TangentFrame f = orthonormal_tangent_frame(interpolated_normal, dpdx_buf[0], dpdy_buf[0]);
 //   Vec3 n = perturb_normal(f, leather_normal);       // leather_normal in the texture frame
+//   return s;
+//   #include "shitsukan/geom/mesh_builders.hpp"
 //
 // Blinn 1978 perturbs the surface normal N by D = (F_u (N x P_v) - F_v (N x P_u)) / |N| for a
 // height F(u, v). When the texture is laid on the surface with equal scale in both directions

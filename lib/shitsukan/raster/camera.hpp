@@ -2,18 +2,23 @@
 //
 // Manual
 //   Camera cam = perspective_camera({3, 2, 4}, {0, 0, 0}, {0, 1, 0}, 35.0f, 512, 512);
+//   Vec3 eye{0, 0, 5}, target{0, 0, 0}, up{0, 1, 0};
 //   Camera ortho = orthographic_camera(eye, target, up, 1.2f /*half height*/, 512, 512);
-//   Options (defaults): near 0.05, far 100 (perspective_camera's last two arguments).
-//   cam.view (world -> eye, right-handed, looking down -z), cam.projection (eye -> clip,
-//   OpenGL convention: NDC z in [-1, 1]), cam.width / cam.height (the full frame in pixels).
-//   project(cam, p) -> screen (x right, y down, pixels; z = depth in [0, 1]).
-//   clip_to_screen(cam, clip) -> the same mapping from homogeneous clip coordinates (w > 0);
-//   the rasterizer maps its vertices with the same operations.
-//   Ranges: fov_y_degrees in (0, 180), 0 < near_plane < far_plane, half_height > 0,
-//   width, height >= 1, everything finite, eye != target, up not parallel to target - eye.
-//   perspective_camera / orthographic_camera do not check them; make_perspective_camera /
-//   make_orthographic_camera do (a Status naming the bad value), and draw_mesh() /
-//   draw_edges() refuse a camera that fails validate_camera().
+//   // Options (defaults): near 0.05, far 100 (perspective_camera's last two arguments).
+//   // cam.view (world -> eye, right-handed, looking down -z), cam.projection (eye -> clip,
+//   // OpenGL convention: NDC z in [-1, 1]), cam.width / cam.height (the full frame in pixels).
+//   Vec3 screen = project(cam, {0.5f, 0.5f, 0.5f});  // x right, y down, pixels; z depth in [0, 1]
+//   Vec3 same = clip_to_screen(cam, cam.projection * (cam.view * Vec4{0.5f, 0.5f, 0.5f, 1.0f}));
+//   // clip_to_screen: the same mapping from homogeneous clip coordinates (w > 0); the
+//   // rasterizer maps its vertices with the same operations.
+//   // Ranges: fov_y_degrees in (0, 180), 0 < near_plane < far_plane, half_height > 0,
+//   // width, height >= 1, everything finite, eye != target, up not parallel to target - eye.
+//   // perspective_camera / orthographic_camera do not check them; make_perspective_camera /
+//   // make_orthographic_camera do (a Status naming the bad value), and draw_mesh() /
+//   // draw_edges() refuse a camera that fails validate_camera().
+//   Camera checked;
+//   Status s = make_perspective_camera(eye, target, up, 35.0f, 512, 512, 0.05f, 100.0f, &checked);
+//   return s;
 #pragma once
 
 #include "shitsukan/core/status.hpp"

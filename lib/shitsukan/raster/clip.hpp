@@ -1,10 +1,12 @@
 // shitsukan/raster/clip.hpp — homogeneous clipping of one triangle (Sutherland-Hodgman).
 //
 // Manual
+//   Vec4 clip0{-0.5f, -0.5f, 0.5f, 1}, clip1{0.5f, -0.5f, -2.0f, 1}, clip2{0, 0.5f, 0.5f, 1};
 //   ClipPolygon poly;
-//   ClipSpaceVertex tri[3] = {{clip0, {1,0,0}}, {clip1, {0,1,0}}, {clip2, {0,0,1}}};
+//   ClipSpaceVertex tri[3] = {{clip0, {1, 0, 0}}, {clip1, {0, 1, 0}}, {clip2, {0, 0, 1}}};
 //   ClipResult r = clip_triangle(tri, &poly);   // r.outside, r.not_finite, r.clipped_near
-//   for (int i = 1; i + 1 < poly.count; ++i) draw(poly.v[0], poly.v[i], poly.v[i + 1]);
+//   int fans = 0;
+//   for (int i = 1; i + 1 < poly.count; ++i) ++fans;  // draw(poly.v[0], poly.v[i], poly.v[i + 1])
 //
 // Why in clip space: before the divide by w a point behind the eye (w <= 0) is still on the
 // right side of the line through the triangle; clipping there keeps the visible part of a

@@ -5,11 +5,19 @@
 //                                                           // caller memory as RgbView/FloatView
 //   FrameBand band = full_frame_band(color.view(), depth.view());   // or any band of rows
 //   clear_band(band, Rgb8{0, 0, 0});
+//   Camera camera = perspective_camera({0, 1, 4}, {0, 0, 0}, {0, 1, 0}, 35.0f, 512, 512);
+//   TriangleMesh mesh;
+//   Status s = make_torus(1.0f, 0.35f, 64, 32, &mesh);
 //   DrawOptions opt;  opt.model = Mat4::rotate_y(0.3f);  opt.cull = CullMode::back;
-//   auto shader = [&](const Fragment& f) { return shade_marble(f.object_position); };
-//   Status s = draw_mesh(camera, band, mesh.view(), opt, shader, &stats);
-//   See also: shading.hpp (lights, Lambert, Blinn-Phong), wireframe.hpp (edges as lines),
-//   clip.hpp (the homogeneous clipper), camera.hpp.
+//   auto shader = [&](const Fragment& f) { return to_rgb8(0.5f * (f.normal + Vec3{1, 1, 1})); };
+//   RasterStats stats;
+//   if (s) s = draw_mesh(camera, band, mesh.view(), opt, shader, &stats);
+//   // See also: shading.hpp (lights, Lambert, Blinn-Phong), wireframe.hpp (edges as lines),
+//   // clip.hpp (the homogeneous clipper), camera.hpp.
+//   return s;
+//   #include "shitsukan/geom/mesh_builders.hpp"
+//   #include "shitsukan/image/image.hpp"
+//   #include "shitsukan/raster/shading.hpp"
 //
 // CONVENTIONS (small3dlib-style)
 //   - Right-handed world; camera looks down -z of eye space; counter-clockwise = front face.

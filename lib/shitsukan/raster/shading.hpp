@@ -1,13 +1,18 @@
 // shitsukan/raster/shading.hpp — lights, a material, Lambert + ambient and Blinn-Phong.
 //
 // Manual
+//   Camera camera = perspective_camera({0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 35.0f, 64, 64);
 //   Light lights[2] = {directional_light({-1, 1, 1}), point_light({2, 3, 4}, {1, 0.9f, 0.8f})};
 //   Material mat;                          // ambient 0.1, diffuse 0.9, specular 0, shininess 32
+//   Vec3 base_color{0.7f, 0.7f, 0.7f};
 //   auto shader = [&](const Fragment& f) {
 //       Vec3 c = shade_blinn_phong(mat, base_color, f.world_position, f.normal, camera.eye,
 //                                  lights, 2);
 //       return to_rgb8(c);
 //   };
+//   Fragment f;  f.normal = {0, 0, 1};
+//   Rgb8 px = shader(f);
+//   #include "shitsukan/raster/rasterizer.hpp"
 // The three classic ways to get the normal used above:
 //   flat      flat_normal(mesh, f.triangle, model): the triangle's plane (or draw a mesh
 //             without normals: the rasterizer then hands the plane normal in f.normal),

@@ -1,12 +1,23 @@
 // shitsukan/raster/wireframe.hpp — a mesh's edges as lines, band by band.
 //
 // Manual
-//   std::vector<WireEdge> edges(3 * mesh.triangle_count);       // scratch: 3 per triangle
+//   TriangleMesh mesh;
+//   Status s = make_box({-1, -1, -1}, {1, 1, 1}, &mesh);
+//   Camera camera = perspective_camera({3, 2, 4}, {0, 0, 0}, {0, 1, 0}, 35.0f, 128, 128);
+//   RgbImage color(128, 128); FloatImage depth(128, 128);
+//   FrameBand band = full_frame_band(color.view(), depth.view());
+//   clear_band(band, Rgb8{0, 0, 0});
+//   std::vector<WireEdge> edges(3 * std::size_t(mesh.view().triangle_count));  // 3 per triangle
 //   int n = 0;
-//   collect_edges(mesh.view(), edges.data(), int(edges.size()), &n);   // once per mesh
+//   if (s) s = collect_edges(mesh.view(), edges.data(), int(edges.size()), &n);  // once per mesh
 //   WireOptions w;  w.color = {255, 255, 255};  w.depth_test = true;    // hidden lines
-//   draw_mesh(camera, band, mesh.view(), opt, fill_shader);          // fills the Z-buffer
-//   draw_edges(camera, band, mesh.view(), edges.data(), n, w);       // then the lines
+//   DrawOptions opt;
+//   auto fill_shader = [](const Fragment&) { return Rgb8{40, 40, 40}; };
+//   if (s) s = draw_mesh(camera, band, mesh.view(), opt, fill_shader);  // fills the Z-buffer
+//   if (s) s = draw_edges(camera, band, mesh.view(), edges.data(), n, w);  // then the lines
+//   return s;
+//   #include "shitsukan/geom/mesh_builders.hpp"
+//   #include "shitsukan/image/image.hpp"
 //
 // collect_edges keeps each edge once: two triangles sharing an edge, or two faces with their
 // own copies of the corner vertices (a box with per-face normals), give one edge. Edges are

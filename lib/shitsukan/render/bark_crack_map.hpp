@@ -13,7 +13,7 @@
 //   RgbImage map(200, 120, Rgb8{250, 250, 248});
 //   RasterCanvas canvas(map.view());
 //   CrackMapStyle style;  style.origin = {0.0f, 120.0f};  style.px_per_cm = 24.0f;
-//   draw_crack_map(canvas, bark, p.T, bark.net.W.data(), style);
+//   return draw_crack_map(canvas, bark, p.T, bark.net.W.data(), style);
 //
 // Geometry: (u, z) cm -> pixel (origin.x + u·px_per_cm, origin.y - z·px_per_cm): u around the
 // trunk from the seam, z up. A triangle or ribbon reaching past the grown circumference C is

@@ -3,13 +3,26 @@
 // the tokai1994 product figures, as a library call), plus the figures' chosen materials.
 //
 // Manual
+//   ScaleParams prm;  ScalePattern pattern;                    // leather/scale_division.hpp
+//   Status s = generate_scale_pattern(prm, &pattern);
 //   LeatherMaps maps;                                          // leather/maps.hpp
-//   Status s = make_leather_maps(pattern, 512, 512, table1_section(Table1Section::convex),
+//   if (s) s = make_leather_maps(pattern, 128, 128, table1_section(Table1Section::convex),
 //                                ReliefOptions{}, &maps);
+//   TriangleMesh mesh;
+//   if (s) s = make_uv_sphere(1.0f, 32, 16, &mesh);
 //   TextureTangents tangents;                                  // per triangle dP/du, dP/dv
-//   s = compute_texture_tangents(mesh.view(), &tangents);
+//   if (s) s = compute_texture_tangents(mesh.view(), &tangents);
+//   Camera camera = perspective_camera({0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 35.0f, 96, 96);
+//   RgbImage color(96, 96); FloatImage depth(96, 96);
+//   FrameBand band = full_frame_band(color.view(), depth.view());
+//   clear_band(band, Rgb8{0, 0, 0});
 //   LeatherShading shading;                                    // tokai1994 leather, 2 lights
-//   s = draw_leather_mesh(camera, band, mesh.view(), DrawOptions{}, maps, tangents, shading);
+//   if (s) s = draw_leather_mesh(camera, band, mesh.view(), DrawOptions{}, maps, tangents,
+//                                shading);
+//   return s;
+//   #include "shitsukan/leather/scale_division.hpp"
+//   #include "shitsukan/geom/mesh_builders.hpp"
+//   #include "shitsukan/image/image.hpp"
 //
 // Per pixel (front faces): the map's normal at the fragment's uv, read in pattern units
 // (uv · uv_scale) with mirrored tiling (mirrored_normal_at: any uv, no seams), is turned

@@ -4,12 +4,18 @@
 // surface point behind each texel).
 //
 // Manual
-//   TriangleMesh mesh;  Status s = read_obj("vase.obj", &mesh);     // geom/obj_read.hpp
-//   s = fit_mesh_to_cube(&mesh, 0.92f);                               // into [-1, 1]^3
-//   FractalLattice lattice;  s = lattice.build(okada1987_lattice_params());
+//   TriangleMesh mesh;  Status s = make_uv_sphere(1.0f, 24, 12, &mesh);  // or read_obj (obj_read)
+//   if (s) s = fit_mesh_to_cube(&mesh, 0.92f);                         // into [-1, 1]^3
+//   FractalLattice lattice;
+//   if (s) s = lattice.build(okada1987_lattice_params());
 //   RgbImage texture;
-//   s = bake_solid_texture(mesh.view(), lattice.view(), okada1987_marble(),
-//                          object_to_lattice_mapping(6), 1024, 1024, &texture);
+//   if (s) s = bake_solid_texture(mesh.view(), lattice.view(), okada1987_marble(),
+//                                 object_to_lattice_mapping(6), 128, 128, &texture);
+//   return s;
+//   #include "shitsukan/geom/mesh_builders.hpp"
+//   #include "shitsukan/geom/mesh_fit.hpp"
+//   #include "shitsukan/solid/lattice_store.hpp"
+//   #include "shitsukan/solid/okada1987_presets.hpp"
 //
 //   SolidSlice slice;                          // the plane y = 32 of the lattice, x right, z up
 //   s = render_solid_slice(lattice.view(), okada1987_marble(), slice, 512, 512, &texture);

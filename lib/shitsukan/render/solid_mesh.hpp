@@ -5,10 +5,17 @@
 // Manual
 //   FractalLattice lattice;
 //   Status s = lattice.build(okada1987_lattice_params());          // solid/okada1987_presets
-//   s = fit_mesh_to_cube(&mesh, 0.92f);                              // any mesh into [-1, 1]^3
-//   Camera cam = perspective_camera({1.9f, 2.4f, 4.2f}, {0, 0, 0}, {0, 1, 0}, 30, 512, 512);
+//   TriangleMesh mesh;
+//   if (s) s = make_torus(0.64f, 0.28f, 48, 24, &mesh);
+//   if (s) s = fit_mesh_to_cube(&mesh, 0.92f);                     // any mesh into [-1, 1]^3
+//   Camera cam = perspective_camera({1.9f, 2.4f, 4.2f}, {0, 0, 0}, {0, 1, 0}, 30, 128, 128);
 //   RgbImage img;
-//   s = render_solid_texture(cam, mesh.view(), lattice.view(), okada1987_marble(), &img);
+//   if (s) s = render_solid_texture(cam, mesh.view(), lattice.view(), okada1987_marble(), &img);
+//   return s;
+//   #include "shitsukan/geom/mesh_builders.hpp"
+//   #include "shitsukan/geom/mesh_fit.hpp"
+//   #include "shitsukan/solid/lattice_store.hpp"
+//   #include "shitsukan/solid/okada1987_presets.hpp"
 //
 //   // or band by band / several meshes into one frame:
 //   SolidShading shading;                       // light, ambient, diffuse, object mapping
