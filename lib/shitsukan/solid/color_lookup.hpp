@@ -2,6 +2,7 @@
 // R, G, B intensities.
 //
 // Manual
+//   float g_prime = 0.4f;                   // the texture value G' in [0, 1]
 //   Vec3 rgb = lookup_color(g_prime, Vec3{40, 45, 60}, Vec3{235, 232, 225});   // I_min, I_max
 //
 // I = (1 - G')·I_min + G'·I_max per channel. For marble I_max is the limestone colour and

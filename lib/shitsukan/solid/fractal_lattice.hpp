@@ -6,10 +6,12 @@
 //   static float values[65 * 65 * 65];                 // caller memory (1,098,500 bytes)
 //   LatticeView lattice;
 //   Status s = build_fractal_lattice(p, values, sizeof values, &lattice);
+//   if (!s) return s;
 //   float v = lattice.at(32, 32, 32);                  // integer lattice coordinates 0..2^R
 //   // stop after level 3 (okada1987 fig. 2): only nodes on a spacing-8 grid are set,
 //   // the rest hold NaN
-//   build_fractal_lattice(p, values, sizeof values, &lattice, 3);
+//   s = build_fractal_lattice(p, values, sizeof values, &lattice, 3);
+//   return s;
 //
 // Memory: lattice_bytes(R) = (2^R + 1)^3 · 4 bytes; O(2^{3R}) (okada1989 §2-1). A buffer
 // smaller than that is refused with both byte counts in the message; R is limited to

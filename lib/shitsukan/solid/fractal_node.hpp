@@ -2,13 +2,21 @@
 // (1)-(4)), written once and shared by lattice Types I, II and III.
 //
 // Manual
-//   NodeClass c = classify_node(R, x, y, z);   // level n, half spacing h, which axes are odd
-//   float de = edge_midpoint(dv1, dv2, g * L);              // eq. (1)
-//   float dp = face_centre(edge_values, g * L);             // eq. (3), four edge midpoints
-//   float dc = cube_centre(face_values, g * L);             // eq. (4), six face centres
-//   float g  = node_gaussian(seed, x, y, z);                // N(0, 1) of the node (hash)
-//   ParentStep p = parent_step(c.odd_axes, i);              // the parent rule, i < 2·odd_count
+//   int R = 6;  std::int32_t x = 8, y = 0, z = 0;   // a node of a 65^3 lattice
+//   std::uint32_t seed = 1987;
+//   float L = level_amplitude(3, 0.9f);         // fractal_params.hpp: L_r^(n), eq. (2)
+//   NodeClass c = classify_node(R, x, y, z);    // level n, half spacing h, which axes are odd
+//   float g  = node_gaussian(seed, x, y, z);    // N(0, 1) of the node (hash)
+//   float dv1 = 0.1f, dv2 = -0.3f;
+//   float de = edge_midpoint(dv1, dv2, g * L);  // eq. (1)
+//   const float edge_values[4] = {0.1f, 0.2f, -0.1f, 0.0f};
+//   float dp = face_centre(edge_values, g * L); // eq. (3), four edge midpoints
+//   const float face_values[6] = {0.1f, 0.2f, -0.1f, 0.0f, 0.3f, 0.05f};
+//   float dc = cube_centre(face_values, g * L); // eq. (4), six face centres
+//   ParentStep p = parent_step(c.odd_axes, 0);  // the parent rule, i < 2·odd_count
+//   const float parents[2] = {dv1, dv2};        // read at c.half along p.axis, p.sign, ...
 //   float d  = node_from_parents(c.odd_count, parents, g * L);  // eq. (1), (3) or (4)
+//   #include "shitsukan/solid/fractal_params.hpp"
 //
 // Lattice coordinates are integers 0..2^R on each axis. A node first appears at level
 // n = R - t, where 2^t is the largest power of two dividing all three coordinates (t capped

@@ -4,8 +4,9 @@
 //   FractalParams p;                 // R = 6 (65^3 points), beta = 0.9, seed = 1987, corners 0
 //   p.beta = 0.7f;
 //   Status s = validate_fractal_params(p, kTypeIMaxDepth);
-//   int n = lattice_side(p.R);       // 2^R + 1 points a side (okada1987 §2.2)
+//   std::int64_t n = lattice_side(p.R);       // 2^R + 1 points a side (okada1987 §2.2)
 //   float a = level_amplitude(3, p.beta);   // L_r^(3) = exp(-2·beta), eq. (2)
+//   return s;
 //
 // Parameters and ranges
 //   R        recursion depth, 0 <= R <= the type's limit (Type I: kTypeIMaxDepth = 10,

@@ -3,12 +3,18 @@
 // "file write 0.9 s").
 //
 // Manual
+//   FractalParams params;                             // R = 6
 //   FractalLattice lattice;
 //   Status s = lattice.build(params);                 // refuses > 512 MiB (default budget)
-//   s = lattice.build(params, 64u << 20);             // or a budget of your own
+//   if (s) s = lattice.build(params, 64u << 20);      // or a budget of your own
+//   if (!s) return s;
+//   Vec3 p{10.3f, 40.0f, 31.7f};
 //   float d = turbulence(lattice.view(), p);
 //   s = save_lattice("lattice.shl", lattice);         // raw little-endian float32 + header
-//   FractalLattice back;  s = load_lattice("lattice.shl", &back);
+//   FractalLattice back;
+//   if (s) s = load_lattice("lattice.shl", &back);
+//   return s;
+//   #include "shitsukan/solid/turbulence.hpp"
 //
 // File format (all little-endian): 8 bytes magic "SHKLAT01", int32 R, float32 beta,
 // uint32 seed, uint32 noise source (0 hash, 1 sequential), float32 corners[8], then

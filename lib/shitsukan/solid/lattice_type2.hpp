@@ -6,9 +6,10 @@
 //   FractalParams p;                 // R = 6
 //   TypeIILattice lattice;
 //   Status s = lattice.init(p);      // hash or sequential noise
+//   if (!s) return s;
 //   float v = lattice.node_value(10, 20, 30);
 //   float d = lattice.turbulence(Vec3{10.5f, 20.25f, 30.0f});   // eq. (6), clamped
-//   lattice.list_size();             // nodes held so far; list_bytes() their payload
+//   std::size_t held = lattice.list_size();   // nodes held so far; list_bytes() their payload
 //
 // A node's value needs its parents (eqs. (1)-(4)), theirs, and so on up to the corners:
 // at most 27 nodes a level. Each computed node is kept so that it keeps its random number

@@ -8,6 +8,7 @@
 //   TypeIIILattice lattice;                          // 10.9 KB object, fixed capacity
 //                                                    // (3.3 KB without the row cache below)
 //   Status s = lattice.init(p);                      // hash noise only (see below)
+//   if (!s) return s;
 //   float v = lattice.node_value(7, 1 << 19, 3);     // one node, 0 <= x, y, z <= 2^R
 //   float d = lattice.turbulence(Vec3{3.5f, 8.25f, 1.0f});   // eq. (6), clamped like Type I
 //

@@ -2,11 +2,18 @@
 // skirts (eq. (8)), displaced along z by the turbulence (eq. (9)).
 //
 // Manual
+//   FractalLattice lattice;                              // lattice_store.hpp
+//   Status s = lattice.build(FractalParams{});
+//   if (!s) return s;
+//   Vec3 p{32.0f, 30.0f, 21.5f};                          // a point in lattice units
 //   const MarbleStripe stripes[] = {{20.0f, 3.0f, 0.8f}, {44.0f, 1.5f, 1.2f}};  // c, w, alpha
 //   MarbleParams m{stripes, 2, 16.0f};                   // k = 16 (okada1987 §4.4)
-//   Status s = validate_marble(m);
+//   s = validate_marble(m);
 //   float g  = marble_original(p.z, stripes, 2);         // G(P), eq. (8)
-//   float gp = marble_texture(p, turbulence(lattice, p), m);  // G(P + k·D(P)·(0,0,1))
+//   float gp = marble_texture(p, turbulence(lattice.view(), p), m);  // G(P + k·D(P)·(0,0,1))
+//   return s;
+//   #include "shitsukan/solid/lattice_store.hpp"
+//   #include "shitsukan/solid/turbulence.hpp"
 //
 // Units: the same as P (lattice units in the figures). One stripe j: centre c_j (z of the
 // layer's middle), width w_j > 0 of the flat top, decay alpha_j > 0 of the skirt:

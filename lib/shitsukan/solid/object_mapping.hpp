@@ -3,9 +3,15 @@
 // coordinates, the lattice a box of 2^R cells around it).
 //
 // Manual
-//   ObjectToLattice map = object_to_lattice_mapping(6);   // R = 6: (32 + 30x, 32 - 30z, 32 + 30y)
-//   Vec3 p = object_to_lattice(fragment.object_position, map);
+//   FractalLattice lattice;                                 // lattice_store.hpp
+//   Status s = lattice.build(FractalParams{});
+//   if (!s) return s;
+//   Vec3 object_position{0.2f, -0.5f, 0.7f};                // e.g. a Fragment's object_position
+//   ObjectToLattice map = object_to_lattice_mapping(6);     // R = 6: (32 + 30x, 32 - 30z, 32 + 30y)
+//   Vec3 p = object_to_lattice(object_position, map);
 //   float d = turbulence(lattice.view(), p);
+//   #include "shitsukan/solid/lattice_store.hpp"
+//   #include "shitsukan/solid/turbulence.hpp"
 //
 // The object is expected inside [-1, 1]^3 with y up (fit_mesh_to_cube, geom/mesh_fit.hpp,
 // puts any mesh there). The mapping is P = (c + s·x, c - s·z, c + s·y): the texture's z

@@ -6,10 +6,14 @@
 // Manual
 //   FractalLattice lattice;
 //   Status s = lattice.build(okada1987_lattice_params());      // 65^3, beta 0.9, seed 1987
+//   if (!s) return s;
 //   SolidMaterial marble = okada1987_marble();                  // k = 16, six stripes
 //   SolidMaterial wood   = okada1987_wood();                    // k = 1.6
 //   SolidMaterial single = okada1989_marble();                  // one layer through the middle
+//   Vec3 p{0.1f, 0.2f, -0.3f};                                  // a point of the object
 //   Vec3 rgb = solid_color(marble, lattice.view(), object_to_lattice(p));
+//   #include "shitsukan/solid/lattice_store.hpp"
+//   #include "shitsukan/solid/object_mapping.hpp"
 //
 // Given by the papers: R = 6 (the 65^3 lattice), k = 16 for marble, k = 1.6 for wood
 // (okada1987 §4.4), the forms of G (eqs. (8), (10)). Chosen here (the papers print none),

@@ -6,7 +6,9 @@
 //   FractalParams p;                                // R = 6, beta 0.9, hash noise
 //   PeriodicLattice lattice;
 //   Status s = lattice.build(p);                    // (2^R + 1)^3 floats, like Type I
+//   if (!s) return s;
 //   float d = periodic_turbulence(lattice.view(), Vec3{70.5f, -3.0f, 10.0f});  // any point
+//   Vec3 p3{-5.0f, 130.0f, 7.5f};
 //   Vec3 q = wrap_lattice_point(p3, lattice.view().R);   // into [0, 2^R)^3
 //   // solid_density(material, lattice.view(), q) then tiles when the material's pattern is
 //   // periodic with a period dividing 2^R (marble with layer_period = 2^R / n, see below).

@@ -1,8 +1,11 @@
 // shitsukan/solid/pixel_shift.hpp — okada1989 §4-1 eq. (7): the pixel shift method.
 //
 // Manual
+//   Vec3 p{10, 20, 30}, u{0, 0, 1};          // the point, the shift direction
+//   float k = 16.0f, d = 0.3f;               // the strength, the turbulence D(P)
 //   Vec3 q = pixel_shift(p, k, d, u);        // P' = P + k·D(P)·u
-//   float texture = G(q);                     // what the point P shows
+//   auto G = [](Vec3 x) { return std::sin(x.z); };   // any original texture
+//   float texture = G(q);                    // what the point P shows
 //
 // Forward vs. backward. okada1987 §3.2 words the turbulence as a forward map: the value
 // G(P) of the original function "is observed at" P' = F(P, D(P)). A renderer cannot use

@@ -5,8 +5,9 @@
 //   QuadtreeParams q;                                 // R = 6: 65 x 65 heights
 //   static float heights[65 * 65];
 //   int side = 0;
-//   Status s = build_quadtree_lattice(q, heights, sizeof heights, &side);      // all levels
-//   s = build_quadtree_lattice(q, heights, sizeof heights, &side, 2);          // levels 1..2
+//   Status s = build_quadtree_lattice(q, heights, sizeof heights, &side);        // all levels
+//   if (s) s = build_quadtree_lattice(q, heights, sizeof heights, &side, 2);     // levels 1..2
+//   return s;
 //
 // One level n (h = 2^(R-n)): each square of the previous level is cut into four, and its
 // five new points get "the linear interpolation of the square's four vertices plus a

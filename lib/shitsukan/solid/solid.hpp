@@ -23,7 +23,9 @@
 // Manual (a marble colour at a point of an object):
 //   FractalLattice lattice;
 //   Status s = lattice.build(okada1987_lattice_params());
+//   Vec3 p{0.1f, 0.2f, -0.3f};                 // a point of the object, in [-1, 1]^3
 //   Vec3 rgb = s ? solid_color(okada1987_marble(), lattice.view(), object_to_lattice(p)) : Vec3{};
+//   return s;
 #pragma once
 #include "shitsukan/solid/quadtree_lattice.hpp"
 #include "shitsukan/solid/fractal_params.hpp"

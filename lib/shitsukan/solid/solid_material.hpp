@@ -2,10 +2,16 @@
 // or wood (§4.2) with its k and the two colours of eq. (12); density and colour at a point.
 //
 // Manual
+//   FractalLattice lattice;                                // lattice_store.hpp
+//   Status s = lattice.build(okada1987_lattice_params());
 //   SolidMaterial m = okada1987_marble();                  // okada1987_presets.hpp
-//   Status s = validate_solid_material(m);
-//   float g  = solid_density(m, lattice.view(), p);        // G' in [0, 1], p in lattice units
-//   Vec3 rgb = solid_color(m, lattice.view(), p);           // eq. (12), 0..255 as I_min/I_max
+//   if (s) s = validate_solid_material(m);
+//   if (!s) return s;
+//   Vec3 p{32.0f, 20.0f, 40.5f};                           // in lattice units
+//   float g  = solid_density(m, lattice.view(), p);        // G' in [0, 1]
+//   Vec3 rgb = solid_color(m, lattice.view(), p);          // eq. (12), 0..255 as I_min/I_max
+//   #include "shitsukan/solid/lattice_store.hpp"
+//   #include "shitsukan/solid/okada1987_presets.hpp"
 //
 // Density G' (the input of eq. (12)), with D = turbulence(lattice, p) (eq. (6)):
 //   marble  G' = 1 - min(G(P + k·D·(0, 0, 1)), 1): G = 1 inside a layer of impurity, so the

@@ -2,9 +2,18 @@
 // of the lattice, okada1987 eq. (6) (okada1989 §3-4).
 //
 // Manual
+//   FractalLattice store;                                          // lattice_store.hpp
+//   Status s = store.build(FractalParams{});
+//   if (!s) return s;
+//   LatticeView lattice = store.view();
+//   Vec3 p{10.3f, 40.0f, 31.7f};
 //   float d = turbulence(lattice, Vec3{10.3f, 40.0f, 31.7f});      // Type I view, clamped
-//   Status s = turbulence_checked(lattice, p, &d);                  // out_of_range outside
-//   float d8 = trilinear_corners(corner_values, fx, fy, fz);        // eq. (6) on one cell
+//   s = turbulence_checked(lattice, p, &d);                        // out_of_range outside
+//   const float corner_values[8] = {0, 1, 0, 1, 0, 1, 0, 1};
+//   float fx = 0.5f, fy = 0.25f, fz = 0.75f;
+//   float d8 = trilinear_corners(corner_values, fx, fy, fz);       // eq. (6) on one cell
+//   return s;
+//   #include "shitsukan/solid/lattice_store.hpp"
 //
 // Coordinates are lattice coordinates: node (i, j, k) sits at P = (i, j, k), the lattice
 // fills [0, 2^R]^3 (R = 6: [0, 64]^3). Objects are mapped into it by the caller (the

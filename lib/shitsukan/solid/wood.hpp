@@ -2,12 +2,21 @@
 // the radius by the turbulence (eq. (11); okada1989 eqs. (10), (11)).
 //
 // Manual
+//   FractalLattice store;                                // lattice_store.hpp
+//   Status s = store.build(FractalParams{});
+//   if (!s) return s;
+//   LatticeView lattice = store.view();
+//   Vec3 p{30.0f, 12.0f, 40.0f};
 //   WoodParams w;  w.x0 = 10; w.y0 = 20; w.k2 = 1.0f; w.k = 1.6f;   // k = 1.6 (okada1987)
-//   Status s = validate_wood(w);
+//   s = validate_wood(w);
 //   float g  = wood_original(p, w);                    // sin(k2·r), in [-1, 1]
 //   float gp = wood_texture(p, turbulence(lattice, p), w);  // G(P + k·D(P)·u_radial)
 //   float t  = wood_unit_range(gp);                    // [0, 1] for lookup_color (eq. (12))
-//   Vec3 u; Status r = wood_radial_direction(p, w, &u); // degenerate on the axis (r = 0)
+//   Vec3 u;
+//   if (s) s = wood_radial_direction(p, w, &u);        // degenerate on the axis (r = 0)
+//   return s;
+//   #include "shitsukan/solid/lattice_store.hpp"
+//   #include "shitsukan/solid/turbulence.hpp"
 //
 // The axis of the tree is the line x = x0, y = y0 (parallel to z); r is the distance from
 // it and k2 sets the ring spacing 2·pi/k2. Units are those of P (lattice units in the
