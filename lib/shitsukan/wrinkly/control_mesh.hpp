@@ -5,9 +5,11 @@
 //
 // Manual
 //   WrControlMesh mesh = make_control_mesh(8, 8);          // cols (along u) x rows (along v)
-//   mesh.at(2, 5).position = {x, y, z};
+//   for (int r = 0; r < 8; ++r)
+//       for (int c = 0; c < 8; ++c) mesh.at(c, r).position = {c / 7.0f, r / 7.0f, 0.0f};
 //   mesh.at(2, 5).height = 0.3f;  mesh.at(2, 5).color = {1, 0, 0};
 //   Status s = validate_control_mesh(mesh, SurfaceBasis::bspline, 3);
+//   return s;
 //
 // Defaults per point: position (0,0,0), height 0, colour white, transparency 0 (opaque),
 // delta 0.5, direction (0,0,0) = "along the base-surface normal N(u,v)" (eq. 15).

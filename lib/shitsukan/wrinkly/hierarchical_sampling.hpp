@@ -13,12 +13,22 @@
 // Colour and transparency are sampled and superposed the same way ("any attribute", §4.2).
 //
 // Manual
+//   WrControlMesh mesh = make_control_mesh(8, 8);          // control_mesh.hpp
+//   for (int r = 0; r < 8; ++r)
+//       for (int c = 0; c < 8; ++c)
+//           mesh.at(c, r).position = {c / 7.0f, r / 7.0f, 0.0f}, mesh.at(c, r).height = 0.05f;
+//   WrSurface surface;
+//   Status s = make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface);
+//   if (!s) return s;
+//   float u = 0.3f, v = 0.6f, tol = 1e-4f;
 //   HierarchicalOptions o;  o.levels = 3;  o.interpolation = SampleInterpolation::hermite;
 //   HierarchicalSampling hs;
 //   Status st = sample_hierarchy(surface, o, &hs);
+//   if (!st) return st;
 //   SuperposedSample p = superposed_sampled(surface, hs, u, v);       // eq. (20), k = 0..K
 //   SuperposedSample q = superposed_sampled(surface, hs, u, v, tol);  // stop when the rest of
 //                                                                     // the sum is below tol
+//   #include "shitsukan/wrinkly/wr_surface.hpp"
 // Choices made here (no value in the paper), each stated where it is used:
 //   - H^0 = H itself: F^0 is the identity (eq. 16), so step 0 has no staircase to avoid.
 //   - Jitter: height samples are scaled by (1 + jitter_height·g) (direction kept), colour and

@@ -4,9 +4,10 @@
 // Manual
 //   IstAxis axis;
 //   Status s = ist_fully_connected_axis(5, 3, 5, IstEnds::cyclic, &axis);  // N, K, B, ends
-//   if (!s) { std::puts(s.message()); return; }
+//   if (!s) { std::puts(s.message()); return s; }
 //   float v = ist_forward(axis, 0.37f);             // ist_formula.hpp: u^0 -> u^K
 //   float w = ist_inverse(axis, v);                 // u^K -> u^0 (w == 0.37 up to rounding)
+//   #include "shitsukan/wrinkly/ist_formula.hpp"
 //
 //   The axis u in [0, 1] is cut into B equal "base intervals" (ベース区間) numbered
 //   0 .. B-1 from the left; the paper's figures number them from 4 (fig 6) or 0 (fig 9):

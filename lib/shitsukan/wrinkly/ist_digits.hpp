@@ -2,6 +2,9 @@
 // fujimoto2000 §2.3 and appendix A, eqs. (4)-(8), (11)-(13), (21)-(35).
 //
 // Manual
+//   IstAxis axis;
+//   Status s = ist_unit_axis(5, 3, 3, &axis);       // N = 5, K = 3, B = 3 (ist_axis.hpp)
+//   if (!s) return s;
 //   IstDigits a;                                    // alpha^0 = alpha_0 . alpha_1 .. alpha_K
 //   ist_digits_from_index(axis, /*base*/ 2, /*index*/ 38, &a);   // 38 = 123 in base 5
 //   IstDigits b;

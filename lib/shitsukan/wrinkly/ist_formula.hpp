@@ -4,7 +4,8 @@
 //
 // Manual
 //   IstAxis axis;
-//   ist_unit_axis(3, 2, &axis);                  // N = 3, K = 2 (check the Status)
+//   Status s = ist_unit_axis(3, 2, &axis);       // N = 3, K = 2
+//   if (!s) return s;
 //   float v = ist_forward(axis, 0.25f);          // u^K = F(u^0)
 //   float u = ist_inverse(axis, v);              // u^0 = F^-1(u^K), as eq. (15) needs
 //

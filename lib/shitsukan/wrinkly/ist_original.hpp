@@ -6,10 +6,12 @@
 //   const int crossing[5] = {1, 1, 2, 1, 1};        // fig 2: M_i = 2 for the centre only
 //   IstOriginal ist;
 //   ist.base_intervals = 5;  ist.crossing = crossing;  ist.iterations = 1;
-//   if (!ist_original_check(ist)) ...               // Status with the offending value
+//   if (Status bad = ist_original_check(ist); !bad) return bad;  // the offending value
 //   double v = ist_original_forward(ist, 0.37);     // u^0 -> u^K, eq. (1)
 //   double u = ist_original_inverse(ist, v);
+//   double user_u = 0.5;
 //   Status s = ist_original_forward_checked(ist, user_u, &v);   // checks ist and u too
+//   return s;
 //
 // One iteration (§2.1(1)), on the sub-interval [start, end) that holds u in base interval i:
 //   1) it is divided into 2 M_i + 1 equal parts;

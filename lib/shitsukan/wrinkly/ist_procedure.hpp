@@ -3,7 +3,9 @@
 // simulated step by step, the way ref. 13 implemented the original IST (§2.3 intro).
 //
 // Manual
-//   IstAxis axis;  ist_fully_connected_axis(5, 3, 5, IstEnds::cyclic, &axis);
+//   IstAxis axis;
+//   Status s = ist_fully_connected_axis(5, 3, 5, IstEnds::cyclic, &axis);   // ist_axis.hpp
+//   if (!s) return s;
 //   double v = ist_procedure_forward(axis, 0.37);          // equals ist_forward_double
 //   double u = ist_procedure_inverse(axis, v);
 //   // unequal base intervals (fig 6 draws base 6 wider): edges x_0 = 0 < .. < x_B = 1

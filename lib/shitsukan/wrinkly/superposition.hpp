@@ -12,10 +12,19 @@
 // comes back unchanged for every delta and K (tested).
 //
 // Manual
+//   WrControlMesh mesh = make_control_mesh(8, 8);          // control_mesh.hpp
+//   for (int r = 0; r < 8; ++r)
+//       for (int c = 0; c < 8; ++c)
+//           mesh.at(c, r).position = {c / 7.0f, r / 7.0f, 0.0f}, mesh.at(c, r).height = 0.05f;
+//   WrSurface surface;
+//   Status s = make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface);
+//   if (!s) return s;
+//   float u = 0.3f, v = 0.6f;
 //   float w = superposition_weight(0.5f, 2);            // (1 - 0.5)·0.5^2 = 0.125
-//   float s = superposition_weight_sum(0.5f, 3);        // 1 - 0.5^4
+//   float sum = superposition_weight_sum(0.5f, 3);      // 1 - 0.5^4
 //   float t = superposition_weight_truncated(0.5f, 2, 3);  // 0.125 / (1 - 0.5^4)
 //   Vec3 r = superposed_point_direct(surface, u, v, 4); // eq. (16) summed to K = 4, no sampling
+//   #include "shitsukan/wrinkly/control_mesh.hpp"
 // superposed_point_direct shows the staircase artefact of fig. 19(b); the hierarchical
 // sampling of §4.2 (hierarchical_sampling.hpp) removes it and is what the figures use.
 #pragma once

@@ -4,8 +4,8 @@
 // Manual
 //   WrAxis identity = identity_axis(5);            // 5 base intervals, no shuffle
 //   float s0 = identity.inverse_at(2.37f, 3);      // = 2.37
-//   WrAxis a = ...;                                 // from an IST (wr_ist_axis.hpp)
-//   float s = a.inverse_at(s_k, k);                 // (F^k)^{-1}(s_k), k = 0..a.max_level
+//   // WrAxis a = wr_ist.axis();                    // from an IST (wr_ist_axis.hpp):
+//   // float s = a.inverse_at(s_k, k);              // (F^k)^{-1}(s_k), k = 0..a.max_level
 //
 // Coordinates are in base-interval units: s in [0, base_intervals], base interval i =
 // [i, i+1). For the IST-Bezier surface there is one base interval (the whole patch, §3.2);

@@ -3,11 +3,21 @@
 // which eq. (15) (k = K) and eqs. (16), (20) (all k) need.
 //
 // Manual
+//   WrControlMesh mesh = make_control_mesh(8, 8);          // control_mesh.hpp
+//   for (int r = 0; r < 8; ++r)
+//       for (int c = 0; c < 8; ++c)
+//           mesh.at(c, r).position = {c / 7.0f, r / 7.0f, 0.0f}, mesh.at(c, r).height = 0.05f;
+//   WrSurface surface;
+//   Status s = make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface);
+//   if (!s) return s;
 //   IstAxis ist;
-//   ist_fully_connected_axis(3, 4, surface.spans_u(), IstEnds::translation, &ist);  // K unused
-//   WrIstAxis au;
-//   Status s = make_wr_ist_axis(ist, 6, &au);   // F^0 .. F^6
-//   surface.set_axes(au.axis(), av.axis());
+//   s = ist_fully_connected_axis(3, 4, surface.spans_u(), IstEnds::translation, &ist);  // K unused
+//   WrIstAxis au, av;
+//   if (s) s = make_wr_ist_axis(ist, 6, &au);   // F^0 .. F^6
+//   if (s) s = make_wr_ist_axis(ist, 6, &av);
+//   if (s) s = surface.set_axes(au.axis(), av.axis());
+//   return s;
+//   #include "shitsukan/wrinkly/wr_surface.hpp"
 // The WrAxis returned by axis() points at this object: keep the WrIstAxis alive and in place
 // (do not move or copy it) while the surface uses it.
 // IST-Bezier (§3.2): ist_unit_axis(N, K, &ist) (one base interval). IST-B-spline: a connected

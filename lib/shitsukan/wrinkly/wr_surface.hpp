@@ -10,12 +10,19 @@
 // (figs. 22-23) a displacement vector h_i·d_i are carried through the IST the same way.
 //
 // Manual
+//   WrControlMesh mesh = make_control_mesh(8, 8);     // control_mesh.hpp
+//   for (int r = 0; r < 8; ++r)
+//       for (int c = 0; c < 8; ++c)
+//           mesh.at(c, r).position = {c / 7.0f, r / 7.0f, 0.0f}, mesh.at(c, r).height = 0.05f;
 //   WrSurface s;
-//   Status st = make_wr_surface(mesh, SurfaceBasis::bspline, 3, &s);   // mesh: control_mesh.hpp
-//   st = s.set_axes(axis_u, axis_v);     // WrAxis (wr_axis.hpp); default: identity
+//   Status st = make_wr_surface(mesh, SurfaceBasis::bspline, 3, &s);
+//   WrAxis axis_u = identity_axis(s.spans_u()), axis_v = identity_axis(s.spans_v());
+//   if (st) st = s.set_axes(axis_u, axis_v);  // WrAxis (wr_axis.hpp); default: identity
+//   if (!st) return st;
+//   float u = 0.3f, v = 0.6f;  int K = 2;
 //   BasePoint b = s.base_point(u, v);    // P, N, dP/du, dP/dv, delta(u, v)
 //   WrAttributes a = s.attributes(u, v); // H(u, v), colour, transparency, displacement vector
-//   WrAttributes w = s.wr_attributes(u, v, K);   // the same at ((F_U^K)^{-1}(u), (F_V^K)^{-1}(v))
+//   WrAttributes w = s.wr_attributes(u, v, K);  // the same at ((F_U^K)^-1(u), (F_V^K)^-1(v))
 //   Vec3 r = s.wr_point(u, v, K);        // eq. (15)
 // u, v in [0, 1] over the whole surface (clamped; NaN counts as 0). K in 0..s.max_level() (0 =
 // plain surface; the axes' max_level: kMaxWrLevel for identity axes, what make_wr_ist_axis was

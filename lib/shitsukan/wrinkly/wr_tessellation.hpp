@@ -2,14 +2,26 @@
 // "after polygonising the surface by adaptive sampling, render with a Z-buffer").
 //
 // Manual
+//   WrControlMesh mesh = make_control_mesh(8, 8);          // control_mesh.hpp
+//   for (int r = 0; r < 8; ++r)
+//       for (int c = 0; c < 8; ++c)
+//           mesh.at(c, r).position = {c / 7.0f, r / 7.0f, 0.0f}, mesh.at(c, r).height = 0.05f;
+//   WrSurface surface;
+//   Status s = make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface);
+//   if (!s) return s;
+//   HierarchicalOptions ho;  ho.levels = 3;
+//   HierarchicalSampling sampling;                   // hierarchical_sampling.hpp
+//   s = sample_hierarchy(surface, ho, &sampling);
 //   WrTessellationOptions o;
 //   o.form = WrSurfaceForm::superposed;    // base | plain | wr | superposed_direct | superposed
 //   o.levels = 3;                          // K of eq. (15) / (16)
 //   o.grid_level = 3;  o.subdivisions = 1; // vertices at the step-3 sample positions
 //   WrMesh m;
-//   Status s = tessellate_wr_surface(surface, &sampling, o, &m);  // sampling: for `superposed`
-//   m.mesh (positions, normals, uv = (u, v), colours), m.transparency (one per vertex)
-//   AdaptiveLevels a = choose_adaptive_levels(surface, pixels_per_unit, 1.5f, 0.5f, 5);
+//   if (s) s = tessellate_wr_surface(surface, &sampling, o, &m);  // sampling: for `superposed`
+//   // m.mesh (positions, normals, uv = (u, v), colours), m.transparency (one per vertex)
+//   float pixels_per_unit = 200.0f;
+//   AdaptiveLevels a = choose_adaptive_levels(surface, mesh, pixels_per_unit, 1.5f, 0.5f, 5);
+//   return s;
 //
 // The vertex grid along each axis is the step-L sample positions of hierarchical_sampling.hpp
 // (0, the small-interval midpoints, 1), each interval cut into `subdivisions` pieces, clipped

@@ -12,7 +12,20 @@
 //   §4.2, eq. (20)                hierarchical_sampling.hpp  sampling without the staircase
 //   §4.2, §5                      wr_tessellation.hpp    adaptive polygonisation
 //
-// Manual: see wr_surface.hpp (a WR surface) and superposition.hpp (mountains).
+// Manual
+//   WrControlMesh mesh = make_control_mesh(8, 8);          // control_mesh.hpp
+//   for (int r = 0; r < 8; ++r)
+//       for (int c = 0; c < 8; ++c)
+//           mesh.at(c, r).position = {c / 7.0f, r / 7.0f, 0.0f}, mesh.at(c, r).height = 0.05f;
+//   WrSurface surface;
+//   Status s = make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface);
+//   if (!s) return s;
+//   HierarchicalOptions o;  o.levels = 2;              // then mountains (superposition.hpp):
+//   HierarchicalSampling hs;
+//   s = sample_hierarchy(surface, o, &hs);
+//   SuperposedSample p = s ? superposed_sampled(surface, hs, 0.5f, 0.5f) : SuperposedSample{};
+//   // More in wr_surface.hpp (a WR surface) and superposition.hpp (mountains).
+//   return s;
 #pragma once
 #include "shitsukan/wrinkly/ist.hpp"
 #include "shitsukan/wrinkly/control_mesh.hpp"
