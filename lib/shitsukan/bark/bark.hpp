@@ -29,6 +29,7 @@
 //   if (s) s = grow_and_crack(bark, CrackRunOptions{}, &run);
 //   if (s) s = measure_regions(bark, p.T, bark.net.W.data(), &rep);
 //   // rep.mean_width x rep.mean_height: about 1.9 x 10.5 cm (paper 1.58 x 11.6)
+//   return s;
 #pragma once
 
 #include "shitsukan/bark/bark_export.hpp"

@@ -1,10 +1,22 @@
 // shitsukan/bark/bark_export.hpp — the simulated bark out of the program: CSV, SVG, a mesh.
 //
 // Manual
-//   Status s = write_bark_csv(bark, T, W, "camphor");      // camphor_nodes.csv, _springs.csv,
+//   CylinderParams params;  params.N_R = 16;  params.N_H = 12;  // a small trunk (chosen 128 x 64)
+//   params.species = species_preset(Species::camphor);
+//   BarkCylinder bark;
+//   Status s = build_cylinder(params, &bark);
+//   CrackRun run;
+//   if (s) s = grow_and_crack(bark, CrackRunOptions{}, &run);
+//   if (!s) return s;
+//   float T = params.T;
+//   const Vec3* W = bark.net.W.data();
+//   s = write_bark_csv(bark, T, W, "camphor");             // camphor_nodes.csv, _springs.csv,
 //                                                          // _triangles.csv
-//   s = write_crack_svg(bark, T, W, "camphor.svg");        // the unrolled crack map
-//   TriangleMesh trunk;  s = make_trunk_mesh(bark, T, W, &trunk);   // then write_obj(...)
+//   if (s) s = write_crack_svg(bark, T, W, "camphor.svg"); // the unrolled crack map
+//   TriangleMesh trunk;
+//   if (s) s = make_trunk_mesh(bark, T, W, &trunk);        // then write_obj(...)
+//   return s;
+//   #include "shitsukan/bark/crack_events.hpp"
 //
 // CSV (so others can measure the regions independently; all lengths in cm at time t):
 //   nodes:     id,c,r,u_cm,z_cm,area_cm2          unrolled positions (u around, z along)

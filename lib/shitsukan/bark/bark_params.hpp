@@ -5,6 +5,7 @@
 //   p.species = species_preset(Species::camphor);  // Table 2, to the printed digits
 //   Status s = validate(p);                        // every range below, with the value
 //   float R0 = initial_radius(p), H0 = initial_height(p);   // Table 1
+//   return s;
 //
 // Table 1 names the parameters; Table 2 gives L0, E1, E2, G, kappa1, kappa2 for three
 // species. Everything else is "chosen here" below, with the reason (MODEL.md §2.3 calibrated

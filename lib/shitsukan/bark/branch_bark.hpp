@@ -2,10 +2,13 @@
 //
 // Manual
 //   BranchBarkParams p;                          // MODEL.md §2.3 branch values
+//   p.edge_length = 0.8f;                        // coarser than the figure's, to be quick
 //   BranchBark bark;
 //   Status s = build_branch_bark(p, &bark);     // mesh, springs on its edges, constants
 //   CrackRun run;
-//   s = grow_branch_bark(bark, CrackRunOptions{}, &run);
+//   if (s) s = grow_branch_bark(bark, CrackRunOptions{}, &run);
+//   if (!s) return s;
+//   std::uint32_t i = 0;  float t = 0.5f * p.growth.duration;
 //   Vec3 x = branch_node_position(bark, i, t, bark.net.W.data());   // node i at time t
 //
 // §5.1: the paper digitised a real branch and re-meshed it near-uniformly (bubble mesh); here

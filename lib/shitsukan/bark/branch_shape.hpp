@@ -4,9 +4,11 @@
 // Manual
 //   BranchShapeParams shape;                               // MODEL.md §2.3 values
 //   TriangleMesh mesh;  BranchMeshStats stats;
-//   Status s = make_branch_mesh(shape, 0.33f, &mesh, &stats);   // ~3,500 nodes, n = ∇f/|∇f|
+//   Status s = make_branch_mesh(shape, 0.6f, &mesh, &stats);  // 0.33: ~3,500 nodes; n = ∇f/|∇f|
+//   Vec3 p{0.5f, 1.0f, 2.0f};
 //   float f = branch_shape_value(shape, p);                // < 0 inside the wood
 //   LimbDistances d = limb_distances(shape, p);            // trunk / branch zones (fig11)
+//   return s;
 //
 //   AnisotropicGrowth g;  g.r_h = 0.010f;  g.r_n = 0.05f;  g.duration = 100;  // fig11 values
 //   g.centre = branch_base_centre(shape);                  // c = (0, 0, 0)

@@ -2,12 +2,18 @@
 // spring constants that follow from them.
 //
 // Manual
-//   std::vector<ConnectionTriangle> tris = ...;       // corners, node ids, spring ids
-//   std::vector<float> area(n_nodes), face(n_springs);
+//   // two triangles sharing spring 1 (nodes 1-2): a unit square cut along its diagonal
+//   std::vector<ConnectionTriangle> tris = {
+//       {{0, 1, 2}, {0, 1, 2}, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}},   // corners, node ids, springs
+//       {{1, 3, 2}, {3, 4, 1}, {{1, 0, 0}, {1, 1, 0}, {0, 1, 0}}}};
+//   int n_nodes = 4, n_springs = 5;
+//   std::vector<float> area(static_cast<std::size_t>(n_nodes)), face(static_cast<std::size_t>(n_springs));
 //   Status s = connection_areas(tris.data(), int(tris.size()), n_nodes, n_springs,
 //                               area.data(), face.data());
-//   float k    = spring_constant(E, face[s] * D, l0);      // k = E·S/l0, S = |C1-P-C2|·H
-//   float k_sh = shear_spring_constant(G, area[i], D);     // k_sh = G·A/h
+//   float E = 1.07e9f, G = 4.8e8f, D = 0.55f, l0 = 1.0f;  int i = 1;
+//   float k    = spring_constant(E, face[1] * D, l0);      // k = E·S/l0, S = |C1-P-C2|·H
+//   float k_sh = shear_spring_constant(G, area[std::size_t(i)], D);  // k_sh = G·A/h
+//   return s;
 //
 // The paper (§5.1): the element of node N1 is bounded by the closed curve through the
 // midpoints P of its springs and the centroids C of the triangles it forms with its

@@ -1,9 +1,22 @@
 // shitsukan/bark/crack_drawing.hpp — hirota1998 Fig. 4: a broken spring drawn as a crack.
 //
 // Manual
+//   CylinderParams params;  params.N_R = 16;  params.N_H = 12;  // a small trunk (chosen 128 x 64)
+//   params.species = species_preset(Species::camphor);
+//   BarkCylinder bark;
+//   Status s = build_cylinder(params, &bark);
+//   CrackRun run;
+//   if (s) s = grow_and_crack(bark, CrackRunOptions{}, &run);
+//   if (!s) return s;
+//   float T = params.T;
+//   const Vec3* W = bark.net.W.data();
+//   float t = T;
 //   std::vector<CrackRibbon> cracks;
-//   Status s = crack_ribbons(bark, t, W, &cracks);     // one per spring broken by time t
-//   Vec3 quads[2][4];  ribbon_quads(cracks[0], quads);  // fill both quads in a dark colour
+//   s = crack_ribbons(bark, t, W, &cracks);         // one per spring broken by time t
+//   Vec3 quads[2][4];
+//   if (!cracks.empty()) ribbon_quads(cracks[0], quads);  // fill both quads in a dark colour
+//   return s;
+//   #include "shitsukan/bark/crack_events.hpp"
 //
 // The paper (§3.1, Fig. 4): "l is the node distance and l0 the natural length of the spring:
 // a crack appears at the middle of the connection the spring represents, and its width is the

@@ -1,11 +1,13 @@
 // shitsukan/bark/crack_events.hpp — hirota1998 §3: growth and cracking, one break at a time.
 //
 // Manual
+//   CylinderParams params;  params.N_R = 16;  params.N_H = 12;  // chosen 128 x 64
 //   BarkCylinder bark;  Status s = build_cylinder(params, &bark);
 //   CrackRun run;
 //   const float snaps[] = {0.6f * params.T};
 //   CrackRunOptions opt;  opt.snapshot_times = snaps;  opt.snapshot_count = 1;
-//   s = grow_and_crack(bark, opt, &run);    // run.breaks: (spring, time) in order
+//   if (s) s = grow_and_crack(bark, opt, &run);    // run.breaks: (spring, time) in order
+//   return s;
 //
 // The paper grows the inner layer and lets a spring break "when its elongation passes its
 // critical value" (§3.1, Table 1 kappa, sigma); a broken spring is gone for good. Here

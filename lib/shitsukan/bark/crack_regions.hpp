@@ -1,10 +1,21 @@
 // shitsukan/bark/crack_regions.hpp — hirota1998 Table 3: the regions bounded by cracks.
 //
 // Manual
+//   CylinderParams params;  params.N_R = 16;  params.N_H = 12;  // a small trunk (chosen 128 x 64)
+//   params.species = species_preset(Species::camphor);
+//   BarkCylinder bark;
+//   Status s = build_cylinder(params, &bark);
+//   CrackRun run;
+//   if (s) s = grow_and_crack(bark, CrackRunOptions{}, &run);
+//   if (!s) return s;
+//   float T = params.T;
+//   const Vec3* W = bark.net.W.data();
 //   RegionReport rep;
-//   Status s = measure_regions(bark, params.T, bark.net.W.data(), &rep);
-//   rep.mean_width, rep.mean_height, rep.max_width, rep.max_height   // cm, as Table 3
-//   rep.regions[i]: nodes, width, height, wraps, full_height; rep.label[p]: node p's region
+//   s = measure_regions(bark, params.T, bark.net.W.data(), &rep);
+//   // rep.mean_width, rep.mean_height, rep.max_width, rep.max_height   // cm, as Table 3
+//   // rep.regions[i]: nodes, width, height, wraps, full_height; rep.label[p]: node p's region
+//   return s;
+//   #include "shitsukan/bark/crack_events.hpp"
 //
 // Table 3 reports "the dimensions of the area surrounded by cracks" (horizontal x vertical:
 // around the trunk x along it), mean and max, and the text calls them "the vertical and

@@ -4,8 +4,10 @@
 //   CylinderParams p;  p.species = species_preset(Species::pine);
 //   BarkCylinder bark;
 //   Status s = build_cylinder(p, &bark);        // nodes, springs, triangles, constants
-//   bark.node(c, r), bark.spring(c, r, dir)     // indices (spring: -1 where none)
-//   Vec3 x = node_position(bark, i, t, bark.net.W.data());   // unrolled (u, z) at time t
+//   if (!s) return s;
+//   int i = bark.node(3, 5), sp = bark.spring(3, 5, 0);   // indices (spring: -1 where none)
+//   float t = 0.5f * p.T;
+//   Vec3 x = node_position(bark, std::uint32_t(i), t, bark.net.W.data());  // unrolled (u, z) at t
 //
 // Layout (Table 1's R0 = sqrt(3)·L0·N_R/(4 pi) decoded, MODEL.md §1.1): the circumference
 // 2 pi R0 = N_R·(sqrt(3)/2)·L0 holds N_R columns a_h = (sqrt(3)/2)·L0 apart, each with N_H

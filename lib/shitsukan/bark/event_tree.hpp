@@ -1,9 +1,14 @@
 // shitsukan/bark/event_tree.hpp — the next event among many: a min-tree with canonical ties.
 //
 // Manual
+//   std::vector<std::uint64_t> keys = {30, 10, 20, 40};          // canonical keys: ties
+//   auto key_of = [&](std::uint32_t i) { return keys[i]; };
+//   std::size_t n = keys.size();
 //   EventTree tree(n, [&](std::uint32_t i) { return key_of(i); });   // all leaves +inf
-//   tree.set(i, t);  tree.set_many(items, times);                     // O(log n) per change
-//   std::uint32_t next = tree.top();  float t = tree.time(next);      // O(1)
+//   std::uint32_t i = 2;  float t = 0.5f;
+//   tree.set(i, t);                                                  // O(log n) per change
+//   tree.set_many({0, 1}, {0.5f, 0.7f});                             // many at once
+//   std::uint32_t next = tree.top();  float when = tree.time(next);  // O(1): item 2 (key 20 < 30)
 //
 // Leaf i holds a time (or any value to minimise; +inf = never); an inner node holds the index
 // of its smaller child. Equal times go to the smaller canonical key, never to the storage

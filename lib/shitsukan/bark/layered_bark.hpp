@@ -3,12 +3,14 @@
 //
 // Manual
 //   LayeredParams p;                          // pine, a 64 x 48 patch of a 30 cm trunk
+//   p.N_R = 24, p.N_H = 16, p.cycles = 4, p.spin_up_cycles = 1;   // smaller, to be quick
 //   LayeredBark bark;
 //   Status s = bark.build(p);
 //   const FrameRequest frames[] = {{2.6f * p.schedule.T, false}, {3.0f * p.schedule.T, true}};
-//   s = bark.run(frames, 2);                  // 5 cycles, 50 steps each
-//   bark.record()   // per step: time, alive and bonded fractions, breaks, peels
-//   bark.frames()   // the requested states (which nodes are alive, bonded, which springs broke)
+//   if (s) s = bark.run(frames, 2);           // every cycle, 50 steps each
+//   // bark.record(): per step: time, alive and bonded fractions, breaks, peels
+//   // bark.frames(): the requested states (which nodes are alive, bonded, which springs broke)
+//   return s;
 //
 // The model (§4.1-4.2; radii over time in layer_schedule.hpp). Two layers are mechanical:
 // the surface and middle (1), each a lattice of nodes and springs like the two-layer cylinder

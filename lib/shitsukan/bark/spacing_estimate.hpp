@@ -2,6 +2,7 @@
 // (RECONSTRUCTED: the paper cites ref. 12 and gives no formula).
 //
 // Manual
+//   float a_h = 0.286f, k = 2.0e7f, k_sh = 3.0e5f, kappa2 = 1.015f, eps_final = 0.1f;
 //   float L = crack_spacing_estimate(a_h, std::sqrt(k / k_sh), kappa2 - 1, eps_final);
 //   // largest crack spacing [cm]; +inf when the final strain never reaches the threshold
 //

@@ -2,14 +2,22 @@
 // and its equilibrium (the quasi-static limit of the paper's spring-mass dynamics).
 //
 // Manual
-//   SpringNetwork net;
+//   SpringNetwork net;                             // two nodes, one spring
 //   net.dim = 2;                                   // unwrapped cylinder: (u, z) per node
-//   net.X = {...};  net.k_anchor = {...};          // reference positions, shear springs
-//   net.springs = {...};                           // i, j, n, l0, k, growth_rate, eps_c, key
+//   net.X = {{0, 0, 0}, {1, 0, 0}};                // reference positions
+//   net.k_anchor = {1.0f, 1.0f};                   // shear springs
+//   BarkSpring spring;                             // i, j, n, l0, k, growth_rate, eps_c, key
+//   spring.i = 0;  spring.j = 1;  spring.n = {1, 0, 0};  spring.l0 = 1;  spring.k = 10;
+//   spring.growth_rate = 0.01f;  spring.eps_c = 0.05f;  spring.key = 1;
+//   net.springs = {spring};
 //   Status s = finalize_network(net);              // CSR adjacency in canonical order
-//   s = solve_full(net, tol, 1000);                // equilibrium of the intact network
-//   s = relax(net, seeds, 2, tol, &touched);       // after a break: only where it matters
-//   float E = strain_rate(net, spring);            // e_s(t) = t·E_s
+//   float tol = 1e-6f;
+//   if (s) s = solve_full(net, tol, 1000);         // equilibrium of the intact network
+//   const std::uint32_t seeds[2] = {0, 1};
+//   std::vector<std::uint32_t> touched;
+//   if (s) s = relax(net, seeds, 2, tol, &touched);  // after a break: only where it matters
+//   float E = strain_rate(net, 0);                 // e_s(t) = t·E_s
+//   return s;
 //
 // The model (§3.1): each layer is divided into small volumes, each a node; springs join
 // nodes of a layer, shear springs join a node to the one beneath it. In the two-layer model
