@@ -110,6 +110,8 @@ test-cli: deps
 REQUIRED := /usr/include/doctest/doctest.h:doctest-dev /usr/include/stb/stb_image_write.h:libstb-dev
 BENCH_REQUIRED := /usr/include/libnoise/noise.h:libnoise-dev /usr/include/boost/polygon/voronoi.hpp:libboost-dev \
                   /usr/include/CGAL/Surface_mesh.h:libcgal-dev /usr/include/CGAL/Delaunay_triangulation_2.h:libcgal-dev
+# The checks written in Python (tools/*.py: module map, manual snippets, function lengths).
+PY_REQUIRED := /usr/bin/python3:python3
 CONSUMER_REQUIRED := /usr/bin/cmake:cmake /usr/bin/pkg-config:pkg-config /usr/bin/git:git
 MCU_NEWLIB := /usr/lib/arm-none-eabi/newlib/thumb/v7e-m+fp/hard
 MCU_REQUIRED := /usr/bin/arm-none-eabi-g++:gcc-arm-none-eabi \
@@ -264,6 +266,7 @@ check-small: $(SMALL_OBJS)
 HEADERS := $(shell find lib -name '*.hpp' 2>/dev/null | LC_ALL=C sort)
 API_DIR := $(BUILD)/api
 check-api: deps
+	$(call ensure_packages,$(PY_REQUIRED))
 	@$(SUBMAKE) $(LIBRARY)
 	@mkdir -p $(API_DIR)
 	@# 1. every header compiles on its own (it includes what it uses)
@@ -308,6 +311,7 @@ check-api: deps
 # own against the library and, unless tagged "// Manual (compile-only)", run
 # (tools/extract_manuals.py; sources and programs in build/manuals/).
 check-manuals: deps
+	$(call ensure_packages,$(PY_REQUIRED))
 	@$(SUBMAKE) $(LIBRARY)
 	@python3 tools/extract_manuals.py --build --out $(BUILD)/manuals --cxx '$(CXX)' \
 	  --flags '$(CPPFLAGS) $(CXXFLAGS) -O0 -Wno-unused-variable -Wno-unused-but-set-variable' \
@@ -315,6 +319,7 @@ check-manuals: deps
 
 # Issue 16: no function in lib/ over 100 lines (tools/function_lengths.py lists the ones over).
 check-lengths:
+	$(call ensure_packages,$(PY_REQUIRED))
 	@python3 tools/function_lengths.py lib
 
 test-consumers: consumer-deps
