@@ -11,20 +11,25 @@ float level_amplitude(int n, float beta) {
     return float(det_exp(-double(n - 1) * double(beta)));
 }
 
-Status validate_fractal_params(const FractalParams& params, int max_depth) {
-    if (params.R < 0 || params.R > max_depth)
+Status validate_fractal_levels(const char* what, int R, int max_depth, float beta,
+                               const float* corners, int corner_count) {
+    if (R < 0 || R > max_depth)
+        return Status::error(StatusCode::invalid_argument, "%s: R must be in [0, %d] (got %d)",
+                             what, max_depth, R);
+    if (!is_finite(beta) || beta < 0.0f)
         return Status::error(StatusCode::invalid_argument,
-                             "fractal lattice: R must be in [0, %d] (got %d)", max_depth,
-                             params.R);
-    if (!is_finite(params.beta) || params.beta < 0.0f)
-        return Status::error(StatusCode::invalid_argument,
-                             "fractal lattice: beta must be finite and >= 0 (got %g)",
-                             double(params.beta));
-    for (int i = 0; i < 8; ++i)
-        if (!is_finite(params.corners[i]))
+                             "%s: beta must be finite and >= 0 (got %g)", what, double(beta));
+    for (int i = 0; i < corner_count; ++i)
+        if (!is_finite(corners[i]))
             return Status::error(StatusCode::invalid_argument,
-                                 "fractal lattice: corner value %d is not finite (%g)", i,
-                                 double(params.corners[i]));
+                                 "%s: corner value %d is not finite (%g)", what, i,
+                                 double(corners[i]));
+    return Status::success();
+}
+
+Status validate_fractal_params(const FractalParams& params, int max_depth) {
+    SHITSUKAN_TRY(validate_fractal_levels("fractal lattice", params.R, max_depth, params.beta,
+                                          params.corners, 8));
     if (params.noise != NoiseSource::hash && params.noise != NoiseSource::sequential)
         return Status::error(StatusCode::invalid_argument,
                              "fractal lattice: unknown noise source %d", int(params.noise));

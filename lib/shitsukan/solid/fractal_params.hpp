@@ -70,5 +70,9 @@ float level_amplitude(int n, float beta);
 
 // Checks R against [0, max_depth], beta >= 0 and finite, corners finite.
 Status validate_fractal_params(const FractalParams& params, int max_depth);
+// The same three rules for any random fractal of okada1987 §2 (the 3D lattice above, the 2D
+// quadtree of fig. 1): `what` names it in the message.
+Status validate_fractal_levels(const char* what, int R, int max_depth, float beta,
+                               const float* corners, int corner_count);
 
 }  // namespace shitsukan

@@ -4,7 +4,6 @@
 #include <limits>
 
 #include "shitsukan/core/hash.hpp"
-#include "shitsukan/core/scalar.hpp"
 #include "shitsukan/solid/fractal_node.hpp"
 #include "shitsukan/solid/fractal_params.hpp"
 
@@ -12,18 +11,8 @@ namespace shitsukan {
 
 Status build_quadtree_lattice(const QuadtreeParams& params, float* buffer,
                               std::size_t buffer_bytes, int* side_out, int levels) {
-    if (params.R < 0 || params.R > kQuadtreeMaxDepth)
-        return Status::error(StatusCode::invalid_argument,
-                             "quadtree lattice: R must be in [0, %d] (got %d)", kQuadtreeMaxDepth,
-                             params.R);
-    if (!is_finite(params.beta) || params.beta < 0.0f)
-        return Status::error(StatusCode::invalid_argument,
-                             "quadtree lattice: beta must be finite and >= 0 (got %g)",
-                             double(params.beta));
-    for (int i = 0; i < 4; ++i)
-        if (!is_finite(params.corners[i]))
-            return Status::error(StatusCode::invalid_argument,
-                                 "quadtree lattice: corner %d is not finite", i);
+    SHITSUKAN_TRY(validate_fractal_levels("quadtree lattice", params.R, kQuadtreeMaxDepth,
+                                          params.beta, params.corners, 4));
     if (buffer == nullptr || side_out == nullptr)
         return Status::error(StatusCode::invalid_argument, "quadtree lattice: null buffer");
     const int side = (1 << params.R) + 1;
