@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "shitsukan/core/memory_budget.hpp"
 #include "shitsukan/geom/predicates.hpp"
 
 namespace shitsukan {
@@ -198,6 +199,8 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
     if (count > (1 << 28))
         return Status::error(StatusCode::too_large, "build_delaunay: %d points is more than 2^28",
                              count);
+    SHITSUKAN_TRY(check_memory_budget(budget_mul(std::uint64_t(count), kDelaunayBytesPerPoint),
+                                      "build_delaunay: the triangulation of the points"));
     double lo_x = points[0].x, hi_x = points[0].x, lo_y = points[0].y, hi_y = points[0].y;
     for (int i = 0; i < count; ++i) {
         if (!coordinate_in_range(points[i].x) || !coordinate_in_range(points[i].y))

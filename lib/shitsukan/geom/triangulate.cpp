@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "shitsukan/core/memory_budget.hpp"
+
 namespace shitsukan {
 
 namespace {
@@ -76,6 +78,11 @@ Status triangulate_polygon(const std::vector<std::vector<Vec2>>& rings, std::vec
                 return Status::error(StatusCode::invalid_argument,
                                      "triangulate_polygon: ring %zu has a non-finite vertex", r);
     }
+    std::uint64_t vertex_count = 0;
+    for (const std::vector<Vec2>& ring : rings)
+        vertex_count = budget_add(vertex_count, ring.size());
+    SHITSUKAN_TRY(check_memory_budget(budget_mul(vertex_count, kTriangulateBytesPerVertex),
+                                      "triangulate_polygon: the vertex table and ear lists"));
     if (signed_area2(rings[0]) == 0.0)
         return Status::error(StatusCode::degenerate,
                              "triangulate_polygon: outer ring has zero area");

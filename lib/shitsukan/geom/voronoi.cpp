@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "shitsukan/core/assert.hpp"
+#include "shitsukan/core/memory_budget.hpp"
 #include "shitsukan/geom/delaunay.hpp"
 #include "shitsukan/geom/double_double.hpp"
 #include "shitsukan/geom/polygon.hpp"
@@ -105,6 +106,11 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
                      VoronoiCells* out) {
     if (out == nullptr)
         return Status::error(StatusCode::invalid_argument, "voronoi_cells: out is null");
+    if (count < 1 || sites == nullptr)
+        return Status::error(StatusCode::invalid_argument,
+                             "voronoi_cells: need at least 1 site (got %d)", count);
+    SHITSUKAN_TRY(check_memory_budget(budget_mul(std::uint64_t(count), kVoronoiBytesPerSite),
+                                      "voronoi_cells: the cells of the sites"));
     SHITSUKAN_TRY(check_convex_region(region, region_count));
     for (int i = 0; i < region_count; ++i)  // the clipping's exact sides need the range too
         for (double c : {region[i].x, region[i].y})
