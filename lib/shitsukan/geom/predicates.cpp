@@ -1,9 +1,10 @@
-// small-device: yes (no allocation; the exact in-circle path uses under 1 KB of stack)
+// small-device: yes (no allocation; every frame under 2.4 KB of stack, see predicates.hpp)
 #include "shitsukan/geom/predicates.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 namespace shitsukan {
 namespace detail {
@@ -172,11 +173,12 @@ namespace {
 // Each coordinate difference is exact as two doubles (two_diff), so
 //   det = sum over k of (dx_k^2 + dy_k^2) (dx_i dy_j - dx_j dy_i),  (i, j, k) cyclic,
 // expands into 3 * 2 * 2 * 16 = 192 products of four doubles m 2^e (m an integer < 2^53).
-// Each product is an integer of at most 212 bits, placed at bit (e - e_min) of a two's
-// complement accumulator of kSumLimbs 32-bit limbs. Inside the coordinate range
-// (delaunay.hpp: 0 or magnitude in [1e-50, 1e50]) every exponent e of a difference component
-// lies in [-219, 114], so the placements span at most 4 * 333 + 212 + 8 = 1552 bits; 2048
-// are kept. 32-bit limbs and 64-bit products only: no __int128 on a Cortex-M.
+// Each product is an integer of at most 212 bits, added at bit (e - e_min) to one of two
+// accumulators of kSumLimbs 32-bit limbs (the positive products and the negative ones; their
+// difference's sign is the determinant's). Inside the coordinate range (delaunay.hpp: 0 or
+// magnitude in [1e-50, 1e50]) every exponent e of a difference component lies in
+// [-219, 114], so the placements span at most 4 * 333 + 212 + 8 = 1552 bits; 2048 are kept.
+// 32-bit limbs and 64-bit products only: no __int128 on a Cortex-M.
 constexpr int kSumLimbs = 64;  // 2048 bits, 256 bytes
 constexpr int kProductLimbs = 8;
 
@@ -186,47 +188,54 @@ struct Factor {  // a double as m 2^e (m < 2^53), sign apart
     bool negative;
 };
 
-Factor factor_of(double x) {
-    int e = 0;
-    const double f = std::frexp(std::fabs(x), &e);  // |x| = f 2^e, f in [0.5, 1)
-    return {std::uint64_t(std::ldexp(f, 53)), e - 53, x < 0.0};
+Factor factor_of(double x) {  // from the bits: x = m 2^e exactly (subnormals included)
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, 8);
+    const int field = int((bits >> 52) & 0x7ff);
+    const std::uint64_t fraction = bits & 0x000fffffffffffffULL;
+    const bool negative = (bits >> 63) != 0;
+    if (field == 0) return {fraction, -1074, negative};
+    return {fraction | (std::uint64_t(1) << 52), field - 1075, negative};
 }
 
-// p (kProductLimbs limbs) *= m, m < 2^53
-void multiply_limbs(std::uint32_t* p, std::uint64_t m) {
+// p (len limbs, room for kProductLimbs) *= m, m < 2^53; returns the new length
+int multiply_limbs(std::uint32_t* p, int len, std::uint64_t m) {
     const std::uint64_t m_lo = m & 0xffffffffu, m_hi = m >> 32;
     std::uint32_t out[kProductLimbs + 2] = {};
-    for (int i = 0; i < kProductLimbs; ++i) {
-        std::uint64_t carry = 0;
-        for (int j = 0; j < 2; ++j) {
-            const std::uint64_t t = std::uint64_t(p[i]) * (j == 0 ? m_lo : m_hi) + out[i + j] +
-                                    carry;
-            out[i + j] = std::uint32_t(t);
-            carry = t >> 32;
-        }
-        for (int k = i + 2; carry != 0 && k < kProductLimbs + 2; ++k) {
-            const std::uint64_t t = std::uint64_t(out[k]) + carry;
-            out[k] = std::uint32_t(t);
-            carry = t >> 32;
-        }
+    std::uint64_t carry = 0;
+    for (int i = 0; i < len; ++i) {  // p m_lo
+        const std::uint64_t t = std::uint64_t(p[i]) * m_lo + carry;
+        out[i] = std::uint32_t(t);
+        carry = t >> 32;
     }
-    for (int i = 0; i < kProductLimbs; ++i) p[i] = out[i];
+    out[len] = std::uint32_t(carry);
+    carry = 0;
+    for (int i = 0; i < len; ++i) {  // + p m_hi 2^32
+        const std::uint64_t t = std::uint64_t(p[i]) * m_hi + out[i + 1] + carry;
+        out[i + 1] = std::uint32_t(t);
+        carry = t >> 32;
+    }
+    out[len + 1] = std::uint32_t(carry);
+    int n = std::min(len + 2, kProductLimbs);
+    while (n > 1 && out[n - 1] == 0) --n;
+    for (int i = 0; i < n; ++i) p[i] = out[i];
+    return n;
 }
 
-// sum += (negative ? -1 : 1) * p 2^shift, two's complement over kSumLimbs limbs
-void add_shifted(std::uint32_t* sum, const std::uint32_t* p, int shift, bool negative) {
+// sum += p 2^shift (p: len limbs; sum: kSumLimbs limbs, non-negative; the carry stops early)
+void add_shifted(std::uint32_t* sum, const std::uint32_t* p, int len, int shift) {
     const int word = shift / 32, bit = shift % 32;
-    std::uint32_t shifted[kProductLimbs + 1] = {};
-    for (int i = 0; i < kProductLimbs; ++i) {
-        shifted[i] |= p[i] << bit;
-        if (bit) shifted[i + 1] |= p[i] >> (32 - bit);
+    std::uint64_t carry = 0;
+    int i = word;
+    for (int k = 0; k <= len && i < kSumLimbs; ++k, ++i) {
+        const std::uint32_t lo = k < len ? p[k] << bit : 0u;
+        const std::uint32_t hi = (bit && k > 0) ? p[k - 1] >> (32 - bit) : 0u;
+        const std::uint64_t t = std::uint64_t(sum[i]) + (lo | hi) + carry;
+        sum[i] = std::uint32_t(t);
+        carry = t >> 32;
     }
-    std::uint64_t carry = negative ? 1 : 0;  // -x = ~x + 1 over the whole accumulator
-    for (int i = 0; i < kSumLimbs; ++i) {
-        const int k = i - word;
-        std::uint32_t v = (k >= 0 && k <= kProductLimbs) ? shifted[k] : 0u;
-        if (negative) v = ~v;
-        const std::uint64_t t = std::uint64_t(sum[i]) + v + carry;
+    for (; carry != 0 && i < kSumLimbs; ++i) {
+        const std::uint64_t t = std::uint64_t(sum[i]) + carry;
         sum[i] = std::uint32_t(t);
         carry = t >> 32;
     }
@@ -251,23 +260,49 @@ int lifted_cross_terms(const double* const* dx, const double* const* dy, LiftedC
     return n;
 }
 
-// The approximate value of the accumulator times 2^e_min (its sign is exact).
-double accumulator_value(std::uint32_t* sum, int e_min) {
-    const bool negative = (sum[kSumLimbs - 1] >> 31) != 0;
-    if (negative) {  // magnitude: -sum
-        std::uint64_t carry = 1;
-        for (int i = 0; i < kSumLimbs; ++i) {
-            const std::uint64_t t = std::uint64_t(~sum[i]) + carry;
-            sum[i] = std::uint32_t(t);
-            carry = t >> 32;
-        }
-    }
+// The approximate value of (pos - neg) 2^e_min (its sign is exact).
+double accumulator_value(const std::uint32_t* pos, const std::uint32_t* neg, int e_min) {
     int top = kSumLimbs - 1;
-    while (top >= 0 && sum[top] == 0) --top;
+    while (top >= 0 && pos[top] == neg[top]) --top;
     if (top < 0) return 0.0;
+    const bool negative = neg[top] > pos[top];
+    const std::uint32_t* big = negative ? neg : pos;
+    const std::uint32_t* small = negative ? pos : neg;
+    std::uint32_t diff[3] = {};  // the top limbs of big - small (borrow from below ignored:
+    std::int64_t borrow = 0;     // it moves the value by less than 2^-64 of it)
+    for (int i = std::max(0, top - 2), k = 0; i <= top; ++i, ++k) {
+        const std::int64_t t = std::int64_t(big[i]) - small[i] - borrow;
+        borrow = t < 0 ? 1 : 0;
+        diff[k] = std::uint32_t(t + (borrow << 32));
+    }
     double v = 0.0;
-    for (int i = top; i >= 0 && i >= top - 2; --i) v += std::ldexp(double(sum[i]), 32 * i + e_min);
+    for (int i = std::max(0, top - 2), k = 0; i <= top; ++i, ++k)
+        v += std::ldexp(double(diff[k]), 32 * i + e_min);
     return negative ? -v : v;
+}
+
+struct ExactSum {
+    std::uint32_t pos[kSumLimbs], neg[kSumLimbs];
+    int e_min;
+};
+
+// The 16 products of one term's four two-component factors, from factor `level` on, with the
+// partial product p 2^e of the factors before it (prefixes shared: 28 multiplications, not 64).
+void add_products(const double* const* f, int level, const std::uint32_t* p, int len, int e,
+                  bool negative, ExactSum* sum) {
+    for (int c = 0; c < 2; ++c) {
+        const double x = f[level][c];
+        if (x == 0.0) continue;
+        const Factor q = factor_of(x);
+        std::uint32_t next[kProductLimbs];
+        for (int i = 0; i < len; ++i) next[i] = p[i];
+        const int next_len = multiply_limbs(next, len, q.m);
+        const bool sign = negative != q.negative;
+        if (level == 3)
+            add_shifted(sign ? sum->neg : sum->pos, next, next_len, e + q.e - sum->e_min);
+        else
+            add_products(f, level + 1, next, next_len, e + q.e, sign, sum);
+    }
 }
 
 }  // namespace
@@ -284,21 +319,25 @@ double incircle_exact(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
     const double* dy[3] = {ady, bdy, cdy};
     LiftedCross terms[12];
     const int n = lifted_cross_terms(dx, dy, terms);
-    // pass 1: the smallest and largest placement of the 192 products
+    // the lowest and highest placement of the 192 products (bounds: per factor, the smallest
+    // and largest exponent of its non-zero components)
     int e_min = 1 << 30, e_max = -(1 << 30);
-    for (int t = 0; t < n; ++t)
-        for (int combo = 0; combo < 16; ++combo) {
-            int e = 0;
-            bool zero = false;
-            for (int f = 0; f < 4; ++f) {
-                const double x = terms[t].f[f][(combo >> f) & 1];
-                zero = zero || x == 0.0;
-                e += zero ? 0 : factor_of(x).e;
-            }
-            if (zero) continue;
-            e_min = std::min(e_min, e);
-            e_max = std::max(e_max, e);
+    for (int t = 0; t < n; ++t) {
+        int lo = 0, hi = 0;
+        bool zero = false;
+        for (int f = 0; f < 4; ++f) {
+            const double* x = terms[t].f[f];
+            if (x[0] == 0.0 && x[1] == 0.0) zero = true;
+            if (zero) break;
+            const int e0 = x[0] == 0.0 ? factor_of(x[1]).e : factor_of(x[0]).e;
+            const int e1 = x[1] == 0.0 ? e0 : factor_of(x[1]).e;
+            lo += std::min(e0, e1);
+            hi += std::max(e0, e1);
         }
+        if (zero) continue;
+        e_min = std::min(e_min, lo);
+        e_max = std::max(e_max, hi);
+    }
     if (e_min > e_max) return 0.0;  // every product is 0
     if (e_max - e_min + 212 + 9 > 32 * kSumLimbs) {
         // outside the coordinate range: the sign is not guaranteed (as predicates.hpp says);
@@ -309,27 +348,12 @@ double incircle_exact(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
                    terms[t].f[2][1] * terms[t].f[3][1];
         return det;
     }
-    // pass 2: accumulate each product exactly
-    std::uint32_t sum[kSumLimbs] = {};
-    for (int t = 0; t < n; ++t)
-        for (int combo = 0; combo < 16; ++combo) {
-            std::uint32_t p[kProductLimbs] = {1};
-            int e = 0;
-            bool negative = terms[t].negative, zero = false;
-            for (int f = 0; f < 4 && !zero; ++f) {
-                const double x = terms[t].f[f][(combo >> f) & 1];
-                if (x == 0.0) {
-                    zero = true;
-                    break;
-                }
-                const Factor q = factor_of(x);
-                multiply_limbs(p, q.m);
-                e += q.e;
-                negative = negative != q.negative;
-            }
-            if (!zero) add_shifted(sum, p, e - e_min, negative);
-        }
-    return accumulator_value(sum, e_min);
+    // every product exactly, the positive and the negative ones apart
+    ExactSum sum{};
+    sum.e_min = e_min;
+    const std::uint32_t one[1] = {1};
+    for (int t = 0; t < n; ++t) add_products(terms[t].f, 0, one, 1, 0, terms[t].negative, &sum);
+    return accumulator_value(sum.pos, sum.neg, e_min);
 }
 
 namespace {

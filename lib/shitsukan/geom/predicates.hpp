@@ -16,9 +16,11 @@
 // every call; when the determinant is too close to zero the same determinant is evaluated
 // exactly: orient2d and in-circle with exact coordinate differences with floating-point
 // expansions (sums of non-overlapping doubles, Shewchuk's stage B), the general in-circle as
-// 192 products of four doubles summed in a 2048-bit fixed-point integer (32-bit limbs, no
-// heap, under 1.2 KB of stack: Shewchuk's full expansion product needed 37.8 KB, too much for
-// a microcontroller; issue 12). Every stack frame here stays under 2.4 KB.
+// 192 products of four doubles summed in two 2048-bit fixed-point integers (32-bit limbs, no
+// heap, about 1.3 KB of stack; Shewchuk's full expansion product needed 37.8 KB, too much
+// for a microcontroller: issue 12; ~2x slower, on the rare calls with inexact differences).
+// The square lattice's cocircular case (an axis-parallel rectangle) is decided by
+// comparisons before any exact stage. Every stack frame here stays under 2.4 KB.
 #pragma once
 
 #include "shitsukan/core/vec.hpp"
