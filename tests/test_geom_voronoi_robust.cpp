@@ -280,3 +280,74 @@ TEST_CASE("fuzz finding: a site 2.3e48 away and one at 25600 from a unit hexagon
     REQUIRE(k1 == 6);
     CHECK(polygon_area(v1, k1) == doctest::Approx(polygon_area(hex, 6)).epsilon(1e-15));
 }
+
+TEST_CASE("fuzz finding 8: a far site's cell is not invented between nearly parallel edges") {
+    // A hexagon whose opposite edges 0 and 3 are parallel only up to 1e-16 (their lines meet
+    // 3.7e16 away) and sites 2.3e48 and 25600 away. The far site's cell (x > 1.17e48) reached
+    // the hexagon's edge lines at points 1e48 out, rounded by ~1e32: a point constructed on
+    // edge 0's line then fell on the wrong side of edge 3's line, 1.7 away, and the clip
+    // joined the two lines at their meeting point: a cell of area -3e16 with an ok Status.
+    // Cells reaching beyond a guard box around the region are now clipped to it first.
+    const Vec2d hex[6] = {{0x1p+0, 0x0p+0},
+                          {0x1.0000000000001p-1, 0x1.bb67ae8584caap-1},
+                          {-0x1.ffffffffffffcp-2, 0x1.bb67ae8584cabp-1},
+                          {-0x1p+0, 0x1.1a62632145c07p-53},
+                          {-0x1.0000000000002p-1, -0x1.bb67ae8584ca8p-1},
+                          {0x1.0000000000001p-1, -0x1.bb67ae8584c96p-1}};
+    const Vec2d sites[2] = {{0x1.98f00000141p+160, 0x1.80cp+14}, {-0x1.9p+14, 0x1.04p-1}};
+    REQUIRE(check_convex_region(hex, 6).ok());
+    VoronoiCells cells;
+    REQUIRE(voronoi_cells(sites, 2, hex, 6, &cells).ok());
+    int k0, k1;
+    cells.cell(0, &k0);
+    const Vec2d* v1 = cells.cell(1, &k1);
+    CHECK(k0 == 0);  // before: 4 vertices, one at (-1.9e16, 3.2e16)
+    REQUIRE(k1 == 6);
+    for (int i = 0; i < 6; ++i) CHECK(v1[i] == hex[(i + 3) % 6]);  // from the smallest vertex
+    require_tiling(sites, 2, hex, 6);
+    // the same far cell seen through the public clip: nothing of it is in the hexagon
+    std::vector<ClipVertex> poly(3), scratch;
+    poly[0].p = {0x1.0p+160, -0x1.0p+163};
+    poly[1].p = {0x1.0p+163, 0.0};
+    poly[2].p = {0x1.0p+160, 0x1.0p+163};
+    clip_to_convex_region(&poly, hex, 6, &scratch);
+    CHECK(poly.empty());
+}
+
+TEST_CASE("incircle_exact: fixed-point sum, signs consistent under swaps, rotations, scaling") {
+    // incircle_exact sums 192 products of four doubles in a 2048-bit integer (issue 12: the
+    // expansion version needed 37.8 KB of stack). Its sign was compared with the expansion
+    // version on 2.8 million inputs (0 differences, 435,040 exact zeros) when it was written;
+    // here: properties that any exact sign has, on inputs whose differences are inexact
+    // (magnitudes 1e-40 .. 1e40 mixed), and exact zeros of scaled cocircular points.
+    Pcg32 rng(12, 5);
+    int checked = 0;
+    for (int it = 0; it < 20000; ++it) {
+        Vec2d v[4];
+        for (Vec2d& p : v) {
+            const double big = std::ldexp(1.0, int(rng.uniform_double() * 200) - 100);
+            p = {(rng.uniform_double() - 0.5) * big, (rng.uniform_double() - 0.5) * big};
+        }
+        if (it % 2) v[3] = v[0] + Vec2d{std::ldexp(v[0].x, -60), 0.0};  // nearly on the circle
+        const double s = incircle_exact(v[0], v[1], v[2], v[3]);
+        const double swapped = incircle_exact(v[1], v[0], v[2], v[3]);
+        const double rotated = incircle_exact(v[1], v[2], v[0], v[3]);
+        const double scaled = incircle_exact(v[0] * 0x1p-40, v[1] * 0x1p-40, v[2] * 0x1p-40,
+                                             v[3] * 0x1p-40);
+        CHECK((s > 0) == (swapped < 0));
+        CHECK((s < 0) == (swapped > 0));
+        CHECK((s > 0) == (rotated > 0));
+        CHECK((s < 0) == (rotated < 0));
+        CHECK((s > 0) == (scaled > 0));
+        CHECK((s < 0) == (scaled < 0));
+        ++checked;
+    }
+    CHECK(checked == 20000);
+    // (3, 4), (5, 0), (0, 5), (-4, 3) on the circle of radius 5, scaled by 2^-130 and 2^130
+    for (double k : {0x1p-130, 1.0, 0x1p130}) {
+        const Vec2d a{3 * k, 4 * k}, b{-4 * k, 3 * k}, c{0, -5 * k}, d{5 * k, 0};
+        CHECK(incircle_exact(a, b, c, d) == 0.0);
+        CHECK(incircle_exact(a, b, c, Vec2d{4.5 * k, 0}) > 0.0);
+        CHECK(incircle_exact(a, b, c, Vec2d{std::nextafter(5 * k, 10 * k), 0}) < 0.0);
+    }
+}

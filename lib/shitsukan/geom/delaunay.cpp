@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "shitsukan/core/memory_budget.hpp"
 #include "shitsukan/geom/predicates.hpp"
 
 namespace shitsukan {
@@ -188,17 +189,25 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
     return build_delaunay(points, count, out, cover_lo, cover_hi, false);
 }
 
-Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out, Vec2d cover_lo,
-                      Vec2d cover_hi, bool keep_hilbert_numbering) {
-    if (out == nullptr)
-        return Status::error(StatusCode::invalid_argument, "build_delaunay: out is null");
+namespace {
+
+// The steps of build_delaunay (delaunay.hpp: "Algorithm"), in order.
+
+struct Box {
+    double lo_x, hi_x, lo_y, hi_y;
+};
+
+// Step 1: the arguments, the coordinate range and the points' bounding box.
+Status check_points(const Vec2d* points, int count, Box* data) {
     if (count < 1 || points == nullptr)
         return Status::error(StatusCode::invalid_argument,
                              "build_delaunay: need at least 1 point (got %d)", count);
     if (count > (1 << 28))
         return Status::error(StatusCode::too_large, "build_delaunay: %d points is more than 2^28",
                              count);
-    double lo_x = points[0].x, hi_x = points[0].x, lo_y = points[0].y, hi_y = points[0].y;
+    SHITSUKAN_TRY(check_memory_budget(budget_mul(std::uint64_t(count), kDelaunayBytesPerPoint),
+                                      "build_delaunay: the triangulation of the points"));
+    *data = {points[0].x, points[0].x, points[0].y, points[0].y};
     for (int i = 0; i < count; ++i) {
         if (!coordinate_in_range(points[i].x) || !coordinate_in_range(points[i].y))
             return Status::error(StatusCode::invalid_argument,
@@ -206,12 +215,19 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
                                  "or of magnitude in [%g, %g] (exact predicates)",
                                  i, points[i].x, points[i].y, kDelaunayMinCoordinate,
                                  kDelaunayMaxCoordinate);
-        lo_x = std::min(lo_x, points[i].x);
-        hi_x = std::max(hi_x, points[i].x);
-        lo_y = std::min(lo_y, points[i].y);
-        hi_y = std::max(hi_y, points[i].y);
+        data->lo_x = std::min(data->lo_x, points[i].x);
+        data->hi_x = std::max(data->hi_x, points[i].x);
+        data->lo_y = std::min(data->lo_y, points[i].y);
+        data->hi_y = std::max(data->hi_y, points[i].y);
     }
-    double data_lo_x = lo_x, data_hi_x = hi_x, data_lo_y = lo_y, data_hi_y = hi_y;
+    return Status::success();
+}
+
+// Step 2, the frame (Bowyer 1981's "supertriangle", here a square of 4 points): 10
+// half-extents out from the centre of the points and of the box to cover, so frame points
+// never fall near the data. Appended to out->points.
+Status add_frame(Box data, Vec2d cover_lo, Vec2d cover_hi, DelaunayTriangulation* out) {
+    Box all = data;
     if (cover_lo.x <= cover_hi.x && cover_lo.y <= cover_hi.y) {
         for (double c : {cover_lo.x, cover_lo.y, cover_hi.x, cover_hi.y})
             if (!(std::fabs(c) <= kDelaunayMaxCoordinate))
@@ -222,16 +238,13 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
         // smallest coordinate of the range (the box grows by at most 1e-50)
         cover_lo = {outward_into_range(cover_lo.x, -1.0), outward_into_range(cover_lo.y, -1.0)};
         cover_hi = {outward_into_range(cover_hi.x, 1.0), outward_into_range(cover_hi.y, 1.0)};
-        lo_x = std::min(lo_x, cover_lo.x);
-        hi_x = std::max(hi_x, cover_hi.x);
-        lo_y = std::min(lo_y, cover_lo.y);
-        hi_y = std::max(hi_y, cover_hi.y);
+        all.lo_x = std::min(all.lo_x, cover_lo.x);
+        all.hi_x = std::max(all.hi_x, cover_hi.x);
+        all.lo_y = std::min(all.lo_y, cover_lo.y);
+        all.hi_y = std::max(all.hi_y, cover_hi.y);
     }
-    out->input_count = count;
-    out->points.assign(points, points + count);
-    // The frame: a square 10 half-extents out, so frame points never fall near the data.
-    double cx = 0.5 * (lo_x + hi_x), cy = 0.5 * (lo_y + hi_y);
-    double half = std::max(hi_x - lo_x, hi_y - lo_y) * 0.5;
+    double cx = 0.5 * (all.lo_x + all.hi_x), cy = 0.5 * (all.lo_y + all.hi_y);
+    double half = std::max(all.hi_x - all.lo_x, all.hi_y - all.lo_y) * 0.5;
     // Points far narrower than their coordinates ((0, 0.5) and (1e-17, 0.5)) would put the
     // frame within rounding of the data (0.5 + 5e-17 == 0.5): at least 2^-20 of the magnitude.
     half = std::max(half, std::ldexp(std::max(std::fabs(cx), std::fabs(cy)), -20));
@@ -243,24 +256,27 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
     out->points.push_back({fx1, fy0});
     out->points.push_back({fx1, fy1});
     out->points.push_back({fx0, fy1});
+    return Status::success();
+}
 
-    // Insertion order: Hilbert index, then coordinates, then index (duplicates end adjacent,
-    // the smallest index first).
-    struct Key {
-        std::uint64_t h;
-        int i;
-    };
-    std::vector<Key> order(static_cast<std::size_t>(count));
-    lo_x = data_lo_x;
-    lo_y = data_lo_y;
-    double sx = data_hi_x > lo_x ? 65535.0 / (data_hi_x - lo_x) : 0.0;
-    double sy = data_hi_y > lo_y ? 65535.0 / (data_hi_y - lo_y) : 0.0;
+struct HilbertKey {
+    std::uint64_t h;
+    int i;
+};
+
+// Step 3, the insertion order: Hilbert index on a 2^16 grid over the points' box, then
+// coordinates, then index (duplicates end adjacent, the smallest index first).
+std::vector<HilbertKey> hilbert_order(const Vec2d* points, int count, Box data) {
+    std::vector<HilbertKey> order(static_cast<std::size_t>(count));
+    const double lo_x = data.lo_x, lo_y = data.lo_y;
+    double sx = data.hi_x > lo_x ? 65535.0 / (data.hi_x - lo_x) : 0.0;
+    double sy = data.hi_y > lo_y ? 65535.0 / (data.hi_y - lo_y) : 0.0;
     for (int i = 0; i < count; ++i) {
         auto gx = std::uint32_t((points[i].x - lo_x) * sx);
         auto gy = std::uint32_t((points[i].y - lo_y) * sy);
         order[std::size_t(i)] = {hilbert_index(std::min(gx, 65535u), std::min(gy, 65535u)), i};
     }
-    std::sort(order.begin(), order.end(), [&](const Key& a, const Key& b) {
+    std::sort(order.begin(), order.end(), [&](const HilbertKey& a, const HilbertKey& b) {
         if (a.h != b.h) return a.h < b.h;
         const Vec2d& pa = points[a.i];
         const Vec2d& pb = points[b.i];
@@ -268,9 +284,15 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
         if (pa.y != pb.y) return pa.y < pb.y;
         return a.i < b.i;
     });
+    return order;
+}
+
+// Step 4, the incremental insertion (Bowyer 1981 / Watson 1981) in Hilbert numbering (point
+// k = points[order[k].i]), so neighbouring points are neighbours in memory. A duplicate point
+// is not inserted: it is recorded in duplicate_of.
+Status insert_in_order(const Vec2d* points, int count, const std::vector<HilbertKey>& order,
+                       DelaunayTriangulation* out) {
     out->duplicate_of.assign(std::size_t(count), -1);
-    // Triangulate in Hilbert numbering (point k = points[order[k].i]) so that neighbouring
-    // points are neighbours in memory, then number the vertices back to the input's indices.
     for (std::size_t k = 0; k < order.size(); ++k) out->points[k] = points[order[k].i];
     Builder builder(out);
     builder.start_frame();
@@ -289,6 +311,13 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
                                  "(its triangle's circle does not hold it)",
                                  i, points[i].x, points[i].y);
     }
+    return Status::success();
+}
+
+// Step 5: the vertices numbered back to the input's indices (unless the caller keeps the
+// Hilbert numbering), the insertion order and one triangle per point.
+void finish_numbering(const Vec2d* points, int count, const std::vector<HilbertKey>& order,
+                      bool keep_hilbert_numbering, DelaunayTriangulation* out) {
     if (!keep_hilbert_numbering) {
         std::copy(points, points + count, out->points.begin());
         for (DelaunayTriangle& t : out->triangles)
@@ -300,6 +329,22 @@ Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out
     out->point_triangle.assign(std::size_t(count) + 4, -1);
     for (std::size_t t = 0; t < out->triangles.size(); ++t)
         for (int v : out->triangles[t].v) out->point_triangle[std::size_t(v)] = int(t);
+}
+
+}  // namespace
+
+Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out, Vec2d cover_lo,
+                      Vec2d cover_hi, bool keep_hilbert_numbering) {
+    if (out == nullptr)
+        return Status::error(StatusCode::invalid_argument, "build_delaunay: out is null");
+    Box data{};
+    SHITSUKAN_TRY(check_points(points, count, &data));
+    out->input_count = count;
+    out->points.assign(points, points + count);
+    SHITSUKAN_TRY(add_frame(data, cover_lo, cover_hi, out));
+    const std::vector<HilbertKey> order = hilbert_order(points, count, data);
+    SHITSUKAN_TRY(insert_in_order(points, count, order, out));
+    finish_numbering(points, count, order, keep_hilbert_numbering, out);
     return Status::success();
 }
 

@@ -4,6 +4,8 @@
 #include <cstring>
 #include <unordered_map>
 
+#include "shitsukan/core/memory_budget.hpp"
+
 namespace shitsukan {
 namespace {
 
@@ -34,6 +36,17 @@ Status build_planar_subdivision(const Vec2d* vertices, const int* offsets, int p
     if (out == nullptr || offsets == nullptr || polygon_count < 0)
         return Status::error(StatusCode::invalid_argument,
                              "build_planar_subdivision: bad arguments");
+    if (polygon_count > 0 && vertices == nullptr)
+        return Status::error(StatusCode::invalid_argument,
+                             "build_planar_subdivision: vertices is null");
+    if (polygon_count > 0 && offsets[polygon_count] < offsets[0])
+        return Status::error(StatusCode::invalid_argument,
+                             "build_planar_subdivision: offsets[%d] = %d is below offsets[0] = %d",
+                             polygon_count, offsets[polygon_count], offsets[0]);
+    const std::uint64_t vertex_refs =
+        polygon_count > 0 ? std::uint64_t(std::int64_t(offsets[polygon_count]) - offsets[0]) : 0;
+    SHITSUKAN_TRY(check_memory_budget(budget_mul(vertex_refs, kPlanarSubdivisionBytesPerVertex),
+                                      "build_planar_subdivision: the vertex and edge tables"));
     out->vertices.clear();
     out->edges.clear();
     out->face_offsets.assign(1, 0);

@@ -24,15 +24,22 @@
 // refused with a Status. Why shared edges: tokai1994 perturbs each edge of the scale pattern
 // once, so the two scales on its sides keep fitting each other (processing 4).
 // Algorithm: one pass over the polygons' edges with two hash maps (vertex bits -> vertex,
-// vertex pair -> edge): O(total vertex count) expected time and memory.
+// vertex pair -> edge): O(total vertex count) expected time and memory; too_large at once
+// when the total vertex count times kPlanarSubdivisionBytesPerVertex is over the memory budget
+// (core/memory_budget.hpp).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/core/vec.hpp"
 
 namespace shitsukan {
+
+// Working set per polygon vertex (chosen here, from the containers: a vertex 16 B and its hash
+// node ~40 B, an edge 16 B and its hash node ~40 B, a face edge 4 B = 116 B, rounded up).
+constexpr std::uint64_t kPlanarSubdivisionBytesPerVertex = 128;
 
 struct PlanarSubdivision {
     struct Edge {

@@ -209,102 +209,176 @@ bool lines_meet(Vec2d a0, Vec2d a1, Vec2d b0, Vec2d b1, Vec2d* x) {
 
 }  // namespace
 
-void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, int m, double snap,
-                           std::vector<ClipVertex>* scratch) {
+namespace {
+
+// The line a clip step cuts with: region edge k (k >= 0: labels and snapping apply) or edge j
+// of the guard box (k = -2 - j: no labels, no snapping; see clip_to_guard_box).
+struct ClipLine {
+    Vec2d b0, b1;
+    int k;
+};
+
+// The line along which the edge leaving a vertex runs (ClipVertex::along), as two points.
+void along_line(int along, const Vec2d* region, int m, const Vec2d* box, Vec2d* p0, Vec2d* p1) {
+    if (along >= 0) {
+        *p0 = region[along];
+        *p1 = region[(along + 1) % m];
+    } else {
+        const int j = -2 - along;
+        *p0 = box[j];
+        *p1 = box[(j + 1) % 4];
+    }
+}
+
+// Sutherland-Hodgman step 1: the exact side of every vertex (orient2d > 0: inside), with
+// vertices within `snap` of a region edge's line moved onto it and labelled. Returns true
+// when every vertex is strictly inside (nothing to cut).
+bool classify_vertices(std::vector<ClipVertex>& in, const ClipLine& line, double snap,
+                       double* side) {
+    const Vec2d b0 = line.b0, b1 = line.b1;
+    const int k = line.k;
+    const double edge_length = length(b1 - b0);
+    bool all_inside = true;
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        ClipVertex& v = in[i];
+        double s = has_label(v, k) ? 0.0 : orient2d(b0, b1, v.p);
+        if (k >= 0 && s != 0.0 && std::fabs(s) <= snap * edge_length) {  // |s| = dist * |b1 - b0|
+            s = 0.0;
+            if (b0.x == b1.x)
+                v.p.x = b0.x;
+            else if (b0.y == b1.y)
+                v.p.y = b0.y;
+            else
+                v.p = v.p - (b1 - b0) * (cross(b1 - b0, v.p - b0) / (edge_length * edge_length));
+        }
+        if (s == 0.0 && k >= 0) add_label(v, k);
+        side[i] = s;
+        all_inside = all_inside && s > 0.0;
+    }
+    return all_inside;
+}
+
+// Sutherland-Hodgman step 2, the intersection: where the polygon edge cur -> nxt crosses the
+// line, constructed from the edge's support (a bisector or a line it runs along) when it has
+// one, else interpolated between the end points in lexicographic order (same bits from both
+// cells that share the edge).
+ClipVertex cut_edge(const ClipVertex& cur, const ClipVertex& nxt, double sc, double sn,
+                    const ClipLine& line, const Vec2d* region, int m, const Vec2d* box) {
+    const Vec2d b0 = line.b0, b1 = line.b1;
+    const int k = line.k;
+    const ClipVertex* a = &cur;
+    const ClipVertex* b = &nxt;
+    double sa = sc, sb = sn;
+    if (lex_less(b->p, a->p)) {
+        a = &nxt;
+        b = &cur;
+        sa = sn;
+        sb = sc;
+    }
+    ClipVertex x;
+    bool made = false;
+    if (cur.has_bisector) {
+        made = bisector_meets_line(cur.bisector[0], cur.bisector[1], b0, b1, &x.p);
+    } else if (cur.along != -1) {
+        const int j = cur.along;
+        const int lines = k >= 0 ? m : 4;  // consecutive edges of one polygon: their vertex
+        if ((j >= 0) == (k >= 0) && ((j >= 0 ? j : -2 - j) + 1) % lines == (k >= 0 ? k : -2 - k))
+            x.p = b0, made = true;
+        else if ((j >= 0) == (k >= 0) &&
+                 ((k >= 0 ? k : -2 - k) + 1) % lines == (j >= 0 ? j : -2 - j))
+            x.p = b1, made = true;
+        else {
+            Vec2d p0, p1;
+            along_line(j, region, m, box, &p0, &p1);
+            made = lines_meet(p0, p1, b0, b1, &x.p);
+        }
+    }
+    if (!made) {
+        double t = sa / (sa - sb);
+        x.p = {a->p.x + t * (b->p.x - a->p.x), a->p.y + t * (b->p.y - a->p.y)};
+    }
+    if (b0.x == b1.x) x.p.x = b0.x;  // on an axis-parallel edge: exact coordinate
+    if (b0.y == b1.y) x.p.y = b0.y;
+    if (k >= 0) add_label(x, k);
+    for (int j = 0; j < 2; ++j)
+        if (a->on[j] >= 0 && has_label(*b, a->on[j])) add_label(x, a->on[j]);
+    if (sc > 0.0) {  // leaving: the boundary continues along the line
+        x.along = k;
+    } else {  // entering: the rest of the cut edge
+        x.has_bisector = cur.has_bisector;
+        x.bisector[0] = cur.bisector[0];
+        x.bisector[1] = cur.bisector[1];
+        x.along = cur.along;
+    }
+    return x;
+}
+
+// One Sutherland-Hodgman step (Sutherland & Hodgman 1974): the part of *poly on the inner
+// side of the line (left of b0 -> b1), in place.
+void clip_step(std::vector<ClipVertex>* poly, const ClipLine& line, double snap,
+               const Vec2d* region, int m, const Vec2d* box, std::vector<ClipVertex>* scratch,
+               std::vector<double>* side_heap) {
     constexpr int kStackSides = 64;
     double side_stack[kStackSides];
-    std::vector<double> side_heap;
-    for (int k = 0; k < m && !poly->empty(); ++k) {
-        const Vec2d b0 = region[k], b1 = region[(k + 1) % m];
-        const double edge_length = length(b1 - b0);
-        std::vector<ClipVertex>& in = *poly;
-        std::vector<ClipVertex>& out = *scratch;
-        out.clear();
-        const int n = int(in.size());
-        double* side = side_stack;
-        if (n > kStackSides) {
-            side_heap.resize(std::size_t(n));
-            side = side_heap.data();
-        }
-        bool all_inside = true;
-        for (int i = 0; i < n; ++i) {
-            ClipVertex& v = in[std::size_t(i)];
-            double s = has_label(v, k) ? 0.0 : orient2d(b0, b1, v.p);
-            if (s != 0.0 && std::fabs(s) <= snap * edge_length) {  // |s| = distance * |b1 - b0|
-                s = 0.0;
-                if (b0.x == b1.x)
-                    v.p.x = b0.x;
-                else if (b0.y == b1.y)
-                    v.p.y = b0.y;
-                else
-                    v.p =
-                        v.p - (b1 - b0) * (cross(b1 - b0, v.p - b0) / (edge_length * edge_length));
-            }
-            if (s == 0.0) add_label(v, k);
-            side[i] = s;
-            all_inside = all_inside && s > 0.0;
-        }
-        if (all_inside) continue;  // nothing to cut (the common case inside the region)
-        for (int i = 0; i < n; ++i) {
-            const ClipVertex& cur = in[std::size_t(i)];
-            const ClipVertex& nxt = in[std::size_t((i + 1) % n)];
-            double sc = side[i];
-            double sn = side[(i + 1) % n];
-            if (sc >= 0.0) {
-                out.push_back(cur);
-                if (sc == 0.0 && sn <= 0.0) {  // the boundary continues along edge k
-                    out.back().has_bisector = false;
-                    out.back().along = k;
-                }
-            }
-            if ((sc > 0.0 && sn < 0.0) || (sc < 0.0 && sn > 0.0)) {
-                // canonical order of the segment's end points: the same bits from both cells
-                const ClipVertex* a = &cur;
-                const ClipVertex* b = &nxt;
-                double sa = sc, sb = sn;
-                if (lex_less(b->p, a->p)) {
-                    a = &nxt;
-                    b = &cur;
-                    sa = sn;
-                    sb = sc;
-                }
-                ClipVertex x;
-                bool made = false;
-                if (cur.has_bisector) {
-                    made = bisector_meets_line(cur.bisector[0], cur.bisector[1], b0, b1, &x.p);
-                } else if (cur.along >= 0) {
-                    const int j = cur.along;
-                    if ((j + 1) % m == k)
-                        x.p = b0, made = true;  // consecutive region edges: their vertex
-                    else if ((k + 1) % m == j)
-                        x.p = b1, made = true;
-                    else
-                        made = lines_meet(region[j], region[(j + 1) % m], b0, b1, &x.p);
-                }
-                if (!made) {
-                    double t = sa / (sa - sb);
-                    x.p = {a->p.x + t * (b->p.x - a->p.x), a->p.y + t * (b->p.y - a->p.y)};
-                }
-                if (b0.x == b1.x) x.p.x = b0.x;  // on an axis-parallel edge: exact coordinate
-                if (b0.y == b1.y) x.p.y = b0.y;
-                add_label(x, k);
-                for (int j = 0; j < 2; ++j)
-                    if (a->on[j] >= 0 && has_label(*b, a->on[j])) add_label(x, a->on[j]);
-                if (sc > 0.0) {  // leaving: the boundary continues along edge k
-                    x.along = k;
-                } else {  // entering: the rest of the cut edge
-                    x.has_bisector = cur.has_bisector;
-                    x.bisector[0] = cur.bisector[0];
-                    x.bisector[1] = cur.bisector[1];
-                    x.along = cur.along;
-                }
-                out.push_back(x);
-            }
-        }
-        poly->swap(out);
+    std::vector<ClipVertex>& in = *poly;
+    const int n = int(in.size());
+    double* side = side_stack;
+    if (n > kStackSides) {
+        side_heap->resize(std::size_t(n));
+        side = side_heap->data();
     }
-    // drop repeated points (a vertex exactly on a line can meet an intersection's bits)
-    std::vector<ClipVertex>& v = *poly;
+    if (classify_vertices(in, line, snap, side)) return;  // the common case inside the region
+    std::vector<ClipVertex>& out = *scratch;
+    out.clear();
+    for (int i = 0; i < n; ++i) {
+        const ClipVertex& cur = in[std::size_t(i)];
+        const ClipVertex& nxt = in[std::size_t((i + 1) % n)];
+        const double sc = side[i], sn = side[(i + 1) % n];
+        if (sc >= 0.0) {
+            out.push_back(cur);
+            if (sc == 0.0 && sn <= 0.0) {  // the boundary continues along the line
+                out.back().has_bisector = false;
+                out.back().along = line.k;
+            }
+        }
+        if ((sc > 0.0 && sn < 0.0) || (sc < 0.0 && sn > 0.0))
+            out.push_back(cut_edge(cur, nxt, sc, sn, line, region, m, box));
+    }
+    poly->swap(out);
+}
+
+// The guard box: the region's bounding box grown by its larger side on every side (chosen
+// here: far enough that no region point is near it, near enough that its points are rounded
+// at the region's scale). A cell whose vertices reach beyond it (Voronoi vertices 1e49 away,
+// from a site 1e48 away) is first clipped to it: otherwise such a vertex, rounded by ~1e33,
+// is on the wrong side of a region edge 1.7 away from the edge it was constructed on, and
+// the clip invents a wrong cell (fuzz finding 8: nearly parallel hexagon edges). The box
+// holds the region, so this changes no exact result.
+void guard_box(const Vec2d* region, int m, Vec2d box[4]) {
+    Vec2d lo = region[0], hi = region[0];
+    for (int i = 1; i < m; ++i) {
+        lo = {std::min(lo.x, region[i].x), std::min(lo.y, region[i].y)};
+        hi = {std::max(hi.x, region[i].x), std::max(hi.y, region[i].y)};
+    }
+    const double w = std::max(hi.x - lo.x, hi.y - lo.y);
+    lo = {lo.x - w, lo.y - w};
+    hi = {hi.x + w, hi.y + w};
+    box[0] = lo;
+    box[1] = {hi.x, lo.y};
+    box[2] = hi;
+    box[3] = {lo.x, hi.y};
+}
+
+bool reaches_beyond(const std::vector<ClipVertex>& poly, const Vec2d box[4]) {
+    for (const ClipVertex& v : poly)
+        if (!(v.p.x >= box[0].x && v.p.x <= box[2].x && v.p.y >= box[0].y && v.p.y <= box[2].y))
+            return true;
+    return false;
+}
+
+// The end of clipping: repeated points dropped (a vertex exactly on a line can meet an
+// intersection's bits), their labels merged; fewer than 3 vertices: empty.
+void drop_repeated_points(std::vector<ClipVertex>& v) {
     std::size_t w = 0;
     for (std::size_t i = 0; i < v.size(); ++i) {
         if (w > 0 && v[w - 1].p == v[i].p) {
@@ -321,6 +395,23 @@ void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, i
         v.pop_back();
     }
     if (v.size() < 3) v.clear();
+}
+
+}  // namespace
+
+void clip_to_convex_region(std::vector<ClipVertex>* poly, const Vec2d* region, int m, double snap,
+                           std::vector<ClipVertex>* scratch) {
+    std::vector<double> side_heap;
+    Vec2d box[4];
+    guard_box(region, m, box);
+    if (reaches_beyond(*poly, box))
+        for (int j = 0; j < 4 && !poly->empty(); ++j)
+            clip_step(poly, {box[j], box[(j + 1) % 4], -2 - j}, snap, region, m, box, scratch,
+                      &side_heap);
+    for (int k = 0; k < m && !poly->empty(); ++k)
+        clip_step(poly, {region[k], region[(k + 1) % m], k}, snap, region, m, box, scratch,
+                  &side_heap);
+    drop_repeated_points(*poly);
 }
 
 }  // namespace shitsukan

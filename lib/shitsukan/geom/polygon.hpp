@@ -46,6 +46,11 @@
 // is then correctly rounded and independent of how far away the edge's end points are (a
 // Voronoi vertex 1e9 away no longer drags the clip point off by 1e-7). Without a support the
 // intersection is interpolated between the end points.
+// A polygon reaching beyond the guard box (the region's bounding box grown by its larger side
+// on every side, chosen here) is clipped to that box first, the same way: a vertex 1e48 out
+// is rounded by ~1e32 and could not be judged against region edges 1 apart (two nearly
+// parallel edges made a far cell into a sliver between them: fuzz finding 8). The box holds
+// the region, so the exact result is the same.
 // Cost: area, centroid and containment O(n); clipping O(n m) for n cell and m region vertices.
 #pragma once
 

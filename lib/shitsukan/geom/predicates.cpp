@@ -1,7 +1,10 @@
-// small-device: yes (no allocation; the exact in-circle path uses ~40 KB of stack)
+// small-device: yes (no allocation; every frame under 2.4 KB of stack, see predicates.hpp)
 #include "shitsukan/geom/predicates.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace shitsukan {
 namespace detail {
@@ -164,21 +167,142 @@ double orient2d(Vec2d a, Vec2d b, Vec2d c) {
 
 namespace {
 
-// lift = dx^2 + dy^2 for exact 2-component differences dx, dy (at most 16 components).
-int lift(const double* dx, const double* dy, double* out) {
-    double xx[8], yy[8], tmp[4], acc[8];
-    int xl = multiply_expansions(2, dx, 2, dx, xx, tmp, acc);
-    int yl = multiply_expansions(2, dy, 2, dy, yy, tmp, acc);
-    return fast_expansion_sum(xl, xx, yl, yy, out);
+// The exact in-circle determinant as a sum of products of four doubles, accumulated in a
+// fixed-point integer (chosen here instead of Shewchuk's full expansion product, whose
+// worst-case arrays need 37.8 KB of stack, over check-small's 4 KB budget: issue 12).
+// Each coordinate difference is exact as two doubles (two_diff), so
+//   det = sum over k of (dx_k^2 + dy_k^2) (dx_i dy_j - dx_j dy_i),  (i, j, k) cyclic,
+// expands into 3 * 2 * 2 * 16 = 192 products of four doubles m 2^e (m an integer < 2^53).
+// Each product is an integer of at most 212 bits, added at bit (e - e_min) to one of two
+// accumulators of kSumLimbs 32-bit limbs (the positive products and the negative ones; their
+// difference's sign is the determinant's). Inside the coordinate range (delaunay.hpp: 0 or
+// magnitude in [1e-50, 1e50]) every exponent e of a difference component lies in
+// [-219, 114], so the placements span at most 4 * 333 + 212 + 8 = 1552 bits; 2048 are kept.
+// 32-bit limbs and 64-bit products only: no __int128 on a Cortex-M.
+constexpr int kSumLimbs = 64;  // 2048 bits, 256 bytes
+constexpr int kProductLimbs = 8;
+
+struct Factor {  // a double as m 2^e (m < 2^53), sign apart
+    std::uint64_t m;
+    int e;
+    bool negative;
+};
+
+Factor factor_of(double x) {  // from the bits: x = m 2^e exactly (subnormals included)
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, 8);
+    const int field = int((bits >> 52) & 0x7ff);
+    const std::uint64_t fraction = bits & 0x000fffffffffffffULL;
+    const bool negative = (bits >> 63) != 0;
+    if (field == 0) return {fraction, -1074, negative};
+    return {fraction | (std::uint64_t(1) << 52), field - 1075, negative};
 }
 
-// cross = px * qy - qx * py (at most 16 components).
-int cross2(const double* px, const double* py, const double* qx, const double* qy, double* out) {
-    double l[8], r[8], tmp[4], acc[8];
-    int ll = multiply_expansions(2, px, 2, qy, l, tmp, acc);
-    int rl = multiply_expansions(2, qx, 2, py, r, tmp, acc);
-    for (int i = 0; i < rl; ++i) r[i] = -r[i];
-    return fast_expansion_sum(ll, l, rl, r, out);
+// p (len limbs, room for kProductLimbs) *= m, m < 2^53; returns the new length
+int multiply_limbs(std::uint32_t* p, int len, std::uint64_t m) {
+    const std::uint64_t m_lo = m & 0xffffffffu, m_hi = m >> 32;
+    std::uint32_t out[kProductLimbs + 2] = {};
+    std::uint64_t carry = 0;
+    for (int i = 0; i < len; ++i) {  // p m_lo
+        const std::uint64_t t = std::uint64_t(p[i]) * m_lo + carry;
+        out[i] = std::uint32_t(t);
+        carry = t >> 32;
+    }
+    out[len] = std::uint32_t(carry);
+    carry = 0;
+    for (int i = 0; i < len; ++i) {  // + p m_hi 2^32
+        const std::uint64_t t = std::uint64_t(p[i]) * m_hi + out[i + 1] + carry;
+        out[i + 1] = std::uint32_t(t);
+        carry = t >> 32;
+    }
+    out[len + 1] = std::uint32_t(carry);
+    int n = std::min(len + 2, kProductLimbs);
+    while (n > 1 && out[n - 1] == 0) --n;
+    for (int i = 0; i < n; ++i) p[i] = out[i];
+    return n;
+}
+
+// sum += p 2^shift (p: len limbs; sum: kSumLimbs limbs, non-negative; the carry stops early)
+void add_shifted(std::uint32_t* sum, const std::uint32_t* p, int len, int shift) {
+    const int word = shift / 32, bit = shift % 32;
+    std::uint64_t carry = 0;
+    int i = word;
+    for (int k = 0; k <= len && i < kSumLimbs; ++k, ++i) {
+        const std::uint32_t lo = k < len ? p[k] << bit : 0u;
+        const std::uint32_t hi = (bit && k > 0) ? p[k - 1] >> (32 - bit) : 0u;
+        const std::uint64_t t = std::uint64_t(sum[i]) + (lo | hi) + carry;
+        sum[i] = std::uint32_t(t);
+        carry = t >> 32;
+    }
+    for (; carry != 0 && i < kSumLimbs; ++i) {
+        const std::uint64_t t = std::uint64_t(sum[i]) + carry;
+        sum[i] = std::uint32_t(t);
+        carry = t >> 32;
+    }
+}
+
+struct LiftedCross {  // the four factors of one product and its sign
+    const double* f[4];
+    bool negative;
+};
+
+// The 12 products of expansions: lift_k part (u u) times cross part (+p q or -q p).
+int lifted_cross_terms(const double* const* dx, const double* const* dy, LiftedCross* terms) {
+    int n = 0;
+    for (int k = 0; k < 3; ++k) {
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        for (int u = 0; u < 2; ++u) {
+            const double* c = u == 0 ? dx[k] : dy[k];
+            terms[n++] = {{c, c, dx[i], dy[j]}, false};
+            terms[n++] = {{c, c, dx[j], dy[i]}, true};
+        }
+    }
+    return n;
+}
+
+// The approximate value of (pos - neg) 2^e_min (its sign is exact).
+double accumulator_value(const std::uint32_t* pos, const std::uint32_t* neg, int e_min) {
+    int top = kSumLimbs - 1;
+    while (top >= 0 && pos[top] == neg[top]) --top;
+    if (top < 0) return 0.0;
+    const bool negative = neg[top] > pos[top];
+    const std::uint32_t* big = negative ? neg : pos;
+    const std::uint32_t* small = negative ? pos : neg;
+    std::uint32_t diff[3] = {};  // the top limbs of big - small (borrow from below ignored:
+    std::int64_t borrow = 0;     // it moves the value by less than 2^-64 of it)
+    for (int i = std::max(0, top - 2), k = 0; i <= top; ++i, ++k) {
+        const std::int64_t t = std::int64_t(big[i]) - small[i] - borrow;
+        borrow = t < 0 ? 1 : 0;
+        diff[k] = std::uint32_t(t + (borrow << 32));
+    }
+    double v = 0.0;
+    for (int i = std::max(0, top - 2), k = 0; i <= top; ++i, ++k)
+        v += std::ldexp(double(diff[k]), 32 * i + e_min);
+    return negative ? -v : v;
+}
+
+struct ExactSum {
+    std::uint32_t pos[kSumLimbs], neg[kSumLimbs];
+    int e_min;
+};
+
+// The 16 products of one term's four two-component factors, from factor `level` on, with the
+// partial product p 2^e of the factors before it (prefixes shared: 28 multiplications, not 64).
+void add_products(const double* const* f, int level, const std::uint32_t* p, int len, int e,
+                  bool negative, ExactSum* sum) {
+    for (int c = 0; c < 2; ++c) {
+        const double x = f[level][c];
+        if (x == 0.0) continue;
+        const Factor q = factor_of(x);
+        std::uint32_t next[kProductLimbs];
+        for (int i = 0; i < len; ++i) next[i] = p[i];
+        const int next_len = multiply_limbs(next, len, q.m);
+        const bool sign = negative != q.negative;
+        if (level == 3)
+            add_shifted(sign ? sum->neg : sum->pos, next, next_len, e + q.e - sum->e_min);
+        else
+            add_products(f, level + 1, next, next_len, e + q.e, sign, sum);
+    }
 }
 
 }  // namespace
@@ -191,21 +315,45 @@ double incircle_exact(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
     two_diff(b.y, d.y, bdy[1], bdy[0]);
     two_diff(c.x, d.x, cdx[1], cdx[0]);
     two_diff(c.y, d.y, cdy[1], cdy[0]);
-    // det = alift (bdx cdy - cdx bdy) + blift (cdx ady - adx cdy) + clift (adx bdy - bdx ady)
-    double lift_e[16], cross_e[16], term[3][512], tmp[32], acc[512];
-    int term_len[3];
-    const double* lx[3] = {adx, bdx, cdx};
-    const double* ly[3] = {ady, bdy, cdy};
-    for (int k = 0; k < 3; ++k) {
-        int i = (k + 1) % 3, j = (k + 2) % 3;
-        int ll = lift(lx[k], ly[k], lift_e);
-        int cl = cross2(lx[i], ly[i], lx[j], ly[j], cross_e);
-        term_len[k] = multiply_expansions(ll, lift_e, cl, cross_e, term[k], tmp, acc);
+    const double* dx[3] = {adx, bdx, cdx};
+    const double* dy[3] = {ady, bdy, cdy};
+    LiftedCross terms[12];
+    const int n = lifted_cross_terms(dx, dy, terms);
+    // the lowest and highest placement of the 192 products (bounds: per factor, the smallest
+    // and largest exponent of its non-zero components)
+    int e_min = 1 << 30, e_max = -(1 << 30);
+    for (int t = 0; t < n; ++t) {
+        int lo = 0, hi = 0;
+        bool zero = false;
+        for (int f = 0; f < 4; ++f) {
+            const double* x = terms[t].f[f];
+            if (x[0] == 0.0 && x[1] == 0.0) zero = true;
+            if (zero) break;
+            const int e0 = x[0] == 0.0 ? factor_of(x[1]).e : factor_of(x[0]).e;
+            const int e1 = x[1] == 0.0 ? e0 : factor_of(x[1]).e;
+            lo += std::min(e0, e1);
+            hi += std::max(e0, e1);
+        }
+        if (zero) continue;
+        e_min = std::min(e_min, lo);
+        e_max = std::max(e_max, hi);
     }
-    double sum01[1024], total[1536];
-    int s01 = fast_expansion_sum(term_len[0], term[0], term_len[1], term[1], sum01);
-    int tl = fast_expansion_sum(s01, sum01, term_len[2], term[2], total);
-    return expansion_sign_value(tl, total);
+    if (e_min > e_max) return 0.0;  // every product is 0
+    if (e_max - e_min + 212 + 9 > 32 * kSumLimbs) {
+        // outside the coordinate range: the sign is not guaranteed (as predicates.hpp says);
+        // the floating-point value of the determinant
+        double det = 0.0;
+        for (int t = 0; t < n; ++t)
+            det += (terms[t].negative ? -1.0 : 1.0) * terms[t].f[0][1] * terms[t].f[1][1] *
+                   terms[t].f[2][1] * terms[t].f[3][1];
+        return det;
+    }
+    // every product exactly, the positive and the negative ones apart
+    ExactSum sum{};
+    sum.e_min = e_min;
+    const std::uint32_t one[1] = {1};
+    for (int t = 0; t < n; ++t) add_products(terms[t].f, 0, one, 1, 0, terms[t].negative, &sum);
+    return accumulator_value(sum.pos, sum.neg, e_min);
 }
 
 namespace {
@@ -256,6 +404,23 @@ double incircle_exact_differences(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
     return expansion_sign_value(fl, fin);
 }
 
+// Two equal pairs of different values (p q r s in any order).
+inline bool two_pairs(double p, double q, double r, double s) {
+    if (p == q) return r == s && r != p;
+    if (p == r) return q == s && q != p;
+    if (p == s) return q == r && q != p;
+    return false;
+}
+
+// The cheap exact path for the cocircular case of a square lattice: when the x coordinates
+// are two equal pairs and so are the y coordinates, the four points are the corners of an
+// axis-parallel rectangle (or two doubled points), exactly cocircular: the determinant is 0,
+// decided by comparisons (every square of a lattice, before: Shewchuk's stage B or the full
+// exact sum, 35-43 % of a lattice's Delaunay time; issue 18).
+inline bool axis_parallel_rectangle(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
+    return two_pairs(a.x, b.x, c.x, d.x) && two_pairs(a.y, b.y, c.y, d.y);
+}
+
 }  // namespace
 
 double incircle(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
@@ -273,6 +438,7 @@ double incircle(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
                        (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
     const double errbound = (10.0 + 96.0 * kEpsilon) * kEpsilon;  // Shewchuk's iccerrboundA
     if (std::fabs(det) > errbound * permanent) return det;
+    if (axis_parallel_rectangle(a, b, c, d)) return 0.0;
     return incircle_exact_differences(a, b, c, d);
 }
 

@@ -15,8 +15,13 @@
 // Algorithm: J. R. Shewchuk, "Adaptive Precision Floating-Point Arithmetic and Fast Robust
 // Geometric Predicates" (1997): a floating-point filter with his error bounds answers almost
 // every call; when the determinant is too close to zero the same determinant is evaluated
-// exactly with floating-point expansions (sums of non-overlapping doubles). The exact
-// in-circle path needs about 40 KB of stack and no heap.
+// exactly: orient2d and in-circle with exact coordinate differences with floating-point
+// expansions (sums of non-overlapping doubles, Shewchuk's stage B), the general in-circle as
+// 192 products of four doubles summed in two 2048-bit fixed-point integers (32-bit limbs, no
+// heap, about 1.3 KB of stack; Shewchuk's full expansion product needed 37.8 KB, too much
+// for a microcontroller: issue 12; ~2x slower, on the rare calls with inexact differences).
+// The square lattice's cocircular case (an axis-parallel rectangle) is decided by
+// comparisons before any exact stage. Every stack frame here stays under 2.4 KB.
 #pragma once
 
 #include "shitsukan/core/vec.hpp"

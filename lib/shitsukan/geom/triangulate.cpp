@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+
+#include "shitsukan/core/memory_budget.hpp"
 
 namespace shitsukan {
 
@@ -58,12 +61,16 @@ double signed_area2(const std::vector<Vec2>& ring) {
     return s;
 }
 
-Status triangulate_polygon(const std::vector<std::vector<Vec2>>& rings, std::vector<Vec2>* points,
-                           std::vector<std::uint32_t>* triangles) {
-    if (!points || !triangles)
-        return Status::error(StatusCode::invalid_argument, "triangulate_polygon: null output");
-    points->clear();
-    triangles->clear();
+namespace {
+
+// The steps of triangulate_polygon (Eberly, "Triangulation by Ear Clipping"), in order.
+
+using Rings = std::vector<std::vector<Vec2>>;
+using Loop = std::vector<std::uint32_t>;
+
+// Step 1: every ring has 3 or more finite vertices, the request fits the memory budget, the
+// outer ring has area.
+Status check_rings(const Rings& rings) {
     if (rings.empty())
         return Status::error(StatusCode::invalid_argument, "triangulate_polygon: no rings");
     for (std::size_t r = 0; r < rings.size(); ++r) {
@@ -76,11 +83,20 @@ Status triangulate_polygon(const std::vector<std::vector<Vec2>>& rings, std::vec
                 return Status::error(StatusCode::invalid_argument,
                                      "triangulate_polygon: ring %zu has a non-finite vertex", r);
     }
+    std::uint64_t vertex_count = 0;
+    for (const std::vector<Vec2>& ring : rings)
+        vertex_count = budget_add(vertex_count, ring.size());
+    SHITSUKAN_TRY(check_memory_budget(budget_mul(vertex_count, kTriangulateBytesPerVertex),
+                                      "triangulate_polygon: the vertex table and ear lists"));
     if (signed_area2(rings[0]) == 0.0)
         return Status::error(StatusCode::degenerate,
                              "triangulate_polygon: outer ring has zero area");
-    // Holes must lie inside the outer ring and outside each other, and no two edges of
-    // different rings may cross: otherwise "outer minus holes" is not what the caller meant.
+    return Status::success();
+}
+
+// Step 2: holes lie inside the outer ring and outside each other, and no two edges of
+// different rings cross: otherwise "outer minus holes" is not what the caller meant.
+Status check_holes(const Rings& rings) {
     for (std::size_t r = 1; r < rings.size(); ++r) {
         for (const Vec2& v : rings[r])
             if (!inside_ring(rings[0], P{v.x, v.y}))
@@ -103,12 +119,15 @@ Status triangulate_polygon(const std::vector<std::vector<Vec2>>& rings, std::vec
                         return Status::error(StatusCode::invalid_argument,
                                              "triangulate_polygon: rings %zu and %zu cross", r, q);
                 }
+    return Status::success();
+}
 
-    // Vertex table: every ring vertex once; rings as index loops with the orientation fixed
-    // (outer counter-clockwise, holes clockwise) so that the interior is always on the left.
-    std::vector<std::vector<std::uint32_t>> loops;
+// Step 3, the vertex table: every ring vertex once; rings as index loops with the orientation
+// fixed (outer counter-clockwise, holes clockwise) so that the interior is always on the left.
+std::vector<Loop> vertex_table(const Rings& rings, std::vector<Vec2>* points) {
+    std::vector<Loop> loops;
     for (std::size_t r = 0; r < rings.size(); ++r) {
-        std::vector<std::uint32_t> loop;
+        Loop loop;
         for (const Vec2& v : rings[r]) {
             loop.push_back(std::uint32_t(points->size()));
             points->push_back(v);
@@ -117,11 +136,55 @@ Status triangulate_polygon(const std::vector<std::vector<Vec2>>& rings, std::vec
         if ((r == 0) != ccw) std::reverse(loop.begin(), loop.end());
         loops.push_back(loop);
     }
-    auto pt = [&](std::uint32_t i) { return P{(*points)[i].x, (*points)[i].y}; };
+    return loops;
+}
 
-    // Join holes, the one reaching furthest right first: bridge from its rightmost vertex M to
-    // the nearest polygon vertex V such that MV crosses no edge of the polygon or any hole.
-    std::vector<std::uint32_t> poly = loops[0];
+struct Vertices {
+    const std::vector<Vec2>& points;
+    P operator()(std::uint32_t i) const { return P{points[i].x, points[i].y}; }
+};
+
+// Step 4 (within it), a mutually visible vertex (Eberly §3): the polygon vertex V nearest to the hole's
+// rightmost vertex M such that MV crosses no edge of the polygon or of a hole not yet joined,
+// and leaves V into the polygon's interior. poly.size() when there is none.
+std::size_t visible_vertex(const Loop& poly, const std::vector<Loop>& loops,
+                           const std::vector<bool>& merged, P m, Vertices pt) {
+    auto blocked = [&](P a, P b) {
+        for (std::size_t k = 0; k < poly.size(); ++k)
+            if (segments_cross(a, b, pt(poly[k]), pt(poly[(k + 1) % poly.size()]))) return true;
+        for (std::size_t h = 1; h < loops.size(); ++h) {
+            if (merged[h]) continue;
+            const auto& l = loops[h];
+            for (std::size_t k = 0; k < l.size(); ++k)
+                if (segments_cross(a, b, pt(l[k]), pt(l[(k + 1) % l.size()]))) return true;
+        }
+        return false;
+    };
+    std::size_t best = poly.size();
+    double best_d = 1e300;
+    for (std::size_t k = 0; k < poly.size(); ++k) {
+        P v = pt(poly[k]);
+        double d = (v.x - m.x) * (v.x - m.x) + (v.y - m.y) * (v.y - m.y);
+        if (d < best_d && !blocked(m, v)) {
+            // The bridge must leave V into the polygon's interior (between its edges).
+            P prev = pt(poly[(k + poly.size() - 1) % poly.size()]),
+              next = pt(poly[(k + 1) % poly.size()]);
+            bool convex = orient(prev, v, next) >= 0;
+            bool in_cone = convex ? (orient(v, next, m) >= 0 && orient(prev, v, m) >= 0)
+                                  : !(orient(v, next, m) < 0 && orient(prev, v, m) < 0);
+            if (!in_cone) continue;
+            best = k;
+            best_d = d;
+        }
+    }
+    return best;
+}
+
+// Step 4, joining the holes (Eberly §3): the hole reaching furthest right first, a bridge from
+// its rightmost vertex M to a mutually visible polygon vertex V, the hole's loop spliced in
+// (V, M, ..., M, V). One loop results.
+Status bridge_holes(const std::vector<Loop>& loops, Vertices pt, Loop* poly) {
+    *poly = loops[0];
     std::vector<std::size_t> order;
     for (std::size_t r = 1; r < loops.size(); ++r) order.push_back(r);
     auto max_x = [&](std::size_t r) {
@@ -133,52 +196,27 @@ Status triangulate_polygon(const std::vector<std::vector<Vec2>>& rings, std::vec
               [&](std::size_t a, std::size_t b) { return max_x(a) > max_x(b); });
     std::vector<bool> merged(loops.size(), false);
     for (std::size_t r : order) {
-        const std::vector<std::uint32_t>& hole = loops[r];
+        const Loop& hole = loops[r];
         std::size_t mi = 0;
         for (std::size_t k = 1; k < hole.size(); ++k)
             if (pt(hole[k]).x > pt(hole[mi]).x) mi = k;
-        P m = pt(hole[mi]);
-        auto blocked = [&](P a, P b) {
-            for (std::size_t k = 0; k < poly.size(); ++k)
-                if (segments_cross(a, b, pt(poly[k]), pt(poly[(k + 1) % poly.size()]))) return true;
-            for (std::size_t h = 1; h < loops.size(); ++h) {
-                if (merged[h]) continue;
-                const auto& l = loops[h];
-                for (std::size_t k = 0; k < l.size(); ++k)
-                    if (segments_cross(a, b, pt(l[k]), pt(l[(k + 1) % l.size()]))) return true;
-            }
-            return false;
-        };
-        std::size_t best = poly.size();
-        double best_d = 1e300;
-        for (std::size_t k = 0; k < poly.size(); ++k) {
-            P v = pt(poly[k]);
-            double d = (v.x - m.x) * (v.x - m.x) + (v.y - m.y) * (v.y - m.y);
-            if (d < best_d && !blocked(m, v)) {
-                // The bridge must leave V into the polygon's interior (between its edges).
-                P prev = pt(poly[(k + poly.size() - 1) % poly.size()]),
-                  next = pt(poly[(k + 1) % poly.size()]);
-                bool convex = orient(prev, v, next) >= 0;
-                bool in_cone = convex ? (orient(v, next, m) >= 0 && orient(prev, v, m) >= 0)
-                                      : !(orient(v, next, m) < 0 && orient(prev, v, m) < 0);
-                if (!in_cone) continue;
-                best = k;
-                best_d = d;
-            }
-        }
-        if (best == poly.size())
+        const std::size_t best = visible_vertex(*poly, loops, merged, pt(hole[mi]), pt);
+        if (best == poly->size())
             return Status::error(StatusCode::invalid_argument,
                                  "triangulate_polygon: hole %zu is not inside the outer ring", r);
-        std::vector<std::uint32_t> joined(poly.begin(), poly.begin() + std::ptrdiff_t(best) + 1);
+        Loop joined(poly->begin(), poly->begin() + std::ptrdiff_t(best) + 1);
         for (std::size_t k = 0; k <= hole.size(); ++k)
             joined.push_back(hole[(mi + k) % hole.size()]);
-        joined.insert(joined.end(), poly.begin() + std::ptrdiff_t(best), poly.end());
-        poly.swap(joined);
+        joined.insert(joined.end(), poly->begin() + std::ptrdiff_t(best), poly->end());
+        poly->swap(joined);
         merged[r] = true;
     }
+    return Status::success();
+}
 
-    // Ear clipping: a convex corner whose triangle holds no other polygon vertex is an ear.
-    std::vector<std::uint32_t> v = poly;
+// Step 5, ear clipping (Eberly §2): a convex corner whose triangle holds no other polygon
+// vertex is an ear; cut it off until a triangle remains.
+Status clip_ears(Loop v, Vertices pt, std::vector<std::uint32_t>* triangles) {
     std::size_t guard = 0;
     while (v.size() > 3) {
         bool clipped = false;
@@ -222,6 +260,23 @@ Status triangulate_polygon(const std::vector<std::vector<Vec2>>& rings, std::vec
         triangles->push_back(v[2]);
     }
     return Status::success();
+}
+
+}  // namespace
+
+Status triangulate_polygon(const std::vector<std::vector<Vec2>>& rings, std::vector<Vec2>* points,
+                           std::vector<std::uint32_t>* triangles) {
+    if (!points || !triangles)
+        return Status::error(StatusCode::invalid_argument, "triangulate_polygon: null output");
+    points->clear();
+    triangles->clear();
+    SHITSUKAN_TRY(check_rings(rings));
+    SHITSUKAN_TRY(check_holes(rings));
+    const std::vector<Loop> loops = vertex_table(rings, points);
+    const Vertices pt{*points};
+    Loop poly;
+    SHITSUKAN_TRY(bridge_holes(loops, pt, &poly));
+    return clip_ears(std::move(poly), pt, triangles);
 }
 
 }  // namespace shitsukan

@@ -14,7 +14,8 @@
 // D. Eberly, "Triangulation by Ear Clipping"), then clip ears. O(n^2) for n vertices: meant
 // for letters and profiles (tens to hundreds of vertices), not for big meshes.
 // Errors: fewer than 3 vertices in a ring, non-finite coordinates, zero-area outer ring, or a
-// polygon the ear clipper cannot finish (self-intersecting input).
+// polygon the ear clipper cannot finish (self-intersecting input); too_large when the vertex
+// count times kTriangulateBytesPerVertex is over the memory budget (core/memory_budget.hpp).
 #pragma once
 
 #include <cstdint>
@@ -24,6 +25,10 @@
 #include "shitsukan/core/vec.hpp"
 
 namespace shitsukan {
+
+// Working set per ring vertex (chosen here, from the arrays: points 8 B, index loops and their
+// copies while holes are bridged 16 B, hole order 8 B, triangles 12 B = 44 B, rounded up).
+constexpr std::uint64_t kTriangulateBytesPerVertex = 64;
 
 Status triangulate_polygon(const std::vector<std::vector<Vec2>>& rings, std::vector<Vec2>* points,
                            std::vector<std::uint32_t>* triangles);

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "shitsukan/core/assert.hpp"
+#include "shitsukan/core/memory_budget.hpp"
 #include "shitsukan/geom/delaunay.hpp"
 #include "shitsukan/geom/double_double.hpp"
 #include "shitsukan/geom/polygon.hpp"
@@ -99,12 +100,18 @@ Vec2d circumcentre(Vec2d a, Vec2d b, Vec2d c) {
     return circumcentre_dd(a, b, c);
 }
 
-}  // namespace
+// The steps of voronoi_cells (voronoi.hpp: "Algorithm"), in order.
 
-Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int region_count,
-                     VoronoiCells* out) {
+// Step 1: the arguments, the region (exact) and the coordinate range.
+Status check_voronoi_arguments(const Vec2d* sites, int count, const Vec2d* region,
+                               int region_count, VoronoiCells* out) {
     if (out == nullptr)
         return Status::error(StatusCode::invalid_argument, "voronoi_cells: out is null");
+    if (count < 1 || sites == nullptr)
+        return Status::error(StatusCode::invalid_argument,
+                             "voronoi_cells: need at least 1 site (got %d)", count);
+    SHITSUKAN_TRY(check_memory_budget(budget_mul(std::uint64_t(count), kVoronoiBytesPerSite),
+                                      "voronoi_cells: the cells of the sites"));
     SHITSUKAN_TRY(check_convex_region(region, region_count));
     for (int i = 0; i < region_count; ++i)  // the clipping's exact sides need the range too
         for (double c : {region[i].x, region[i].y})
@@ -115,19 +122,28 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
                                      "must be 0 or of magnitude in [%g, %g] (exact predicates)",
                                      i, region[i].x, region[i].y, kDelaunayMinCoordinate,
                                      kDelaunayMaxCoordinate);
+    return Status::success();
+}
+
+// Step 2: the Delaunay triangulation, its frame covering the region's bounding box, in
+// Hilbert numbering.
+Status triangulate_sites(const Vec2d* sites, int count, const Vec2d* region, int region_count,
+                         DelaunayTriangulation* dt) {
     Vec2d lo = region[0], hi = region[0];
     for (int i = 0; i < region_count; ++i) {
         lo = {std::min(lo.x, region[i].x), std::min(lo.y, region[i].y)};
         hi = {std::max(hi.x, region[i].x), std::max(hi.y, region[i].y)};
     }
-    DelaunayTriangulation dt;
-    SHITSUKAN_TRY(build_delaunay(sites, count, &dt, lo, hi, true));  // Hilbert numbering
+    return build_delaunay(sites, count, dt, lo, hi, true);  // Hilbert numbering
+}
+
+// Step 3, union of cocircular triangles: triangles that share a circumcircle (exact incircle
+// == 0 across their edge) are one Voronoi vertex. root[t]: the group of triangle t (its
+// smallest triangle).
+std::vector<int> merge_cocircular_triangles(const DelaunayTriangulation& dt) {
     const std::vector<DelaunayTriangle>& tris = dt.triangles;
     const std::vector<Vec2d>& pts = dt.points;
     const int tcount = int(tris.size());
-
-    // Merge triangles that share a circumcircle (exact incircle == 0 across their edge): one
-    // Voronoi vertex per group of cocircular sites.
     std::vector<int> parent(static_cast<std::size_t>(tcount));
     for (int t = 0; t < tcount; ++t) parent[std::size_t(t)] = t;
     for (int t = 0; t < tcount; ++t) {
@@ -146,13 +162,20 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
             }
         }
     }
-    // Canonical circumcentre of each group: from its 3 lexicographically smallest sites.
+    for (int t = 0; t < tcount; ++t) parent[std::size_t(t)] = find_root(parent, t);
+    return parent;
+}
+
+// Step 4, the Voronoi vertices: one canonical circumcentre per group of cocircular triangles,
+// from the group's 3 lexicographically smallest sites (the same bits whatever the order).
+Status voronoi_vertices(const DelaunayTriangulation& dt, const std::vector<int>& root,
+                        std::vector<Vec2d>* centre) {
+    const std::vector<DelaunayTriangle>& tris = dt.triangles;
+    const std::vector<Vec2d>& pts = dt.points;
+    const int tcount = int(tris.size());
     std::vector<int> best(std::size_t(tcount) * 3, -1);
-    std::vector<int> root(static_cast<std::size_t>(tcount));
     for (int t = 0; t < tcount; ++t) {
-        int r = find_root(parent, t);
-        root[std::size_t(t)] = r;
-        int* b = &best[std::size_t(r) * 3];
+        int* b = &best[std::size_t(root[std::size_t(t)]) * 3];
         for (int v : tris[std::size_t(t)].v) {
             if (v == b[0] || v == b[1] || v == b[2]) continue;
             // insert v into the sorted top-3
@@ -165,88 +188,129 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
             b[k] = v;
         }
     }
-    std::vector<Vec2d> centre(static_cast<std::size_t>(tcount));
+    centre->resize(static_cast<std::size_t>(tcount));
     for (int t = 0; t < tcount; ++t) {
         if (root[std::size_t(t)] != t) continue;
         const int* b = &best[std::size_t(t) * 3];
         const Vec2d p0 = pts[std::size_t(b[0])], p1 = pts[std::size_t(b[1])],
                     p2 = pts[std::size_t(b[2])];
-        centre[std::size_t(t)] = circumcentre(p0, p1, p2);
-        if (!is_finite(centre[std::size_t(t)]))
+        (*centre)[std::size_t(t)] = circumcentre(p0, p1, p2);
+        if (!is_finite((*centre)[std::size_t(t)]))
             return Status::error(StatusCode::degenerate,
                                  "voronoi_cells: the Voronoi vertex of (%.17g, %.17g), (%.17g, "
                                  "%.17g), (%.17g, %.17g) cannot be constructed in double-double: "
                                  "the sites are closer than ~2^-94 of their distances",
                                  p0.x, p0.y, p1.x, p1.y, p2.x, p2.y);
     }
+    return Status::success();
+}
 
-    // Walk around each site: the groups of its triangles, counter-clockwise, each once. Sites
-    // are visited in Hilbert order (memory stays local), then the cells are put in input order.
+// Step 5, the dual walk: the Voronoi polygon of site s, its vertices the groups of s's
+// triangles counter-clockwise, each once; each vertex carries the bisector its leaving edge
+// lies on (the support the clipping constructs from).
+void dual_walk(const DelaunayTriangulation& dt, const std::vector<int>& root,
+               const std::vector<Vec2d>& centre, int s, std::vector<ClipVertex>* poly) {
+    const std::vector<DelaunayTriangle>& tris = dt.triangles;
+    const std::vector<Vec2d>& pts = dt.points;
+    poly->clear();
+    const int t0 = dt.point_triangle[std::size_t(s)];
+    if (t0 < 0) return;  // a duplicate site: empty
+    int t = t0, last_group = -1, first_group = -1;
+    do {
+        const DelaunayTriangle& tri = tris[std::size_t(t)];
+        int i = tri.v[0] == s ? 0 : (tri.v[1] == s ? 1 : 2);
+        int g = root[std::size_t(t)];
+        if (g != last_group) {
+            ClipVertex cv;
+            cv.p = centre[std::size_t(g)];
+            cv.has_bisector = true;
+            cv.bisector[0] = pts[std::size_t(s)];
+            poly->push_back(cv);
+            if (first_group < 0) first_group = g;
+            last_group = g;
+        }
+        // the Voronoi edge leaving this vertex lies on the bisector of s and the site across
+        // the Delaunay edge (s, v[i + 2]) that the walk crosses last in a group
+        poly->back().bisector[1] = pts[std::size_t(tri.v[(i + 2) % 3])];
+        t = tri.n[(i + 1) % 3];  // across the edge (s, v[i + 2]): next triangle CCW
+        SHITSUKAN_ASSERT(t >= 0);
+    } while (t != t0);
+    if (poly->size() > 1 && last_group == first_group) poly->pop_back();
+}
+
+// Cells in Hilbert order, compact (a ClipVertex carries its edge's support: 64 bytes).
+struct HilbertCells {
+    std::vector<Vec2d> points;
+    std::vector<int> labels;
+    std::vector<int> start, size;  // per input site
+};
+
+// Step 6, clipping: each site's polygon clipped to the region (polygon.hpp), started at its
+// lexicographically smallest vertex. Sites are visited in Hilbert order (memory stays local).
+void clip_cells(const DelaunayTriangulation& dt, const std::vector<int>& root,
+                const std::vector<Vec2d>& centre, const Vec2d* region, int region_count,
+                HilbertCells* cells) {
+    const int count = dt.input_count;
     std::vector<ClipVertex> poly, scratch;
     const double snap = clip_snap_distance(region, region_count);
-    // cells in Hilbert order, compact (a ClipVertex carries its edge's support: 64 bytes)
-    std::vector<Vec2d> cell_points;
-    std::vector<int> cell_labels;
-    cell_points.reserve(std::size_t(count) * 6);
-    cell_labels.reserve(std::size_t(count) * 12);
-    std::vector<int> cell_start(static_cast<std::size_t>(count), 0);
-    std::vector<int> cell_size(static_cast<std::size_t>(count), 0);
+    cells->points.reserve(std::size_t(count) * 6);
+    cells->labels.reserve(std::size_t(count) * 12);
+    cells->start.assign(static_cast<std::size_t>(count), 0);
+    cells->size.assign(static_cast<std::size_t>(count), 0);
     for (int s = 0; s < count; ++s) {  // s: Hilbert number of the site
-        poly.clear();
-        int t0 = dt.point_triangle[std::size_t(s)];
-        if (t0 >= 0) {
-            int t = t0, last_group = -1, first_group = -1;
-            do {
-                const DelaunayTriangle& tri = tris[std::size_t(t)];
-                int i = tri.v[0] == s ? 0 : (tri.v[1] == s ? 1 : 2);
-                int g = root[std::size_t(t)];
-                if (g != last_group) {
-                    ClipVertex cv;
-                    cv.p = centre[std::size_t(g)];
-                    cv.has_bisector = true;
-                    cv.bisector[0] = pts[std::size_t(s)];
-                    poly.push_back(cv);
-                    if (first_group < 0) first_group = g;
-                    last_group = g;
-                }
-                // the Voronoi edge leaving this vertex lies on the bisector of s and the site
-                // across the Delaunay edge (s, v[i + 2]) that the walk crosses last in a group
-                poly.back().bisector[1] = pts[std::size_t(tri.v[(i + 2) % 3])];
-                t = tri.n[(i + 1) % 3];  // across the edge (s, v[i + 2]): next triangle CCW
-                SHITSUKAN_ASSERT(t >= 0);
-            } while (t != t0);
-            if (poly.size() > 1 && last_group == first_group) poly.pop_back();
+        dual_walk(dt, root, centre, s, &poly);
+        if (!poly.empty()) {
             clip_to_convex_region(&poly, region, region_count, snap, &scratch);
-            // start at the lexicographically smallest vertex
             std::size_t m = 0;
             for (std::size_t k = 1; k < poly.size(); ++k)
                 if (lex_less(poly[k].p, poly[m].p)) m = k;
             std::rotate(poly.begin(), poly.begin() + std::ptrdiff_t(m), poly.end());
         }
         const std::size_t site = std::size_t(dt.insertion_order[std::size_t(s)]);
-        cell_start[site] = int(cell_points.size());
-        cell_size[site] = int(poly.size());
+        cells->start[site] = int(cells->points.size());
+        cells->size[site] = int(poly.size());
         for (const ClipVertex& v : poly) {
-            cell_points.push_back(v.p);
-            cell_labels.push_back(v.on[0]);
-            cell_labels.push_back(v.on[1]);
+            cells->points.push_back(v.p);
+            cells->labels.push_back(v.on[0]);
+            cells->labels.push_back(v.on[1]);
         }
     }
-    out->vertices.resize(cell_points.size());
-    out->on_region_edge.resize(cell_labels.size());
+}
+
+// Step 7: the cells in input order (cell i belongs to sites[i]).
+void cells_in_input_order(const HilbertCells& cells, const DelaunayTriangulation& dt,
+                          VoronoiCells* out) {
+    const int count = dt.input_count;
+    out->vertices.resize(cells.points.size());
+    out->on_region_edge.resize(cells.labels.size());
     out->offsets.resize(std::size_t(count) + 1);
     out->duplicate_of = dt.duplicate_of;
     std::size_t w = 0;
     for (int s = 0; s < count; ++s) {
         out->offsets[std::size_t(s)] = int(w);
-        const std::size_t first = std::size_t(cell_start[std::size_t(s)]);
-        for (int k = 0; k < cell_size[std::size_t(s)]; ++k, ++w) {
-            out->vertices[w] = cell_points[first + std::size_t(k)];
-            out->on_region_edge[2 * w] = cell_labels[2 * (first + std::size_t(k))];
-            out->on_region_edge[2 * w + 1] = cell_labels[2 * (first + std::size_t(k)) + 1];
+        const std::size_t first = std::size_t(cells.start[std::size_t(s)]);
+        for (int k = 0; k < cells.size[std::size_t(s)]; ++k, ++w) {
+            out->vertices[w] = cells.points[first + std::size_t(k)];
+            out->on_region_edge[2 * w] = cells.labels[2 * (first + std::size_t(k))];
+            out->on_region_edge[2 * w + 1] = cells.labels[2 * (first + std::size_t(k)) + 1];
         }
     }
     out->offsets[std::size_t(count)] = int(w);
+}
+
+}  // namespace
+
+Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int region_count,
+                     VoronoiCells* out) {
+    SHITSUKAN_TRY(check_voronoi_arguments(sites, count, region, region_count, out));
+    DelaunayTriangulation dt;
+    SHITSUKAN_TRY(triangulate_sites(sites, count, region, region_count, &dt));
+    const std::vector<int> root = merge_cocircular_triangles(dt);
+    std::vector<Vec2d> centre;
+    SHITSUKAN_TRY(voronoi_vertices(dt, root, &centre));
+    HilbertCells cells;
+    clip_cells(dt, root, centre, region, region_count, &cells);
+    cells_in_input_order(cells, dt, out);
     return Status::success();
 }
 
