@@ -97,7 +97,9 @@ double steps_edge_spacing() {
 
 TEST_CASE("seed layouts: eq. (1) displacement bounds and the stage-2 spacing law") {
     SeedLayout s;
-    REQUIRE(stage1_seeds(1, 1, 0.1f, 0.1f, 0.25f, 3, &s).ok());
+    Stage1SeedParams p1;
+    p1.seed = 3;
+    REQUIRE(stage1_seeds(p1, s).ok());
     for (std::size_t i = 0; i < s.moved.size(); ++i) {
         CHECK(s.moved[i].x == s.original[i].x);  // moved along y only
         CHECK(std::fabs(s.moved[i].y - s.original[i].y) <= 0.1 * 0.25 + 1e-9);

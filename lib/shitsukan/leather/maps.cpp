@@ -4,12 +4,17 @@
 
 #include "shitsukan/core/assert.hpp"
 #include "shitsukan/leather/scale_labels.hpp"
+#include "shitsukan/leather/tileable.hpp"
 
 namespace shitsukan {
 
-Status make_leather_maps(const ScalePattern& pattern, const int* labels, int width, int height,
-                         const BezierChain& section, const ReliefOptions& options,
-                         LeatherMaps* out) {
+namespace {
+
+// The public boundary: sizes, labels, the pattern's plain data (a caller may fill it by hand),
+// the section and the options.
+Status check_leather_map_inputs(const ScalePattern& pattern, const int* labels, int width,
+                                int height, const BezierChain& section,
+                                const ReliefOptions& options) {
     if (width < 1 || height < 1 || width > 16384 || height > 16384)
         return Status::error(StatusCode::invalid_argument,
                              "leather maps: size must be 1..16384 a side (got %d x %d)", width,
@@ -60,7 +65,68 @@ Status make_leather_maps(const ScalePattern& pattern, const int* labels, int wid
                                  "(-1..%d)",
                                  labels[k], int(k % std::size_t(width)),
                                  int(k / std::size_t(width)), polygons - 1);
+    return Status::success();
+}
 
+// Once per scale: its height unit S (relief.hpp step 3) and the angular index of its vertices
+// around m (O(log n) edge search; polygons that are not star-shaped use the full scan).
+struct ScaleTables {
+    std::vector<float> sizes;
+    std::vector<float> angles;
+    std::vector<char> indexed;
+};
+
+void prepare_scale_tables(const ScalePattern& pattern, ScaleTables& t) {
+    const int polygons = pattern.polygon_count();
+    t.sizes.assign(std::size_t(polygons), 0.0f);
+    t.angles.assign(pattern.vertices.size(), 0.0f);
+    t.indexed.assign(std::size_t(polygons), 0);
+    for (int i = 0; i < polygons; ++i) {
+        int n;
+        const Vec2* poly = pattern.polygon(i, &n);
+        t.sizes[std::size_t(i)] = scale_size(poly, n);
+        float* a = t.angles.data() + pattern.polygon_offsets[std::size_t(i)];
+        t.indexed[std::size_t(i)] = make_angular_index(poly, n, pattern.centroids[std::size_t(i)], a);
+    }
+}
+
+// tokai1994 §3.2 for one pixel row j: every pixel's height and normal from its scale's
+// cross-section along the ray from the centroid m through the pixel to the edge point p
+// ("computed for each polygon edge and for every polygon of §3.1").
+void relief_row(const ScalePattern& pattern, const int* labels, const ScaleTables& t,
+                const BezierChain& section, const ReliefOptions& options, int j, LeatherMaps* out) {
+    const int width = out->width;
+    const float sx = pattern.width / float(width), sy = pattern.height / float(out->height);
+    for (int i = 0; i < width; ++i) {
+        std::size_t k = std::size_t(j) * std::size_t(width) + std::size_t(i);
+        int id = labels[k];
+        if (id < 0) continue;  // no polygon: groove floor
+        int n;
+        const Vec2* poly = pattern.polygon(id, &n);
+        Vec2 x{(float(i) + 0.5f) * sx, (float(j) + 0.5f) * sy};
+        ReliefSample s;
+        Vec2 m = pattern.centroids[std::size_t(id)];
+        EdgeHit hit =
+            t.indexed[std::size_t(id)]
+                ? scale_edge_point_indexed(
+                      poly, n, m, x, t.angles.data() + pattern.polygon_offsets[std::size_t(id)])
+                : scale_edge_point(poly, n, m, x);
+        float mp = length(hit.p - m);
+        float rho = mp > 0.0f ? length(x - m) / mp : 0.0f;
+        relief_along_ray(rho, m, hit, t.sizes[std::size_t(id)], section, options, &s);
+        out->heights[k] = s.height;
+        out->normals[k] = s.normal;
+        if (s.height > out->max_height) out->max_height = s.height;
+    }
+}
+
+}  // namespace
+
+Status make_leather_maps(const ScalePattern& pattern, const int* labels, int width, int height,
+                         const BezierChain& section, const ReliefOptions& options,
+                         LeatherMaps* out) {
+    SHITSUKAN_TRY(check_leather_map_inputs(pattern, labels, width, height, section, options));
+    const std::size_t count = std::size_t(width) * std::size_t(height);
     out->width = width;
     out->height = height;
     out->pattern_width = pattern.width;
@@ -68,43 +134,9 @@ Status make_leather_maps(const ScalePattern& pattern, const int* labels, int wid
     out->heights.assign(count, 0.0f);
     out->normals.assign(count, Vec3{0, 0, 1});
     out->max_height = 0.0f;
-    const float sx = pattern.width / float(width), sy = pattern.height / float(height);
-    // Once per scale: its height unit S and the angular index of its vertices around m
-    // (O(log n) edge search; polygons that are not star-shaped use the full scan).
-    std::vector<float> sizes(std::size_t(polygons), 0.0f);
-    std::vector<float> angles(pattern.vertices.size(), 0.0f);
-    std::vector<char> indexed(std::size_t(polygons), 0);
-    for (int i = 0; i < polygons; ++i) {
-        int n;
-        const Vec2* poly = pattern.polygon(i, &n);
-        sizes[std::size_t(i)] = scale_size(poly, n);
-        float* a = angles.data() + pattern.polygon_offsets[std::size_t(i)];
-        indexed[std::size_t(i)] = make_angular_index(poly, n, pattern.centroids[std::size_t(i)], a);
-    }
-    for (int j = 0; j < height; ++j) {
-        for (int i = 0; i < width; ++i) {
-            std::size_t k = std::size_t(j) * std::size_t(width) + std::size_t(i);
-            int id = labels[k];
-            if (id < 0) continue;  // no polygon: groove floor
-            int n;
-            const Vec2* poly = pattern.polygon(id, &n);
-            Vec2 x{(float(i) + 0.5f) * sx, (float(j) + 0.5f) * sy};
-            ReliefSample s;
-            // tokai1994 §3.2: "computed for each polygon edge and for every polygon of §3.1".
-            Vec2 m = pattern.centroids[std::size_t(id)];
-            EdgeHit hit =
-                indexed[std::size_t(id)]
-                    ? scale_edge_point_indexed(
-                          poly, n, m, x, angles.data() + pattern.polygon_offsets[std::size_t(id)])
-                    : scale_edge_point(poly, n, m, x);
-            float mp = length(hit.p - m);
-            float rho = mp > 0.0f ? length(x - m) / mp : 0.0f;
-            relief_along_ray(rho, m, hit, sizes[std::size_t(id)], section, options, &s);
-            out->heights[k] = s.height;
-            out->normals[k] = s.normal;
-            if (s.height > out->max_height) out->max_height = s.height;
-        }
-    }
+    ScaleTables tables;
+    prepare_scale_tables(pattern, tables);
+    for (int j = 0; j < height; ++j) relief_row(pattern, labels, tables, section, options, j, out);
     return Status::success();
 }
 
@@ -220,10 +252,15 @@ Status make_leather_maps(const ScalePattern& pattern, int width, int height,
     if (width < 1 || height < 1 || width > 16384 || height > 16384)
         return Status::error(StatusCode::invalid_argument,
                              "leather maps: size %d x %d outside 1..16384", width, height);
+    // a tileable (torus) pattern: its scales and their copies across the border (tileable.hpp)
+    ScalePattern cover;
+    const bool wrapped = pattern.wrap_x || pattern.wrap_y;
+    if (wrapped) SHITSUKAN_TRY(torus_cover(pattern, cover));
+    const ScalePattern& plain = wrapped ? cover : pattern;
     std::vector<std::int32_t> labels(std::size_t(width) * std::size_t(height));
-    SHITSUKAN_TRY(rasterize_scale_labels(pattern, width, height, labels.data()));
+    SHITSUKAN_TRY(rasterize_scale_labels(plain, width, height, labels.data()));
     static_assert(sizeof(std::int32_t) == sizeof(int), "labels are ints");
-    return make_leather_maps(pattern, reinterpret_cast<const int*>(labels.data()), width, height,
+    return make_leather_maps(plain, reinterpret_cast<const int*>(labels.data()), width, height,
                              section, options, out);
 }
 

@@ -69,7 +69,8 @@ Status make_leather_maps(const ScalePattern& pattern, const int* labels, int wid
 
 // The same in one call: the label image (rasterize_scale_labels, scale_labels.hpp) at
 // width x height, then the maps above. Same errors; the sizes are checked before the label
-// image is allocated.
+// image is allocated. A tileable pattern (wrap_x / wrap_y, tileable.hpp) is first covered by
+// its copies across the border (torus_cover), so the maps repeat with no seam.
 Status make_leather_maps(const ScalePattern& pattern, int width, int height,
                          const BezierChain& section, const ReliefOptions& options,
                          LeatherMaps* out);

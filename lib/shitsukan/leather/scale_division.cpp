@@ -106,110 +106,111 @@ Status divide_single_stage(const Vec2d* seeds, int count, float width, float hei
     return build_planar_subdivision(verts.data(), offsets.data(), int(offsets.size()) - 1, out);
 }
 
-Status divide_scales(const ScaleParams& prm, ScaleDivision* out) {
-    if (out == nullptr)
-        return Status::error(StatusCode::invalid_argument, "divide_scales: out is null");
-    SHITSUKAN_TRY(check_scale_params(prm));
+namespace {
 
-    // ---- Stage 1 (§3.1 (1)): vertical division --------------------------------------------
-    SHITSUKAN_TRY(
-        stage1_seeds(prm.width, prm.height, prm.D, prm.d, prm.a, prm.seed, &out->stage1_seeds));
-    SHITSUKAN_TRY(divide_single_stage(out->stage1_seeds.moved.data(),
-                                      int(out->stage1_seeds.moved.size()), prm.width, prm.height,
-                                      &out->stage1, &out->stage1_site));
-    const PlanarSubdivision& s1 = out->stage1;
+// The stage-2 cells of every stage-1 polygon, their vertices tagged with the stage-1 edges they
+// lie on, and the points each stage-1 edge carries (both sides' junctions).
+struct Stage2Cells {
+    std::vector<std::vector<TaggedVertex>> cells;  // every stage-2 cell
+    std::vector<std::vector<Vec2d>> on_edge;       // stage-1 edge -> points on it
+    std::vector<std::vector<double>> on_edge_t;    // their chord parameters (after welding)
+};
 
-    // ---- Stage 2 (§3.1 (2)): horizontal division inside each stage-1 polygon -------------
-    SHITSUKAN_TRY(stage2_columns(prm.width, prm.D, prm.edge_ratio, &out->columns));
-    out->stage2_seeds.original.clear();
-    out->stage2_seeds.moved.clear();
-    out->stage2_row.clear();
-    std::vector<std::vector<TaggedVertex>> cells;  // every stage-2 cell, tagged
-    out->cell_stage1.clear();
-    std::vector<std::vector<Vec2d>> on_edge(s1.edges.size());  // points on each stage-1 edge
-    SeedLayout row;
-    VoronoiCells vc;
-    std::vector<Vec2d> region;
-    for (int f = 0; f < s1.face_count(); ++f) {
-        const int e0 = s1.face_offsets[std::size_t(f)],
-                  m = s1.face_offsets[std::size_t(f) + 1] - e0;
-        region.clear();
-        for (int k = 0; k < m; ++k)
-            region.push_back(
-                s1.vertices[std::size_t(s1.face_vertex(s1.face_edges[std::size_t(e0 + k)]))]);
-        // processings 1-2: a row parallel to x through this polygon's own seed, moved along x
-        // (the columns of the polygon's own half: its scales end at the centre-line joint;
-        // with d = 0 both rows sit on the centre line and every polygon spans both halves)
-        const int site = out->stage1_site[std::size_t(f)];
-        const Vec2d own = out->stage1_seeds.original[std::size_t(site)];
-        const int side = prm.d > 0.0f ? (own.x < 0.5 * double(prm.width) ? -1 : 1) : 0;
-        SHITSUKAN_TRY(stage2_row_seeds(out->columns, prm.a,
-                                       out->stage1_seeds.moved[std::size_t(site)].y, site, prm.seed,
-                                       &row, side));
-        keep_border_seeds_inside(prm.width, &row);
-        out->stage2_seeds.original.insert(out->stage2_seeds.original.end(), row.original.begin(),
-                                          row.original.end());
-        out->stage2_seeds.moved.insert(out->stage2_seeds.moved.end(), row.moved.begin(),
-                                       row.moved.end());
-        out->stage2_row.insert(out->stage2_row.end(), row.moved.size(), f);
-        // processing 3: Voronoi division clipped to the stage-1 polygon
-        SHITSUKAN_TRY(
-            voronoi_cells(row.moved.data(), int(row.moved.size()), region.data(), m, &vc));
-        for (int c = 0; c < vc.cell_count(); ++c) {
-            int k;
-            const Vec2d* v = vc.cell(c, &k);
-            if (k < 3 || !(polygon_area(v, k) > 0.0)) continue;
-            std::vector<TaggedVertex> cell;
-            const int base = vc.offsets[std::size_t(c)];
-            for (int i = 0; i < k; ++i) {
-                TaggedVertex t{v[i], {-1, -1}};
-                int r0 = vc.on_region_edge[std::size_t(2 * (base + i))];
-                int r1 = vc.on_region_edge[std::size_t(2 * (base + i) + 1)];
-                // a corner of the stage-1 polygon: take its exact bits, shared by all sides
-                if (r0 >= 0 && r1 >= 0) {
-                    int lo = std::min(r0, r1), hi = std::max(r0, r1);
-                    int corner = (hi == lo + 1) ? hi : ((lo == 0 && hi == m - 1) ? 0 : -1);
-                    if (corner >= 0 && orient2d(region[std::size_t((corner + m - 1) % m)],
-                                                region[std::size_t(corner)],
-                                                region[std::size_t((corner + 1) % m)]) > 0.0)
-                        t.p = region[std::size_t(corner)];
-                }
-                for (int j = 0; j < 2; ++j) {
-                    int r = j == 0 ? r0 : r1;
-                    if (r < 0) continue;
-                    int fe = s1.face_edges[std::size_t(e0 + r)];
-                    t.on[j] = fe >= 0 ? fe : ~fe;
-                }
-                cell.push_back(t);
-            }
-            for (const TaggedVertex& t : cell)
-                for (int g : t.on)
-                    if (g >= 0) on_edge[std::size_t(g)].push_back(t.p);
-            cells.push_back(std::move(cell));
-            out->cell_stage1.push_back(f);
-        }
+// Stage 2, processings 1-2 (§3.1 (2)): the row of seeds parallel to x through the stage-1
+// polygon's own (moved) seed, on the columns of its own half (its scales end at the centre-line
+// joint; with d = 0 both rows sit on the centre line and every polygon spans both halves),
+// moved along x; the border columns' seeds only inward.
+Status stage2_row_for_polygon(const ScaleParams& prm, int f, ScaleDivision& out, SeedLayout& row) {
+    const int site = out.stage1_site[std::size_t(f)];
+    const Vec2d own = out.stage1_seeds.original[std::size_t(site)];
+    const int side = prm.d > 0.0f ? (own.x < 0.5 * double(prm.width) ? -1 : 1) : 0;
+    const int row_id =
+        out.stage1_row_id.empty() ? site : out.stage1_row_id[std::size_t(site)];
+    SHITSUKAN_TRY(stage2_row_seeds(out.columns, prm.a, out.stage1_seeds.moved[std::size_t(site)].y,
+                                   row_id, prm.seed, &row, side));
+    keep_border_seeds_inside(prm.width, &row);
+    out.stage2_seeds.original.insert(out.stage2_seeds.original.end(), row.original.begin(),
+                                     row.original.end());
+    out.stage2_seeds.moved.insert(out.stage2_seeds.moved.end(), row.moved.begin(),
+                                  row.moved.end());
+    out.stage2_row.insert(out.stage2_row.end(), row.moved.size(), f);
+    return Status::success();
+}
+
+// One vertex of a stage-2 cell, tagged with the stage-1 edges (global ids) it lies on; a corner
+// of the stage-1 polygon takes the corner's exact bits, shared by all sides.
+TaggedVertex tag_stage2_vertex(const VoronoiCells& vc, int c, int i, const Vec2d* v,
+                               const std::vector<Vec2d>& region, const PlanarSubdivision& s1,
+                               int e0) {
+    const int m = int(region.size());
+    TaggedVertex t{v[i], {-1, -1}};
+    const int base = vc.offsets[std::size_t(c)];
+    int r0 = vc.on_region_edge[std::size_t(2 * (base + i))];
+    int r1 = vc.on_region_edge[std::size_t(2 * (base + i) + 1)];
+    if (r0 >= 0 && r1 >= 0) {
+        int lo = std::min(r0, r1), hi = std::max(r0, r1);
+        int corner = (hi == lo + 1) ? hi : ((lo == 0 && hi == m - 1) ? 0 : -1);
+        if (corner >= 0 && orient2d(region[std::size_t((corner + m - 1) % m)],
+                                    region[std::size_t(corner)],
+                                    region[std::size_t((corner + 1) % m)]) > 0.0)
+            t.p = region[std::size_t(corner)];
     }
+    for (int j = 0; j < 2; ++j) {
+        int r = j == 0 ? r0 : r1;
+        if (r < 0) continue;
+        int fe = s1.face_edges[std::size_t(e0 + r)];
+        t.on[j] = fe >= 0 ? fe : ~fe;
+    }
+    return t;
+}
 
-    // ---- T junctions: both sides of a stage-1 edge get all points on it ------------------
-    // Points on an edge closer than kWeldRelative * max(W, H) are one point (the edge's own
-    // end point if it is among them): with a = 0 the columns line up across a stage-1 edge
-    // and the two sides compute the same junction with different rounding (1e-14 apart).
-    const double weld = kWeldRelative * std::max(double(prm.width), double(prm.height));
-    std::vector<std::vector<double>> on_edge_t(s1.edges.size());
+// Stage 2, processing 3: the row's Voronoi division clipped to stage-1 polygon f; its cells,
+// tagged, join `st` (and each vertex on a stage-1 edge joins that edge's point list).
+Status stage2_divide_polygon(const PlanarSubdivision& s1, int f, const SeedLayout& row,
+                             VoronoiCells& vc, std::vector<Vec2d>& region, Stage2Cells& st,
+                             std::vector<int>& cell_stage1) {
+    const int e0 = s1.face_offsets[std::size_t(f)], m = s1.face_offsets[std::size_t(f) + 1] - e0;
+    region.clear();
+    for (int k = 0; k < m; ++k)
+        region.push_back(
+            s1.vertices[std::size_t(s1.face_vertex(s1.face_edges[std::size_t(e0 + k)]))]);
+    SHITSUKAN_TRY(voronoi_cells(row.moved.data(), int(row.moved.size()), region.data(), m, &vc));
+    for (int c = 0; c < vc.cell_count(); ++c) {
+        int k;
+        const Vec2d* v = vc.cell(c, &k);
+        if (k < 3 || !(polygon_area(v, k) > 0.0)) continue;
+        std::vector<TaggedVertex> cell;
+        for (int i = 0; i < k; ++i) cell.push_back(tag_stage2_vertex(vc, c, i, v, region, s1, e0));
+        for (const TaggedVertex& t : cell)
+            for (int g : t.on)
+                if (g >= 0) st.on_edge[std::size_t(g)].push_back(t.p);
+        st.cells.push_back(std::move(cell));
+        cell_stage1.push_back(f);
+    }
+    return Status::success();
+}
+
+// T-junction stitching, part 1: the points on each stage-1 edge sorted along it, and points
+// closer than kWeldRelative * max(W, H) welded into one (the edge's own end point if it is
+// among them): with a = 0 the columns line up across a stage-1 edge and the two sides compute
+// the same junction with different rounding (1e-14 apart). Every cell vertex takes its welded
+// point.
+void weld_stage1_edge_points(const PlanarSubdivision& s1, double weld, Stage2Cells& st) {
+    st.on_edge_t.assign(s1.edges.size(), {});
     // the stage-2 vertices on each stage-1 edge (not a scan of every cell per edge: that was
     // O(edges x cells), 1.4 s at D = 0.005)
     struct VertexRef {
         std::size_t cell, vertex;
     };
     std::vector<std::vector<VertexRef>> refs(s1.edges.size());
-    for (std::size_t c = 0; c < cells.size(); ++c)
-        for (std::size_t i = 0; i < cells[c].size(); ++i)
-            for (int g : cells[c][i].on)
+    for (std::size_t c = 0; c < st.cells.size(); ++c)
+        for (std::size_t i = 0; i < st.cells[c].size(); ++i)
+            for (int g : st.cells[c][i].on)
                 if (g >= 0) refs[std::size_t(g)].push_back({c, i});
     for (std::size_t g = 0; g < s1.edges.size(); ++g) {
         Vec2d a = s1.vertices[std::size_t(s1.edges[g].v0)],
               b = s1.vertices[std::size_t(s1.edges[g].v1)];
-        std::vector<Vec2d>& pts = on_edge[g];
+        std::vector<Vec2d>& pts = st.on_edge[g];
         auto t_of = [&](Vec2d p) { return dot(p - a, b - a); };
         auto before = [&](Vec2d p, Vec2d q) {
             double tp = t_of(p), tq = t_of(q);
@@ -229,63 +230,124 @@ Status divide_scales(const ScaleParams& prm, ScaleDivision* out) {
             i = j + 1;
         }
         for (const VertexRef& r : refs[g]) {
-            TaggedVertex& t = cells[r.cell][r.vertex];
+            TaggedVertex& t = st.cells[r.cell][r.vertex];
             auto it = std::lower_bound(pts.begin(), pts.end(), t.p, before);
             if (it != pts.end() && *it == t.p) t.p = canonical[std::size_t(it - pts.begin())];
         }
         canonical.erase(std::unique(canonical.begin(), canonical.end()), canonical.end());
         pts = canonical;
-        for (Vec2d p : pts) on_edge_t[g].push_back(t_of(p));
+        for (Vec2d p : pts) st.on_edge_t[g].push_back(t_of(p));
     }
+}
+
+// T-junction stitching, part 2: one stage-2 cell's outline with every point of the other side
+// that lies between two of its vertices on a stage-1 edge inserted (T junctions become
+// vertices). Appends to verts; false when the cell collapsed (a corner snapped onto its
+// neighbour left fewer than 3 points or no area).
+bool stitch_t_junctions(const PlanarSubdivision& s1, const Stage2Cells& st,
+                        const std::vector<TaggedVertex>& cell, std::vector<Vec2d>& verts) {
+    const std::size_t n = cell.size();
+    const std::size_t first = verts.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const TaggedVertex& a = cell[i];
+        const TaggedVertex& b = cell[(i + 1) % n];
+        verts.push_back(a.p);
+        int g = common_edge(a, b);
+        if (g < 0) continue;
+        const std::vector<Vec2d>& pts = st.on_edge[std::size_t(g)];
+        const std::vector<double>& ts = st.on_edge_t[std::size_t(g)];
+        Vec2d e0 = s1.vertices[std::size_t(s1.edges[std::size_t(g)].v0)];
+        Vec2d e1 = s1.vertices[std::size_t(s1.edges[std::size_t(g)].v1)];
+        double ta = dot(a.p - e0, e1 - e0), tb = dot(b.p - e0, e1 - e0);
+        if (ta < tb) {
+            for (std::size_t j = 0; j < pts.size(); ++j)
+                if (ts[j] > ta && ts[j] < tb && pts[j] != a.p && pts[j] != b.p)
+                    verts.push_back(pts[j]);
+        } else {
+            for (std::size_t j = pts.size(); j-- > 0;)
+                if (ts[j] < ta && ts[j] > tb && pts[j] != a.p && pts[j] != b.p)
+                    verts.push_back(pts[j]);
+        }
+    }
+    // drop repeats (a corner snapped onto its neighbour)
+    std::size_t w = first;
+    for (std::size_t i = first; i < verts.size(); ++i)
+        if (w == first || verts[i] != verts[w - 1]) verts[w++] = verts[i];
+    verts.resize(w);
+    while (verts.size() - first > 1 && verts[first] == verts.back()) verts.pop_back();
+    if (verts.size() - first < 3 ||
+        !(polygon_area(verts.data() + first, int(verts.size() - first)) > 0.0)) {
+        verts.resize(first);
+        return false;
+    }
+    return true;
+}
+
+// T-junction stitching, part 3: every cell stitched, the final planar subdivision built.
+Status stitch_final_cells(const PlanarSubdivision& s1, const Stage2Cells& st, ScaleDivision& out) {
     std::vector<Vec2d> verts;
     std::vector<int> offsets(1, 0);
     std::vector<int> kept_stage1;
-    for (std::size_t c = 0; c < cells.size(); ++c) {
-        const std::vector<TaggedVertex>& cell = cells[c];
-        const std::size_t n = cell.size();
-        const std::size_t first = verts.size();
-        for (std::size_t i = 0; i < n; ++i) {
-            const TaggedVertex& a = cell[i];
-            const TaggedVertex& b = cell[(i + 1) % n];
-            verts.push_back(a.p);
-            int g = common_edge(a, b);
-            if (g < 0) continue;
-            const std::vector<Vec2d>& pts = on_edge[std::size_t(g)];
-            const std::vector<double>& ts = on_edge_t[std::size_t(g)];
-            Vec2d e0 = s1.vertices[std::size_t(s1.edges[std::size_t(g)].v0)];
-            Vec2d e1 = s1.vertices[std::size_t(s1.edges[std::size_t(g)].v1)];
-            double ta = dot(a.p - e0, e1 - e0), tb = dot(b.p - e0, e1 - e0);
-            if (ta < tb) {
-                for (std::size_t j = 0; j < pts.size(); ++j)
-                    if (ts[j] > ta && ts[j] < tb && pts[j] != a.p && pts[j] != b.p)
-                        verts.push_back(pts[j]);
-            } else {
-                for (std::size_t j = pts.size(); j-- > 0;)
-                    if (ts[j] < ta && ts[j] > tb && pts[j] != a.p && pts[j] != b.p)
-                        verts.push_back(pts[j]);
-            }
-        }
-        // drop repeats (a corner snapped onto its neighbour)
-        std::size_t w = first;
-        for (std::size_t i = first; i < verts.size(); ++i)
-            if (w == first || verts[i] != verts[w - 1]) verts[w++] = verts[i];
-        verts.resize(w);
-        while (verts.size() - first > 1 && verts[first] == verts.back()) verts.pop_back();
-        if (verts.size() - first < 3 ||
-            !(polygon_area(verts.data() + first, int(verts.size() - first)) > 0.0)) {
-            verts.resize(first);
-            continue;
-        }
+    for (std::size_t c = 0; c < st.cells.size(); ++c) {
+        if (!stitch_t_junctions(s1, st, st.cells[c], verts)) continue;
         offsets.push_back(int(verts.size()));
-        kept_stage1.push_back(out->cell_stage1[c]);
+        kept_stage1.push_back(out.cell_stage1[c]);
     }
-    out->cell_stage1 = kept_stage1;
+    out.cell_stage1 = kept_stage1;
     Status s = build_planar_subdivision(verts.data(), offsets.data(), int(offsets.size()) - 1,
-                                        &out->cells);
+                                        &out.cells);
     if (!s)
         return Status::error(StatusCode::degenerate, "divide_scales: stage-2 cells do not fit: %s",
                              s.message());
     return Status::success();
+}
+
+}  // namespace
+
+Status stage1_vertical_division(const ScaleParams& prm, ScaleDivision& out) {
+    return divide_single_stage(out.stage1_seeds.moved.data(), int(out.stage1_seeds.moved.size()),
+                               prm.width, prm.height, &out.stage1, &out.stage1_site);
+}
+
+Status stage2_horizontal_division(const ScaleParams& prm, ScaleDivision& out) {
+    const PlanarSubdivision& s1 = out.stage1;
+    SHITSUKAN_TRY(stage2_columns(prm.width, prm.D, prm.edge_ratio, &out.columns));
+    out.stage2_seeds.original.clear();
+    out.stage2_seeds.moved.clear();
+    out.stage2_row.clear();
+    out.cell_stage1.clear();
+    Stage2Cells st;
+    st.on_edge.resize(s1.edges.size());
+    SeedLayout row;
+    VoronoiCells vc;
+    std::vector<Vec2d> region;
+    for (int f = 0; f < s1.face_count(); ++f) {
+        SHITSUKAN_TRY(stage2_row_for_polygon(prm, f, out, row));                     // 1-2
+        SHITSUKAN_TRY(stage2_divide_polygon(s1, f, row, vc, region, st, out.cell_stage1));  // 3
+    }
+    // T junctions: both sides of a stage-1 edge get all points on it
+    weld_stage1_edge_points(s1, kWeldRelative * std::max(double(prm.width), double(prm.height)),
+                            st);
+    return stitch_final_cells(s1, st, out);
+}
+
+Status divide_scales(const ScaleParams& prm, ScaleDivision* out) {
+    if (out == nullptr)
+        return Status::error(StatusCode::invalid_argument, "divide_scales: out is null");
+    SHITSUKAN_TRY(check_scale_params(prm));
+    // ---- Stage 1 (§3.1 (1)): vertical division, processings 1-3 ---------------------------
+    Stage1SeedParams sp;
+    sp.width = prm.width;
+    sp.height = prm.height;
+    sp.D = prm.D;
+    sp.d = prm.d;
+    sp.a = prm.a;
+    sp.seed = prm.seed;
+    SHITSUKAN_TRY(stage1_seeds(sp, out->stage1_seeds));
+    out->stage1_row_id.clear();
+    SHITSUKAN_TRY(stage1_vertical_division(prm, *out));
+    // ---- Stage 2 (§3.1 (2)): horizontal division inside each stage-1 polygon -------------
+    return stage2_horizontal_division(prm, *out);
 }
 
 Status generate_scale_pattern(const ScaleParams& prm, ScalePattern* pattern, ScaleDivision* steps) {

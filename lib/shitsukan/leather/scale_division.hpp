@@ -68,6 +68,8 @@ struct ScaleParams {
 
 struct ScaleDivision {
     SeedLayout stage1_seeds;
+    std::vector<int> stage1_row_id;  // stage-1 seed -> the row id of its stage-2 random numbers
+                                     // (empty: the seed's index; tileable: its wrapped index)
     PlanarSubdivision stage1;      // stage-1 polygons, before perturbation
     std::vector<int> stage1_site;  // stage-1 polygon -> its seed index
     Stage2Columns columns;
@@ -81,8 +83,19 @@ struct ScaleDivision {
 
 Status check_scale_params(const ScaleParams& prm);
 
-// Processings 1-3 of both stages (no perturbation).
+// Processings 1-3 of both stages (no perturbation): stage1_seeds (seed_layout.hpp), then the
+// two steps below.
 Status divide_scales(const ScaleParams& prm, ScaleDivision* out);
+
+// Stage 1, processing 3: the Voronoi division of [0, W] x [0, H] by out.stage1_seeds.moved
+// (fig. 4 -> the polygons of fig. 5 before their edges bend).
+Status stage1_vertical_division(const ScaleParams& prm, ScaleDivision& out);
+
+// Stage 2, processings 1-3 in every stage-1 polygon (fig. 6): its row of seeds
+// (stage2_row_for_polygon: processings 1-2), the row's Voronoi division clipped to the polygon
+// (stage2_divide_polygon: processing 3), then the T-junction stitching (weld_stage1_edge_points,
+// stitch_t_junctions) into one planar subdivision, out.cells.
+Status stage2_horizontal_division(const ScaleParams& prm, ScaleDivision& out);
 
 // Everything: both stages, then processing 4; `steps` (optional) keeps the intermediates.
 Status generate_scale_pattern(const ScaleParams& prm, ScalePattern* pattern,
