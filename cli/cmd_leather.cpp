@@ -49,10 +49,21 @@ bool parse_section(const std::string& text, BezierChain* out) {
     return chain.count > 0;
 }
 
+// One part [lo, hi] of the command's progress line.
+struct PartProgress {
+    Progress whole;
+    float lo, hi;
+    static void show(float fraction, void* user) {
+        const PartProgress* p = static_cast<const PartProgress*>(user);
+        p->whole.report(p->lo + (p->hi - p->lo) * fraction);
+    }
+    Progress part() { return whole.fn ? Progress{show, this} : Progress{}; }
+};
+
 // The scale pattern of the chosen layout: the belly (figs. 4-7) or a fig. 3 lattice (one
 // Voronoi stage, seeds moved along x and y), plain or tileable (tileable.hpp).
 Status make_pattern(const ScaleParams& prm, int layout, bool tileable, ScalePattern* pattern,
-                    std::string* note) {
+                    std::string* note, Progress progress) {
     if (tileable) {
         TileParams tp;
         tp.layout = layout == 0 ? TileLayout::belly
@@ -60,7 +71,7 @@ Status make_pattern(const ScaleParams& prm, int layout, bool tileable, ScalePatt
                                                : TileLayout::triangular_lattice);
         tp.scales = prm;
         TileReport rep;
-        SHITSUKAN_TRY(generate_tileable_pattern(tp, *pattern, &rep));
+        SHITSUKAN_TRY(generate_tileable_pattern(tp, *pattern, &rep, progress));
         char buf[160];
         std::snprintf(buf, sizeof buf, "; tileable: %s, spacing %.5g x %.5g (%d rows)",
                       layout == 0 ? "along y" : "along x and y", double(rep.Dx), double(rep.Dy),
@@ -68,7 +79,7 @@ Status make_pattern(const ScaleParams& prm, int layout, bool tileable, ScalePatt
         *note = buf;
         return Status::success();
     }
-    if (layout == 0) return generate_scale_pattern(prm, pattern);
+    if (layout == 0) return generate_scale_pattern(prm, pattern, nullptr, progress);
     SeedLayout seeds;
     if (layout == 1)
         SHITSUKAN_TRY(square_lattice_seeds(prm.width, prm.height, prm.D, prm.a, prm.seed, &seeds));
@@ -149,12 +160,14 @@ int run_leather(int argc, char** argv) {
     progress.report(0.0f);
     ScalePattern pattern;
     std::string note;
-    if (!(s = make_pattern(prm, layout, tileable, &pattern, &note))) return f.fail_status(s);
-    progress.report(0.2f);
+    PartProgress pattern_part{progress, 0.0f, 0.2f};  // chosen: shares of a 2048 run's time
+    if (!(s = make_pattern(prm, layout, tileable, &pattern, &note, pattern_part.part())))
+        return f.fail_status(s);
     const int w = size, h = std::max(1, int(float(size) * prm.height / prm.width + 0.5f));
     LeatherMaps maps;
-    if (!(s = make_leather_maps(pattern, w, h, chain, relief, &maps))) return f.fail_status(s);
-    progress.report(0.8f);
+    PartProgress maps_part{progress, 0.2f, 0.8f};
+    if (!(s = make_leather_maps(pattern, w, h, chain, relief, &maps, maps_part.part())))
+        return f.fail_status(s);
     Gray16Image height(w, h);
     encode_height16(maps, height.data());
     const std::string height_path = out + "_height16.png", normal_path = out + "_normal.png";

@@ -1,5 +1,6 @@
 #include "shitsukan/leather/maps.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "shitsukan/core/assert.hpp"
@@ -124,7 +125,7 @@ void relief_row(const ScalePattern& pattern, const int* labels, const ScaleTable
 
 Status make_leather_maps(const ScalePattern& pattern, const int* labels, int width, int height,
                          const BezierChain& section, const ReliefOptions& options,
-                         LeatherMaps* out) {
+                         LeatherMaps* out, Progress progress) {
     SHITSUKAN_TRY(check_leather_map_inputs(pattern, labels, width, height, section, options));
     const std::size_t count = std::size_t(width) * std::size_t(height);
     out->width = width;
@@ -136,7 +137,11 @@ Status make_leather_maps(const ScalePattern& pattern, const int* labels, int wid
     out->max_height = 0.0f;
     ScaleTables tables;
     prepare_scale_tables(pattern, tables);
-    for (int j = 0; j < height; ++j) relief_row(pattern, labels, tables, section, options, j, out);
+    const int block = std::max(1, height / 100);  // chosen: about 100 reports per map
+    for (int j = 0; j < height; ++j) {
+        relief_row(pattern, labels, tables, section, options, j, out);
+        if ((j + 1) % block == 0 || j + 1 == height) progress.report(float(j + 1) / float(height));
+    }
     return Status::success();
 }
 
@@ -246,9 +251,20 @@ Status make_relief_mesh(const LeatherMaps& maps, int step, float z_scale, Triang
     return Status::success();
 }
 
+namespace {
+// The rows' share of the one-call form's progress: 0.1 .. 1.
+struct RowProgress {
+    Progress outer;
+    static void show(float fraction, void* user) {
+        const RowProgress* r = static_cast<const RowProgress*>(user);
+        r->outer.report(0.1f + 0.9f * fraction);
+    }
+};
+}  // namespace
+
 Status make_leather_maps(const ScalePattern& pattern, int width, int height,
                          const BezierChain& section, const ReliefOptions& options,
-                         LeatherMaps* out) {
+                         LeatherMaps* out, Progress progress) {
     if (width < 1 || height < 1 || width > 16384 || height > 16384)
         return Status::error(StatusCode::invalid_argument,
                              "leather maps: size %d x %d outside 1..16384", width, height);
@@ -260,8 +276,11 @@ Status make_leather_maps(const ScalePattern& pattern, int width, int height,
     std::vector<std::int32_t> labels(std::size_t(width) * std::size_t(height));
     SHITSUKAN_TRY(rasterize_scale_labels(plain, width, height, labels.data()));
     static_assert(sizeof(std::int32_t) == sizeof(int), "labels are ints");
+    progress.report(0.1f);
+    RowProgress rows{progress};
     return make_leather_maps(plain, reinterpret_cast<const int*>(labels.data()), width, height,
-                             section, options, out);
+                             section, options, out,
+                             progress.fn ? Progress{RowProgress::show, &rows} : Progress{});
 }
 
 namespace {

@@ -304,6 +304,17 @@ Status stitch_final_cells(const PlanarSubdivision& s1, const Stage2Cells& st, Sc
 
 }  // namespace
 
+Stage1SeedParams stage1_seed_params(const ScaleParams& prm) {
+    Stage1SeedParams sp;
+    sp.width = prm.width;
+    sp.height = prm.height;
+    sp.D = prm.D;
+    sp.d = prm.d;
+    sp.a = prm.a;
+    sp.seed = prm.seed;
+    return sp;
+}
+
 Status stage1_vertical_division(const ScaleParams& prm, ScaleDivision& out) {
     return divide_single_stage(out.stage1_seeds.moved.data(), int(out.stage1_seeds.moved.size()),
                                prm.width, prm.height, &out.stage1, &out.stage1_site);
@@ -336,31 +347,32 @@ Status divide_scales(const ScaleParams& prm, ScaleDivision* out) {
         return Status::error(StatusCode::invalid_argument, "divide_scales: out is null");
     SHITSUKAN_TRY(check_scale_params(prm));
     // ---- Stage 1 (§3.1 (1)): vertical division, processings 1-3 ---------------------------
-    Stage1SeedParams sp;
-    sp.width = prm.width;
-    sp.height = prm.height;
-    sp.D = prm.D;
-    sp.d = prm.d;
-    sp.a = prm.a;
-    sp.seed = prm.seed;
-    SHITSUKAN_TRY(stage1_seeds(sp, out->stage1_seeds));
+    SHITSUKAN_TRY(stage1_seeds(stage1_seed_params(prm), out->stage1_seeds));
     out->stage1_row_id.clear();
     SHITSUKAN_TRY(stage1_vertical_division(prm, *out));
     // ---- Stage 2 (§3.1 (2)): horizontal division inside each stage-1 polygon -------------
     return stage2_horizontal_division(prm, *out);
 }
 
-Status generate_scale_pattern(const ScaleParams& prm, ScalePattern* pattern, ScaleDivision* steps) {
+Status generate_scale_pattern(const ScaleParams& prm, ScalePattern* pattern, ScaleDivision* steps,
+                              Progress progress) {
     if (pattern == nullptr)
         return Status::error(StatusCode::invalid_argument,
                              "generate_scale_pattern: pattern is null");
     ScaleDivision local;
     ScaleDivision* div = steps ? steps : &local;
-    SHITSUKAN_TRY(divide_scales(prm, div));
+    SHITSUKAN_TRY(check_scale_params(prm));
+    SHITSUKAN_TRY(stage1_seeds(stage1_seed_params(prm), div->stage1_seeds));
+    div->stage1_row_id.clear();
+    SHITSUKAN_TRY(stage1_vertical_division(prm, *div));
+    progress.report(0.05f);
+    SHITSUKAN_TRY(stage2_horizontal_division(prm, *div));
+    progress.report(0.5f);
     // processing 4 in the paper's order: the stage-1 curves first, the stage-2 cells in them
     SHITSUKAN_TRY(perturb_two_stage(div->stage1, div->cells, div->cell_stage1, prm.perturbation,
                                     prm.seed, prm.width, prm.height, &div->stage1_pattern,
                                     pattern, &div->perturbation));
+    progress.report(0.95f);
     // The contract, checked once more: the final polygons' areas sum to the rectangle's. A
     // pattern that fails it is refused rather than returned wrong (found by make fuzz: p = 0.1
     // with rows far closer than D).
@@ -381,6 +393,7 @@ Status generate_scale_pattern(const ScaleParams& prm, ScalePattern* pattern, Sca
                              double(prm.width), double(prm.height), area, want, polygons,
                              double(prm.perturbation.p));
     }
+    progress.report(1.0f);
     return Status::success();
 }
 

@@ -45,6 +45,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "shitsukan/core/progress.hpp"
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/geom/planar_subdivision.hpp"
 #include "shitsukan/leather/edge_perturbation.hpp"
@@ -87,6 +88,9 @@ Status check_scale_params(const ScaleParams& prm);
 // two steps below.
 Status divide_scales(const ScaleParams& prm, ScaleDivision* out);
 
+// Stage 1, processings 1-2: the ScaleParams' share of stage1_seeds.
+Stage1SeedParams stage1_seed_params(const ScaleParams& prm);
+
 // Stage 1, processing 3: the Voronoi division of [0, W] x [0, H] by out.stage1_seeds.moved
 // (fig. 4 -> the polygons of fig. 5 before their edges bend).
 Status stage1_vertical_division(const ScaleParams& prm, ScaleDivision& out);
@@ -98,8 +102,10 @@ Status stage1_vertical_division(const ScaleParams& prm, ScaleDivision& out);
 Status stage2_horizontal_division(const ScaleParams& prm, ScaleDivision& out);
 
 // Everything: both stages, then processing 4; `steps` (optional) keeps the intermediates.
+// `progress` (core/progress.hpp) hears 0.05 after stage 1, 0.5 after stage 2, 0.95 after the
+// perturbation and 1 at the end.
 Status generate_scale_pattern(const ScaleParams& prm, ScalePattern* pattern,
-                              ScaleDivision* steps = nullptr);
+                              ScaleDivision* steps = nullptr, Progress progress = {});
 
 // One Voronoi division of [0, W] x [0, H] (fig. 2, fig. 3): polygons with area.
 Status divide_single_stage(const Vec2d* seeds, int count, float width, float height,

@@ -110,7 +110,8 @@ Status check_torus_area(const ScalePattern& out) {
 
 }  // namespace
 
-Status generate_tileable_pattern(const TileParams& prm, ScalePattern& out, TileReport* report) {
+Status generate_tileable_pattern(const TileParams& prm, ScalePattern& out, TileReport* report,
+                                 Progress progress) {
     SHITSUKAN_TRY(check_scale_params(prm.scales));
     const ScaleParams& sp = prm.scales;
     TileReport rep;
@@ -126,6 +127,7 @@ Status generate_tileable_pattern(const TileParams& prm, ScalePattern& out, TileR
         belly_block_seeds(sp, rep, div);
         SHITSUKAN_TRY(stage1_vertical_division(bp, div));
         SHITSUKAN_TRY(stage2_horizontal_division(bp, div));
+        progress.report(0.05f);
         pp.period_x = 0.0f;
         pp.period_y = sp.height;
         SHITSUKAN_TRY(perturb_two_stage(div.stage1, div.cells, div.cell_stage1, pp, sp.seed,
@@ -137,10 +139,12 @@ Status generate_tileable_pattern(const TileParams& prm, ScalePattern& out, TileR
         const float bw = float(kBlock) * sp.width, bh = float(kBlock) * sp.height;
         PlanarSubdivision sub;
         SHITSUKAN_TRY(divide_single_stage(seeds.data(), int(seeds.size()), bw, bh, &sub));
+        progress.report(0.05f);
         pp.period_x = sp.width;
         pp.period_y = sp.height;
         SHITSUKAN_TRY(perturb_subdivision(sub, pp, sp.seed, bw, bh, &block, &rep.perturbation));
     }
+    progress.report(0.9f);
     keep_middle_tile(block, sp.width, sp.height, !belly, true, out);
     Status s = check_torus_area(out);
     if (!s) {
@@ -149,6 +153,7 @@ Status generate_tileable_pattern(const TileParams& prm, ScalePattern& out, TileR
     }
     rep.polygons = out.polygon_count();
     if (report) *report = rep;
+    progress.report(1.0f);
     return Status::success();
 }
 

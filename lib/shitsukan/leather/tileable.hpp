@@ -44,6 +44,7 @@
 // Cost: 9 (lattices) or 3 (belly) times the plain pattern's division and perturbation.
 #pragma once
 
+#include "shitsukan/core/progress.hpp"
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/leather/scale_division.hpp"
 #include "shitsukan/leather/scale_pattern.hpp"
@@ -68,8 +69,9 @@ struct TileReport {
 
 // The torus pattern: each scale of the tile once (wrap_x / wrap_y set on the periodic axes);
 // its polygons' areas sum to W·H (checked: refused otherwise, like generate_scale_pattern).
+// `progress` hears 0.05 after the division(s), 0.9 after the perturbation, 1 at the end.
 Status generate_tileable_pattern(const TileParams& prm, ScalePattern& out,
-                                 TileReport* report = nullptr);
+                                 TileReport* report = nullptr, Progress progress = {});
 
 // A plain pattern covering [0, W] x [0, H] from a torus pattern: every polygon and those of its
 // copies shifted by ±W (wrap_x) and ±H (wrap_y) whose bounds meet the rectangle. Used by
