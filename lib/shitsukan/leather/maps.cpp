@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "shitsukan/core/assert.hpp"
+#include "shitsukan/core/memory_budget.hpp"
 #include "shitsukan/leather/scale_labels.hpp"
 #include "shitsukan/leather/tileable.hpp"
 
@@ -128,6 +129,10 @@ Status make_leather_maps(const ScalePattern& pattern, const int* labels, int wid
                          LeatherMaps* out, Progress progress) {
     SHITSUKAN_TRY(check_leather_map_inputs(pattern, labels, width, height, section, options));
     const std::size_t count = std::size_t(width) * std::size_t(height);
+    // heights (4 B) and normals (12 B) a pixel, and the per-scale tables
+    SHITSUKAN_TRY(check_memory_budget(
+        budget_add(budget_mul(count, 16), budget_mul(pattern.vertices.size(), 4)),
+        "leather maps (heights and normals)"));
     out->width = width;
     out->height = height;
     out->pattern_width = pattern.width;
@@ -268,6 +273,15 @@ Status make_leather_maps(const ScalePattern& pattern, int width, int height,
     if (width < 1 || height < 1 || width > 16384 || height > 16384)
         return Status::error(StatusCode::invalid_argument,
                              "leather maps: size %d x %d outside 1..16384", width, height);
+    // labels (4 B), heights (4 B) and normals (12 B) a pixel; a wrapped pattern's cover is at
+    // most 9 times the pattern (8 B a vertex and a centroid)
+    const std::uint64_t pixels = budget_mul(std::uint64_t(width), std::uint64_t(height));
+    const bool wraps = pattern.wrap_x || pattern.wrap_y;
+    const std::uint64_t cover_bytes =
+        wraps ? budget_mul(9, budget_mul(8, pattern.vertices.size() + pattern.centroids.size()))
+              : 0;
+    SHITSUKAN_TRY(check_memory_budget(budget_add(budget_mul(pixels, 20), cover_bytes),
+                                      "leather maps (labels, heights and normals)"));
     // a tileable (torus) pattern: its scales and their copies across the border (tileable.hpp)
     ScalePattern cover;
     const bool wrapped = pattern.wrap_x || pattern.wrap_y;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "shitsukan/core/memory_budget.hpp"
 #include "shitsukan/geom/polygon.hpp"
 #include "shitsukan/geom/predicates.hpp"
 #include "shitsukan/geom/voronoi.hpp"
@@ -89,6 +90,18 @@ Status check_scale_params(const ScaleParams& prm) {
     return Status::success();
 }
 
+std::uint64_t scale_pattern_bytes(const ScaleParams& prm) {
+    const double D = double(prm.D), r = std::min(1.0, std::max(0.05, double(prm.edge_ratio)));
+    // columns per side: the integral of 1 / s(u) over the half width (seed_layout.hpp's law)
+    const double k = r < 1.0 ? std::atanh(std::sqrt(1.0 - r)) / std::sqrt(1.0 - r) : 1.0;
+    const double columns = (0.5 * double(prm.width) / D * k + 2.0) * (prm.d > 0.0f ? 1.0 : 2.0);
+    const double rows = 2.0 * (std::ceil(double(prm.height) / D) + 3.0);
+    const int levels = std::max(0, std::min(prm.perturbation.levels, kMaxPerturbationLevels));
+    const double per_scale = 1024.0 + 128.0 * double(1 << levels);
+    const double bytes = rows * columns * per_scale;
+    return bytes < 1.8e19 ? std::uint64_t(bytes) : UINT64_MAX;
+}
+
 Status divide_single_stage(const Vec2d* seeds, int count, float width, float height,
                            PlanarSubdivision* out, std::vector<int>* face_site) {
     if (!(width > 0.0f && height > 0.0f) || !is_finite(width) || !is_finite(height))
@@ -137,11 +150,20 @@ Status stage2_row_for_polygon(const ScaleParams& prm, int f, ScaleDivision& out,
     return Status::success();
 }
 
+// Distance from p to the segment a-b.
+double distance_to_segment(Vec2d p, Vec2d a, Vec2d b) {
+    const Vec2d ab = b - a;
+    const double l2 = dot(ab, ab);
+    double t = l2 > 0.0 ? dot(p - a, ab) / l2 : 0.0;
+    t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+    return length(p - (a + ab * t));
+}
+
 // One vertex of a stage-2 cell, tagged with the stage-1 edges (global ids) it lies on; a corner
 // of the stage-1 polygon takes the corner's exact bits, shared by all sides.
 TaggedVertex tag_stage2_vertex(const VoronoiCells& vc, int c, int i, const Vec2d* v,
                                const std::vector<Vec2d>& region, const PlanarSubdivision& s1,
-                               int e0) {
+                               int e0, double weld) {
     const int m = int(region.size());
     TaggedVertex t{v[i], {-1, -1}};
     const int base = vc.offsets[std::size_t(c)];
@@ -158,6 +180,14 @@ TaggedVertex tag_stage2_vertex(const VoronoiCells& vc, int c, int i, const Vec2d
     for (int j = 0; j < 2; ++j) {
         int r = j == 0 ? r0 : r1;
         if (r < 0) continue;
+        // Only the region edges whose SEGMENT holds the point (fuzz finding 7): a stage-1
+        // polygon may have collinear neighbouring edges (with a ~ 0 four stage-1 seeds are
+        // cocircular and the Voronoi vertex splits into two an ulp apart), and a clip point on
+        // the long edge then lies on the tiny edge's line too. Tagged with the tiny edge, its
+        // T junctions were looked up there and the other side's were never inserted: the
+        // final cells did not share that edge, and the perturbed scales did not tile.
+        const Vec2d a = region[std::size_t(r)], b = region[std::size_t((r + 1) % m)];
+        if (!(distance_to_segment(t.p, a, b) <= weld)) continue;
         int fe = s1.face_edges[std::size_t(e0 + r)];
         t.on[j] = fe >= 0 ? fe : ~fe;
     }
@@ -167,8 +197,8 @@ TaggedVertex tag_stage2_vertex(const VoronoiCells& vc, int c, int i, const Vec2d
 // Stage 2, processing 3: the row's Voronoi division clipped to stage-1 polygon f; its cells,
 // tagged, join `st` (and each vertex on a stage-1 edge joins that edge's point list).
 Status stage2_divide_polygon(const PlanarSubdivision& s1, int f, const SeedLayout& row,
-                             VoronoiCells& vc, std::vector<Vec2d>& region, Stage2Cells& st,
-                             std::vector<int>& cell_stage1) {
+                             double weld, VoronoiCells& vc, std::vector<Vec2d>& region,
+                             Stage2Cells& st, std::vector<int>& cell_stage1) {
     const int e0 = s1.face_offsets[std::size_t(f)], m = s1.face_offsets[std::size_t(f) + 1] - e0;
     region.clear();
     for (int k = 0; k < m; ++k)
@@ -180,7 +210,8 @@ Status stage2_divide_polygon(const PlanarSubdivision& s1, int f, const SeedLayou
         const Vec2d* v = vc.cell(c, &k);
         if (k < 3 || !(polygon_area(v, k) > 0.0)) continue;
         std::vector<TaggedVertex> cell;
-        for (int i = 0; i < k; ++i) cell.push_back(tag_stage2_vertex(vc, c, i, v, region, s1, e0));
+        for (int i = 0; i < k; ++i)
+            cell.push_back(tag_stage2_vertex(vc, c, i, v, region, s1, e0, weld));
         for (const TaggedVertex& t : cell)
             for (int g : t.on)
                 if (g >= 0) st.on_edge[std::size_t(g)].push_back(t.p);
@@ -315,9 +346,73 @@ Stage1SeedParams stage1_seed_params(const ScaleParams& prm) {
     return sp;
 }
 
+namespace {
+
+// Stage-1 vertices closer than `weld` merged into one (fuzz finding 7's root cause): with
+// a ~ 0 the stage-1 seeds of both rows lie on common circles, and each Voronoi vertex where
+// four cells meet comes out as two vertices an ulp apart joined by an ulp-long edge, collinear
+// with its neighbours. Stage 2 then tagged clip points with the wrong (tiny) stage-1 edge and
+// the T junctions of the other side were never inserted: the final cells did not share that
+// edge and the perturbed scales did not tile. Merged, the four cells meet at one vertex.
+// Polygons and their order are kept (a polygon left with < 3 vertices cannot occur: the
+// polygons are a scale across); a subdivision without close vertices is returned unchanged.
+Status weld_close_stage1_vertices(double weld, ScaleDivision& out) {
+    const PlanarSubdivision& s1 = out.stage1;
+    const std::size_t nv = s1.vertices.size();
+    std::vector<int> order(nv);
+    for (std::size_t i = 0; i < nv; ++i) order[i] = int(i);
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+        return s1.vertices[std::size_t(a)].x < s1.vertices[std::size_t(b)].x;
+    });
+    std::vector<int> rep(nv);
+    for (std::size_t i = 0; i < nv; ++i) rep[i] = int(i);
+    bool merged = false;
+    for (std::size_t i = 0; i < nv; ++i)
+        for (std::size_t j = i + 1; j < nv; ++j) {
+            const Vec2d a = s1.vertices[std::size_t(order[i])], b = s1.vertices[std::size_t(order[j])];
+            if (b.x - a.x > weld) break;
+            if (length(b - a) > weld) continue;
+            int ra = order[i], rb = order[j];  // union of the two groups, by their roots
+            while (rep[std::size_t(ra)] != ra) ra = rep[std::size_t(ra)];
+            while (rep[std::size_t(rb)] != rb) rb = rep[std::size_t(rb)];
+            if (ra != rb) rep[std::size_t(std::max(ra, rb))] = std::min(ra, rb);
+            merged = true;
+        }
+    if (!merged) return Status::success();
+    std::vector<Vec2d> verts;
+    std::vector<int> offsets(1, 0);
+    for (int f = 0; f < s1.face_count(); ++f) {
+        const std::size_t first = verts.size();
+        for (int k = s1.face_offsets[std::size_t(f)]; k < s1.face_offsets[std::size_t(f) + 1];
+             ++k) {
+            int v = s1.face_vertex(s1.face_edges[std::size_t(k)]);
+            while (rep[std::size_t(v)] != v) v = rep[std::size_t(v)];
+            const Vec2d p = s1.vertices[std::size_t(v)];
+            if (verts.size() == first || verts.back() != p) verts.push_back(p);
+        }
+        while (verts.size() - first > 1 && verts[first] == verts.back()) verts.pop_back();
+        if (verts.size() - first < 3)
+            return Status::error(StatusCode::degenerate,
+                                 "divide_scales: stage-1 polygon %d collapsed when its vertices "
+                                 "closer than %g were merged",
+                                 f, weld);
+        offsets.push_back(int(verts.size()));
+    }
+    PlanarSubdivision welded;
+    SHITSUKAN_TRY(build_planar_subdivision(verts.data(), offsets.data(), int(offsets.size()) - 1,
+                                           &welded));
+    out.stage1 = std::move(welded);
+    return Status::success();
+}
+
+}  // namespace
+
 Status stage1_vertical_division(const ScaleParams& prm, ScaleDivision& out) {
-    return divide_single_stage(out.stage1_seeds.moved.data(), int(out.stage1_seeds.moved.size()),
-                               prm.width, prm.height, &out.stage1, &out.stage1_site);
+    SHITSUKAN_TRY(divide_single_stage(out.stage1_seeds.moved.data(),
+                                      int(out.stage1_seeds.moved.size()), prm.width, prm.height,
+                                      &out.stage1, &out.stage1_site));
+    return weld_close_stage1_vertices(
+        kWeldRelative * std::max(double(prm.width), double(prm.height)), out);
 }
 
 Status stage2_horizontal_division(const ScaleParams& prm, ScaleDivision& out) {
@@ -332,13 +427,14 @@ Status stage2_horizontal_division(const ScaleParams& prm, ScaleDivision& out) {
     SeedLayout row;
     VoronoiCells vc;
     std::vector<Vec2d> region;
+    const double weld = kWeldRelative * std::max(double(prm.width), double(prm.height));
     for (int f = 0; f < s1.face_count(); ++f) {
-        SHITSUKAN_TRY(stage2_row_for_polygon(prm, f, out, row));                     // 1-2
-        SHITSUKAN_TRY(stage2_divide_polygon(s1, f, row, vc, region, st, out.cell_stage1));  // 3
+        SHITSUKAN_TRY(stage2_row_for_polygon(prm, f, out, row));  // processings 1-2
+        SHITSUKAN_TRY(                                             // processing 3
+            stage2_divide_polygon(s1, f, row, weld, vc, region, st, out.cell_stage1));
     }
     // T junctions: both sides of a stage-1 edge get all points on it
-    weld_stage1_edge_points(s1, kWeldRelative * std::max(double(prm.width), double(prm.height)),
-                            st);
+    weld_stage1_edge_points(s1, weld, st);
     return stitch_final_cells(s1, st, out);
 }
 
@@ -346,6 +442,7 @@ Status divide_scales(const ScaleParams& prm, ScaleDivision* out) {
     if (out == nullptr)
         return Status::error(StatusCode::invalid_argument, "divide_scales: out is null");
     SHITSUKAN_TRY(check_scale_params(prm));
+    SHITSUKAN_TRY(check_memory_budget(scale_pattern_bytes(prm), "scale pattern (divide_scales)"));
     // ---- Stage 1 (§3.1 (1)): vertical division, processings 1-3 ---------------------------
     SHITSUKAN_TRY(stage1_seeds(stage1_seed_params(prm), out->stage1_seeds));
     out->stage1_row_id.clear();
@@ -362,6 +459,8 @@ Status generate_scale_pattern(const ScaleParams& prm, ScalePattern* pattern, Sca
     ScaleDivision local;
     ScaleDivision* div = steps ? steps : &local;
     SHITSUKAN_TRY(check_scale_params(prm));
+    SHITSUKAN_TRY(check_memory_budget(scale_pattern_bytes(prm),
+                                      "scale pattern (generate_scale_pattern)"));
     SHITSUKAN_TRY(stage1_seeds(stage1_seed_params(prm), div->stage1_seeds));
     div->stage1_row_id.clear();
     SHITSUKAN_TRY(stage1_vertical_division(prm, *div));

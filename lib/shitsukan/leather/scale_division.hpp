@@ -84,6 +84,15 @@ struct ScaleDivision {
 
 Status check_scale_params(const ScaleParams& prm);
 
+// The memory a scale pattern needs (issue 17's budget, core/memory_budget.hpp), estimated
+// before anything is allocated: N scales times (1024 + 128 · 2^levels) bytes (measured here:
+// ~0.7 KB + 87 B · 2^levels a scale at D = 0.005 and 0.0025, levels 4 and 7, rounded up),
+// with N = stage-1 rows (2 (ceil(H / D) + 3)) times the stage-2 columns a row gets
+// ((W / 2) / D · atanh(sqrt(1 - r)) / sqrt(1 - r) + 2 per side, both sides when d = 0).
+// generate_scale_pattern and divide_scales refuse (too_large, with the byte count) when it is
+// over memory_budget().
+std::uint64_t scale_pattern_bytes(const ScaleParams& prm);
+
 // Processings 1-3 of both stages (no perturbation): stage1_seeds (seed_layout.hpp), then the
 // two steps below.
 Status divide_scales(const ScaleParams& prm, ScaleDivision* out);

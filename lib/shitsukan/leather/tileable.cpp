@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "shitsukan/core/memory_budget.hpp"
 #include "shitsukan/geom/polygon.hpp"
 
 namespace shitsukan {
@@ -114,6 +115,10 @@ Status generate_tileable_pattern(const TileParams& prm, ScalePattern& out, TileR
                                  Progress progress) {
     SHITSUKAN_TRY(check_scale_params(prm.scales));
     const ScaleParams& sp = prm.scales;
+    // the block is 3 (belly) or 9 (lattices: about as many cells as the belly's scales) tiles
+    SHITSUKAN_TRY(check_memory_budget(budget_mul(scale_pattern_bytes(sp),
+                                                 prm.layout == TileLayout::belly ? 3 : 9),
+                                      "tileable scale pattern (3 or 9 tiles)"));
     TileReport rep;
     PerturbationParams pp = sp.perturbation;
     ScalePattern block;
