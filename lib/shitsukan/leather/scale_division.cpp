@@ -271,11 +271,78 @@ void weld_stage1_edge_points(const PlanarSubdivision& s1, double weld, Stage2Cel
     }
 }
 
+// The points of stage-1 edge g strictly between pa and pb (both on g), in that direction.
+void insert_points_between(const PlanarSubdivision& s1, const Stage2Cells& st, int g, Vec2d pa,
+                           Vec2d pb, std::vector<Vec2d>& verts) {
+    const std::vector<Vec2d>& pts = st.on_edge[std::size_t(g)];
+    const std::vector<double>& ts = st.on_edge_t[std::size_t(g)];
+    const Vec2d e0 = s1.vertices[std::size_t(s1.edges[std::size_t(g)].v0)];
+    const Vec2d e1 = s1.vertices[std::size_t(s1.edges[std::size_t(g)].v1)];
+    const double ta = dot(pa - e0, e1 - e0), tb = dot(pb - e0, e1 - e0);
+    if (ta < tb) {
+        for (std::size_t j = 0; j < pts.size(); ++j)
+            if (ts[j] > ta && ts[j] < tb && pts[j] != pa && pts[j] != pb) verts.push_back(pts[j]);
+    } else {
+        for (std::size_t j = pts.size(); j-- > 0;)
+            if (ts[j] < ta && ts[j] > tb && pts[j] != pa && pts[j] != pb) verts.push_back(pts[j]);
+    }
+}
+
+// Where stage-1 edge g sits in polygon f's edge loop (-1: not an edge of f).
+int loop_position(const PlanarSubdivision& s1, int f, int g) {
+    for (int k = s1.face_offsets[std::size_t(f)]; k < s1.face_offsets[std::size_t(f) + 1]; ++k) {
+        const int fe = s1.face_edges[std::size_t(k)];
+        if ((fe >= 0 ? fe : ~fe) == g) return k - s1.face_offsets[std::size_t(f)];
+    }
+    return -1;
+}
+
+// A cell side from a (on one stage-1 edge) to b (on the next one) that skipped the stage-1
+// polygon's vertex between them: the clip drops a region vertex where the region is straight
+// to rounding (a near-degenerate stage-1 vertex, fuzz finding 7's sibling: d and a ~ 0 put the
+// four-cell vertex as two vertices 1e-7 apart on a straight line). Walks polygon f's loop from
+// a's edge to b's (at most 2 steps) and inserts the vertices and T junctions passed.
+void stitch_across_stage1_vertex(const PlanarSubdivision& s1, const Stage2Cells& st, int f,
+                                 const TaggedVertex& a, const TaggedVertex& b, double weld,
+                                 std::vector<Vec2d>& verts) {
+    const int base = s1.face_offsets[std::size_t(f)];
+    const int m = s1.face_offsets[std::size_t(f) + 1] - base;
+    int best = 3, ka = -1;
+    for (int ga : a.on)
+        for (int gb : b.on) {
+            if (ga < 0 || gb < 0) continue;
+            const int pa = loop_position(s1, f, ga), pb = loop_position(s1, f, gb);
+            if (pa < 0 || pb < 0) continue;
+            const int steps = (pb - pa + m) % m;
+            if (steps > 0 && steps < best) best = steps, ka = pa;
+        }
+    if (ka < 0) return;
+    // only a side that runs along the boundary: every skipped stage-1 vertex lies on it (a
+    // bisector crossing the polygon from one edge to another is not such a side)
+    for (int step = 0; step < best; ++step) {
+        const Vec2d v = s1.vertices[std::size_t(
+            s1.face_vertex(s1.face_edges[std::size_t(base + (ka + step + 1) % m)]))];
+        if (!(distance_to_segment(v, a.p, b.p) <= weld)) return;
+    }
+    Vec2d from = a.p;
+    for (int step = 0; step <= best; ++step) {
+        const int k = (ka + step) % m;
+        const int fe = s1.face_edges[std::size_t(base + k)];
+        const int g = fe >= 0 ? fe : ~fe;
+        const Vec2d end = s1.vertices[std::size_t(s1.face_vertex(
+            s1.face_edges[std::size_t(base + (k + 1) % m)]))];
+        const Vec2d to = step == best ? b.p : end;
+        insert_points_between(s1, st, g, from, to, verts);
+        if (step < best) verts.push_back(end);
+        from = end;
+    }
+}
+
 // T-junction stitching, part 2: one stage-2 cell's outline with every point of the other side
 // that lies between two of its vertices on a stage-1 edge inserted (T junctions become
 // vertices). Appends to verts; false when the cell collapsed (a corner snapped onto its
 // neighbour left fewer than 3 points or no area).
-bool stitch_t_junctions(const PlanarSubdivision& s1, const Stage2Cells& st,
+bool stitch_t_junctions(const PlanarSubdivision& s1, const Stage2Cells& st, int f, double weld,
                         const std::vector<TaggedVertex>& cell, std::vector<Vec2d>& verts) {
     const std::size_t n = cell.size();
     const std::size_t first = verts.size();
@@ -283,22 +350,11 @@ bool stitch_t_junctions(const PlanarSubdivision& s1, const Stage2Cells& st,
         const TaggedVertex& a = cell[i];
         const TaggedVertex& b = cell[(i + 1) % n];
         verts.push_back(a.p);
-        int g = common_edge(a, b);
-        if (g < 0) continue;
-        const std::vector<Vec2d>& pts = st.on_edge[std::size_t(g)];
-        const std::vector<double>& ts = st.on_edge_t[std::size_t(g)];
-        Vec2d e0 = s1.vertices[std::size_t(s1.edges[std::size_t(g)].v0)];
-        Vec2d e1 = s1.vertices[std::size_t(s1.edges[std::size_t(g)].v1)];
-        double ta = dot(a.p - e0, e1 - e0), tb = dot(b.p - e0, e1 - e0);
-        if (ta < tb) {
-            for (std::size_t j = 0; j < pts.size(); ++j)
-                if (ts[j] > ta && ts[j] < tb && pts[j] != a.p && pts[j] != b.p)
-                    verts.push_back(pts[j]);
-        } else {
-            for (std::size_t j = pts.size(); j-- > 0;)
-                if (ts[j] < ta && ts[j] > tb && pts[j] != a.p && pts[j] != b.p)
-                    verts.push_back(pts[j]);
-        }
+        const int g = common_edge(a, b);
+        if (g >= 0)
+            insert_points_between(s1, st, g, a.p, b.p, verts);
+        else if ((a.on[0] >= 0 || a.on[1] >= 0) && (b.on[0] >= 0 || b.on[1] >= 0))
+            stitch_across_stage1_vertex(s1, st, f, a, b, weld, verts);
     }
     // drop repeats (a corner snapped onto its neighbour)
     std::size_t w = first;
@@ -315,12 +371,13 @@ bool stitch_t_junctions(const PlanarSubdivision& s1, const Stage2Cells& st,
 }
 
 // T-junction stitching, part 3: every cell stitched, the final planar subdivision built.
-Status stitch_final_cells(const PlanarSubdivision& s1, const Stage2Cells& st, ScaleDivision& out) {
+Status stitch_final_cells(const PlanarSubdivision& s1, const Stage2Cells& st, double weld,
+                          ScaleDivision& out) {
     std::vector<Vec2d> verts;
     std::vector<int> offsets(1, 0);
     std::vector<int> kept_stage1;
     for (std::size_t c = 0; c < st.cells.size(); ++c) {
-        if (!stitch_t_junctions(s1, st, st.cells[c], verts)) continue;
+        if (!stitch_t_junctions(s1, st, out.cell_stage1[c], weld, st.cells[c], verts)) continue;
         offsets.push_back(int(verts.size()));
         kept_stage1.push_back(out.cell_stage1[c]);
     }
@@ -435,7 +492,7 @@ Status stage2_horizontal_division(const ScaleParams& prm, ScaleDivision& out) {
     }
     // T junctions: both sides of a stage-1 edge get all points on it
     weld_stage1_edge_points(s1, weld, st);
-    return stitch_final_cells(s1, st, out);
+    return stitch_final_cells(s1, st, weld, out);
 }
 
 Status divide_scales(const ScaleParams& prm, ScaleDivision* out) {
