@@ -4,9 +4,9 @@
 // every inner edge (no one-sided edge inside the rectangle: finding 7's cause) and a label
 // image that the rasterizer accepts. Patterns above 64 x 64 seeds, or above 65536 seeds x
 // 2^levels curve points, are skipped (time, not correctness: the library's own limit is 4096
-// seeds per line). Small ones (<= 16 x 16 seeds, 9 tiles within the same point budget) also
-// go through generate_tileable_pattern (the layout from one more byte): a non-ok Status or
-// one tile's scales summing to W H.
+// seeds per line). Small ones (<= 16 x 16 seeds, the block of tiles within the same point
+// budget) also go through generate_tileable_pattern (the layout from one more byte): a non-ok
+// Status or one tile's scales summing to W H.
 #include <cmath>
 #include <vector>
 
@@ -53,9 +53,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FUZZ_REQUIRE(outer_edges_on_box(steps.cells, {0, 0}, {double(prm.width), double(prm.height)}));
     std::vector<std::int32_t> labels(64 * 64);
     FUZZ_REQUIRE(rasterize_scale_labels(pat, 64, 64, labels.data()).ok());
-    // the tileable block is 3 or 9 tiles: the same point budget (found as a timeout)
+    // the tileable block is 2m + 1 tiles a periodic axis, at least 6 cells of margin: at most
+    // (3 n + 12) cells; the same point budget (found as a timeout)
     if (!(prm.width / prm.D <= 16.0f && prm.height / prm.D <= 16.0f)) return 0;
-    if (!(9.0f * prm.width / prm.D * prm.height / prm.D * float(1 << prm.perturbation.levels) <=
+    if (!((3.0f * prm.width / prm.D + 12.0f) * (3.0f * prm.height / prm.D + 12.0f) *
+              float(1 << prm.perturbation.levels) <=
           65536.0f))
         return 0;
     TileParams tp;

@@ -9,29 +9,49 @@
 namespace shitsukan {
 namespace {
 
-constexpr int kBlock = 3;  // tiles per periodic axis in the block; the middle one is kept
+// The block: the kept tile with `margin` tiles on each side along each periodic axis, at least
+// kMarginCells cells (chosen: processing 4's shrink loop reaches a few cells from the block's
+// straight outer border; measured: one tile of 3 rows, D = 0.33 and a = 0.5, was not enough).
+constexpr int kMarginCells = 6;
+
+int margin_tiles(int cells_per_tile) {
+    return std::max(1, (kMarginCells + cells_per_tile - 1) / cells_per_tile);
+}
 
 int wrap_index(int i, int n) { return ((i % n) + n) % n; }
 
+// Lattice columns and rows closing the tile (see the header).
+void lattice_counts(const TileParams& prm, int* nx, int* ny) {
+    const ScaleParams& sp = prm.scales;
+    const bool tri = prm.layout == TileLayout::triangular_lattice;
+    *nx = std::max(1, int(std::lround(double(sp.width) / double(sp.D))));
+    const double Dx = double(sp.width) / *nx;
+    *ny = tri ? 2 * std::max(1, int(std::lround(double(sp.height) / (Dx * std::sqrt(3.0)))))
+              : std::max(1, int(std::lround(double(sp.height) / double(sp.D))));
+}
+
+int belly_rows(const ScaleParams& sp) {
+    return std::max(1, int(std::lround(double(sp.height) / double(sp.D))));
+}
+
 // The lattice closing the tile (see the header) and its seeds over the 3 x 3 block, each copy
 // moved by the displacement of its wrapped indices (processings 1-2 of fig. 3).
-void lattice_block_seeds(const TileParams& prm, TileReport& rep, std::vector<Vec2d>& seeds) {
+void lattice_block_seeds(const TileParams& prm, int bx, int by, TileReport& rep,
+                         std::vector<Vec2d>& seeds) {
     const ScaleParams& sp = prm.scales;
     const double W = sp.width, H = sp.height;
     const bool tri = prm.layout == TileLayout::triangular_lattice;
-    const int nx = std::max(1, int(std::lround(W / double(sp.D))));
-    const double Dx = W / nx;
-    const int ny = tri ? 2 * std::max(1, int(std::lround(H / (Dx * std::sqrt(3.0)))))
-                       : std::max(1, int(std::lround(H / double(sp.D))));
-    const double Dy = H / ny;
+    int nx, ny;
+    lattice_counts(prm, &nx, &ny);
+    const double Dx = W / nx, Dy = H / ny;
     rep.columns = nx;
     rep.rows = ny;
     rep.Dx = float(Dx);
     rep.Dy = float(Dy);
     seeds.clear();
     // one ring of seeds outside the block, as the plain lattices (the border cuts cells)
-    for (int j = -1; j <= kBlock * ny; ++j)
-        for (int i = -1; i <= kBlock * nx; ++i) {
+    for (int j = -1; j <= by * ny; ++j)
+        for (int i = -1; i <= bx * nx; ++i) {
             const int iw = wrap_index(i, nx), jw = wrap_index(j, ny);
             const double shift = tri ? 0.5 * double(jw & 1) : 0.0;
             Vec2d p{(i + 0.5 + shift) * Dx, (j + 0.5) * Dy};
@@ -45,8 +65,8 @@ void lattice_block_seeds(const TileParams& prm, TileReport& rep, std::vector<Vec
 
 // The belly's stage-1 seeds over the 1 x 3 block (fig. 4 along y, wrapped row indices), and
 // the wrapped row id of each for stage 2's random numbers.
-void belly_block_seeds(const ScaleParams& sp, TileReport& rep, ScaleDivision& div) {
-    const int ny = std::max(1, int(std::lround(double(sp.height) / double(sp.D))));
+void belly_block_seeds(const ScaleParams& sp, int by, TileReport& rep, ScaleDivision& div) {
+    const int ny = belly_rows(sp);
     const double Dy = double(sp.height) / ny, xc = 0.5 * double(sp.width);
     rep.columns = 0;
     rep.rows = ny;
@@ -55,7 +75,7 @@ void belly_block_seeds(const ScaleParams& sp, TileReport& rep, ScaleDivision& di
     div.stage1_seeds.original.clear();
     div.stage1_seeds.moved.clear();
     div.stage1_row_id.clear();
-    for (int j = -1; j <= kBlock * ny; ++j)
+    for (int j = -1; j <= by * ny; ++j)
         for (int side = 0; side < 2; ++side) {
             const int jw = wrap_index(j, ny);
             // processing 1: two rows parallel to y at distance d from the centre line
@@ -70,20 +90,21 @@ void belly_block_seeds(const ScaleParams& sp, TileReport& rep, ScaleDivision& di
 }
 
 // The middle tile's scales of the block pattern, shifted to the tile: the polygons whose
-// centroid lies in [W, 2W) x [H, 2H) (periodic axes only).
-void keep_middle_tile(const ScalePattern& block, float W, float H, bool wx, bool wy,
+// centroid lies in [mx W, (mx + 1) W) x [my H, (my + 1) H) (periodic axes only).
+void keep_middle_tile(const ScalePattern& block, float W, float H, int mx, int my,
                       ScalePattern& out) {
+    const bool wx = mx > 0, wy = my > 0;
     out = ScalePattern{};
     out.width = W;
     out.height = H;
     out.wrap_x = wx;
     out.wrap_y = wy;
     out.polygon_offsets.assign(1, 0);
-    const float ox = wx ? W : 0.0f, oy = wy ? H : 0.0f;
+    const float ox = float(mx) * W, oy = float(my) * H;
     for (int f = 0; f < block.polygon_count(); ++f) {
         const Vec2 c = block.centroids[std::size_t(f)];
-        if (wx && !(c.x >= W && c.x < 2.0f * W)) continue;
-        if (wy && !(c.y >= H && c.y < 2.0f * H)) continue;
+        if (wx && !(c.x >= ox && c.x < ox + W)) continue;
+        if (wy && !(c.y >= oy && c.y < oy + H)) continue;
         int n;
         const Vec2* v = block.polygon(f, &n);
         for (int k = 0; k < n; ++k) out.vertices.push_back(Vec2{v[k].x - ox, v[k].y - oy});
@@ -115,21 +136,23 @@ Status generate_tileable_pattern(const TileParams& prm, ScalePattern& out, TileR
                                  Progress progress) {
     SHITSUKAN_TRY(check_scale_params(prm.scales));
     const ScaleParams& sp = prm.scales;
-    // the block is 3 (belly) or 9 (lattices: about as many cells as the belly's scales) tiles
-    SHITSUKAN_TRY(check_memory_budget(budget_mul(scale_pattern_bytes(sp),
-                                                 prm.layout == TileLayout::belly ? 3 : 9),
-                                      "tileable scale pattern (3 or 9 tiles)"));
+    const bool belly = prm.layout == TileLayout::belly;
+    int nx = 0, ny = belly_rows(sp);
+    if (!belly) lattice_counts(prm, &nx, &ny);
+    const int mx = belly ? 0 : margin_tiles(nx), my = margin_tiles(ny);
+    const int bx = 2 * mx + 1, by = 2 * my + 1;
+    // the block's tiles (a lattice has about as many cells as the belly has scales)
+    SHITSUKAN_TRY(check_memory_budget(budget_mul(scale_pattern_bytes(sp), std::uint64_t(bx * by)),
+                                      "tileable scale pattern (the block of tiles)"));
     TileReport rep;
     PerturbationParams pp = sp.perturbation;
     ScalePattern block;
-    const bool belly = prm.layout == TileLayout::belly;
     if (belly) {
-        ScaleParams bp = sp;  // the 1 x 3 block: same width, three tiles high
-        bp.height = float(kBlock) * sp.height;
-        bp.D = float(double(sp.height) / std::max(1, int(std::lround(double(sp.height) /
-                                                                       double(sp.D)))));
+        ScaleParams bp = sp;  // the 1 x by block: same width, by tiles high
+        bp.height = float(by) * sp.height;
+        bp.D = float(double(sp.height) / ny);
         ScaleDivision div;
-        belly_block_seeds(sp, rep, div);
+        belly_block_seeds(sp, by, rep, div);
         SHITSUKAN_TRY(stage1_vertical_division(bp, div));
         SHITSUKAN_TRY(stage2_horizontal_division(bp, div));
         progress.report(0.05f);
@@ -140,8 +163,8 @@ Status generate_tileable_pattern(const TileParams& prm, ScalePattern& out, TileR
                                         &rep.perturbation));
     } else {
         std::vector<Vec2d> seeds;
-        lattice_block_seeds(prm, rep, seeds);
-        const float bw = float(kBlock) * sp.width, bh = float(kBlock) * sp.height;
+        lattice_block_seeds(prm, bx, by, rep, seeds);
+        const float bw = float(bx) * sp.width, bh = float(by) * sp.height;
         PlanarSubdivision sub;
         SHITSUKAN_TRY(divide_single_stage(seeds.data(), int(seeds.size()), bw, bh, &sub));
         progress.report(0.05f);
@@ -150,7 +173,7 @@ Status generate_tileable_pattern(const TileParams& prm, ScalePattern& out, TileR
         SHITSUKAN_TRY(perturb_subdivision(sub, pp, sp.seed, bw, bh, &block, &rep.perturbation));
     }
     progress.report(0.9f);
-    keep_middle_tile(block, sp.width, sp.height, !belly, true, out);
+    keep_middle_tile(block, sp.width, sp.height, mx, my, out);
     Status s = check_torus_area(out);
     if (!s) {
         out = ScalePattern{};
