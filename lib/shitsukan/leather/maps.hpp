@@ -64,7 +64,8 @@ struct LeatherMaps {
 // S and the angular edge index of relief.hpp computed once per polygon).
 // invalid_argument for sizes outside 1..16384, a label outside -1..polygon_count-1 (the
 // message gives the pixel), an invalid section or options, or a pattern without polygons.
-// `progress` (core/progress.hpp) hears the share of rows done, about 100 times.
+// `progress` (core/progress.hpp) hears the share of rows done, about 100 times. For a tileable
+// (wrapped) pattern pass its torus_cover (tileable.hpp) and that cover's labels.
 Status make_leather_maps(const ScalePattern& pattern, const int* labels, int width, int height,
                          const BezierChain& section, const ReliefOptions& options,
                          LeatherMaps* out, Progress progress = {});
