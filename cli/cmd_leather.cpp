@@ -14,6 +14,7 @@
 #include "shitsukan/image/svg_canvas.hpp"
 #include "shitsukan/leather/maps.hpp"
 #include "shitsukan/leather/scale_division.hpp"
+#include "shitsukan/leather/tileable.hpp"
 
 namespace shitsukan::cli {
 namespace {
@@ -48,6 +49,49 @@ bool parse_section(const std::string& text, BezierChain* out) {
     return chain.count > 0;
 }
 
+// One part [lo, hi] of the command's progress line.
+struct PartProgress {
+    Progress whole;
+    float lo, hi;
+    static void show(float fraction, void* user) {
+        const PartProgress* p = static_cast<const PartProgress*>(user);
+        p->whole.report(p->lo + (p->hi - p->lo) * fraction);
+    }
+    Progress part() { return whole.fn ? Progress{show, this} : Progress{}; }
+};
+
+// The scale pattern of the chosen layout: the belly (figs. 4-7) or a fig. 3 lattice (one
+// Voronoi stage, seeds moved along x and y), plain or tileable (tileable.hpp).
+Status make_pattern(const ScaleParams& prm, int layout, bool tileable, ScalePattern* pattern,
+                    std::string* note, Progress progress) {
+    if (tileable) {
+        TileParams tp;
+        tp.layout = layout == 0 ? TileLayout::belly
+                                : (layout == 1 ? TileLayout::square_lattice
+                                               : TileLayout::triangular_lattice);
+        tp.scales = prm;
+        TileReport rep;
+        SHITSUKAN_TRY(generate_tileable_pattern(tp, *pattern, &rep, progress));
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "; tileable: %s, spacing %.5g x %.5g (%d rows)",
+                      layout == 0 ? "along y" : "along x and y", double(rep.Dx), double(rep.Dy),
+                      rep.rows);
+        *note = buf;
+        return Status::success();
+    }
+    if (layout == 0) return generate_scale_pattern(prm, pattern, nullptr, progress);
+    SeedLayout seeds;
+    if (layout == 1)
+        SHITSUKAN_TRY(square_lattice_seeds(prm.width, prm.height, prm.D, prm.a, prm.seed, &seeds));
+    else
+        SHITSUKAN_TRY(
+            triangular_lattice_seeds(prm.width, prm.height, prm.D, prm.a, prm.seed, &seeds));
+    PlanarSubdivision sub;
+    SHITSUKAN_TRY(divide_single_stage(seeds.moved.data(), int(seeds.moved.size()), prm.width,
+                                      prm.height, &sub));
+    return perturb_subdivision(sub, prm.perturbation, prm.seed, prm.width, prm.height, pattern);
+}
+
 }  // namespace
 
 int run_leather(int argc, char** argv) {
@@ -55,7 +99,8 @@ int run_leather(int argc, char** argv) {
     ReliefOptions relief;
     int section = 0, size = 1024, mesh_step = 0;
     std::string out = "leather", control;
-    bool pfm = false;
+    bool pfm = false, tileable = false;
+    int layout = 0;
     FlagSet f("leather",
               "tokai1994 §3.1: the crocodile-belly scale pattern, a two-stage Voronoi division\n"
               "(stage 1 vertical, stage 2 horizontal inside each stage-1 polygon) and the edge\n"
@@ -63,7 +108,12 @@ int run_leather(int argc, char** argv) {
               "z(r) (eqs. (2)-(4), Table 1). Writes <o>_height16.png (16-bit height), <o>_normal.png\n"
               "(RGB normal map, OpenGL convention, green = +y), <o>_pattern.svg, and on request\n"
               "<o>_height.pfm and <o>_relief.obj. Pattern units: the region is W x H.\n"
-              "Seamless tiling (--tileable) is not offered yet: it needs a periodic Voronoi division.",
+              "--layout square|triangular: fig. 3's lattices (one Voronoi stage) instead of the belly.\n"
+              "--tileable: the maps repeat with no seam (a periodic Voronoi division on a torus,\n"
+              "the same perturbation on both sides of each seam; not in the paper). The lattices\n"
+              "tile along x and y (D is rounded so whole columns and rows fit the tile); the belly\n"
+              "tiles along y only (D rounded so whole rows fit H): its size gradient toward the left\n"
+              "and right edges (fig. 6) is not periodic by nature.",
               "shitsukan leather [flags] [-o prefix]");
     f.number("W", &prm.width, 0.01, 100, "§3.1: width of the pattern region");
     f.number("H", &prm.height, 0.01, 100, "§3.1: height of the pattern region");
@@ -78,6 +128,10 @@ int run_leather(int argc, char** argv) {
     f.seed(&prm.seed, "seed moves and perturbation (chosen 1)");
     f.choice("section", &section, "convex|concave|two_segment",
              "§3.2 Table 1 cross-section: figs. 13(a), 14(a), 15(a)");
+    f.choice("layout", &layout, "belly|square|triangular",
+             "§3.1: figs. 4-7's two-stage belly, or fig. 3's square / triangular lattice");
+    f.toggle("tileable", &tileable,
+             "seamless tiles (lattices: x and y; belly: along y only, see above)");
     f.text("control", &control,
            "your own section: r0,z0,r1,z1,r2,z2,r3,z3[;next segment] (eq. (2) control points)");
     f.number("edge-r", &relief.edge_r, 0.01, 10, "§3.2: r at the scale's edge (chosen 1)");
@@ -105,12 +159,15 @@ int run_leather(int argc, char** argv) {
     Progress progress = f.progress("pattern and maps");
     progress.report(0.0f);
     ScalePattern pattern;
-    if (!(s = generate_scale_pattern(prm, &pattern))) return f.fail_status(s);
-    progress.report(0.2f);
+    std::string note;
+    PartProgress pattern_part{progress, 0.0f, 0.2f};  // chosen: shares of a 2048 run's time
+    if (!(s = make_pattern(prm, layout, tileable, &pattern, &note, pattern_part.part())))
+        return f.fail_status(s);
     const int w = size, h = std::max(1, int(float(size) * prm.height / prm.width + 0.5f));
     LeatherMaps maps;
-    if (!(s = make_leather_maps(pattern, w, h, chain, relief, &maps))) return f.fail_status(s);
-    progress.report(0.8f);
+    PartProgress maps_part{progress, 0.2f, 0.8f};
+    if (!(s = make_leather_maps(pattern, w, h, chain, relief, &maps, maps_part.part())))
+        return f.fail_status(s);
     Gray16Image height(w, h);
     encode_height16(maps, height.data());
     const std::string height_path = out + "_height16.png", normal_path = out + "_normal.png";
@@ -150,10 +207,10 @@ int run_leather(int argc, char** argv) {
     progress.report(1.0f);
     std::fprintf(stderr,
                  "shitsukan leather: %d scales; wrote %s, %s, %s_pattern.svg%s%s (%d x %d; height "
-                 "unit = %.3g pattern units)\n",
+                 "unit = %.3g pattern units)%s\n",
                  pattern.polygon_count(), height_path.c_str(), normal_path.c_str(), out.c_str(),
                  pfm ? ", _height.pfm" : "", mesh_step > 0 ? ", _relief.obj" : "", w, h,
-                 double(maps.max_height) / 65535.0);
+                 double(maps.max_height) / 65535.0, note.c_str());
     return 0;
 }
 

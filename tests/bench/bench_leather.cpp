@@ -4,6 +4,8 @@
 //    against the polygon lookup alone (the label image the maps are built from): what the
 //    relief itself (ray to the edge, Bezier inversion, eq. (4)) costs on top of knowing the
 //    polygon.
+// 3. The tileable belly pattern (tileable.hpp: the 1 x 3 block of tiles, then the middle one)
+//    against the plain fig. 7 pattern: what seamless tiling costs.
 // 2. The fig. 18 handbag frame (512 x 512, 7 patches at 32 x 32 quads + 2 knobs, bump-mapped
 //    Blinn 1977, two point lights) against the same frame shaded without bump mapping.
 #include <cmath>
@@ -17,6 +19,7 @@
 #include "shitsukan/leather/products.hpp"
 #include "shitsukan/leather/scale_division.hpp"
 #include "shitsukan/leather/scale_labels.hpp"
+#include "shitsukan/leather/tileable.hpp"
 #include "shitsukan/raster/blinn1977.hpp"
 #include "shitsukan/raster/bump_mapping.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
@@ -51,6 +54,23 @@ struct BagShader {
 };
 
 }  // namespace
+
+SHITSUKAN_BENCH(leather_tileable_pattern) {
+    bool ok = true;
+    ScalePattern plain, torus;
+    const double plain_ns = bench::ns_per_op([&] {
+        ok &= generate_scale_pattern(ScaleParams{}, &plain).ok();
+        bench::sink(plain.polygon_count());
+    });
+    TileParams tp;
+    const double tile_ns = bench::ns_per_op([&] {
+        ok &= generate_tileable_pattern(tp, torus).ok();
+        bench::sink(torus.polygon_count());
+    });
+    if (!bench::timed_calls_ok(ok, "tileable pattern")) return;
+    bench::report("tileable belly pattern (fig. 7 parameters, seamless along y)", tile_ns,
+                  "plain fig. 7 pattern", plain_ns);
+}
 
 SHITSUKAN_BENCH(leather_maps) {
     ScalePattern pattern;

@@ -55,6 +55,13 @@ struct PerturbationParams {
     int levels = 4;       // chosen: 2^4 = 16 segments per edge, smooth at 512 px
     float decay = 0.5f;   // chosen: amplitude halves with the segment (H = 1)
     float safety = 0.6f;  // chosen: share of the fan triangle's height a curve may use
+    // Seamless tiling (tileable.hpp; not in the paper): periods > 0 key every edge's random
+    // numbers and its canonical end order by its coordinates wrapped by these periods (a
+    // period of 0: that axis is not wrapped, its coordinates only quantised), so an edge and
+    // its copy one period away get the same curve although their end points differ in the
+    // last bits. The key quantises to 2^-24 of the period (chosen: far below a pixel, far
+    // above double rounding). Both 0 (the default): keyed by the exact bits, as the figures.
+    float period_x = 0.0f, period_y = 0.0f;
 };
 
 constexpr int kMaxPerturbationLevels = 10;
@@ -66,6 +73,10 @@ struct PerturbationReport {
     double requested_rms = 0.0;  // RMS offset of the curves made with the requested p
     double realised_rms = 0.0;   // RMS offset after scaling down (== requested: p honoured)
 };
+
+// Whether a-b is already in the canonical order every user of an edge's curve agrees on
+// (lexicographic; with periods, by the quantised direction, see PerturbationParams).
+bool edge_ends_in_order(Vec2d a, Vec2d b, const PerturbationParams& prm);
 
 // The offsets f[0 .. 2^levels] of the edge a-b (any order: the canonical order is used inside).
 // level_cap (optional, `levels` entries): the largest amplitude allowed at each level.

@@ -1,15 +1,22 @@
 #include "shitsukan/leather/maps.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "shitsukan/core/assert.hpp"
+#include "shitsukan/core/memory_budget.hpp"
 #include "shitsukan/leather/scale_labels.hpp"
+#include "shitsukan/leather/tileable.hpp"
 
 namespace shitsukan {
 
-Status make_leather_maps(const ScalePattern& pattern, const int* labels, int width, int height,
-                         const BezierChain& section, const ReliefOptions& options,
-                         LeatherMaps* out) {
+namespace {
+
+// The public boundary: sizes, labels, the pattern's plain data (a caller may fill it by hand),
+// the section and the options.
+Status check_leather_map_inputs(const ScalePattern& pattern, const int* labels, int width,
+                                int height, const BezierChain& section,
+                                const ReliefOptions& options) {
     if (width < 1 || height < 1 || width > 16384 || height > 16384)
         return Status::error(StatusCode::invalid_argument,
                              "leather maps: size must be 1..16384 a side (got %d x %d)", width,
@@ -60,7 +67,72 @@ Status make_leather_maps(const ScalePattern& pattern, const int* labels, int wid
                                  "(-1..%d)",
                                  labels[k], int(k % std::size_t(width)),
                                  int(k / std::size_t(width)), polygons - 1);
+    return Status::success();
+}
 
+// Once per scale: its height unit S (relief.hpp step 3) and the angular index of its vertices
+// around m (O(log n) edge search; polygons that are not star-shaped use the full scan).
+struct ScaleTables {
+    std::vector<float> sizes;
+    std::vector<float> angles;
+    std::vector<char> indexed;
+};
+
+void prepare_scale_tables(const ScalePattern& pattern, ScaleTables& t) {
+    const int polygons = pattern.polygon_count();
+    t.sizes.assign(std::size_t(polygons), 0.0f);
+    t.angles.assign(pattern.vertices.size(), 0.0f);
+    t.indexed.assign(std::size_t(polygons), 0);
+    for (int i = 0; i < polygons; ++i) {
+        int n;
+        const Vec2* poly = pattern.polygon(i, &n);
+        t.sizes[std::size_t(i)] = scale_size(poly, n);
+        float* a = t.angles.data() + pattern.polygon_offsets[std::size_t(i)];
+        t.indexed[std::size_t(i)] = make_angular_index(poly, n, pattern.centroids[std::size_t(i)], a);
+    }
+}
+
+// tokai1994 §3.2 for one pixel row j: every pixel's height and normal from its scale's
+// cross-section along the ray from the centroid m through the pixel to the edge point p
+// ("computed for each polygon edge and for every polygon of §3.1").
+void relief_row(const ScalePattern& pattern, const int* labels, const ScaleTables& t,
+                const BezierChain& section, const ReliefOptions& options, int j, LeatherMaps* out) {
+    const int width = out->width;
+    const float sx = pattern.width / float(width), sy = pattern.height / float(out->height);
+    for (int i = 0; i < width; ++i) {
+        std::size_t k = std::size_t(j) * std::size_t(width) + std::size_t(i);
+        int id = labels[k];
+        if (id < 0) continue;  // no polygon: groove floor
+        int n;
+        const Vec2* poly = pattern.polygon(id, &n);
+        Vec2 x{(float(i) + 0.5f) * sx, (float(j) + 0.5f) * sy};
+        ReliefSample s;
+        Vec2 m = pattern.centroids[std::size_t(id)];
+        EdgeHit hit =
+            t.indexed[std::size_t(id)]
+                ? scale_edge_point_indexed(
+                      poly, n, m, x, t.angles.data() + pattern.polygon_offsets[std::size_t(id)])
+                : scale_edge_point(poly, n, m, x);
+        float mp = length(hit.p - m);
+        float rho = mp > 0.0f ? length(x - m) / mp : 0.0f;
+        relief_along_ray(rho, m, hit, t.sizes[std::size_t(id)], section, options, &s);
+        out->heights[k] = s.height;
+        out->normals[k] = s.normal;
+        if (s.height > out->max_height) out->max_height = s.height;
+    }
+}
+
+}  // namespace
+
+Status make_leather_maps(const ScalePattern& pattern, const int* labels, int width, int height,
+                         const BezierChain& section, const ReliefOptions& options,
+                         LeatherMaps* out, Progress progress) {
+    SHITSUKAN_TRY(check_leather_map_inputs(pattern, labels, width, height, section, options));
+    const std::size_t count = std::size_t(width) * std::size_t(height);
+    // heights (4 B) and normals (12 B) a pixel, and the per-scale tables
+    SHITSUKAN_TRY(check_memory_budget(
+        budget_add(budget_mul(count, 16), budget_mul(pattern.vertices.size(), 4)),
+        "leather maps (heights and normals)"));
     out->width = width;
     out->height = height;
     out->pattern_width = pattern.width;
@@ -68,42 +140,12 @@ Status make_leather_maps(const ScalePattern& pattern, const int* labels, int wid
     out->heights.assign(count, 0.0f);
     out->normals.assign(count, Vec3{0, 0, 1});
     out->max_height = 0.0f;
-    const float sx = pattern.width / float(width), sy = pattern.height / float(height);
-    // Once per scale: its height unit S and the angular index of its vertices around m
-    // (O(log n) edge search; polygons that are not star-shaped use the full scan).
-    std::vector<float> sizes(std::size_t(polygons), 0.0f);
-    std::vector<float> angles(pattern.vertices.size(), 0.0f);
-    std::vector<char> indexed(std::size_t(polygons), 0);
-    for (int i = 0; i < polygons; ++i) {
-        int n;
-        const Vec2* poly = pattern.polygon(i, &n);
-        sizes[std::size_t(i)] = scale_size(poly, n);
-        float* a = angles.data() + pattern.polygon_offsets[std::size_t(i)];
-        indexed[std::size_t(i)] = make_angular_index(poly, n, pattern.centroids[std::size_t(i)], a);
-    }
+    ScaleTables tables;
+    prepare_scale_tables(pattern, tables);
+    const int block = std::max(1, height / 100);  // chosen: about 100 reports per map
     for (int j = 0; j < height; ++j) {
-        for (int i = 0; i < width; ++i) {
-            std::size_t k = std::size_t(j) * std::size_t(width) + std::size_t(i);
-            int id = labels[k];
-            if (id < 0) continue;  // no polygon: groove floor
-            int n;
-            const Vec2* poly = pattern.polygon(id, &n);
-            Vec2 x{(float(i) + 0.5f) * sx, (float(j) + 0.5f) * sy};
-            ReliefSample s;
-            // tokai1994 §3.2: "computed for each polygon edge and for every polygon of §3.1".
-            Vec2 m = pattern.centroids[std::size_t(id)];
-            EdgeHit hit =
-                indexed[std::size_t(id)]
-                    ? scale_edge_point_indexed(
-                          poly, n, m, x, angles.data() + pattern.polygon_offsets[std::size_t(id)])
-                    : scale_edge_point(poly, n, m, x);
-            float mp = length(hit.p - m);
-            float rho = mp > 0.0f ? length(x - m) / mp : 0.0f;
-            relief_along_ray(rho, m, hit, sizes[std::size_t(id)], section, options, &s);
-            out->heights[k] = s.height;
-            out->normals[k] = s.normal;
-            if (s.height > out->max_height) out->max_height = s.height;
-        }
+        relief_row(pattern, labels, tables, section, options, j, out);
+        if ((j + 1) % block == 0 || j + 1 == height) progress.report(float(j + 1) / float(height));
     }
     return Status::success();
 }
@@ -214,17 +256,45 @@ Status make_relief_mesh(const LeatherMaps& maps, int step, float z_scale, Triang
     return Status::success();
 }
 
+namespace {
+// The rows' share of the one-call form's progress: 0.1 .. 1.
+struct RowProgress {
+    Progress outer;
+    static void show(float fraction, void* user) {
+        const RowProgress* r = static_cast<const RowProgress*>(user);
+        r->outer.report(0.1f + 0.9f * fraction);
+    }
+};
+}  // namespace
+
 Status make_leather_maps(const ScalePattern& pattern, int width, int height,
                          const BezierChain& section, const ReliefOptions& options,
-                         LeatherMaps* out) {
+                         LeatherMaps* out, Progress progress) {
     if (width < 1 || height < 1 || width > 16384 || height > 16384)
         return Status::error(StatusCode::invalid_argument,
                              "leather maps: size %d x %d outside 1..16384", width, height);
+    // labels (4 B), heights (4 B) and normals (12 B) a pixel; a wrapped pattern's cover is at
+    // most 9 times the pattern (8 B a vertex and a centroid)
+    const std::uint64_t pixels = budget_mul(std::uint64_t(width), std::uint64_t(height));
+    const bool wraps = pattern.wrap_x || pattern.wrap_y;
+    const std::uint64_t cover_bytes =
+        wraps ? budget_mul(9, budget_mul(8, pattern.vertices.size() + pattern.centroids.size()))
+              : 0;
+    SHITSUKAN_TRY(check_memory_budget(budget_add(budget_mul(pixels, 20), cover_bytes),
+                                      "leather maps (labels, heights and normals)"));
+    // a tileable (torus) pattern: its scales and their copies across the border (tileable.hpp)
+    ScalePattern cover;
+    const bool wrapped = pattern.wrap_x || pattern.wrap_y;
+    if (wrapped) SHITSUKAN_TRY(torus_cover(pattern, cover));
+    const ScalePattern& plain = wrapped ? cover : pattern;
     std::vector<std::int32_t> labels(std::size_t(width) * std::size_t(height));
-    SHITSUKAN_TRY(rasterize_scale_labels(pattern, width, height, labels.data()));
+    SHITSUKAN_TRY(rasterize_scale_labels(plain, width, height, labels.data()));
     static_assert(sizeof(std::int32_t) == sizeof(int), "labels are ints");
-    return make_leather_maps(pattern, reinterpret_cast<const int*>(labels.data()), width, height,
-                             section, options, out);
+    progress.report(0.1f);
+    RowProgress rows{progress};
+    return make_leather_maps(plain, reinterpret_cast<const int*>(labels.data()), width, height,
+                             section, options, out,
+                             progress.fn ? Progress{RowProgress::show, &rows} : Progress{});
 }
 
 namespace {

@@ -41,6 +41,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "shitsukan/core/progress.hpp"
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/core/vec.hpp"
 #include "shitsukan/geom/bezier_curve.hpp"
@@ -69,16 +70,20 @@ struct LeatherMaps {
 // S and the angular edge index of relief.hpp computed once per polygon).
 // invalid_argument for sizes outside 1..16384, a label outside -1..polygon_count-1 (the
 // message gives the pixel), an invalid section or options, or a pattern without polygons.
+// `progress` (core/progress.hpp) hears the share of rows done, about 100 times. For a tileable
+// (wrapped) pattern pass its torus_cover (tileable.hpp) and that cover's labels.
 Status make_leather_maps(const ScalePattern& pattern, const int* labels, int width, int height,
                          const BezierChain& section, const ReliefOptions& options,
-                         LeatherMaps* out);
+                         LeatherMaps* out, Progress progress = {});
 
 // The same in one call: the label image (rasterize_scale_labels, scale_labels.hpp) at
 // width x height, then the maps above. Same errors; the sizes are checked before the label
-// image is allocated.
+// image is allocated. A tileable pattern (wrap_x / wrap_y, tileable.hpp) is first covered by
+// its copies across the border (torus_cover), so the maps repeat with no seam.
+// `progress`: 0.1 once the labels are drawn, then the rows as above (0.1 .. 1).
 Status make_leather_maps(const ScalePattern& pattern, int width, int height,
                          const BezierChain& section, const ReliefOptions& options,
-                         LeatherMaps* out);
+                         LeatherMaps* out, Progress progress = {});
 
 // Bilinear normal at a pattern point (clamped to the map), renormalised.
 Vec3 normal_at(const LeatherMaps& maps, Vec2 pattern_point);

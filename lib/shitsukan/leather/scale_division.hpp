@@ -46,6 +46,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "shitsukan/core/progress.hpp"
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/geom/planar_subdivision.hpp"
 #include "shitsukan/leather/edge_perturbation.hpp"
@@ -69,6 +70,8 @@ struct ScaleParams {
 
 struct ScaleDivision {
     SeedLayout stage1_seeds;
+    std::vector<int> stage1_row_id;  // stage-1 seed -> the row id of its stage-2 random numbers
+                                     // (empty: the seed's index; tileable: its wrapped index)
     PlanarSubdivision stage1;      // stage-1 polygons, before perturbation
     std::vector<int> stage1_site;  // stage-1 polygon -> its seed index
     Stage2Columns columns;
@@ -82,12 +85,37 @@ struct ScaleDivision {
 
 Status check_scale_params(const ScaleParams& prm);
 
-// Processings 1-3 of both stages (no perturbation).
+// The memory a scale pattern needs (issue 17's budget, core/memory_budget.hpp), estimated
+// before anything is allocated: N scales times (1024 + 128 · 2^levels) bytes (measured here:
+// ~0.7 KB + 87 B · 2^levels a scale at D = 0.005 and 0.0025, levels 4 and 7, rounded up),
+// with N = stage-1 rows (2 (ceil(H / D) + 3)) times the stage-2 columns a row gets
+// ((W / 2) / D · atanh(sqrt(1 - r)) / sqrt(1 - r) + 2 per side, both sides when d = 0).
+// generate_scale_pattern and divide_scales refuse (too_large, with the byte count) when it is
+// over memory_budget().
+std::uint64_t scale_pattern_bytes(const ScaleParams& prm);
+
+// Processings 1-3 of both stages (no perturbation): stage1_seeds (seed_layout.hpp), then the
+// two steps below.
 Status divide_scales(const ScaleParams& prm, ScaleDivision* out);
 
+// Stage 1, processings 1-2: the ScaleParams' share of stage1_seeds.
+Stage1SeedParams stage1_seed_params(const ScaleParams& prm);
+
+// Stage 1, processing 3: the Voronoi division of [0, W] x [0, H] by out.stage1_seeds.moved
+// (fig. 4 -> the polygons of fig. 5 before their edges bend).
+Status stage1_vertical_division(const ScaleParams& prm, ScaleDivision& out);
+
+// Stage 2, processings 1-3 in every stage-1 polygon (fig. 6): its row of seeds
+// (stage2_row_for_polygon: processings 1-2), the row's Voronoi division clipped to the polygon
+// (stage2_divide_polygon: processing 3), then the T-junction stitching (weld_stage1_edge_points,
+// stitch_t_junctions) into one planar subdivision, out.cells.
+Status stage2_horizontal_division(const ScaleParams& prm, ScaleDivision& out);
+
 // Everything: both stages, then processing 4; `steps` (optional) keeps the intermediates.
+// `progress` (core/progress.hpp) hears 0.05 after stage 1, 0.5 after stage 2, 0.95 after the
+// perturbation and 1 at the end.
 Status generate_scale_pattern(const ScaleParams& prm, ScalePattern* pattern,
-                              ScaleDivision* steps = nullptr);
+                              ScaleDivision* steps = nullptr, Progress progress = {});
 
 // One Voronoi division of [0, W] x [0, H] (fig. 2, fig. 3): polygons with area.
 Status divide_single_stage(const Vec2d* seeds, int count, float width, float height,

@@ -27,6 +27,10 @@ struct ScalePattern {
     std::vector<Vec2> vertices;        // all polygons' vertices, concatenated
     std::vector<int> polygon_offsets;  // polygon i = vertices[offsets[i] .. offsets[i + 1])
     std::vector<Vec2> centroids;       // one per polygon
+    // Tileable patterns (tileable.hpp): the polygons tile the torus [0, W) x [0, H) instead of
+    // the rectangle; a polygon may cross the border and continues on the other side (its copy
+    // one period away). torus_cover() turns such a pattern into one covering the rectangle.
+    bool wrap_x = false, wrap_y = false;
 
     int polygon_count() const {
         return polygon_offsets.empty() ? 0 : int(polygon_offsets.size()) - 1;

@@ -69,8 +69,10 @@ Status triangular_lattice_seeds(float width, float height, float D, float a, std
     return Status::success();
 }
 
-Status stage1_seeds(float width, float height, float D, float d, float a, std::uint32_t seed,
-                    SeedLayout* out) {
+Status stage1_seeds(const Stage1SeedParams& prm, SeedLayout& out_layout) {
+    const float width = prm.width, height = prm.height, D = prm.D, d = prm.d, a = prm.a;
+    const std::uint32_t seed = prm.seed;
+    SeedLayout* out = &out_layout;
     SHITSUKAN_TRY(check_common("stage1_seeds", width, height, D, a));
     if (!(d >= 0.0f) || !is_finite(d))
         return Status::error(StatusCode::invalid_argument,

@@ -5,7 +5,8 @@
 //   SeedLayout s;
 //   Status st = square_lattice_seeds(1, 1, 0.1f, 0.2f, 7, &s);  // fig. 3 (e)-(h): x and y
 //   if (st) st = triangular_lattice_seeds(1, 1, 0.1f, 0.2f, 7, &s);  // fig. 3 (a)-(d)
-//   if (st) st = stage1_seeds(1, 1, 0.1f, 0.1f, 0.25f, 7, &s);  // fig. 4: W, H, D, d, a, seed
+//   Stage1SeedParams p1;                      // fig. 4: W, H, D, d, a, seed (fig. 7's values)
+//   if (st) st = stage1_seeds(p1, s);
 //   Stage2Columns c;
 //   if (st) st = stage2_columns(1, 0.1f, 0.5f, &c);       // fig. 6: W, D, edge ratio -> columns
 //   if (st) st = stage2_row_seeds(c, 0.25f, 0.5, 3, 7, &s);  // one row: a, y, row id, seed
@@ -76,8 +77,14 @@ Status triangular_lattice_seeds(float width, float height, float D, float a, std
 // Stage 1 (fig. 4): two rows parallel to y at x = W/2 - d (left) and x = W/2 + d (right),
 // y = j D for j = -1 .. ceil(H / D) + 1 (chosen: the top and bottom edges then cut rows near
 // their middle, never a sliver); seed 2 (j + 1) + side; moved along y.
-Status stage1_seeds(float width, float height, float D, float d, float a, std::uint32_t seed,
-                    SeedLayout* out);
+struct Stage1SeedParams {
+    float width = 1.0f, height = 1.0f;  // the pattern region [0, W] x [0, H]
+    float D = 0.1f;                     // seed spacing along y (chosen default, as ScaleParams)
+    float d = 0.1f;                     // distance of each row from the centre line (fig. 7: D)
+    float a = 0.25f;                    // relative displacement of eq. (1) (fig. 7)
+    std::uint32_t seed = 1;
+};
+Status stage1_seeds(const Stage1SeedParams& prm, SeedLayout& out);
 
 struct Stage2Columns {
     std::vector<double> x;        // column positions, increasing
