@@ -116,6 +116,7 @@
 #include "shitsukan/leather/scale_pattern.hpp"
 #include "shitsukan/leather/scale_statistics.hpp"
 #include "shitsukan/leather/seed_layout.hpp"
+#include "shitsukan/leather/tileable.hpp"
 
 // wrinkly
 #include "shitsukan/wrinkly/control_mesh.hpp"

@@ -4,14 +4,17 @@
 // same edge perturbation on both sides of every seam.
 //
 // Manual
+//   #include "shitsukan/leather/maps.hpp"
+//
 //   TileParams tp;                          // the crocodile belly (fig. 7's d, a, p)
 //   tp.layout = TileLayout::belly;          // tiles along y; along x the size gradient stays
 //   ScalePattern torus;
 //   TileReport rep;
 //   Status s = generate_tileable_pattern(tp, torus, &rep);   // rep.Dx, rep.Dy: spacing used
 //   LeatherMaps maps;                       // maps.hpp: a wrapped pattern is covered first
-//   s = make_leather_maps(torus, 512, 512, table1_section(Table1Section::convex),
-//                         ReliefOptions{}, &maps);
+//   if (s) s = make_leather_maps(torus, 128, 128, table1_section(Table1Section::convex),
+//                                ReliefOptions{}, &maps);
+//   if (!s) return s;                       // maps.height tiles: column 0 follows column 127
 //
 // How (chosen here). A periodic Voronoi division is built from geom's ordinary one: the seeds
 // of one tile and their wrapped copies fill a block of 2m + 1 tiles along each periodic axis
