@@ -58,6 +58,9 @@ good leather --size 96 --section concave --pfm --obj-step 8 -o croc -- croc_heig
      croc_normal.png croc_pattern.svg croc_height.pfm croc_relief.obj
 good leather --size 64 --control "0,0.1,0.5,0.1,0.8,0.12,1,0" --D 0.2 --d 0.2 -o own -- \
      own_height16.png own_normal.png
+good leather --size 64 --tileable -o tile -- tile_height16.png tile_normal.png
+good leather --size 64 --tileable --layout triangular --D 0.25 -o tri -- tri_height16.png \
+     tri_normal.png
 good wrinkly --mesh "$ROOT/examples/data/ridge.mesh" --grid-level 2 --size 64 -o wr -- wr.obj wr.png
 good wrinkly --mesh "$ROOT/examples/data/ridge.mesh" --form superposed --delta 0.6 --K 3 \
      --grid-level 2 --size 64 -o sp -- sp.obj sp.png
@@ -97,6 +100,7 @@ refused "--view needs --obj" marble --view x.png
 refused "-o needs a value" marble -o
 refused "--a must be a number in [0, 1]" leather --a 2
 refused "--section must be one of convex|concave|two_segment" leather --section flat
+refused "--layout" leather --layout hexagonal
 refused "--control must be 8 numbers" leather --control "1,2,3"
 refused "--control: " leather --control "0,0,1,1,0,0.5,0.1,0"
 refused "--D must be a number" leather --D 0
