@@ -163,11 +163,15 @@ Status sample_hierarchy(const WrSurface& surface, const HierarchicalOptions& o,
         std::vector<float> src_u(l.pos_u.size()), src_v(l.pos_v.size());
         for (std::size_t i = 0; i < src_u.size(); ++i) src_u[i] = surface.inverse_u(l.pos_u[i], k);
         for (std::size_t j = 0; j < src_v.size(); ++j) src_v[j] = surface.inverse_v(l.pos_v[j], k);
+        // The spline bases depend on one parameter each: located once per column and row.
+        std::vector<WrBasisAt> basis_u(src_u.size()), basis_v(src_v.size());
+        for (std::size_t i = 0; i < src_u.size(); ++i) basis_u[i] = surface.basis_u(src_u[i]);
+        for (std::size_t j = 0; j < src_v.size(); ++j) basis_v[j] = surface.basis_v(src_v[j]);
         l.values.resize(src_u.size() * src_v.size() * kWrAttributeChannels);
         for (std::size_t j = 0; j < src_v.size(); ++j) {
             for (std::size_t i = 0; i < src_u.size(); ++i) {
                 // The sample: H((F_U^k)^{-1}(u_s), (F_V^k)^{-1}(v_s)) and the other attributes.
-                WrAttributes a = surface.attributes(src_u[i], src_v[j]);
+                WrAttributes a = surface.attributes(basis_u[i], basis_v[j]);
                 const int ii = int(i), jj = int(j);
                 if (o.jitter_height > 0) {
                     const float g =
@@ -202,12 +206,19 @@ Status sample_hierarchy(const WrSurface& surface, const HierarchicalOptions& o,
 
 SuperposedSample superposed_sampled(const WrSurface& surface, const HierarchicalSampling& hs,
                                     float u, float v, float tail_tolerance) {
+    return superposed_sampled(surface, hs, surface.basis_u(u), surface.basis_v(v), u, v,
+                              tail_tolerance);
+}
+
+SuperposedSample superposed_sampled(const WrSurface& surface, const HierarchicalSampling& hs,
+                                    const WrBasisAt& bu, const WrBasisAt& bv, float u, float v,
+                                    float tail_tolerance) {
     SuperposedSample r;
-    r.base = surface.base_point(u, v);
+    r.base = surface.base_point(bu, bv, u, v);
     const float delta = r.base.delta;
     const float hmax = surface.max_abs_height();
     // k = 0: F^0 is the identity, H^0 = H (chosen here: nothing to sample away).
-    WrAttributes a0 = surface.attributes(u, v);
+    WrAttributes a0 = surface.attributes(bu, bv);
     float w = superposition_weight(delta, 0);
     WrAttributes sum;
     sum.height = w * a0.height;

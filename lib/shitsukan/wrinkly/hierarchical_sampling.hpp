@@ -106,5 +106,10 @@ Status sample_hierarchy(const WrSurface& surface, const HierarchicalOptions& opt
 // factor (1 + jitter_height·g), so the bound is then approximate.
 SuperposedSample superposed_sampled(const WrSurface& surface, const HierarchicalSampling& hs,
                                     float u, float v, float tail_tolerance = 0);
+// The same with the bases at (u, v) located once (surface.basis_u(u), basis_v(v)): a grid
+// locates them per column and row. Same bits.
+SuperposedSample superposed_sampled(const WrSurface& surface, const HierarchicalSampling& hs,
+                                    const WrBasisAt& bu, const WrBasisAt& bv, float u, float v,
+                                    float tail_tolerance);
 
 }  // namespace shitsukan
