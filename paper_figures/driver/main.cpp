@@ -110,8 +110,11 @@ double process_cpu_seconds() {
 class Scheduler {
 public:
     Scheduler(const std::vector<FigureSpec>& figures, std::string out, bool quick)
-        : figures_(figures), out_(std::move(out)), quick_(quick),
-          state_(figures.size(), State::pending), order_(schedule_order(figures)),
+        : figures_(figures),
+          out_(std::move(out)),
+          quick_(quick),
+          state_(figures.size(), State::pending),
+          order_(schedule_order(figures)),
           results_(figures.size()) {}
 
     std::vector<Result> run(int jobs) {
@@ -173,14 +176,14 @@ private:
             std::lock_guard<std::mutex> lock(mutex_);
             ++finished_;
             if (st.ok())
-                std::printf("[%zu/%zu] %s/%s ... %.2f s (CPU %.2f s)\n", finished_,
-                            figures_.size(), s.paper, s.id, secs, cpu);
+                std::printf("[%zu/%zu] %s/%s ... %.2f s (CPU %.2f s)\n", finished_, figures_.size(),
+                            s.paper, s.id, secs, cpu);
             else
                 std::printf("[%zu/%zu] %s/%s ... FAILED (%s)\n", finished_, figures_.size(),
                             s.paper, s.id, st.message());
             std::fflush(stdout);
-            results_[i] = {s,   st.ok(), st.message(), secs, ctx.parameters(), ctx.notes(),
-                           ctx.outputs()};
+            results_[i] = {s,           st.ok(),      st.message(), secs, ctx.parameters(),
+                           ctx.notes(), ctx.outputs()};
             state_[i] = State::done;
             changed_.notify_all();
         }
@@ -241,10 +244,9 @@ bool write_index(const std::string& out, const std::vector<Result>& results, boo
 }
 
 void usage() {
-    std::fprintf(
-        stderr,
-        "usage: paper_figures [--list] [--only <paper>[/<id>]]... [--out DIR] [--quick] "
-        "[--jobs N]\n");
+    std::fprintf(stderr,
+                 "usage: paper_figures [--list] [--only <paper>[/<id>]]... [--out DIR] [--quick] "
+                 "[--jobs N]\n");
 }
 
 }  // namespace
@@ -310,8 +312,9 @@ int main(int argc, char** argv) {
     double total =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start_all).count();
     const double cpu = process_cpu_seconds() - cpu_start;
-    std::printf("paper_figures: %zu figures, %d failed, %.1f s wall, %.1f s CPU (user + sys), "
-                "%d jobs; index: %s/index.md\n",
-                figures.size(), failures, total, cpu, jobs, out.c_str());
+    std::printf(
+        "paper_figures: %zu figures, %d failed, %.1f s wall, %.1f s CPU (user + sys), "
+        "%d jobs; index: %s/index.md\n",
+        figures.size(), failures, total, cpu, jobs, out.c_str());
     return failures ? 1 : 0;
 }

@@ -63,8 +63,8 @@ float unit_parameter(float u) { return u >= 0.0f ? (u <= 1.0f ? u : 1.0f) : 0.0f
 
 // evaluate_tensor_surface (geom/tensor_surface.cpp) after its bases are located: the same
 // sums in the same order, so the same bits.
-void evaluate_located(int degree, const TensorGrid& grid, const WrBasisAt& bu,
-                      const WrBasisAt& bv, float* out, float* du, float* dv) {
+void evaluate_located(int degree, const TensorGrid& grid, const WrBasisAt& bu, const WrBasisAt& bv,
+                      float* out, float* du, float* dv) {
     const int ch = grid.channels;
     for (int c = 0; c < ch; ++c) {
         out[c] = 0;
@@ -112,8 +112,7 @@ BasePoint WrSurface::base_point(float u, float v) const {
     return base_point(basis_u(u), basis_v(v), u, v);
 }
 
-BasePoint WrSurface::base_point(const WrBasisAt& bu, const WrBasisAt& bv, float u,
-                                float v) const {
+BasePoint WrSurface::base_point(const WrBasisAt& bu, const WrBasisAt& bv, float u, float v) const {
     const TensorGrid g{geometry_.data(), cols_, rows_, 4};
     float p[4], pu[4], pv[4];
     evaluate_located(degree_, g, bu, bv, p, pu, pv);

@@ -61,8 +61,8 @@ constexpr int kWrAttributeChannels = 8;  // height, r, g, b, transparency, vx, v
 // evaluations computes it once per column and once per row (wr_tessellation.cpp) instead of
 // once per point; the values are the ones evaluate_tensor_surface computes, so is the result.
 struct WrBasisAt {
-    int span = 0;         // first control point index of the span
-    float scale = 1.0f;   // d(local t)/d(global parameter): 1 (Bezier) or the span count
+    int span = 0;        // first control point index of the span
+    float scale = 1.0f;  // d(local t)/d(global parameter): 1 (Bezier) or the span count
     float b[kMaxBasisDegree + 1] = {};
     float db[kMaxBasisDegree + 1] = {};
 };

@@ -78,7 +78,9 @@ WrAxisBases locate_axis_bases(const WrSurface& surface, const std::vector<float>
                               const WrTessellationOptions& o) {
     WrAxisBases r;
     const int steps = o.levels + 1;
-    auto locate = [&](float x) { return axis == Axis::u ? surface.basis_u(x) : surface.basis_v(x); };
+    auto locate = [&](float x) {
+        return axis == Axis::u ? surface.basis_u(x) : surface.basis_v(x);
+    };
     auto inverse = [&](float x, int k) {
         return axis == Axis::u ? surface.inverse_u(x, k) : surface.inverse_v(x, k);
     };
