@@ -67,14 +67,17 @@ Status check_wr_grid_options(const WrSurface& surface, const HierarchicalSamplin
 
 // The spline bases of one grid axis (they depend on u alone, or v alone): at the grid
 // parameters themselves (index [i]) and at their IST inverses for the steps the form needs
-// (index [i·(K + 1) + k]; step K only for eq. (15), every k for eq. (16)).
+// (index [i·(K + 1) + k]; step K only for eq. (15), every k for eq. (16)); for eq. (20) the
+// sample weights of steps k = 1..K' of the sampling (index [i·K' + k - 1]).
 struct WrAxisBases {
     std::vector<WrBasisAt> at, inverse;
+    std::vector<SampleWeights> weights;
 };
 
 enum class Axis { u, v };
 
-WrAxisBases locate_axis_bases(const WrSurface& surface, const std::vector<float>& g, Axis axis,
+WrAxisBases locate_axis_bases(const WrSurface& surface, const HierarchicalSampling* sampling,
+                              const std::vector<float>& g, Axis axis,
                               const WrTessellationOptions& o) {
     WrAxisBases r;
     const int steps = o.levels + 1;
@@ -92,6 +95,14 @@ WrAxisBases locate_axis_bases(const WrSurface& surface, const std::vector<float>
             for (int k = o.form == WrSurfaceForm::wr ? o.levels : 0; k <= o.levels; ++k)
                 r.inverse[i * std::size_t(steps) + std::size_t(k)] = locate(inverse(g[i], k));
     }
+    if (o.form == WrSurfaceForm::superposed) {
+        const int levels = sampling->levels();
+        r.weights.resize(g.size() * std::size_t(levels));
+        for (std::size_t i = 0; i < g.size(); ++i)
+            for (int k = 1; k <= levels; ++k)
+                r.weights[i * std::size_t(levels) + std::size_t(k - 1)] =
+                    axis == Axis::u ? sampling->weights_u(k, g[i]) : sampling->weights_v(k, g[i]);
+    }
     return r;
 }
 
@@ -104,8 +115,8 @@ Status evaluate_wr_grid(const WrSurface& surface, const HierarchicalSampling* sa
         wr_grid_positions(surface.axis_u(), o.grid_level, o.subdivisions, o.u0, o.u1);
     const std::vector<float> gv =
         wr_grid_positions(surface.axis_v(), o.grid_level, o.subdivisions, o.v0, o.v1);
-    const WrAxisBases bu = locate_axis_bases(surface, gu, Axis::u, o);
-    const WrAxisBases bv = locate_axis_bases(surface, gv, Axis::v, o);
+    const WrAxisBases bu = locate_axis_bases(surface, sampling, gu, Axis::u, o);
+    const WrAxisBases bv = locate_axis_bases(surface, sampling, gv, Axis::v, o);
     const int nu = int(gu.size()), nv = int(gv.size());
     const std::size_t steps = std::size_t(o.levels) + 1;
     WrMesh m;
@@ -128,8 +139,10 @@ Status evaluate_wr_grid(const WrSurface& surface, const HierarchicalSampling* sa
             Vec3 p;
             WrAttributes a;
             if (o.form == WrSurfaceForm::superposed) {
-                const SuperposedSample s =
-                    superposed_sampled(surface, *sampling, au, av, u, v, o.tail_tolerance);
+                const std::size_t levels = std::size_t(sampling->levels());
+                const SuperposedSample s = superposed_sampled(
+                    surface, *sampling, au, av, bu.weights.data() + std::size_t(i) * levels,
+                    bv.weights.data() + std::size_t(j) * levels, u, v, o.tail_tolerance);
                 p = s.position;
                 a = s.attributes;
                 levels_sum += s.levels_used;
