@@ -1,6 +1,8 @@
 // small-device: yes (trilinear interpolation eq. (6); no allocation)
 #include "shitsukan/solid/turbulence.hpp"
 
+#include <cstring>
+
 #include "shitsukan/core/assert.hpp"
 #include "shitsukan/core/scalar.hpp"
 
@@ -42,7 +44,8 @@ inline Float4 lerp4(Float4 a, Float4 b, Float4 t) {
 
 // trilinear_corners for four samples of one cell (the same eight nodes, four x fractions).
 void trilinear_corners4(const float d[8], const float* fx, float fy, float fz, float* out) {
-    const Float4 t = {fx[0], fx[1], fx[2], fx[3]};
+    Float4 t;
+    std::memcpy(&t, fx, sizeof t);
     const Float4 ty = {fy, fy, fy, fy}, tz = {fz, fz, fz, fz};
     auto splat = [](float v) { return Float4{v, v, v, v}; };
     const Float4 edge_y0z0 = lerp4(splat(d[0]), splat(d[1]), t);
@@ -52,7 +55,7 @@ void trilinear_corners4(const float d[8], const float* fx, float fy, float fz, f
     const Float4 face_z0 = lerp4(edge_y0z0, edge_y1z0, ty);
     const Float4 face_z1 = lerp4(edge_y0z1, edge_y1z1, ty);
     const Float4 r = lerp4(face_z0, face_z1, tz);
-    for (int k = 0; k < 4; ++k) out[k] = r[k];
+    std::memcpy(out, &r, sizeof r);
 }
 
 typedef int Int4 __attribute__((vector_size(16)));
@@ -73,10 +76,8 @@ void split_row4(float start, float step, int i, int cells, int* cell, float* fra
     Int4 c = __builtin_convertvector(t, Int4);
     c += c >= Int4{cells, cells, cells, cells};  // the last node belongs to the last cell
     const Float4 f = t - __builtin_convertvector(c, Float4);
-    for (int k = 0; k < 4; ++k) {
-        cell[k] = c[k];
-        fraction[k] = f[k];
-    }
+    std::memcpy(cell, &c, sizeof c);
+    std::memcpy(fraction, &f, sizeof f);
 }
 #else
 void split_row4(float start, float step, int i, int cells, int* cell, float* fraction) {
@@ -111,15 +112,32 @@ void turbulence_row(const LatticeView& lattice, Vec3 start, float step_x, int n,
             split_row4(start.x, step_x, i0 + k0, cells, cell + k0, fx + k0);
         for (; k0 < m; ++k0)
             split_lattice_coordinate(start.x + float(i0 + k0) * step_x, cells, &cell[k0], &fx[k0]);
-        for (int k = 0; k < m;) {
-            int end = k + 1;  // the run of samples in the same cell
-            while (end < m && cell[end] == cell[k]) ++end;
-            const float* base = row + std::size_t(cell[k]);
-            const float d[8] = {
+        // Four samples at a time: in one cell (the usual case when the step is below a
+        // quarter of a cell) they share its eight nodes and go through eq. (6) as one vector;
+        // otherwise, and for the last few, one by one.
+        auto corners = [&](int c, float d[8]) {
+            const float* base = row + std::size_t(c);
+            const float v[8] = {
                 base[0],     base[1],         base[side],         base[side + 1],
                 base[plane], base[plane + 1], base[plane + side], base[plane + side + 1]};
-            for (; k + 4 <= end; k += 4) trilinear_corners4(d, fx + k, fy, fz, out + i0 + k);
-            for (; k < end; ++k) out[i0 + k] = trilinear_corners(d, fx[k], fy, fz);
+            std::memcpy(d, v, sizeof v);
+        };
+        float d[8];
+        int k = 0;
+        for (; k + 4 <= m; k += 4) {
+            if (cell[k] == cell[k + 1] && cell[k + 2] == cell[k + 3] && cell[k] == cell[k + 3]) {
+                corners(cell[k], d);
+                trilinear_corners4(d, fx + k, fy, fz, out + i0 + k);
+            } else {
+                for (int l = k; l < k + 4; ++l) {
+                    corners(cell[l], d);
+                    out[i0 + l] = trilinear_corners(d, fx[l], fy, fz);
+                }
+            }
+        }
+        for (; k < m; ++k) {
+            corners(cell[k], d);
+            out[i0 + k] = trilinear_corners(d, fx[k], fy, fz);
         }
     }
 }
