@@ -195,15 +195,24 @@ $(BUILD)/fuzzobj/%.o: %.cpp $(FLAGS_STAMP)
 
 # ---- determinism: the quick figures from g++ and from clang++ must be the same files ----
 # (images, SVG, CSV, OBJ; the .md notes and tables carry measured times and are not compared)
+# The g++ figures are rendered twice, on 2 threads and on 1 (--jobs): the same files again,
+# and the same index apart from measured numbers (headings, outputs and parameter rows).
+DET_INDEX_LINES := grep -E '^(\#|!\[|Output:)|\| (given|chosen here) \| [^|]*\|$$'
 figures-determinism: deps fuzz-deps
 	@$(SUBMAKE) $(BUILD)/paper_figures
 	@$(MAKE) --no-print-directory SHITSUKAN_SUBMAKE=1 -j$(JOBS) BUILD=$(BUILD)/clang CXX=clang++ CI= \
 	  $(BUILD)/clang/paper_figures
-	@rm -rf $(BUILD)/det-gcc $(BUILD)/det-clang
-	$(BUILD)/paper_figures --quick --out $(BUILD)/det-gcc > /dev/null
+	@rm -rf $(BUILD)/det-gcc $(BUILD)/det-gcc-j1 $(BUILD)/det-clang
+	$(BUILD)/paper_figures --quick --jobs 2 --out $(BUILD)/det-gcc > /dev/null
+	$(BUILD)/paper_figures --quick --jobs 1 --out $(BUILD)/det-gcc-j1 > /dev/null
 	$(BUILD)/clang/paper_figures --quick --out $(BUILD)/det-clang > /dev/null
-	@cd $(BUILD)/det-gcc && find . -type f ! -name '*.md' | LC_ALL=C sort | xargs sha256sum > ../det-gcc.sha
-	@cd $(BUILD)/det-clang && find . -type f ! -name '*.md' | LC_ALL=C sort | xargs sha256sum > ../det-clang.sha
+	@for d in det-gcc det-gcc-j1 det-clang; do \
+	  (cd $(BUILD)/$$d && find . -type f ! -name '*.md' | LC_ALL=C sort | xargs sha256sum > ../$$d.sha \
+	   && $(DET_INDEX_LINES) index.md > ../$$d.index) || exit 1; done
+	@if diff $(BUILD)/det-gcc.sha $(BUILD)/det-gcc-j1.sha > $(BUILD)/det.diff && \
+	  diff $(BUILD)/det-gcc.index $(BUILD)/det-gcc-j1.index >> $(BUILD)/det.diff; then \
+	  echo "figures-determinism: $$(wc -l < $(BUILD)/det-gcc.sha) files and $$(wc -l < $(BUILD)/det-gcc.index) index lines identical with --jobs 2 and --jobs 1"; \
+	else echo "figures-determinism: --jobs 2 and --jobs 1 outputs differ:"; cat $(BUILD)/det.diff; exit 1; fi
 	@if diff $(BUILD)/det-gcc.sha $(BUILD)/det-clang.sha > $(BUILD)/det.diff; then \
 	  echo "figures-determinism: $$(wc -l < $(BUILD)/det-gcc.sha) files identical between g++ and clang++"; \
 	else echo "figures-determinism: g++ and clang++ outputs differ:"; cat $(BUILD)/det.diff; exit 1; fi
@@ -426,8 +435,9 @@ $(BUILD)/tests-sanitize: $(SAN_OBJS)
 	$(CXX) $(CXXFLAGS) $(SAN_FLAGS) -o $@ $(SAN_OBJS)
 
 # Figure objects are linked directly (not through an archive): they register themselves.
+# -pthread: the driver renders figures on threads (--jobs).
 $(BUILD)/paper_figures: $(FIG_OBJS) $(LIBRARY)
-	$(CXX) $(CXXFLAGS) -o $@ $(FIG_OBJS) $(LIBRARY)
+	$(CXX) $(CXXFLAGS) -pthread -o $@ $(FIG_OBJS) $(LIBRARY)
 
 $(BUILD)/bench: $(BENCH_OBJS) $(LIBRARY)
 	$(CXX) $(CXXFLAGS) -o $@ $(BENCH_OBJS) $(LIBRARY) -lnoise -lmpfr -lgmp

@@ -17,6 +17,17 @@
 namespace shitsukan::cli {
 namespace {
 
+// A part [lo, hi] of the command's progress bar, filled by one library step's own 0 .. 1.
+struct ProgressPart {
+    Progress whole;
+    float lo, hi;
+};
+
+void report_part(float fraction, void* user) {
+    const auto* part = static_cast<const ProgressPart*>(user);
+    part->whole.report(part->lo + (part->hi - part->lo) * fraction);
+}
+
 // The control-mesh file: '#' comments, then "cols rows", then cols·rows points row by row,
 // one a line: "x y z h [r g b [delta]]" (position x_i, height h_i, colour c_i in [0, 1],
 // ratio value delta_i of eq. (19)). Errors name the file and line.
@@ -154,6 +165,8 @@ int run_wrinkly(int argc, char** argv) {
         o.form = WrSurfaceForm::superposed;
     }
     progress.report(0.4f);
+    ProgressPart tessellation{progress, 0.4f, 0.7f};  // the grid rows as they are sampled
+    o.progress = Progress{report_part, &tessellation};
     WrMesh wm;
     if (!(s = tessellate_wr_surface(surface, form == 0 ? nullptr : &hs, o, &wm)))
         return f.fail_status(s);

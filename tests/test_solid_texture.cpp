@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include <unistd.h>  // getpid, truncate (POSIX: the test files only)
 
@@ -91,6 +92,42 @@ TEST_CASE("turbulence outside the lattice: clamped, or refused by the checked fo
     CHECK(turbulence_checked(v, Vec3{std::nanf(""), 1.0f, 1.0f}, &out).code() ==
           StatusCode::invalid_argument);
     CHECK(turbulence_checked(v, Vec3{64.0f, 0.0f, 32.0f}, &out).ok());
+}
+
+TEST_CASE("turbulence_row and turbulence_points: the same bits as single calls") {
+    const LatticeView v = test_lattice().view();
+    Pcg32 rng(18u, 3u);
+    std::vector<float> row(700), want(700);
+    int mismatches = 0, rows = 0;
+    for (int r = 0; r < 400; ++r) {
+        // Rows of every kind: inside, starting or ending outside (clamped), steps from tiny to
+        // several cells, backwards, zero, on nodes, NaN in y or z, and odd lengths.
+        float x0 = rng.uniform(-10.0f, 74.0f), y = rng.uniform(-5.0f, 69.0f);
+        float z = rng.uniform(-5.0f, 69.0f), step = rng.uniform(-0.5f, 3.0f);
+        if (r % 7 == 0) step = 1.0f / 8.0f;
+        if (r % 11 == 0) step = 0.0f;
+        if (r % 13 == 0) x0 = std::floor(x0), step = 1.0f;
+        if (r % 17 == 0) y = std::nanf("");
+        if (r % 19 == 0) z = 64.0f;
+        const int n = 1 + int(rng.next_u32() % 700u);
+        turbulence_row(v, Vec3{x0, y, z}, step, n, row.data());
+        for (int i = 0; i < n; ++i)
+            mismatches += !same_bits(row[std::size_t(i)],
+                                     turbulence(v, Vec3{x0 + float(i) * step, y, z}));
+        ++rows;
+    }
+    CHECK(rows == 400);
+    CHECK(mismatches == 0);
+    std::vector<Vec3> pts(5000);
+    for (Vec3& p : pts)
+        p = Vec3{rng.uniform(-3.0f, 67.0f), rng.uniform(-3.0f, 67.0f), rng.uniform(-3.0f, 67.0f)};
+    pts[7].x = std::nanf("");
+    std::vector<float> got(pts.size());
+    turbulence_points(v, pts.data(), pts.size(), got.data());
+    mismatches = 0;
+    for (std::size_t i = 0; i < pts.size(); ++i)
+        mismatches += !same_bits(got[i], turbulence(v, pts[i]));
+    CHECK(mismatches == 0);
 }
 
 TEST_CASE("marble eq. (8): trapezoid with exponential skirt, sum of stripes, pixel shift") {

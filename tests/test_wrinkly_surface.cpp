@@ -3,8 +3,11 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstring>
 #include <string>
+#include <vector>
 
+#include "shitsukan/geom/tensor_surface.hpp"
 #include "shitsukan/wrinkly/hierarchical_sampling.hpp"
 #include "shitsukan/wrinkly/superposition.hpp"
 #include "shitsukan/wrinkly/wr_surface.hpp"
@@ -324,5 +327,83 @@ TEST_CASE("tessellated normals face the side of N(u, v) = dP/du x dP/dv") {
         const Vec3 b = wm.mesh.positions[wm.mesh.indices[std::size_t(3 * t + 1)]];
         const Vec3 c = wm.mesh.positions[wm.mesh.indices[std::size_t(3 * t + 2)]];
         CHECK(cross(b - a, c - a).z > 0);
+    }
+}
+
+namespace {
+
+bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(const Vec3& a, const Vec3& b) {
+    return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z);
+}
+
+void count_progress(float fraction, void* user) {
+    auto* seen = static_cast<std::vector<float>*>(user);
+    seen->push_back(fraction);
+}
+
+}  // namespace
+
+TEST_CASE("grid evaluation with bases located per row and column: the same bits as per point") {
+    for (SurfaceBasis basis : {SurfaceBasis::bspline, SurfaceBasis::bezier}) {
+        WrControlMesh m = basis == SurfaceBasis::bezier ? test_mesh(4, 4) : test_mesh(7, 6);
+        WrSurface s;
+        REQUIRE(make_wr_surface(m, basis, 3, &s));
+        WrAxis au = identity_axis(s.spans_u(), 3), av = identity_axis(s.spans_v(), 3);
+        au.inverse = reflect_inverse;
+        av.inverse = reflect_inverse;
+        REQUIRE(s.set_axes(au, av));
+        // The located bases against geom's evaluate_tensor_surface on the same positions.
+        std::vector<float> xyz;
+        for (const WrControlPoint& p : m.points)
+            xyz.insert(xyz.end(), {p.position.x, p.position.y, p.position.z});
+        const TensorGrid g{xyz.data(), m.cols, m.rows, 3};
+        for (int n = 0; n < 200; ++n) {
+            const float u = float((n * 37) % 101) / 100.0f, v = float((n * 53) % 97) / 96.0f;
+            float p[3], pu[3], pv[3];
+            evaluate_tensor_surface(basis, 3, g, u, v, p, pu, pv);
+            const BasePoint b = s.base_point(s.basis_u(u), s.basis_v(v), u, v);
+            CHECK(same_bits(b.position, Vec3{p[0], p[1], p[2]}));
+            CHECK(same_bits(b.du, Vec3{pu[0], pu[1], pu[2]}));
+            CHECK(same_bits(b.dv, Vec3{pv[0], pv[1], pv[2]}));
+        }
+        HierarchicalOptions ho;
+        ho.levels = 2;
+        HierarchicalSampling hs;
+        REQUIRE(sample_hierarchy(s, ho, &hs));
+        for (WrSurfaceForm form : {WrSurfaceForm::base, WrSurfaceForm::plain, WrSurfaceForm::wr,
+                                   WrSurfaceForm::superposed_direct, WrSurfaceForm::superposed}) {
+            WrTessellationOptions o;
+            o.form = form;
+            o.levels = 2;
+            o.grid_level = 2;
+            o.subdivisions = 2;
+            o.tail_tolerance = 0.01f;
+            std::vector<float> seen;
+            o.progress = Progress{count_progress, &seen};
+            WrMesh wm;
+            REQUIRE(evaluate_wr_grid(s, &hs, o, &wm));
+            CHECK(!seen.empty());
+            CHECK(seen.size() <= 102);
+            CHECK(seen.back() == 1.0f);
+            for (std::size_t i = 1; i < seen.size(); ++i) CHECK(seen[i] >= seen[i - 1]);
+            int mismatches = 0;
+            for (std::size_t id = 0; id < wm.mesh.positions.size(); ++id) {
+                const float u = wm.mesh.uvs[id].x, v = wm.mesh.uvs[id].y;
+                Vec3 want;
+                if (form == WrSurfaceForm::base)
+                    want = s.base_point(u, v).position;
+                else if (form == WrSurfaceForm::plain)
+                    want = s.displace(s.base_point(u, v), s.attributes(u, v));
+                else if (form == WrSurfaceForm::wr)
+                    want = s.wr_point(u, v, 2);
+                else if (form == WrSurfaceForm::superposed_direct)
+                    want = superposed_point_direct(s, u, v, 2);
+                else
+                    want = superposed_sampled(s, hs, u, v, 0.01f).position;
+                if (!same_bits(wm.mesh.positions[id], want)) ++mismatches;
+            }
+            CHECK(mismatches == 0);
+        }
     }
 }

@@ -81,7 +81,7 @@ void FigureContext::progress(const char* format, ...) {
     va_start(args, format);
     std::string s = vformat(format, args);
     va_end(args);
-    std::printf("      %s\n", s.c_str());
+    std::printf("      %s/%s: %s\n", paper_.c_str(), id_.c_str(), s.c_str());
     std::fflush(stdout);
 }
 

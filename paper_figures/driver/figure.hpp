@@ -18,6 +18,9 @@
 // - ctx.note(text): a paragraph for the index (what to look for, measured numbers).
 // - ctx.progress(fmt, ...): a progress line for long figures (printed indented).
 // - Return a non-ok Status to report a failure; the driver goes on and exits non-zero.
+// - Figures run in parallel (--jobs N): a figure's own state is local; anything shared
+//   between figures (a memoised simulation, a lattice) is built once under a lock, and a
+//   figure that needs another's results registers with SHITSUKAN_FIGURE_AFTER(..., "fig21").
 // Every figure's parameters appear in paper_figures/out/index.md as a table with a
 // "given / chosen" column (docs/DESIGN.md: given vs. chosen).
 #pragma once
@@ -78,6 +81,10 @@ struct FigureSpec {
     const char* id;
     const char* caption;
     FigureFunction run;
+    // With --jobs N the figures run in parallel; a figure that reads what others of its paper
+    // recorded (a table of a figure's stage times) names their id prefix here and starts only
+    // after every figure of its paper whose id starts with it has finished.
+    const char* after = nullptr;
 };
 
 bool register_figure(const FigureSpec& spec);
@@ -95,4 +102,10 @@ std::string fmt(const char* format, ...);
     static ::shitsukan::Status name(::shitsukan::figures::FigureContext& ctx);         \
     static const bool name##_registered_ =                                              \
         ::shitsukan::figures::register_figure({paper, id, caption, &name});             \
+    static ::shitsukan::Status name([[maybe_unused]] ::shitsukan::figures::FigureContext& ctx)
+
+#define SHITSUKAN_FIGURE_AFTER(name, paper, id, caption, after)                         \
+    static ::shitsukan::Status name(::shitsukan::figures::FigureContext& ctx);         \
+    static const bool name##_registered_ =                                              \
+        ::shitsukan::figures::register_figure({paper, id, caption, &name, after});      \
     static ::shitsukan::Status name([[maybe_unused]] ::shitsukan::figures::FigureContext& ctx)

@@ -283,9 +283,10 @@ SHITSUKAN_FIGURE(fig21g_panel, "fujimoto2000", "fig21g",
     return run_panel(ctx, 'g');
 }
 
-SHITSUKAN_FIGURE(
+SHITSUKAN_FIGURE_AFTER(
     table02_times, "fujimoto2000", "table02",
-    "Execution times of fig. 21 (800 x 800): paper (Origin2000, min:sec) vs. this library") {
+    "Execution times of fig. 21 (800 x 800): paper (Origin2000, min:sec) vs. this library",
+    "fig21") {
     std::vector<std::string> names;
     std::vector<StageTimes> ours;
     std::vector<std::array<const char*, 4>> paper;

@@ -214,9 +214,10 @@ SHITSUKAN_FIGURE(
     return ctx.save_png(img.view());
 }
 
-SHITSUKAN_FIGURE(
+SHITSUKAN_FIGURE_AFTER(
     table03_times, "fujimoto2000", "table03",
-    "Execution times of fig. 22 (1200 x 600): paper (Origin2000, min:sec) vs. this library") {
+    "Execution times of fig. 22 (1200 x 600): paper (Origin2000, min:sec) vs. this library",
+    "fig22") {
     const std::vector<PaperTimes> rows = {{"(z)", {"4:23", "0:52", "1:27", "6:42"}},
                                           {"(a-1)", {"4:50", "0:52", "161:24", "167:06"}},
                                           {"(a-2)", {"10:43", "0:53", "1:32", "13:08"}},

@@ -217,9 +217,10 @@ SHITSUKAN_FIGURE(
     return ctx.save_png(img.view());
 }
 
-SHITSUKAN_FIGURE(
+SHITSUKAN_FIGURE_AFTER(
     table04_times, "fujimoto2000", "table04",
-    "Execution times of fig. 23 (1200 x 1200): paper (Origin2000, min:sec) vs. this library") {
+    "Execution times of fig. 23 (1200 x 1200): paper (Origin2000, min:sec) vs. this library",
+    "fig23") {
     const std::vector<PaperTimes> rows = {
         {"(a-2)", {"0:11", "0:02", "0:29", "0:42"}}, {"(a-3)", {"0:32", "0:02", "0:51", "1:25"}},
         {"(b-2)", {"0:11", "0:02", "0:34", "0:47"}}, {"(b-3)", {"0:32", "0:02", "1:10", "1:44"}},

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <array>
 #include <map>
+#include <mutex>
 #include <vector>
 
 #include "shitsukan/core/scalar.hpp"
@@ -193,15 +194,24 @@ Status make_axes(const WrSurface& surface, IstKind kind, const char* shuffle_nam
 }
 
 namespace {
+// Figures run in parallel (the driver's --jobs): the store is shared, so it is locked.
+std::mutex& stage_store_mutex() {
+    static std::mutex mutex;
+    return mutex;
+}
 std::map<std::string, StageTimes>& stage_store() {
     static std::map<std::string, StageTimes> store;
     return store;
 }
 }  // namespace
 
-void record_stage_times(const std::string& key, const StageTimes& t) { stage_store()[key] = t; }
+void record_stage_times(const std::string& key, const StageTimes& t) {
+    std::lock_guard<std::mutex> lock(stage_store_mutex());
+    stage_store()[key] = t;
+}
 
 bool find_stage_times(const std::string& key, StageTimes* t) {
+    std::lock_guard<std::mutex> lock(stage_store_mutex());
     auto it = stage_store().find(key);
     if (it == stage_store().end()) return false;
     *t = it->second;

@@ -19,16 +19,28 @@ namespace shitsukan::figures::bark {
 // simulation; fig04, fig05 and table03 the species runs, figs. 6-8 the four-layer run).
 template <class T, class Build>
 Status memoised(int key, Build build, const T** out) {
-    static std::mutex mutex;
-    static std::map<int, std::unique_ptr<T>> memo;
-    std::lock_guard<std::mutex> lock(mutex);
-    auto it = memo.find(key);
-    if (it == memo.end()) {
+    // One lock per key: figures running in parallel (the driver's --jobs) wait only for the
+    // run they need, not for another key's build.
+    struct Entry {
+        std::mutex mutex;
+        std::unique_ptr<T> value;
+    };
+    static std::mutex map_mutex;
+    static std::map<int, std::unique_ptr<Entry>> memo;
+    Entry* entry = nullptr;
+    {
+        std::lock_guard<std::mutex> lock(map_mutex);
+        std::unique_ptr<Entry>& slot = memo[key];
+        if (!slot) slot = std::make_unique<Entry>();
+        entry = slot.get();
+    }
+    std::lock_guard<std::mutex> lock(entry->mutex);
+    if (!entry->value) {
         auto value = std::make_unique<T>();
         SHITSUKAN_TRY(build(*value));
-        it = memo.emplace(key, std::move(value)).first;
+        entry->value = std::move(value);
     }
-    *out = it->second.get();
+    *out = entry->value.get();
     return Status::success();
 }
 

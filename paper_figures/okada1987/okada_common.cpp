@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <mutex>
 
 #include "shitsukan/geom/mesh_builders.hpp"
 #include "shitsukan/geom/mesh_fit.hpp"
@@ -24,15 +25,17 @@ SolidMaterial solid_material(Material m, float k) {
 }
 
 const FractalLattice& shared_lattice() {
+    // Built once, under std::call_once: figures run in parallel (the driver's --jobs).
     static FractalLattice lattice;
-    if (lattice.empty()) {
+    static std::once_flag built;
+    std::call_once(built, [] {
         const FractalParams p = okada1987_lattice_params();
         auto t0 = std::chrono::steady_clock::now();
         Status s = lattice.build(p);
         g_build_seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         SHITSUKAN_ASSERT(s.ok());  // fixed, valid parameters: a failure is a bug
-    }
+    });
     return lattice;
 }
 

@@ -5,6 +5,7 @@
 
 #include <libnoise/noise.h>
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,66 @@ SHITSUKAN_BENCH(solid_type1_sample) {
     bench::report("D(P) Type I per sample, scattered points (goal ratio >= 15)", ours,
                   "stb_perlin fbm-6", stb);
     bench::report("D(P) Type I per sample, scattered points", ours, "libnoise Perlin-6", libnoise);
+}
+
+namespace {
+
+// The floor of one D(P) sample: the trilinear lookup alone (no clamping, no NaN handling, no
+// check), the same factored eq. (6), on points known to lie inside the lattice.
+float raw_trilinear(const LatticeView& v, Vec3 p) {
+    const int ix = int(p.x), iy = int(p.y), iz = int(p.z);
+    const float fx = p.x - float(ix), fy = p.y - float(iy), fz = p.z - float(iz);
+    const std::size_t side = std::size_t(v.side), plane = side * side;
+    const float* b = v.values + (std::size_t(iz) * side + std::size_t(iy)) * side + std::size_t(ix);
+    const float d[8] = {b[0],     b[1],         b[side],         b[side + 1],
+                        b[plane], b[plane + 1], b[plane + side], b[plane + side + 1]};
+    return trilinear_corners(d, fx, fy, fz);
+}
+
+}  // namespace
+
+SHITSUKAN_BENCH(solid_type1_floor_and_row) {
+    const LatticeView v = bench_lattice().view();
+    // Single samples at scattered points against the raw lookup (goal: within 1.15x, i.e.
+    // ratio >= 0.87).
+    const std::vector<Vec3> pts = scattered_points(4096);
+    const double single = ns_per_point(pts, [&](Vec3 p) { return turbulence(v, p); });
+    const double floor = ns_per_point(pts, [&](Vec3 p) { return raw_trilinear(v, p); });
+    bench::report("D(P) Type I single sample vs the raw trilinear floor (goal ratio >= 0.87)",
+                  single, "raw lookup", floor);
+    // A 512 x 512 slice row by row (pixel (x, y) -> ((x + 0.5)/8, (y + 0.5)/8, 32.3)): the
+    // row API against single calls on the same points (goal ratio >= 4).
+    std::vector<float> row(512);
+    const double batched =
+        bench::ns_per_op([&] {
+            double s = 0;
+            for (int y = 0; y < 512; ++y) {
+                turbulence_row(v, Vec3{0.5f / 8.0f, (float(y) + 0.5f) / 8.0f, 32.3f}, 1.0f / 8.0f,
+                               512, row.data());
+                s += double(row[511]);
+            }
+            bench::sink(s);
+        }) /
+        (512.0 * 512.0);
+    const double singles = bench::ns_per_op([&] {
+                               double s = 0;
+                               for (int y = 0; y < 512; ++y)
+                                   for (int x = 0; x < 512; ++x) {
+                                       const Vec3 p{0.5f / 8.0f + float(x) * (1.0f / 8.0f),
+                                                    (float(y) + 0.5f) / 8.0f, 32.3f};
+                                       row[std::size_t(x)] = turbulence(v, p);
+                                   }
+                               s += double(row[511]);
+                               bench::sink(s);
+                           }) /
+                           (512.0 * 512.0);
+    bench::report("D(P) Type I per sample, 512x512 slice: turbulence_row (goal ratio >= 4)",
+                  batched, "single calls", singles);
+    char line[160];
+    std::snprintf(line, sizeof line,
+                  "single %.2f ns, floor %.2f ns, single/floor %.2f; row %.2f ns", single, floor,
+                  single / floor, batched);
+    bench::info("D(P) Type I ns/sample", line);
 }
 
 SHITSUKAN_BENCH(solid_type3_slice) {

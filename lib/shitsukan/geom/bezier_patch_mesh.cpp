@@ -21,13 +21,7 @@ float chord_length(const BezierPatch& patch, Vec2 a, Vec2 b, int chords) {
     return total;
 }
 
-}  // namespace
-
-Status tessellate_patch_strip(const BezierPatch* patches, int count,
-                              const PatchStripOptions& options, TriangleMesh* out) {
-    if (patches == nullptr || count < 1)
-        return Status::error(StatusCode::invalid_argument,
-                             "patch strip: need at least one patch (got %d)", count);
+Status check_strip_options(int count, const PatchStripOptions& options) {
     if (options.segments_u < 1 || options.segments_u > 1024 || options.segments_v < 1 ||
         options.segments_v > 1024)
         return Status::error(StatusCode::invalid_argument,
@@ -62,6 +56,11 @@ Status tessellate_patch_strip(const BezierPatch* patches, int count,
         return Status::error(StatusCode::invalid_argument,
                              "patch strip: texture_origin must be finite (got (%g, %g))",
                              double(options.texture_origin.x), double(options.texture_origin.y));
+    return Status::success();
+}
+
+// Every patch valid, and neighbours sharing their edge (u = 1 of patch k is u = 0 of k + 1).
+Status check_strip_patches(const BezierPatch* patches, int count) {
     Vec3 lo = patches[0].p[0][0], hi = lo;
     for (int k = 0; k < count; ++k) {
         Status s = validate_patch(patches[k]);
@@ -87,95 +86,126 @@ Status tessellate_patch_strip(const BezierPatch* patches, int count,
                                  "are %g apart; neighbours must share their edge",
                                  k, k + 1, double(gap));
     }
+    return Status::success();
+}
 
-    const int nu = options.segments_u, nv = options.segments_v;
-    const int columns = count * nu + 1, rows = nv + 1;
+// The strip's vertex grid: `columns` across all patches (nu per patch, shared edges once),
+// `rows` along v.
+struct StripGrid {
+    const BezierPatch* patches;
+    int count, nu, nv, columns, rows;
     // Column c lies in patch k = c / nu (the last column in the last patch) at local u.
-    auto column_patch = [&](int c, float* u) {
+    int column_patch(int c, float* u) const {
         int k = c / nu;
         if (k >= count) k = count - 1;
         *u = float(c - k * nu) / float(nu);
         return k;
-    };
+    }
+    Vec2& at(std::vector<Vec2>& texture, int c, int j) const {
+        return texture[std::size_t(j) * std::size_t(columns) + std::size_t(c)];
+    }
+};
 
-    *out = TriangleMesh{};
-    out->positions.reserve(std::size_t(columns) * std::size_t(rows));
-    std::vector<Vec2> texture(std::size_t(columns) * std::size_t(rows));
-    const float scale = options.texture_scale;
-    if (options.arc_length) {
-        // §4: x from the arc length of each row across the strip, y from each column's.
-        for (int j = 0; j < rows; ++j) {
-            float v = float(j) / float(nv), x = 0.0f;
-            texture[std::size_t(j) * std::size_t(columns)].x = 0.0f;
-            for (int c = 1; c < columns; ++c) {
-                int k = (c - 1) / nu;  // the segment from column c-1 to c is in patch k
-                float u0 = float(c - 1 - k * nu) / float(nu), u1 = float(c - k * nu) / float(nu);
-                x += chord_length(patches[k], {u0, v}, {u1, v}, options.chords);
-                texture[std::size_t(j) * std::size_t(columns) + std::size_t(c)].x = x;
-            }
-            // Measure the row from the anchor column.
-            int anchor = int(std::lround(options.anchor * float(nu)));
-            float x_anchor = texture[std::size_t(j) * std::size_t(columns) + std::size_t(anchor)].x;
-            for (int c = 0; c < columns; ++c)
-                texture[std::size_t(j) * std::size_t(columns) + std::size_t(c)].x -= x_anchor;
+// §4: x from the arc length of each row across the strip, y from each column's.
+void arc_length_texture(const StripGrid& g, const PatchStripOptions& options,
+                        std::vector<Vec2>& texture) {
+    const int nu = g.nu, nv = g.nv;
+    for (int j = 0; j < g.rows; ++j) {
+        float v = float(j) / float(nv), x = 0.0f;
+        g.at(texture, 0, j).x = 0.0f;
+        for (int c = 1; c < g.columns; ++c) {
+            int k = (c - 1) / nu;  // the segment from column c-1 to c is in patch k
+            float u0 = float(c - 1 - k * nu) / float(nu), u1 = float(c - k * nu) / float(nu);
+            x += chord_length(g.patches[k], {u0, v}, {u1, v}, options.chords);
+            g.at(texture, c, j).x = x;
         }
-        if (options.reference_row >= 0.0f) {
-            // One row's arc length for all rows: a strip bent without stretching (header).
-            const int ref = int(std::lround(options.reference_row * float(nv)));
-            for (int j = 0; j < rows; ++j)
-                for (int c = 0; c < columns; ++c)
-                    texture[std::size_t(j) * std::size_t(columns) + std::size_t(c)].x =
-                        texture[std::size_t(ref) * std::size_t(columns) + std::size_t(c)].x;
-        }
-        for (int c = 0; c < columns; ++c) {
-            float u;
-            int k = column_patch(c, &u);
-            float y = 0.0f;
-            texture[std::size_t(c)].y = 0.0f;
-            for (int j = 1; j < rows; ++j) {
-                float v0 = float(j - 1) / float(nv), v1 = float(j) / float(nv);
-                y += chord_length(patches[k], {u, v0}, {u, v1}, options.chords);
-                texture[std::size_t(j) * std::size_t(columns) + std::size_t(c)].y = y;
-            }
-        }
-    } else {
-        // The uncorrected mapping: parameters stretched to each patch's mean size.
-        float x0 = 0.0f;
-        for (int k = 0; k < count; ++k) {
-            float mean_u = 0.0f, mean_v = 0.0f;
-            for (int s = 0; s <= 4; ++s) {
-                mean_u += patch_iso_length(patches[k], true, float(s) / 4.0f, 8 * nu) / 5.0f;
-                mean_v += patch_iso_length(patches[k], false, float(s) / 4.0f, 8 * nv) / 5.0f;
-            }
-            for (int c = k * nu; c <= (k + 1) * nu; ++c) {
-                float u = float(c - k * nu) / float(nu);
-                for (int j = 0; j < rows; ++j)
-                    texture[std::size_t(j) * std::size_t(columns) + std::size_t(c)] = {
-                        x0 + u * mean_u, float(j) / float(nv) * mean_v};
-            }
-            x0 += mean_u;
+        // Measure the row from the anchor column.
+        int anchor = int(std::lround(options.anchor * float(nu)));
+        float x_anchor = g.at(texture, anchor, j).x;
+        for (int c = 0; c < g.columns; ++c) g.at(texture, c, j).x -= x_anchor;
+    }
+    if (options.reference_row >= 0.0f) {
+        // One row's arc length for all rows: a strip bent without stretching (header).
+        const int ref = int(std::lround(options.reference_row * float(nv)));
+        for (int j = 0; j < g.rows; ++j)
+            for (int c = 0; c < g.columns; ++c) g.at(texture, c, j).x = g.at(texture, c, ref).x;
+    }
+    for (int c = 0; c < g.columns; ++c) {
+        float u;
+        int k = g.column_patch(c, &u);
+        float y = 0.0f;
+        g.at(texture, c, 0).y = 0.0f;
+        for (int j = 1; j < g.rows; ++j) {
+            float v0 = float(j - 1) / float(nv), v1 = float(j) / float(nv);
+            y += chord_length(g.patches[k], {u, v0}, {u, v1}, options.chords);
+            g.at(texture, c, j).y = y;
         }
     }
+}
 
-    for (int j = 0; j < rows; ++j) {
-        float v = float(j) / float(nv);
-        for (int c = 0; c < columns; ++c) {
+// The uncorrected mapping: parameters stretched to each patch's mean size.
+void mean_size_texture(const StripGrid& g, std::vector<Vec2>& texture) {
+    const int nu = g.nu, nv = g.nv;
+    float x0 = 0.0f;
+    for (int k = 0; k < g.count; ++k) {
+        float mean_u = 0.0f, mean_v = 0.0f;
+        for (int s = 0; s <= 4; ++s) {
+            mean_u += patch_iso_length(g.patches[k], true, float(s) / 4.0f, 8 * nu) / 5.0f;
+            mean_v += patch_iso_length(g.patches[k], false, float(s) / 4.0f, 8 * nv) / 5.0f;
+        }
+        for (int c = k * nu; c <= (k + 1) * nu; ++c) {
+            float u = float(c - k * nu) / float(nu);
+            for (int j = 0; j < g.rows; ++j)
+                g.at(texture, c, j) = {x0 + u * mean_u, float(j) / float(nv) * mean_v};
+        }
+        x0 += mean_u;
+    }
+}
+
+// Vertices (normals averaged across shared edges) and two triangles per grid cell.
+void emit_strip_mesh(const StripGrid& g, const PatchStripOptions& options,
+                     std::vector<Vec2>& texture, TriangleMesh* out) {
+    for (int j = 0; j < g.rows; ++j) {
+        float v = float(j) / float(g.nv);
+        for (int c = 0; c < g.columns; ++c) {
             float u;
-            int k = column_patch(c, &u);
-            PatchPoint q = patch_point(patches[k], u, v);
+            int k = g.column_patch(c, &u);
+            PatchPoint q = patch_point(g.patches[k], u, v);
             Vec3 n = q.normal;
             if (u == 0.0f && k > 0)  // shared edge: average the two patches' normals
-                n = normalize(n + patch_point(patches[k - 1], 1.0f, v).normal);
-            Vec2 t = texture[std::size_t(j) * std::size_t(columns) + std::size_t(c)];
-            out->add_vertex(q.position, n, options.texture_origin + t * scale);
+                n = normalize(n + patch_point(g.patches[k - 1], 1.0f, v).normal);
+            Vec2 t = g.at(texture, c, j);
+            out->add_vertex(q.position, n, options.texture_origin + t * options.texture_scale);
         }
     }
-    for (int j = 0; j < nv; ++j)
+    const int columns = g.columns;
+    for (int j = 0; j < g.nv; ++j)
         for (int c = 0; c + 1 < columns; ++c) {
             auto id = [&](int cc, int jj) { return std::uint32_t(jj * columns + cc); };
             out->add_triangle(id(c, j), id(c + 1, j), id(c + 1, j + 1));
             out->add_triangle(id(c, j), id(c + 1, j + 1), id(c, j + 1));
         }
+}
+
+}  // namespace
+
+Status tessellate_patch_strip(const BezierPatch* patches, int count,
+                              const PatchStripOptions& options, TriangleMesh* out) {
+    if (patches == nullptr || count < 1)
+        return Status::error(StatusCode::invalid_argument,
+                             "patch strip: need at least one patch (got %d)", count);
+    SHITSUKAN_TRY(check_strip_options(count, options));
+    SHITSUKAN_TRY(check_strip_patches(patches, count));
+    const int nu = options.segments_u, nv = options.segments_v;
+    const StripGrid grid{patches, count, nu, nv, count * nu + 1, nv + 1};
+    *out = TriangleMesh{};
+    out->positions.reserve(std::size_t(grid.columns) * std::size_t(grid.rows));
+    std::vector<Vec2> texture(std::size_t(grid.columns) * std::size_t(grid.rows));
+    if (options.arc_length)
+        arc_length_texture(grid, options, texture);
+    else
+        mean_size_texture(grid, texture);
+    emit_strip_mesh(grid, options, texture, out);
     return Status::success();
 }
 

@@ -7,6 +7,7 @@
 
 #include "shitsukan/core/scalar.hpp"
 #include "shitsukan/solid/periodic_lattice.hpp"
+#include "shitsukan/solid/turbulence.hpp"
 
 namespace shitsukan {
 namespace {
@@ -133,13 +134,20 @@ Status render_solid_slice(const LatticeView& lattice, const SolidMaterial& mater
     if (density) density->resize(width, height);
     const float du = slice.extent / float(width), dv = slice.extent / float(height);
     const int report_every = std::max(1, height / 100);
+    // A row's points first, then D(P) for the whole row (turbulence_points), then eqs. (7)-(12).
+    std::vector<Vec3> points(static_cast<std::size_t>(width));
+    std::vector<float> d(static_cast<std::size_t>(width));
     for (int j = 0; j < height; ++j) {
         const float b = (float(height - 1 - j) + 0.5f) * dv;
         for (int i = 0; i < width; ++i) {
             const float a = (float(i) + 0.5f) * du;
             Vec3 p = slice.origin + slice.u * a + slice.v * b;
             if (slice.wrap) p = wrap_lattice_point(p, lattice.R);
-            const float g = solid_density(material, lattice, p);
+            points[std::size_t(i)] = p;
+        }
+        turbulence_points(lattice, points.data(), points.size(), d.data());
+        for (int i = 0; i < width; ++i) {
+            const float g = solid_density_at(material, points[std::size_t(i)], d[std::size_t(i)]);
             out->at(i, j) = to_rgb8(solid_density_color(material, g));
             if (density) density->at(i, j) = g;
         }

@@ -1,6 +1,8 @@
 // small-device: yes (trilinear interpolation eq. (6); no allocation)
 #include "shitsukan/solid/turbulence.hpp"
 
+#include <cstring>
+
 #include "shitsukan/core/assert.hpp"
 #include "shitsukan/core/scalar.hpp"
 
@@ -25,6 +27,123 @@ Status turbulence_checked(const LatticeView& lattice, Vec3 p, float* out) {
     SHITSUKAN_TRY(check_lattice_point(p, lattice.R));
     *out = turbulence(lattice, p);
     return Status::success();
+}
+
+namespace {
+
+#if defined(__GNUC__) || defined(__clang__)
+// Four lanes of plain IEEE float arithmetic (GCC/Clang vector extension; on a target without
+// SIMD the compiler splits it into scalar operations). No contraction: -ffp-contract=off.
+typedef float Float4 __attribute__((vector_size(16)));
+
+// detail::lerp on four fractions at once, with the same operation order.
+inline Float4 lerp4(Float4 a, Float4 b, Float4 t) {
+    const Float4 one = {1.0f, 1.0f, 1.0f, 1.0f};
+    return (one - t) * a + t * b;
+}
+
+// trilinear_corners for four samples of one cell (the same eight nodes, four x fractions).
+void trilinear_corners4(const float d[8], const float* fx, float fy, float fz, float* out) {
+    Float4 t;
+    std::memcpy(&t, fx, sizeof t);
+    const Float4 ty = {fy, fy, fy, fy}, tz = {fz, fz, fz, fz};
+    auto splat = [](float v) { return Float4{v, v, v, v}; };
+    const Float4 edge_y0z0 = lerp4(splat(d[0]), splat(d[1]), t);
+    const Float4 edge_y1z0 = lerp4(splat(d[2]), splat(d[3]), t);
+    const Float4 edge_y0z1 = lerp4(splat(d[4]), splat(d[5]), t);
+    const Float4 edge_y1z1 = lerp4(splat(d[6]), splat(d[7]), t);
+    const Float4 face_z0 = lerp4(edge_y0z0, edge_y1z0, ty);
+    const Float4 face_z1 = lerp4(edge_y0z1, edge_y1z1, ty);
+    const Float4 r = lerp4(face_z0, face_z1, tz);
+    std::memcpy(out, &r, sizeof r);
+}
+
+typedef int Int4 __attribute__((vector_size(16)));
+
+// split_lattice_coordinate on the four samples start + float(i + l)·step, l = 0..3: the same
+// comparisons and conversions lane by lane (masks instead of branches), so the same cells and
+// fractions.
+void split_row4(float start, float step, int i, int cells, int* cell, float* fraction) {
+    const Float4 index = {float(i), float(i + 1), float(i + 2), float(i + 3)};
+    const Float4 x = Float4{start, start, start, start} + index * Float4{step, step, step, step};
+    const Float4 zero = {0.0f, 0.0f, 0.0f, 0.0f};
+    const float top = float(cells);
+    const Float4 hi = {top, top, top, top};
+    Int4 bits = (Int4)x & (x > zero);  // !(t > 0) (NaN too) -> +0
+    Float4 t = (Float4)bits;
+    const Int4 over = t > hi;
+    t = (Float4)((bits & ~over) | ((Int4)hi & over));
+    Int4 c = __builtin_convertvector(t, Int4);
+    c += c >= Int4{cells, cells, cells, cells};  // the last node belongs to the last cell
+    const Float4 f = t - __builtin_convertvector(c, Float4);
+    std::memcpy(cell, &c, sizeof c);
+    std::memcpy(fraction, &f, sizeof f);
+}
+#else
+void split_row4(float start, float step, int i, int cells, int* cell, float* fraction) {
+    for (int k = 0; k < 4; ++k)
+        split_lattice_coordinate(start + float(i + k) * step, cells, &cell[k], &fraction[k]);
+}
+
+void trilinear_corners4(const float d[8], const float* fx, float fy, float fz, float* out) {
+    for (int k = 0; k < 4; ++k) out[k] = trilinear_corners(d, fx[k], fy, fz);
+}
+#endif
+
+}  // namespace
+
+void turbulence_row(const LatticeView& lattice, Vec3 start, float step_x, int n, float* out) {
+    SHITSUKAN_REQUIRE_BUILT(lattice.values != nullptr && lattice.side >= 2,
+                            "build_fractal_lattice()", "turbulence_row() on an empty LatticeView");
+    const int cells = lattice.side - 1;
+    int iy, iz;
+    float fy, fz;
+    split_lattice_coordinate(start.y, cells, &iy, &fy);
+    split_lattice_coordinate(start.z, cells, &iz, &fz);
+    const std::size_t side = std::size_t(lattice.side), plane = side * side;
+    const float* row = lattice.values + (std::size_t(iz) * side + std::size_t(iy)) * side;
+    constexpr int kChunk = 64;  // samples split at once (stack: 512 bytes)
+    int cell[kChunk];
+    float fx[kChunk];
+    for (int i0 = 0; i0 < n; i0 += kChunk) {
+        const int m = n - i0 < kChunk ? n - i0 : kChunk;
+        int k0 = 0;
+        for (; k0 + 4 <= m; k0 += 4)
+            split_row4(start.x, step_x, i0 + k0, cells, cell + k0, fx + k0);
+        for (; k0 < m; ++k0)
+            split_lattice_coordinate(start.x + float(i0 + k0) * step_x, cells, &cell[k0], &fx[k0]);
+        // Four samples at a time: in one cell (the usual case when the step is below a
+        // quarter of a cell) they share its eight nodes and go through eq. (6) as one vector;
+        // otherwise, and for the last few, one by one.
+        auto corners = [&](int c, float d[8]) {
+            const float* base = row + std::size_t(c);
+            const float v[8] = {
+                base[0],     base[1],         base[side],         base[side + 1],
+                base[plane], base[plane + 1], base[plane + side], base[plane + side + 1]};
+            std::memcpy(d, v, sizeof v);
+        };
+        float d[8];
+        int k = 0;
+        for (; k + 4 <= m; k += 4) {
+            if (cell[k] == cell[k + 1] && cell[k + 2] == cell[k + 3] && cell[k] == cell[k + 3]) {
+                corners(cell[k], d);
+                trilinear_corners4(d, fx + k, fy, fz, out + i0 + k);
+            } else {
+                for (int l = k; l < k + 4; ++l) {
+                    corners(cell[l], d);
+                    out[i0 + l] = trilinear_corners(d, fx[l], fy, fz);
+                }
+            }
+        }
+        for (; k < m; ++k) {
+            corners(cell[k], d);
+            out[i0 + k] = trilinear_corners(d, fx[k], fy, fz);
+        }
+    }
+}
+
+void turbulence_points(const LatticeView& lattice, const Vec3* points, std::size_t n, float* out) {
+    for (std::size_t i = 0; i < n; ++i) out[i] = turbulence(lattice, points[i]);
 }
 
 }  // namespace shitsukan

@@ -12,6 +12,11 @@
 //   const float corner_values[8] = {0, 1, 0, 1, 0, 1, 0, 1};
 //   float fx = 0.5f, fy = 0.25f, fz = 0.75f;
 //   float d8 = trilinear_corners(corner_values, fx, fy, fz);       // eq. (6) on one cell
+//   float row[512];                                                // same bits as 512 calls
+//   turbulence_row(lattice, Vec3{0.5f, 40.0f, 31.7f}, 0.125f, 512, row);  // 512 samples along x
+//   const Vec3 points[2] = {p, Vec3{1.0f, 2.0f, 3.0f}};
+//   float values[2];
+//   turbulence_points(lattice, points, 2, values);                 // n points at once
 //   return s;
 //   #include "shitsukan/solid/lattice_store.hpp"
 //
@@ -35,9 +40,17 @@
 
 namespace shitsukan {
 
+// turbulence() is forced inline: g++ -O2 otherwise keeps the call (measured: 1.4x the cost of
+// the lookup itself, tests/bench/bench_solid.cpp).
+#if defined(__GNUC__) || defined(__clang__)
+#define SHITSUKAN_TURBULENCE_INLINE inline __attribute__((always_inline))
+#else
+#define SHITSUKAN_TURBULENCE_INLINE inline
+#endif
+
 namespace detail {
 // (1 - t)·a + t·b: t = 0 gives a and t = 1 gives b exactly (a + t·(b - a) would not).
-inline float lerp(float a, float b, float t) { return (1.0f - t) * a + t * b; }
+SHITSUKAN_TURBULENCE_INLINE float lerp(float a, float b, float t) { return (1.0f - t) * a + t * b; }
 }  // namespace detail
 
 // okada1987 eq. (6): D_x = (1/V_0)·sum_i D_i·V_i, where V_i is the volume of the box that
@@ -48,7 +61,7 @@ inline float lerp(float a, float b, float t) { return (1.0f - t) * a + t * b; }
 // against the literal sum); factored it needs 14 multiplications instead of 20, which is
 // most of the cost of D(P). At a node the fractions are 0 or 1 and node values come back bit
 // for bit.
-inline float trilinear_corners(const float d[8], float fx, float fy, float fz) {
+SHITSUKAN_TURBULENCE_INLINE float trilinear_corners(const float d[8], float fx, float fy, float fz) {
     const float edge_y0z0 = detail::lerp(d[0], d[1], fx), edge_y1z0 = detail::lerp(d[2], d[3], fx);
     const float edge_y0z1 = detail::lerp(d[4], d[5], fx), edge_y1z1 = detail::lerp(d[6], d[7], fx);
     const float face_z0 = detail::lerp(edge_y0z0, edge_y1z0, fy);
@@ -58,7 +71,7 @@ inline float trilinear_corners(const float d[8], float fx, float fy, float fz) {
 
 // Splits one coordinate into the unit cell [cell, cell + 1] holding it and the fraction
 // within, clamping to [0, cells] (cells = 2^R). The last node belongs to the last cell.
-inline void split_lattice_coordinate(float t, int cells, int* cell, float* fraction) {
+SHITSUKAN_TURBULENCE_INLINE void split_lattice_coordinate(float t, int cells, int* cell, float* fraction) {
     if (!(t > 0.0f)) t = 0.0f;  // also catches NaN
     if (t > float(cells)) t = float(cells);
     int c = int(t);
@@ -78,7 +91,7 @@ Status check_lattice_point(Vec3 p, int R);  // invalid_argument for NaN/inf, out
 // D(P) from a Type I array: the unit cell holding P, its eight nodes P_i (fig. 6) in the
 // order i + 2j + 4k, then eq. (6). Inline: a renderer calls it once per pixel, and the call
 // itself would cost as much as a fifth of the lookup.
-inline float turbulence(const LatticeView& lattice, Vec3 p) {
+SHITSUKAN_TURBULENCE_INLINE float turbulence(const LatticeView& lattice, Vec3 p) {
     SHITSUKAN_REQUIRE_BUILT(lattice.values != nullptr && lattice.side >= 2,
                             "build_fractal_lattice()", "turbulence() on an empty LatticeView");
     const int cells = lattice.side - 1;
@@ -95,5 +108,17 @@ inline float turbulence(const LatticeView& lattice, Vec3 p) {
     return trilinear_corners(d, fx, fy, fz);
 }
 Status turbulence_checked(const LatticeView& lattice, Vec3 p, float* out);
+
+// D(P) along a row in x: out[i] = turbulence(lattice, Vec3{start.x + float(i) * step_x,
+// start.y, start.z}) for i in [0, n), bit for bit (tests/test_solid_texture.cpp). The cell and
+// fractions along y and z are found once; the samples that fall in one cell share its eight
+// nodes and are interpolated four at a time (the same operations in the same order as eq. (6)
+// above, so the same bits). A raster row of a slice costs a quarter or less of n single calls
+// (tests/bench/bench_solid.cpp).
+void turbulence_row(const LatticeView& lattice, Vec3 start, float step_x, int n, float* out);
+
+// D(P) at n points: out[i] = turbulence(lattice, points[i]), bit for bit; one check of the
+// lattice for the batch.
+void turbulence_points(const LatticeView& lattice, const Vec3* points, std::size_t n, float* out);
 
 }  // namespace shitsukan

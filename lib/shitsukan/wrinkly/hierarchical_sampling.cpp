@@ -97,12 +97,32 @@ long HierarchicalSampling::sample_count() const {
 }
 
 WrAttributes HierarchicalSampling::interpolate(int k, float u, float v) const {
+    return interpolate(k, weights_u(k, u), weights_v(k, v));
+}
+
+SampleWeights HierarchicalSampling::weights_u(int k, float u) const {
     const Level& l = level(k);
-    const int nu = int(l.pos_u.size()), nv = int(l.pos_v.size());
-    int fu = 0, fv = 0;
-    float wu[4], wv[4];
-    sample_interpolation_weights(l.pos_u.data(), nu, u, interpolation_, &fu, wu);
-    sample_interpolation_weights(l.pos_v.data(), nv, v, interpolation_, &fv, wv);
+    SampleWeights r;
+    sample_interpolation_weights(l.pos_u.data(), int(l.pos_u.size()), u, interpolation_, &r.first,
+                                 r.w);
+    return r;
+}
+
+SampleWeights HierarchicalSampling::weights_v(int k, float v) const {
+    const Level& l = level(k);
+    SampleWeights r;
+    sample_interpolation_weights(l.pos_v.data(), int(l.pos_v.size()), v, interpolation_, &r.first,
+                                 r.w);
+    return r;
+}
+
+WrAttributes HierarchicalSampling::interpolate(int k, const SampleWeights& su,
+                                               const SampleWeights& sv) const {
+    const Level& l = level(k);
+    const int nu = int(l.pos_u.size());
+    const int fu = su.first, fv = sv.first;
+    const float* wu = su.w;
+    const float* wv = sv.w;
     float acc[kWrAttributeChannels] = {0};
     for (int b = 0; b < 4; ++b) {
         if (wv[b] == 0.0f) continue;
@@ -163,11 +183,15 @@ Status sample_hierarchy(const WrSurface& surface, const HierarchicalOptions& o,
         std::vector<float> src_u(l.pos_u.size()), src_v(l.pos_v.size());
         for (std::size_t i = 0; i < src_u.size(); ++i) src_u[i] = surface.inverse_u(l.pos_u[i], k);
         for (std::size_t j = 0; j < src_v.size(); ++j) src_v[j] = surface.inverse_v(l.pos_v[j], k);
+        // The spline bases depend on one parameter each: located once per column and row.
+        std::vector<WrBasisAt> basis_u(src_u.size()), basis_v(src_v.size());
+        for (std::size_t i = 0; i < src_u.size(); ++i) basis_u[i] = surface.basis_u(src_u[i]);
+        for (std::size_t j = 0; j < src_v.size(); ++j) basis_v[j] = surface.basis_v(src_v[j]);
         l.values.resize(src_u.size() * src_v.size() * kWrAttributeChannels);
         for (std::size_t j = 0; j < src_v.size(); ++j) {
             for (std::size_t i = 0; i < src_u.size(); ++i) {
                 // The sample: H((F_U^k)^{-1}(u_s), (F_V^k)^{-1}(v_s)) and the other attributes.
-                WrAttributes a = surface.attributes(src_u[i], src_v[j]);
+                WrAttributes a = surface.attributes(basis_u[i], basis_v[j]);
                 const int ii = int(i), jj = int(j);
                 if (o.jitter_height > 0) {
                     const float g =
@@ -202,12 +226,20 @@ Status sample_hierarchy(const WrSurface& surface, const HierarchicalOptions& o,
 
 SuperposedSample superposed_sampled(const WrSurface& surface, const HierarchicalSampling& hs,
                                     float u, float v, float tail_tolerance) {
+    return superposed_sampled(surface, hs, surface.basis_u(u), surface.basis_v(v), nullptr, nullptr,
+                              u, v, tail_tolerance);
+}
+
+SuperposedSample superposed_sampled(const WrSurface& surface, const HierarchicalSampling& hs,
+                                    const WrBasisAt& bu, const WrBasisAt& bv,
+                                    const SampleWeights* wu, const SampleWeights* wv, float u,
+                                    float v, float tail_tolerance) {
     SuperposedSample r;
-    r.base = surface.base_point(u, v);
+    r.base = surface.base_point(bu, bv, u, v);
     const float delta = r.base.delta;
     const float hmax = surface.max_abs_height();
     // k = 0: F^0 is the identity, H^0 = H (chosen here: nothing to sample away).
-    WrAttributes a0 = surface.attributes(u, v);
+    WrAttributes a0 = surface.attributes(bu, bv);
     float w = superposition_weight(delta, 0);
     WrAttributes sum;
     sum.height = w * a0.height;
@@ -221,7 +253,8 @@ SuperposedSample superposed_sampled(const WrSurface& surface, const Hierarchical
         if (tail < tail_tolerance) break;  // adaptive end of the sum (§4.2)
         // eq. (20): + W^k(u,v) H^k(u,v)
         w = superposition_weight(delta, k);
-        const WrAttributes a = hs.interpolate(k, u, v);
+        const WrAttributes a =
+            wu && wv ? hs.interpolate(k, wu[k - 1], wv[k - 1]) : hs.interpolate(k, u, v);
         sum.height += w * a.height;
         sum.vector += a.vector * w;
         sum.color += a.color * w;

@@ -73,6 +73,13 @@ std::vector<float> hierarchical_sample_positions(int base_intervals, int divisio
 void sample_interpolation_weights(const float* x, int n, float u, SampleInterpolation mode,
                                   int* first, float weights[4]);
 
+// sample_interpolation_weights' result for one parameter: a grid computes it once per column
+// (u) and row (v) and step k.
+struct SampleWeights {
+    int first = 0;
+    float w[4] = {0, 0, 0, 0};
+};
+
 struct SuperposedSample {
     Vec3 position;            // R_D^inf(u, v)
     BasePoint base;           // P, N, delta at (u, v)
@@ -90,6 +97,10 @@ public:
     const float* sample(int k, int i, int j) const;
     // H^k (and the other attributes) at (u, v); k >= 1.
     WrAttributes interpolate(int k, float u, float v) const;
+    // The same from weights found once (weights_u(k, u), weights_v(k, v)): the same bits.
+    SampleWeights weights_u(int k, float u) const;
+    SampleWeights weights_v(int k, float v) const;
+    WrAttributes interpolate(int k, const SampleWeights& wu, const SampleWeights& wv) const;
     long sample_count() const;  // all steps
 
 private:
@@ -116,5 +127,12 @@ Status sample_hierarchy(const WrSurface& surface, const HierarchicalOptions& opt
 // factor (1 + jitter_height·g), so the bound is then approximate.
 SuperposedSample superposed_sampled(const WrSurface& surface, const HierarchicalSampling& hs,
                                     float u, float v, float tail_tolerance = 0);
+// The same with the bases at (u, v) located once (surface.basis_u(u), basis_v(v)) and, unless
+// null, the sample weights of steps k = 1..hs.levels() at index k - 1 (hs.weights_u(k, u),
+// weights_v(k, v)): a grid finds them per column and row. Same bits.
+SuperposedSample superposed_sampled(const WrSurface& surface, const HierarchicalSampling& hs,
+                                    const WrBasisAt& bu, const WrBasisAt& bv,
+                                    const SampleWeights* wu, const SampleWeights* wv, float u,
+                                    float v, float tail_tolerance);
 
 }  // namespace shitsukan

@@ -21,7 +21,16 @@ float superposition_weight_truncated(float delta, int k, int levels_k) {
 }
 
 WrAttributes superposed_attributes_direct(const WrSurface& s, float u, float v, int levels_k) {
-    const float delta = s.base_point(u, v).delta;
+    WrBasisAt bu[kMaxWrLevel + 1], bv[kMaxWrLevel + 1];
+    for (int k = 0; k <= levels_k; ++k) {
+        bu[k] = s.basis_u(s.inverse_u(u, k));
+        bv[k] = s.basis_v(s.inverse_v(v, k));
+    }
+    return superposed_attributes_direct(s, s.base_point(u, v).delta, bu, bv, levels_k);
+}
+
+WrAttributes superposed_attributes_direct(const WrSurface& s, float delta, const WrBasisAt* bu,
+                                          const WrBasisAt* bv, int levels_k) {
     WrAttributes sum;
     sum.height = 0;
     sum.color = {0, 0, 0};
@@ -30,7 +39,7 @@ WrAttributes superposed_attributes_direct(const WrSurface& s, float u, float v, 
     float wsum = 0;
     for (int k = 0; k <= levels_k; ++k) {
         const float w = superposition_weight(delta, k);
-        const WrAttributes a = s.wr_attributes(u, v, k);
+        const WrAttributes a = s.attributes(bu[k], bv[k]);  // at the F^k inverses of u, v
         sum.height += w * a.height;
         sum.vector += a.vector * w;
         sum.color += a.color * w;

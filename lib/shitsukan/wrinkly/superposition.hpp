@@ -45,6 +45,10 @@ float superposition_weight_truncated(float delta, int k, int levels_k);
 // eq. (16) summed for k = 0..K without hierarchical sampling (the staircase form), with the
 // truncated weights (eq. 18 on the finite sum: every attribute is divided by sum_k W^k).
 WrAttributes superposed_attributes_direct(const WrSurface& s, float u, float v, int levels_k);
+// The same from the bases located at the inverses, bu[k] = s.basis_u(s.inverse_u(u, k)) and
+// bv[k] likewise for k = 0..levels_k, and delta = s.base_point(u, v).delta. Same bits.
+WrAttributes superposed_attributes_direct(const WrSurface& s, float delta, const WrBasisAt* bu,
+                                          const WrBasisAt* bv, int levels_k);
 Vec3 superposed_point_direct(const WrSurface& s, float u, float v, int levels_k);
 
 }  // namespace shitsukan

@@ -33,6 +33,7 @@
 
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/core/vec.hpp"
+#include "shitsukan/geom/basis.hpp"
 #include "shitsukan/geom/tensor_surface.hpp"
 #include "shitsukan/wrinkly/control_mesh.hpp"
 #include "shitsukan/wrinkly/wr_axis.hpp"
@@ -62,6 +63,17 @@ struct WrAttributes {
 
 constexpr int kWrAttributeChannels = 8;  // height, r, g, b, transparency, vx, vy, vz
 
+// One surface parameter (u or v) located in its knot span, with the basis functions there and
+// their derivatives: the part of an evaluation that depends on that parameter alone. A grid of
+// evaluations computes it once per column and once per row (wr_tessellation.cpp) instead of
+// once per point; the values are the ones evaluate_tensor_surface computes, so is the result.
+struct WrBasisAt {
+    int span = 0;        // first control point index of the span
+    float scale = 1.0f;  // d(local t)/d(global parameter): 1 (Bezier) or the span count
+    float b[kMaxBasisDegree + 1] = {};
+    float db[kMaxBasisDegree + 1] = {};
+};
+
 class WrSurface {
 public:
     SurfaceBasis basis() const { return basis_; }
@@ -84,6 +96,12 @@ public:
 
     BasePoint base_point(float u, float v) const;
     WrAttributes attributes(float u, float v) const;
+    // The same with the bases located once (basis_u(u), basis_v(v)); base_point needs u and v
+    // too, for a collapsed edge's normal. Same bits as base_point(u, v) and attributes(u, v).
+    WrBasisAt basis_u(float u) const;
+    WrBasisAt basis_v(float v) const;
+    BasePoint base_point(const WrBasisAt& bu, const WrBasisAt& bv, float u, float v) const;
+    WrAttributes attributes(const WrBasisAt& bu, const WrBasisAt& bv) const;
     // Attributes at ((F_U^k)^{-1}(u), (F_V^k)^{-1}(v)): the IST-transformed functions.
     WrAttributes wr_attributes(float u, float v, int k) const;
     // (F^k)^{-1} in the surface parameter [0, 1] (axis coordinates scaled by the span count).

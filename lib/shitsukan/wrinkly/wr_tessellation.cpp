@@ -24,8 +24,10 @@ std::vector<float> wr_grid_positions(const WrAxis& axis, int grid_level, int sub
     return g;
 }
 
-Status evaluate_wr_grid(const WrSurface& surface, const HierarchicalSampling* sampling,
-                        const WrTessellationOptions& o, WrMesh* out) {
+namespace {
+
+Status check_wr_grid_options(const WrSurface& surface, const HierarchicalSampling* sampling,
+                             const WrTessellationOptions& o) {
     if (o.levels < 0 || o.levels > kMaxWrLevel || o.grid_level < 0 || o.grid_level > kMaxWrLevel)
         return Status::error(StatusCode::invalid_argument,
                              "levels K and grid level L must be in 0..%d (got %d, %d)", kMaxWrLevel,
@@ -60,12 +62,63 @@ Status evaluate_wr_grid(const WrSurface& surface, const HierarchicalSampling* sa
             StatusCode::too_large,
             "grid level %d x %d subdivisions gives about %.0f vertices (limit %ld)", o.grid_level,
             o.subdivisions, est, kMaxWrVertices);
+    return Status::success();
+}
 
+// The spline bases of one grid axis (they depend on u alone, or v alone): at the grid
+// parameters themselves (index [i]) and at their IST inverses for the steps the form needs
+// (index [i·(K + 1) + k]; step K only for eq. (15), every k for eq. (16)); for eq. (20) the
+// sample weights of steps k = 1..K' of the sampling (index [i·K' + k - 1]).
+struct WrAxisBases {
+    std::vector<WrBasisAt> at, inverse;
+    std::vector<SampleWeights> weights;
+};
+
+enum class Axis { u, v };
+
+WrAxisBases locate_axis_bases(const WrSurface& surface, const HierarchicalSampling* sampling,
+                              const std::vector<float>& g, Axis axis,
+                              const WrTessellationOptions& o) {
+    WrAxisBases r;
+    const int steps = o.levels + 1;
+    auto locate = [&](float x) {
+        return axis == Axis::u ? surface.basis_u(x) : surface.basis_v(x);
+    };
+    auto inverse = [&](float x, int k) {
+        return axis == Axis::u ? surface.inverse_u(x, k) : surface.inverse_v(x, k);
+    };
+    r.at.resize(g.size());
+    for (std::size_t i = 0; i < g.size(); ++i) r.at[i] = locate(g[i]);
+    if (o.form == WrSurfaceForm::wr || o.form == WrSurfaceForm::superposed_direct) {
+        r.inverse.resize(g.size() * std::size_t(steps));
+        for (std::size_t i = 0; i < g.size(); ++i)
+            for (int k = o.form == WrSurfaceForm::wr ? o.levels : 0; k <= o.levels; ++k)
+                r.inverse[i * std::size_t(steps) + std::size_t(k)] = locate(inverse(g[i], k));
+    }
+    if (o.form == WrSurfaceForm::superposed) {
+        const int levels = sampling->levels();
+        r.weights.resize(g.size() * std::size_t(levels));
+        for (std::size_t i = 0; i < g.size(); ++i)
+            for (int k = 1; k <= levels; ++k)
+                r.weights[i * std::size_t(levels) + std::size_t(k - 1)] =
+                    axis == Axis::u ? sampling->weights_u(k, g[i]) : sampling->weights_v(k, g[i]);
+    }
+    return r;
+}
+
+}  // namespace
+
+Status evaluate_wr_grid(const WrSurface& surface, const HierarchicalSampling* sampling,
+                        const WrTessellationOptions& o, WrMesh* out) {
+    SHITSUKAN_TRY(check_wr_grid_options(surface, sampling, o));
     const std::vector<float> gu =
         wr_grid_positions(surface.axis_u(), o.grid_level, o.subdivisions, o.u0, o.u1);
     const std::vector<float> gv =
         wr_grid_positions(surface.axis_v(), o.grid_level, o.subdivisions, o.v0, o.v1);
+    const WrAxisBases bu = locate_axis_bases(surface, sampling, gu, Axis::u, o);
+    const WrAxisBases bv = locate_axis_bases(surface, sampling, gv, Axis::v, o);
     const int nu = int(gu.size()), nv = int(gv.size());
+    const std::size_t steps = std::size_t(o.levels) + 1;
     WrMesh m;
     m.grid_u = nu;
     m.grid_v = nv;
@@ -76,38 +129,35 @@ Status evaluate_wr_grid(const WrSurface& surface, const HierarchicalSampling* sa
     t.colors.resize(t.positions.size());
     m.transparency.resize(t.positions.size());
     long levels_sum = 0;
+    const int rows_per_report = nv > 100 ? nv / 100 : 1;  // about a hundred reports at most
     for (int j = 0; j < nv; ++j) {
+        if (j % rows_per_report == 0) o.progress.report(float(j) / float(nv));
         for (int i = 0; i < nu; ++i) {
             const float u = gu[std::size_t(i)], v = gv[std::size_t(j)];
+            const WrBasisAt &au = bu.at[std::size_t(i)], &av = bv.at[std::size_t(j)];
             const std::size_t id = std::size_t(j) * std::size_t(nu) + std::size_t(i);
             Vec3 p;
             WrAttributes a;
-            switch (o.form) {
-                case WrSurfaceForm::base:
-                    p = surface.base_point(u, v).position;
-                    a = surface.attributes(u, v);
-                    break;
-                case WrSurfaceForm::plain:
-                    a = surface.attributes(u, v);
-                    p = surface.displace(surface.base_point(u, v), a);
-                    break;
-                case WrSurfaceForm::wr:
-                    a = surface.wr_attributes(u, v, o.levels);  // eq. (15)
-                    p = surface.displace(surface.base_point(u, v), a);
-                    break;
-                case WrSurfaceForm::superposed_direct:
-                    a = superposed_attributes_direct(surface, u, v, o.levels);  // eq. (16)
-                    p = surface.displace(surface.base_point(u, v), a);
-                    break;
-                case WrSurfaceForm::superposed: {
-                    const SuperposedSample s =
-                        superposed_sampled(surface, *sampling, u, v, o.tail_tolerance);
-                    p = s.position;
-                    a = s.attributes;
-                    levels_sum += s.levels_used;
-                    if (s.levels_used > m.max_levels_used) m.max_levels_used = s.levels_used;
-                    break;
-                }
+            if (o.form == WrSurfaceForm::superposed) {
+                const std::size_t levels = std::size_t(sampling->levels());
+                const SuperposedSample s = superposed_sampled(
+                    surface, *sampling, au, av, bu.weights.data() + std::size_t(i) * levels,
+                    bv.weights.data() + std::size_t(j) * levels, u, v, o.tail_tolerance);
+                p = s.position;
+                a = s.attributes;
+                levels_sum += s.levels_used;
+                if (s.levels_used > m.max_levels_used) m.max_levels_used = s.levels_used;
+            } else {
+                const BasePoint b = surface.base_point(au, av, u, v);
+                const WrBasisAt* iu = bu.inverse.data() + std::size_t(i) * steps;
+                const WrBasisAt* iv = bv.inverse.data() + std::size_t(j) * steps;
+                if (o.form == WrSurfaceForm::wr)
+                    a = surface.attributes(iu[o.levels], iv[o.levels]);  // eq. (15)
+                else if (o.form == WrSurfaceForm::superposed_direct)
+                    a = superposed_attributes_direct(surface, b.delta, iu, iv, o.levels);  // (16)
+                else
+                    a = surface.attributes(au, av);
+                p = o.form == WrSurfaceForm::base ? b.position : surface.displace(b, a);
             }
             t.positions[id] = p;
             t.uvs[id] = {u, v};
@@ -116,6 +166,7 @@ Status evaluate_wr_grid(const WrSurface& surface, const HierarchicalSampling* sa
             m.transparency[id] = clamp(a.transparency, 0.0f, 1.0f);
         }
     }
+    o.progress.report(1.0f);
     m.mean_levels_used = double(levels_sum) / double(t.positions.size());
     *out = std::move(m);
     return Status::success();

@@ -37,6 +37,7 @@
 
 #include <vector>
 
+#include "shitsukan/core/progress.hpp"
 #include "shitsukan/core/status.hpp"
 #include "shitsukan/geom/mesh.hpp"
 #include "shitsukan/wrinkly/hierarchical_sampling.hpp"
@@ -61,6 +62,7 @@ struct WrTessellationOptions {
     int subdivisions = 1;  // vertices per sample interval
     float u0 = 0, u1 = 1, v0 = 0, v1 = 1;
     float tail_tolerance = 0;  // superposed: world-unit bound on the omitted rest of the sum
+    Progress progress;         // evaluate_wr_grid's rows done, 0 .. 1 (core/progress.hpp)
 };
 
 struct WrMesh {
