@@ -59,27 +59,26 @@ void tensor_locate(int spans, float u, int* span, float* t) {
     *t = s - float(i);
 }
 
-void evaluate_tensor_surface(SurfaceBasis basis, int degree, const TensorGrid& grid, float u,
-                             float v, float* out, float* du, float* dv) {
+TensorBasisAt locate_tensor_basis(SurfaceBasis basis, int degree, int points, float x) {
+    SHITSUKAN_ASSERT(degree >= 1 && degree <= kMaxBasisDegree);
+    TensorBasisAt r;
+    if (basis == SurfaceBasis::bezier) {
+        bernstein_basis(degree, unit_parameter(x), r.b, r.db);
+    } else {
+        const int spans = points - degree;
+        float t = 0;
+        tensor_locate(spans, x, &r.span, &t);
+        bspline_basis(degree, t, r.b, r.db);  // span s is influenced by points s .. s + degree
+        r.scale = float(spans);
+    }
+    return r;
+}
+
+// S(u, v) = sum_ij B_i(u) B_j(v) P_ij and its derivatives, with B located beforehand.
+void evaluate_tensor_located(int degree, const TensorGrid& grid, const TensorBasisAt& bu,
+                             const TensorBasisAt& bv, float* out, float* du, float* dv) {
     SHITSUKAN_ASSERT(degree >= 1 && degree <= kMaxBasisDegree);
     SHITSUKAN_ASSERT(grid.channels >= 1 && grid.channels <= kMaxTensorChannels);
-    float bu[kMaxBasisDegree + 1], dbu[kMaxBasisDegree + 1];
-    float bv[kMaxBasisDegree + 1], dbv[kMaxBasisDegree + 1];
-    int su = 0, sv = 0;
-    float scale_u = 1.0f, scale_v = 1.0f;  // d(local t)/d(global u)
-    if (basis == SurfaceBasis::bezier) {
-        bernstein_basis(degree, unit_parameter(u), bu, dbu);
-        bernstein_basis(degree, unit_parameter(v), bv, dbv);
-    } else {
-        const int spans_u = grid.cols - degree, spans_v = grid.rows - degree;
-        float tu = 0, tv = 0;
-        tensor_locate(spans_u, u, &su, &tu);
-        tensor_locate(spans_v, v, &sv, &tv);
-        bspline_basis(degree, tu, bu, dbu);  // span s is influenced by points s .. s + degree
-        bspline_basis(degree, tv, bv, dbv);
-        scale_u = float(spans_u);
-        scale_v = float(spans_v);
-    }
     const int ch = grid.channels;
     for (int c = 0; c < ch; ++c) {
         out[c] = 0;
@@ -88,19 +87,26 @@ void evaluate_tensor_surface(SurfaceBasis basis, int degree, const TensorGrid& g
     }
     for (int j = 0; j <= degree; ++j) {
         for (int i = 0; i <= degree; ++i) {
-            const float* p = grid.values + ((sv + j) * grid.cols + (su + i)) * ch;
-            const float w = bu[i] * bv[j];
+            const float* p = grid.values + ((bv.span + j) * grid.cols + (bu.span + i)) * ch;
+            const float w = bu.b[i] * bv.b[j];
             for (int c = 0; c < ch; ++c) out[c] += w * p[c];
             if (du) {
-                const float wu = dbu[i] * bv[j] * scale_u;
+                const float wu = bu.db[i] * bv.b[j] * bu.scale;
                 for (int c = 0; c < ch; ++c) du[c] += wu * p[c];
             }
             if (dv) {
-                const float wv = bu[i] * dbv[j] * scale_v;
+                const float wv = bu.b[i] * bv.db[j] * bv.scale;
                 for (int c = 0; c < ch; ++c) dv[c] += wv * p[c];
             }
         }
     }
+}
+
+void evaluate_tensor_surface(SurfaceBasis basis, int degree, const TensorGrid& grid, float u,
+                             float v, float* out, float* du, float* dv) {
+    const TensorBasisAt bu = locate_tensor_basis(basis, degree, grid.cols, u);
+    const TensorBasisAt bv = locate_tensor_basis(basis, degree, grid.rows, v);
+    evaluate_tensor_located(degree, grid, bu, bv, out, du, dv);
 }
 
 }  // namespace shitsukan

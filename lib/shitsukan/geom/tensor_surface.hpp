@@ -29,6 +29,7 @@
 #include <cstdint>
 
 #include "shitsukan/core/status.hpp"
+#include "shitsukan/geom/basis.hpp"
 
 namespace shitsukan {
 
@@ -54,6 +55,21 @@ Status validate_tensor_grid(SurfaceBasis basis, int degree, const TensorGrid& gr
 
 // Which span an axis parameter falls in and the local parameter there (s = u·spans).
 void tensor_locate(int spans, float u, int* span, float* t);
+
+// One axis parameter located in its knot span, with the basis functions there and their
+// derivatives: the part of an evaluation that depends on that parameter alone. A grid of
+// evaluations locates each column and row once (wrinkly/wr_tessellation.cpp) instead of once
+// per point; evaluate_tensor_surface is exactly locate u, locate v, evaluate_tensor_located.
+struct TensorBasisAt {
+    int span = 0;        // first control point index of the span
+    float scale = 1.0f;  // d(local t)/d(global parameter): 1 (Bezier) or the span count
+    float b[kMaxBasisDegree + 1] = {};
+    float db[kMaxBasisDegree + 1] = {};
+};
+TensorBasisAt locate_tensor_basis(SurfaceBasis basis, int degree, int points, float x);
+void evaluate_tensor_located(int degree, const TensorGrid& grid, const TensorBasisAt& bu,
+                             const TensorBasisAt& bv, float* out, float* du = nullptr,
+                             float* dv = nullptr);
 
 void evaluate_tensor_surface(SurfaceBasis basis, int degree, const TensorGrid& grid, float u,
                              float v, float* out, float* du = nullptr, float* dv = nullptr);

@@ -61,52 +61,15 @@ namespace {
 // u clamped to [0, 1]; NaN -> 0 (the IST formulas turn the parameter into interval indices).
 float unit_parameter(float u) { return u >= 0.0f ? (u <= 1.0f ? u : 1.0f) : 0.0f; }
 
-// evaluate_tensor_surface (geom/tensor_surface.cpp) after its bases are located: the same
-// sums in the same order, so the same bits.
-void evaluate_located(int degree, const TensorGrid& grid, const WrBasisAt& bu, const WrBasisAt& bv,
-                      float* out, float* du, float* dv) {
-    const int ch = grid.channels;
-    for (int c = 0; c < ch; ++c) {
-        out[c] = 0;
-        if (du) du[c] = 0;
-        if (dv) dv[c] = 0;
-    }
-    for (int j = 0; j <= degree; ++j) {
-        for (int i = 0; i <= degree; ++i) {
-            const float* p = grid.values + ((bv.span + j) * grid.cols + (bu.span + i)) * ch;
-            const float w = bu.b[i] * bv.b[j];
-            for (int c = 0; c < ch; ++c) out[c] += w * p[c];
-            if (du) {
-                const float wu = bu.db[i] * bv.b[j] * bu.scale;
-                for (int c = 0; c < ch; ++c) du[c] += wu * p[c];
-            }
-            if (dv) {
-                const float wv = bu.b[i] * bv.db[j] * bv.scale;
-                for (int c = 0; c < ch; ++c) dv[c] += wv * p[c];
-            }
-        }
-    }
-}
-
-WrBasisAt locate_basis(SurfaceBasis basis, int degree, int points, float x) {
-    WrBasisAt r;
-    if (basis == SurfaceBasis::bezier) {
-        bernstein_basis(degree, unit_parameter(x), r.b, r.db);
-    } else {
-        const int spans = points - degree;
-        float t = 0;
-        tensor_locate(spans, x, &r.span, &t);
-        bspline_basis(degree, t, r.b, r.db);  // span s is influenced by points s .. s + degree
-        r.scale = float(spans);
-    }
-    return r;
-}
-
 }  // namespace
 
-WrBasisAt WrSurface::basis_u(float u) const { return locate_basis(basis_, degree_, cols_, u); }
+WrBasisAt WrSurface::basis_u(float u) const {
+    return locate_tensor_basis(basis_, degree_, cols_, u);
+}
 
-WrBasisAt WrSurface::basis_v(float v) const { return locate_basis(basis_, degree_, rows_, v); }
+WrBasisAt WrSurface::basis_v(float v) const {
+    return locate_tensor_basis(basis_, degree_, rows_, v);
+}
 
 BasePoint WrSurface::base_point(float u, float v) const {
     return base_point(basis_u(u), basis_v(v), u, v);
@@ -115,7 +78,7 @@ BasePoint WrSurface::base_point(float u, float v) const {
 BasePoint WrSurface::base_point(const WrBasisAt& bu, const WrBasisAt& bv, float u, float v) const {
     const TensorGrid g{geometry_.data(), cols_, rows_, 4};
     float p[4], pu[4], pv[4];
-    evaluate_located(degree_, g, bu, bv, p, pu, pv);
+    evaluate_tensor_located(degree_, g, bu, bv, p, pu, pv);
     BasePoint b;
     b.position = {p[0], p[1], p[2]};
     b.du = {pu[0], pu[1], pu[2]};
@@ -142,7 +105,7 @@ WrAttributes WrSurface::attributes(float u, float v) const {
 WrAttributes WrSurface::attributes(const WrBasisAt& bu, const WrBasisAt& bv) const {
     const TensorGrid g{attributes_.data(), cols_, rows_, kWrAttributeChannels};
     float a[kWrAttributeChannels];
-    evaluate_located(degree_, g, bu, bv, a, nullptr, nullptr);
+    evaluate_tensor_located(degree_, g, bu, bv, a, nullptr, nullptr);
     WrAttributes r;
     r.height = a[0];
     r.color = {a[1], a[2], a[3]};

@@ -63,16 +63,9 @@ struct WrAttributes {
 
 constexpr int kWrAttributeChannels = 8;  // height, r, g, b, transparency, vx, vy, vz
 
-// One surface parameter (u or v) located in its knot span, with the basis functions there and
-// their derivatives: the part of an evaluation that depends on that parameter alone. A grid of
-// evaluations computes it once per column and once per row (wr_tessellation.cpp) instead of
-// once per point; the values are the ones evaluate_tensor_surface computes, so is the result.
-struct WrBasisAt {
-    int span = 0;        // first control point index of the span
-    float scale = 1.0f;  // d(local t)/d(global parameter): 1 (Bezier) or the span count
-    float b[kMaxBasisDegree + 1] = {};
-    float db[kMaxBasisDegree + 1] = {};
-};
+// One surface parameter (u or v) located in its knot span with its basis functions
+// (geom/tensor_surface.hpp): computed once per grid column and row by wr_tessellation.cpp.
+using WrBasisAt = TensorBasisAt;
 
 class WrSurface {
 public:
