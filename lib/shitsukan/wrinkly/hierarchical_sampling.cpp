@@ -136,12 +136,7 @@ WrAttributes HierarchicalSampling::interpolate(int k, const SampleWeights& su,
             for (int c = 0; c < kWrAttributeChannels; ++c) acc[c] += w * s[c];
         }
     }
-    WrAttributes r;
-    r.height = acc[0];
-    r.color = {acc[1], acc[2], acc[3]};
-    r.transparency = acc[4];
-    r.vector = {acc[5], acc[6], acc[7]};
-    return r;
+    return attributes_from_channels(acc);
 }
 
 Status sample_hierarchy(const WrSurface& surface, const HierarchicalOptions& o,
@@ -212,11 +207,8 @@ Status sample_hierarchy(const WrSurface& surface, const HierarchicalOptions& o,
                         a.transparency + o.jitter_transparency *
                                              hash_gaussian(o.seed, kStreamTransparency, ii, jj, k),
                         0.0f, 1.0f);
-                float* dst = l.values.data() + (j * src_u.size() + i) * kWrAttributeChannels;
-                const float vals[kWrAttributeChannels] = {a.height,   a.color.x,      a.color.y,
-                                                          a.color.z,  a.transparency, a.vector.x,
-                                                          a.vector.y, a.vector.z};
-                for (int c = 0; c < kWrAttributeChannels; ++c) dst[c] = vals[c];
+                attributes_to_channels(
+                    a, l.values.data() + (j * src_u.size() + i) * kWrAttributeChannels);
             }
         }
     }

@@ -7,6 +7,21 @@
 
 namespace shitsukan {
 
+void attributes_to_channels(const WrAttributes& a, float* channels) {
+    const float v[kWrAttributeChannels] = {a.height,       a.color.x,  a.color.y,  a.color.z,
+                                           a.transparency, a.vector.x, a.vector.y, a.vector.z};
+    for (int c = 0; c < kWrAttributeChannels; ++c) channels[c] = v[c];
+}
+
+WrAttributes attributes_from_channels(const float* a) {
+    WrAttributes r;
+    r.height = a[0];
+    r.color = {a[1], a[2], a[3]};
+    r.transparency = a[4];
+    r.vector = {a[5], a[6], a[7]};
+    return r;
+}
+
 Status make_wr_surface(const WrControlMesh& mesh, SurfaceBasis basis, int degree, WrSurface* out) {
     SHITSUKAN_TRY(validate_control_mesh(mesh, basis, degree));
     WrSurface s;
@@ -22,8 +37,14 @@ Status make_wr_surface(const WrControlMesh& mesh, SurfaceBasis basis, int degree
     for (const WrControlPoint& p : mesh.points) {
         s.geometry_.insert(s.geometry_.end(), {p.position.x, p.position.y, p.position.z, p.delta});
         const Vec3 hv = p.direction * p.height;  // h_i · d_i (figs. 22-23)
-        s.attributes_.insert(s.attributes_.end(), {p.height, p.color.x, p.color.y, p.color.z,
-                                                   p.transparency, hv.x, hv.y, hv.z});
+        WrAttributes attr;                       // per control point: H, C, T and h_i · d_i
+        attr.height = p.height;
+        attr.color = p.color;
+        attr.transparency = p.transparency;
+        attr.vector = hv;
+        float ch[kWrAttributeChannels];
+        attributes_to_channels(attr, ch);
+        s.attributes_.insert(s.attributes_.end(), ch, ch + kWrAttributeChannels);
         float a = std::fabs(p.height);
         if (length_squared(p.direction) > 0) {
             any_direction = true;
@@ -106,12 +127,7 @@ WrAttributes WrSurface::attributes(const WrBasisAt& bu, const WrBasisAt& bv) con
     const TensorGrid g{attributes_.data(), cols_, rows_, kWrAttributeChannels};
     float a[kWrAttributeChannels];
     evaluate_tensor_located(degree_, g, bu, bv, a, nullptr, nullptr);
-    WrAttributes r;
-    r.height = a[0];
-    r.color = {a[1], a[2], a[3]};
-    r.transparency = a[4];
-    r.vector = {a[5], a[6], a[7]};
-    return r;
+    return attributes_from_channels(a);
 }
 
 float WrSurface::inverse_u(float u, int k) const {

@@ -63,6 +63,10 @@ struct WrAttributes {
 
 constexpr int kWrAttributeChannels = 8;  // height, r, g, b, transparency, vx, vy, vz
 
+// The attributes as the 8 interpolated channels, in the order above, and back.
+void attributes_to_channels(const WrAttributes& a, float* channels);
+WrAttributes attributes_from_channels(const float* channels);
+
 // One surface parameter (u or v) located in its knot span with its basis functions
 // (geom/tensor_surface.hpp): computed once per grid column and row by wr_tessellation.cpp.
 using WrBasisAt = TensorBasisAt;
