@@ -184,34 +184,38 @@ int string_length(const char* s, int precision) {
 
 constexpr int kMaxStrings = 8;
 
-// Walks the format once, reading every argument; calls visit(item) for numbers and
-// visit_string(s, length) for strings.
-template <class Numbers, class Strings>
-void walk_arguments(const char* format, va_list& args, Numbers&& number, Strings&& text) {
+// Walks the format once, reading every argument into the keeper (one function, not a
+// template per pass: a firmware links one copy).
+struct Keeper;
+void keep_number(Keeper& k, const Item& it);
+void keep_text(Keeper& k, const char* str, int n);
+
+void walk_arguments(const char* format, va_list& args, Keeper& keeper) {
     for (const char* p = format; *p != '\0';) {
         if (*p++ != '%') continue;
         Spec s = parse_spec(p);
-        if (s.width_star) number(make_integer(std::uint64_t(va_arg(args, int)), true));
+        if (s.width_star) keep_number(keeper, make_integer(std::uint64_t(va_arg(args, int)), true));
         if (s.precision_star) {
             int precision = va_arg(args, int);
-            number(make_integer(std::uint64_t(precision), true));
+            keep_number(keeper, make_integer(std::uint64_t(precision), true));
             s.number.precision = precision < 0 ? -1 : precision;
         }
         char c = s.conversion;
         if (is_signed_conversion(c) || c == 'c') {
-            number(make_integer(std::uint64_t(read_signed(args, s.length)), true));
+            keep_number(keeper, make_integer(std::uint64_t(read_signed(args, s.length)), true));
         } else if (is_unsigned_conversion(c)) {
-            number(make_integer(read_unsigned(args, s.length), false));
+            keep_number(keeper, make_integer(read_unsigned(args, s.length), false));
         } else if (is_floating_conversion(c)) {
             double d =
                 s.length == Length::L ? double(va_arg(args, long double)) : va_arg(args, double);
-            number(make_double(d));
+            keep_number(keeper, make_double(d));
         } else if (c == 'p') {
-            number(make_integer(std::uint64_t(std::uintptr_t(va_arg(args, void*))), false));
+            keep_number(keeper,
+                        make_integer(std::uint64_t(std::uintptr_t(va_arg(args, void*))), false));
         } else if (c == 's') {
             const char* str = va_arg(args, const char*);
             if (str == nullptr) str = "(null)";
-            text(str, string_length(str, s.number.precision));
+            keep_text(keeper, str, string_length(str, s.number.precision));
         } else if (c == 'n') {
             (void)va_arg(args, int*);  // nothing is written back
         }
@@ -262,71 +266,87 @@ void put_padded_text(Text& t, const char* s, int n, const NumberFormat& f) {
         for (int i = 0; i < pad; ++i) t.put(' ');
 }
 
+// Pass 1 (planning) measures: the bytes the numbers take, the length of every string.
+// Pass 2 keeps them, in format order, until the bytes run out.
+struct Keeper {
+    bool planning = true;
+    int number_bytes = 0, strings = 0;
+    int need[kMaxStrings] = {}, share[kMaxStrings] = {};
+    unsigned char* arguments = nullptr;
+    std::uint32_t* narrow = nullptr;
+    int capacity = 0, used = 0, index = 0, string_index = 0;
+    bool full = false;
+};
+
+void keep_number(Keeper& k, const Item& it) {
+    if (k.planning) {
+        k.number_bytes += it.bytes;
+        return;
+    }
+    if (k.full || k.used + it.bytes > k.capacity) {
+        k.full = true;
+        return;
+    }
+    if (it.bytes == 4) {
+        std::uint32_t u = std::uint32_t(it.bits);
+        std::memcpy(k.arguments + k.used, &u, 4);
+        if (k.index < 32) *k.narrow |= 1u << k.index;
+    } else {
+        std::memcpy(k.arguments + k.used, &it.bits, 8);
+    }
+    k.used += it.bytes;
+    ++k.index;
+}
+
+void keep_text(Keeper& k, const char* str, int n) {
+    if (k.planning) {
+        if (k.strings < kMaxStrings) k.need[k.strings] = n + 1;
+        ++k.strings;
+        return;
+    }
+    int room = k.string_index < kMaxStrings ? k.share[k.string_index] : 0;
+    ++k.string_index;
+    if (k.full || room < 1 || k.used + room > k.capacity) {
+        k.full = true;
+        return;
+    }
+    char* dst = reinterpret_cast<char*>(k.arguments + k.used);
+    if (n + 1 <= room) {
+        std::memcpy(dst, str, std::size_t(n));
+        dst[n] = '\0';
+        k.used += n + 1;
+    } else {  // cut, marked with "..." when there is room for it
+        int keep = room - 1;
+        std::memcpy(dst, str, std::size_t(keep));
+        for (int i = keep - 3 > 0 ? keep - 3 : 0; i < keep; ++i) dst[i] = '.';
+        dst[keep] = '\0';
+        k.used += room;
+    }
+    ++k.index;
+}
+
 }  // namespace
 
 Status Status::error(StatusCode code, const char* format, ...) {
     Status s;
     s.code_ = code == StatusCode::ok ? StatusCode::invalid_argument : code;
     s.format_ = format != nullptr ? format : "(no message)";
-    // Pass 1: the bytes the numbers take and the length of every string.
-    int number_bytes = 0, strings = 0, need[kMaxStrings] = {};
+    Keeper k;
+    k.arguments = s.arguments_;
+    k.narrow = &s.narrow_;
+    k.capacity = kArgumentBytes;
     va_list args;
     va_start(args, format);
-    walk_arguments(
-        s.format_, args, [&](const Item& it) { number_bytes += it.bytes; },
-        [&](const char*, int n) {
-            if (strings < kMaxStrings) need[strings] = n + 1;
-            ++strings;
-        });
+    walk_arguments(s.format_, args, k);
     va_end(args);
-    int share[kMaxStrings] = {};
-    int budget = kArgumentBytes - number_bytes;
-    share_string_bytes(need, strings < kMaxStrings ? strings : kMaxStrings, budget > 0 ? budget : 0,
-                       share);
-    // Pass 2: keep them, in format order, until the bytes run out.
-    int used = 0, index = 0, string_index = 0;
-    bool full = false;
+    const int budget = kArgumentBytes - k.number_bytes;
+    share_string_bytes(k.need, k.strings < kMaxStrings ? k.strings : kMaxStrings,
+                       budget > 0 ? budget : 0, k.share);
+    k.planning = false;
     va_start(args, format);
-    walk_arguments(
-        s.format_, args,
-        [&](const Item& it) {
-            if (full || used + it.bytes > kArgumentBytes) {
-                full = true;
-                return;
-            }
-            if (it.bytes == 4) {
-                std::uint32_t u = std::uint32_t(it.bits);
-                std::memcpy(s.arguments_ + used, &u, 4);
-                if (index < 32) s.narrow_ |= 1u << index;
-            } else {
-                std::memcpy(s.arguments_ + used, &it.bits, 8);
-            }
-            used += it.bytes;
-            ++index;
-        },
-        [&](const char* str, int n) {
-            int room = string_index < kMaxStrings ? share[string_index] : 0;
-            ++string_index;
-            if (full || room < 1 || used + room > kArgumentBytes) {
-                full = true;
-                return;
-            }
-            char* dst = reinterpret_cast<char*>(s.arguments_ + used);
-            if (n + 1 <= room) {
-                std::memcpy(dst, str, std::size_t(n));
-                dst[n] = '\0';
-                used += n + 1;
-            } else {  // cut, marked with "..." when there is room for it
-                int keep = room - 1;
-                std::memcpy(dst, str, std::size_t(keep));
-                for (int i = keep - 3 > 0 ? keep - 3 : 0; i < keep; ++i) dst[i] = '.';
-                dst[keep] = '\0';
-                used += room;
-            }
-            ++index;
-        });
+    walk_arguments(s.format_, args, k);
     va_end(args);
-    s.used_ = std::uint8_t(used);
+    s.used_ = std::uint8_t(k.used);
     return s;
 }
 
