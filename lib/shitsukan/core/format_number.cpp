@@ -399,6 +399,64 @@ int format_integer(char* out, int capacity, std::uint64_t magnitude, bool negati
     return s.length;
 }
 
+namespace {
+
+std::uint64_t to_u64(const BigNat& a) {
+    std::uint64_t v = 0;
+    for (int i = a.n - 1; i >= 0; --i) v = (v << 32) | a.w[i];
+    return v;
+}
+
+// The same four operations on 64-bit numbers (when they fit) and on BigNat.
+void nat_mul10(std::uint64_t& a) { a *= 10u; }
+void nat_mul10(BigNat& a) { big_mul_small(a, 10); }
+int nat_compare_sum(std::uint64_t a, std::uint64_t b, std::uint64_t c) {  // a + b vs c
+    return a + b < c ? -1 : a + b > c ? 1 : 0;
+}
+int nat_compare_sum(const BigNat& a, const BigNat& b, const BigNat& c) {
+    BigNat sum;
+    sum.n = a.n;
+    std::memcpy(sum.w, a.w, sizeof(std::uint32_t) * std::size_t(a.n));
+    big_add(sum, b);
+    return big_compare(sum, c);
+}
+int nat_compare(std::uint64_t a, std::uint64_t b) { return a < b ? -1 : a > b ? 1 : 0; }
+int nat_compare(const BigNat& a, const BigNat& b) { return big_compare(a, b); }
+int nat_divide_digit(std::uint64_t& r, std::uint64_t s) {
+    int d = int(r / s);
+    r -= std::uint64_t(d) * s;
+    return d;
+}
+int nat_divide_digit(BigNat& r, const BigNat& s) { return big_divide_digit(r, s); }
+
+// Digits of r / s until the number so far lies inside v's rounding interval (m- below,
+// m+ above, scaled like r), ties between the two last candidates to the even digit.
+template <class Nat>
+void shortest_digits(Nat r, const Nat& s, Nat mplus, Nat mminus, bool even, Digits& g) {
+    for (;;) {
+        int d = nat_divide_digit(r, s);
+        int cl = nat_compare(r, mminus), ch = nat_compare_sum(r, mplus, s);
+        bool low_ok = cl < 0 || (cl == 0 && even);
+        bool high_ok = ch > 0 || (ch == 0 && even);
+        if (low_ok || high_ok || g.count + 1 >= 17) {
+            if (high_ok && !low_ok) {
+                ++d;
+            } else if (high_ok && low_ok) {
+                int c = nat_compare_sum(r, r, s);  // 2r vs s
+                if (c > 0 || (c == 0 && d % 2 == 1)) ++d;
+            }
+            g.d[g.count++] = char('0' + d);  // d <= 9: a 10 would have stopped earlier
+            return;
+        }
+        g.d[g.count++] = char('0' + d);
+        nat_mul10(r);
+        nat_mul10(mplus);
+        nat_mul10(mminus);
+    }
+}
+
+}  // namespace
+
 // Steele & White's free-format digits (as in Burger & Dybvig): generate digits of v until
 // the number so far lies strictly inside v's rounding interval (or on its boundary when the
 // mantissa is even: round-to-even reads the boundary back to v).
@@ -468,30 +526,13 @@ int format_float_round_trip(char* out, int capacity, float value) {
             }
         }
         g.exponent = k;
-        for (;;) {
-            int d = big_divide_digit(r, sden);
-            BigNat high = r;
-            big_add(high, mplus);
-            int cl = big_compare(r, mminus), ch = big_compare(high, sden);
-            bool low_ok = cl < 0 || (cl == 0 && even);
-            bool high_ok = ch > 0 || (ch == 0 && even);
-            if (low_ok || high_ok || g.count + 1 >= 17) {
-                if (high_ok && !low_ok)
-                    ++d;
-                else if (high_ok && low_ok) {
-                    BigNat twice = r;
-                    big_mul_small(twice, 2);
-                    int c = big_compare(twice, sden);
-                    if (c > 0 || (c == 0 && d % 2 == 1)) ++d;
-                }
-                g.d[g.count++] = char('0' + d);  // d <= 9: a 10 would have stopped earlier
-                break;
-            }
-            g.d[g.count++] = char('0' + d);
-            big_mul_small(r, 10);
-            big_mul_small(mplus, 10);
-            big_mul_small(mminus, 10);
-        }
+        // Typical coordinates (about 1e-9 .. 1e9) fit 64 bits: the same digits, far faster.
+        BigNat ten_s = sden;
+        big_mul_small(ten_s, 10);
+        if (ten_s.n <= 2 && (ten_s.n < 2 || ten_s.w[1] < 0x80000000u))
+            shortest_digits(to_u64(r), to_u64(sden), to_u64(mplus), to_u64(mminus), even, g);
+        else
+            shortest_digits(r, sden, mplus, mminus, even, g);
     }
     // Chosen here: plain notation for 1e-5 <= |v| < 1e9 (no exponent in OBJ files for
     // ordinary coordinates), exponent notation outside, as %g prints it.
