@@ -5,8 +5,9 @@
 //
 // Manual
 //   FractalParams p;  p.R = 20;                     // 1,048,577 points a side, never stored
-//   TypeIIILattice lattice;                          // 10.9 KB object, fixed capacity
-//                                                    // (3.3 KB without the row cache below)
+//   TypeIIILattice lattice;                          // 10,888 bytes, fixed capacity
+//                                                    // (3,328 without the row cache below);
+//                                                    // all zero until init(): .bss if static
 //   Status s = lattice.init(p);                      // hash noise only (see below)
 //   float v = lattice.node_value(7, 1 << 19, 3);     // one node, 0 <= x, y, z <= 2^R
 //   float d = lattice.turbulence(Vec3{3.5f, 8.25f, 1.0f});   // eq. (6), clamped like Type I
