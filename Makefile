@@ -50,11 +50,11 @@ STACK_BUDGET := 4096
 STACK_OVER_BUDGET_KNOWN :=
 STACK_KNOWN_RE := $(if $(strip $(STACK_OVER_BUDGET_KNOWN)),$(subst $(space),|,$(strip $(STACK_OVER_BUDGET_KNOWN))),no-function-is-a-known-exception)
 # C library calls that may allocate (stdio buffers, printf's float and wide paths in newlib) or
-# pull stdio into a firmware. Known users, listed rather than hidden (issue 12, left): Status
-# messages (vsnprintf), the default assert handler (fprintf, abort: a port links its own,
-# ports/cortex-m/assert_handler.cpp), IST digit labels (snprintf).
+# pull stdio into a firmware. Status messages use core/format_number (no printf) and the
+# default assert handler traps under SHITSUKAN_SMALL_DEVICE (no fprintf/abort). Known user,
+# listed rather than hidden (issue 12, left): IST digit labels (snprintf).
 STDIO_CALLS := v?sn?printf|v?fprintf|printf|puts|fputs|fopen|fwrite|fflush|strdup|strndup|stderr|stdout|abort
-STDIO_KNOWN := core/status.o core/assert.o wrinkly/ist_digits.o
+STDIO_KNOWN := wrinkly/ist_digits.o
 
 LIB_SRCS     := $(shell find lib -name '*.cpp' 2>/dev/null | LC_ALL=C sort)
 FIG_SRCS     := $(shell find paper_figures -name '*.cpp' -not -path 'paper_figures/out/*' 2>/dev/null | LC_ALL=C sort)
@@ -341,7 +341,7 @@ test-consumers: consumer-deps
 # ports/cortex-m/test_mcu.sh runs the three transcripts and compares them.
 MCU_CXX    := arm-none-eabi-g++
 MCU_DIR    := $(BUILD)/mcu
-MCU_SRCS   := $(filter-out lib/shitsukan/core/assert.cpp,$(SMALL_CPPS)) \
+MCU_SRCS   := $(SMALL_CPPS) \
               lib/shitsukan/render/solid_mesh.cpp ports/cortex-m/transcript.cpp \
               ports/cortex-m/semihosting.cpp ports/cortex-m/startup.cpp \
               ports/cortex-m/device_main.cpp ports/cortex-m/assert_handler.cpp
@@ -391,7 +391,7 @@ footprint-mcu: mcu-deps
 # The same program built by clang at -O0 (library sources included): same bits as gcc -O2.
 MCU_HOST_SRCS := $(filter-out ports/cortex-m/semihosting.cpp ports/cortex-m/startup.cpp \
                    ports/cortex-m/device_main.cpp ports/cortex-m/assert_handler.cpp,$(MCU_SRCS)) \
-                 lib/shitsukan/core/assert.cpp ports/cortex-m/host_main.cpp
+                 ports/cortex-m/host_main.cpp
 $(MCU_DIR)/host_clang_O0: $(MCU_HOST_SRCS) $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	clang++ -std=c++17 -O0 -ffp-contract=off -Ilib -Iports/cortex-m -o $@ $(MCU_HOST_SRCS)

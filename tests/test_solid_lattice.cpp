@@ -204,6 +204,9 @@ TEST_CASE("Type III works at R = 20 in O(R) memory and agrees with Type II there
     REQUIRE(t2.init(p).ok());
     // 25 levels of 27 floats (O(R)) plus the fixed 64-block row cache, no allocation
     CHECK(TypeIIILattice::object_bytes() < 4096 + 64 * 120);
+    // The size lattice_type3.hpp's manual states (64-bit host and 32-bit Cortex-M alike).
+    if (kTypeIIIRowCache == 64 || kTypeIIIRowCache == 0)
+        CHECK(TypeIIILattice::object_bytes() == (kTypeIIIRowCache > 0 ? 10888u : 3328u));
     CHECK(t3.ancestry_bytes() == 20 * (12 + 27 * 4));
     const std::int32_t last = 1 << 20;
     const std::int32_t probes[5][3] = {{0, 0, 0}, {last, 17, 123457}, {524288, 524288, 524288},

@@ -5,6 +5,7 @@
 // `bench:` lines; the counts include the loop and call overhead of each measured call.
 #include <cstdint>
 
+#include "assert_handler.hpp"
 #include "semihosting.hpp"
 #include "shitsukan/geom/mesh_arrays.hpp"
 #include "shitsukan/raster/camera.hpp"
@@ -80,6 +81,7 @@ volatile float g_sink;
 }  // namespace
 
 int main() {
+    port::install_check_handler();
     const FractalParams p = okada1987_lattice_params();
     LatticeView view;
     timer_start();

@@ -32,14 +32,21 @@ void put(const char* s) {
     while (s[n]) ++n;
     port::semihosting_write(s, n);
 }
-void put_uint(std::uint64_t v, int base = 10) {
-    char buf[24];
+// 32-bit digits only: a 64-bit division would link libgcc's __udivmoddi4 (700 bytes)
+void put_uint(std::uint32_t v, unsigned base = 10) {
+    char buf[12];
     int n = 0;
     do {
-        buf[sizeof buf - 1 - n++] = "0123456789abcdef"[v % unsigned(base)];
-        v /= unsigned(base);
+        buf[sizeof buf - 1 - n++] = "0123456789abcdef"[v % base];
+        v /= base;
     } while (v != 0);
     port::semihosting_write(buf + sizeof buf - n, n);
+}
+void put_hex64(std::uint64_t v) {
+    for (int shift = 60; shift >= 0; shift -= 4) {
+        const char c = "0123456789abcdef"[(v >> shift) & 15u];
+        port::semihosting_write(&c, 1);
+    }
 }
 struct Fnv {
     std::uint64_t h = 0xcbf29ce484222325ull;
@@ -128,7 +135,7 @@ int main() {
     }
     put("footprint marble: cube 128x128 in 8-row bands (Type III) fnv ");
 #endif
-    put_uint(h.h, 16);
+    put_hex64(h.h);
     put(", main stack used ");
     put_uint(stack_high_water());
     put(" bytes\n");

@@ -333,6 +333,24 @@ void section_fig10a() {
     put("\n");
 }
 
+// ---- status: messages keep their numbers on newlib-nano (core/format_number.hpp) ----
+void section_status() {
+    FractalParams p = okada1987_lattice_params();
+    p.beta = -0.25f;
+    float tiny[8];
+    LatticeView v;
+    const Status refused = build_fractal_lattice(p, tiny, sizeof tiny, &v);
+    put("status ");
+    put(refused.ok() ? "ok (expected a refusal)" : refused.message());
+    put("\n");
+    const Status made = Status::error(StatusCode::out_of_range, "%s %d %u %.3g %g %e %.17g %zu",
+                                      "numbers", -7, 4000000000u, 2.0 / 3.0, 1.5e-7f, 6.02e23,
+                                      0.1, sizeof(float));
+    put("status ");
+    put(made.message());
+    put("\n");
+}
+
 }  // namespace
 
 int run_transcript(WriteFn write) {
@@ -340,6 +358,7 @@ int run_transcript(WriteFn write) {
     g_failures = 0;
     put("shitsukan transcript 1\n");
     section_detmath();
+    section_status();
     section_lattice();
     section_slice("marble", okada1987_marble(kOkada1987MarbleK));
     section_slice("wood", okada1987_wood(kOkada1987WoodK));

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "shitsukan/bark/crack_drawing.hpp"
+#include "shitsukan/core/format_number.hpp"
 #include "shitsukan/core/scalar.hpp"
 
 namespace shitsukan {
@@ -29,6 +30,46 @@ struct File {
                                  path.c_str());
         return Status::success();
     }
+};
+
+// One CSV row: integers, and floats as the shortest decimal that reads back to the same
+// float (core/format_number), no printf per number.
+class CsvRow {
+public:
+    CsvRow& integer(long long v) {
+        separate();
+        char digits[24];
+        int n = 0;
+        unsigned long long u = v < 0 ? 0ull - static_cast<unsigned long long>(v)
+                                     : static_cast<unsigned long long>(v);
+        do {
+            digits[n++] = char('0' + u % 10u);
+            u /= 10u;
+        } while (u != 0);
+        if (v < 0) text_ += '-';
+        while (n > 0) text_ += digits[--n];
+        return *this;
+    }
+    CsvRow& real(float v) {
+        separate();
+        char buf[32];
+        text_.append(buf, std::size_t(format_float_round_trip(buf, sizeof buf, v)));
+        return *this;
+    }
+    void write(std::FILE* f) {
+        text_ += '\n';
+        std::fwrite(text_.data(), 1, text_.size(), f);
+        text_.clear();
+        first_ = true;
+    }
+
+private:
+    void separate() {
+        if (!first_) text_ += ',';
+        first_ = false;
+    }
+    std::string text_;
+    bool first_ = true;
 };
 
 Status open_error(const std::string& path) {
@@ -56,10 +97,11 @@ Status write_bark_csv(const BarkCylinder& bark, float t, const Vec3* W, const ch
         File f(path);
         if (!f.f) return open_error(path);
         std::fprintf(f.f, "id,c,r,u_cm,z_cm,area_cm2\n");
+        CsvRow row;
         for (int p = 0; p < net.node_count(); ++p) {
             const Vec3 x = node_position(bark, std::uint32_t(p), t, W);
-            std::fprintf(f.f, "%d,%d,%d,%.6f,%.6f,%.6g\n", p, bark.column_of(p), bark.row_of(p),
-                         double(x.x), double(x.y), double(bark.node_area[std::size_t(p)]));
+            row.integer(p).integer(bark.column_of(p)).integer(bark.row_of(p));
+            row.real(x.x).real(x.y).real(bark.node_area[std::size_t(p)]).write(f.f);
         }
         SHITSUKAN_TRY(f.close(path));
     }
@@ -68,14 +110,15 @@ Status write_bark_csv(const BarkCylinder& bark, float t, const Vec3* W, const ch
         File f(path);
         if (!f.f) return open_error(path);
         std::fprintf(f.f, "id,i,j,c,r,dir,family,l0_cm,eps_c,t_break,width_cm\n");
+        CsvRow row;
         for (std::size_t s = 0; s < net.springs.size(); ++s) {
             const BarkSpring& sp = net.springs[s];
             const bool broken = !intact_at(sp, t);
             const float width = broken ? crack_ribbon(bark, std::uint32_t(s), t, W).width : 0.0f;
-            std::fprintf(f.f, "%zu,%u,%u,%u,%u,%u,%d,%.6g,%.6g,%.6g,%.6g\n", s, sp.i, sp.j,
-                         unsigned(sp.key >> 32), unsigned((sp.key >> 2) & 0x3fffffffu),
-                         unsigned(sp.key & 3u), int(sp.family), double(sp.l0), double(sp.eps_c),
-                         broken ? double(sp.t_break) : -1.0, double(width));
+            row.integer((long long)s).integer(sp.i).integer(sp.j);
+            row.integer(sp.key >> 32).integer((sp.key >> 2) & 0x3fffffffu).integer(sp.key & 3u);
+            row.integer(int(sp.family)).real(sp.l0).real(sp.eps_c);
+            row.real(broken ? sp.t_break : -1.0f).real(width).write(f.f);
         }
         SHITSUKAN_TRY(f.close(path));
     }

@@ -16,12 +16,38 @@
 //   shitsukan: FractalLattice::view() used without a successful FractalLattice::build():
 //   the Status it returned was ignored (print s.message() to see why it refused)
 //
-// Porting: define SHITSUKAN_ASSERT(expr) yourself before including any shitsukan header
-// (e.g. to a breakpoint or an LED blink), or define SHITSUKAN_NO_ASSERT to compile it out
-// (both macros follow these two switches). Or keep the macros and link your own
-// shitsukan::detail::assert_failed / unchecked_status instead of core/assert.cpp (whose
-// fprintf + abort pull stdio into a firmware): ports/cortex-m/assert_handler.cpp does that.
+// Porting: the default handlers (core/assert.cpp) print with fprintf(stderr) and abort()
+// on a host; built with SHITSUKAN_SMALL_DEVICE they print nothing and stop with
+// __builtin_trap() (no stdio: issue 12 measured 4.7 KB for fprintf + abort). Replace them
+// in one of three ways:
+//   set_check_failed_handler(&my_handler);  at start-up; my_handler(const CheckFailure&)
+//       gets the kind, expression or builder/user, file and line; if it returns, the
+//       default stop (abort / trap) follows.
+//   link your own shitsukan::detail::assert_failed / unchecked_status: the library's are
+//       weak symbols, yours win.
+//   define SHITSUKAN_ASSERT(expr) yourself before including any shitsukan header (e.g. to a
+//       breakpoint), or SHITSUKAN_NO_ASSERT to compile the checks out (both macros follow
+//       these two switches).
+// ports/cortex-m/README.md shows the first on a Cortex-M (semihosting output).
 #pragma once
+
+namespace shitsukan {
+
+// What failed, for a handler installed with set_check_failed_handler.
+struct CheckFailure {
+    enum Kind { assertion, unchecked_status } kind;
+    const char* expression;  // assertion: the expression that was false
+    const char* builder;     // unchecked_status: the call whose Status was ignored
+    const char* user;        // unchecked_status: the call that needed it
+    const char* file;
+    int line;
+};
+using CheckFailedHandler = void (*)(const CheckFailure& failure);
+
+// Installs handler (null: the default) and returns the previous one.
+CheckFailedHandler set_check_failed_handler(CheckFailedHandler handler);
+
+}  // namespace shitsukan
 
 namespace shitsukan::detail {
 [[noreturn]] void assert_failed(const char* expr, const char* file, int line);
@@ -43,7 +69,6 @@ namespace shitsukan::detail {
 #define SHITSUKAN_REQUIRE_BUILT(expr, builder, user) ((void)0)
 #else
 #define SHITSUKAN_REQUIRE_BUILT(expr, builder, user) \
-    ((expr) ? (void)0                                 \
-            : ::shitsukan::detail::unchecked_status(builder, user, __FILE__, __LINE__))
+    ((expr) ? (void)0 : ::shitsukan::detail::unchecked_status(builder, user, __FILE__, __LINE__))
 #endif
 #endif

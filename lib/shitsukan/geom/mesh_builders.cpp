@@ -56,34 +56,38 @@ Status make_box(Vec3 lo, Vec3 hi, TriangleMesh* out) {
     return Status::success();
 }
 
+namespace {
+
+// Runs a caller-array builder (mesh_arrays.hpp) into vectors of the sizes it needs, then
+// moves the result into out: the small-device builders are the only ones.
+template <class Build> Status build_into(MeshSizes need, TriangleMesh* out, Build&& build) {
+    std::vector<Vec3> positions(std::size_t(need.vertices)), normals(positions.size());
+    std::vector<Vec2> uvs(positions.size());
+    std::vector<std::uint32_t> indices(std::size_t(need.indices));
+    MeshView view;
+    SHITSUKAN_TRY(build(positions.data(), normals.data(), uvs.data(), need.vertices, indices.data(),
+                        need.indices, &view));
+    *out = TriangleMesh();
+    for (int i = 0; i < view.vertex_count; ++i)
+        out->add_vertex(positions[std::size_t(i)], normals[std::size_t(i)], uvs[std::size_t(i)]);
+    for (int t = 0; t < view.triangle_count; ++t)
+        out->add_triangle(indices[3 * std::size_t(t)], indices[3 * std::size_t(t) + 1],
+                          indices[3 * std::size_t(t) + 2]);
+    return Status::success();
+}
+
+}  // namespace
+
 Status make_uv_sphere(float radius, int slices, int stacks, TriangleMesh* out) {
     if (!out) return Status::error(StatusCode::invalid_argument, "make_uv_sphere: null output");
     SHITSUKAN_TRY(check_positive("make_uv_sphere", "radius", radius));
     SHITSUKAN_TRY(check_segments("make_uv_sphere", "slices", slices));
     SHITSUKAN_TRY(check_segments("make_uv_sphere", "stacks", stacks, 2));
-    *out = TriangleMesh();
-    // Rings from the north pole (theta = 0, +y) to the south pole; the seam column is
-    // duplicated so u runs 0..1, with identical positions (no crack).
-    for (int i = 0; i <= stacks; ++i) {
-        double theta = kPiD * i / stacks;
-        for (int j = 0; j <= slices; ++j) {
-            double phi = 2.0 * kPiD * (j == slices ? 0 : j) / slices;
-            Vec3 n{float(det_sin(theta) * det_cos(phi)), float(det_cos(theta)),
-                   float(-det_sin(theta) * det_sin(phi))};
-            if (i == 0 || i == stacks) n = Vec3{0.0f, i == 0 ? 1.0f : -1.0f, 0.0f};
-            out->add_vertex(n * radius, n, Vec2{float(j) / slices, float(i) / stacks});
-        }
-    }
-    for (int i = 0; i < stacks; ++i)
-        for (int j = 0; j < slices; ++j) {
-            std::uint32_t a = std::uint32_t(i * (slices + 1) + j), b = a + 1;
-            std::uint32_t c = a + std::uint32_t(slices + 1), d = c + 1;
-            Vec3 mid = normalize(out->positions[a] + out->positions[b] + out->positions[c] +
-                                 out->positions[d]);
-            add_oriented(out, a, c, d, mid);
-            add_oriented(out, a, d, b, mid);
-        }
-    return Status::success();
+    return build_into(
+        uv_sphere_sizes(slices, stacks), out,
+        [&](Vec3* p, Vec3* n, Vec2* uv, int nv, std::uint32_t* i, int ni, MeshView* view) {
+            return make_uv_sphere_arrays(radius, slices, stacks, p, n, uv, nv, i, ni, view);
+        });
 }
 
 Status make_cylinder(float radius, float y0, float y1, int slices, bool caps, TriangleMesh* out) {
@@ -94,9 +98,11 @@ Status make_cylinder(float radius, float y0, float y1, int slices, bool caps, Tr
         return Status::error(StatusCode::invalid_argument,
                              "make_cylinder: need finite y0 < y1 (got %g, %g)", double(y0),
                              double(y1));
-    Vec2d profile[4] = {{0, y0}, {radius, y0}, {radius, y1}, {0, y1}};
-    if (caps) return make_revolution(profile, 4, slices, out);
-    return make_revolution(profile + 1, 2, slices, out);
+    return build_into(
+        cylinder_sizes(slices, caps), out,
+        [&](Vec3* p, Vec3* n, Vec2* uv, int nv, std::uint32_t* i, int ni, MeshView* view) {
+            return make_cylinder_arrays(radius, y0, y1, slices, caps, p, n, uv, nv, i, ni, view);
+        });
 }
 
 Status make_torus(float major_radius, float minor_radius, int major_segments, int minor_segments,
@@ -112,19 +118,20 @@ Status make_torus(float major_radius, float minor_radius, int major_segments, in
     SHITSUKAN_TRY(check_segments("make_torus", "major_segments", major_segments));
     SHITSUKAN_TRY(check_segments("make_torus", "minor_segments", minor_segments));
     // The torus is the revolution of a circle (r, y) = (R + r cos v, r sin v) about y.
-    std::vector<Vec2d> circle;
-    for (int k = 0; k <= minor_segments; ++k) {
-        double v = 2.0 * kPiD * (k == minor_segments ? 0 : k) / minor_segments;
-        circle.push_back({major_radius + minor_radius * det_cos(v), minor_radius * det_sin(v)});
-    }
-    return make_revolution(circle.data(), int(circle.size()), major_segments, out);
+    return build_into(
+        torus_sizes(major_segments, minor_segments), out,
+        [&](Vec3* p, Vec3* n, Vec2* uv, int nv, std::uint32_t* i, int ni, MeshView* view) {
+            return make_torus_arrays(major_radius, minor_radius, major_segments, minor_segments, p,
+                                     n, uv, nv, i, ni, view);
+        });
 }
 
-// Revolve the profile (r_k, y_k) about the y axis. Normals come from the profile's tangent:
-// the outward side is the one to the right of the direction of travel in the (r, y) half
-// plane, i.e. a profile that climbs the outside of a solid and descends the inside (a cup)
-// gets outward normals on both walls. Corners sharper than 40 degrees keep two vertices
-// (one per side) so that rims stay crisp; elsewhere normals are averaged.
+// Revolve the profile (r_k, y_k) about the y axis (make_revolution_arrays, mesh_arrays.hpp,
+// after dropping repeated points). Normals come from the profile's tangent: the outward side
+// is the one to the right of the direction of travel in the (r, y) half plane, i.e. a
+// profile that climbs the outside of a solid and descends the inside (a cup) gets outward
+// normals on both walls. Corners sharper than 40 degrees keep two vertices (one per side) so
+// that rims stay crisp; elsewhere normals are averaged.
 Status make_revolution(const Vec2d* profile, int count, int segments, TriangleMesh* out) {
     if (!out) return Status::error(StatusCode::invalid_argument, "make_revolution: null output");
     if (!profile || count < 2)
@@ -145,76 +152,12 @@ Status make_revolution(const Vec2d* profile, int count, int segments, TriangleMe
     if (pts.size() < 2)
         return Status::error(StatusCode::degenerate,
                              "make_revolution: the profile's points all coincide");
-    profile = pts.data();
-    count = int(pts.size());
-    bool closed =
-        count > 2 && profile[0].x == profile[count - 1].x && profile[0].y == profile[count - 1].y;
-    int n = closed ? count - 1 : count;  // distinct points
-    auto seg_normal = [&](int k) {       // normal of segment k -> k+1 (in the r, y plane)
-        Vec2d a = profile[k % n], b = profile[(k + 1) % n];
-        Vec2d d{b.x - a.x, b.y - a.y};
-        double l = std::sqrt(d.x * d.x + d.y * d.y);
-        return l > 0 ? Vec2d{d.y / l, -d.x / l} : Vec2d{0, 0};
-    };
-    int nseg = closed ? n : n - 1;
-    // Rings of vertices along the profile. A sharp corner gets two rings at the same place
-    // (one with the incoming, one with the outgoing normal) that are not joined by triangles.
-    struct Ring {
-        double r, y;
-        Vec2d normal;
-        double v;  // arc-length parameter in [0, 1]
-        bool joined_to_prev;
-    };
-    std::vector<double> arclen(std::size_t(nseg) + 1, 0.0);
-    for (int k = 0; k < nseg; ++k) {
-        Vec2d a = profile[k], b = profile[(k + 1) % n];
-        arclen[std::size_t(k) + 1] = arclen[std::size_t(k)] + std::sqrt((b.x - a.x) * (b.x - a.x) +
-                                                                        (b.y - a.y) * (b.y - a.y));
-    }
-    double total = arclen[std::size_t(nseg)];
-    if (total == 0)
-        return Status::error(StatusCode::degenerate, "make_revolution: profile has zero length");
-    std::vector<Ring> rings;
-    for (int k = 0; k <= nseg; ++k) {
-        const Vec2d& p = profile[k % n];
-        double v = arclen[std::size_t(k)] / total;
-        bool has_in = closed || k > 0, has_out = closed || k < nseg;
-        Vec2d nin = seg_normal(has_in ? (k + nseg - 1) % nseg : 0);
-        Vec2d nout = seg_normal(has_out ? k % nseg : nseg - 1);
-        Vec2d avg{nin.x + nout.x, nin.y + nout.y};
-        double l = std::sqrt(avg.x * avg.x + avg.y * avg.y);
-        bool sharp = has_in && has_out && (nin.x * nout.x + nin.y * nout.y) < 0.766;  // > ~40 deg
-        if (!sharp) {
-            Vec2d nn = !has_in    ? nout
-                       : !has_out ? nin
-                                  : (l > 0 ? Vec2d{avg.x / l, avg.y / l} : nout);
-            rings.push_back({p.x, p.y, nn, v, k > 0});
-        } else {
-            if (k > 0) rings.push_back({p.x, p.y, nin, v, true});
-            if (k < nseg) rings.push_back({p.x, p.y, nout, v, false});
-        }
-    }
-    *out = TriangleMesh();
-    for (const Ring& ring : rings)
-        for (int j = 0; j <= segments; ++j) {
-            double phi = 2.0 * kPiD * (j == segments ? 0 : j) / segments;
-            double c = det_cos(phi), s = -det_sin(phi);
-            Vec3 p{float(ring.r * c), float(ring.y), float(ring.r * s)};
-            Vec3 nn{float(ring.normal.x * c), float(ring.normal.y), float(ring.normal.x * s)};
-            out->add_vertex(p, nn, Vec2{float(j) / segments, float(ring.v)});
-        }
-    for (std::size_t i = 0; i + 1 < rings.size(); ++i) {
-        if (!rings[i + 1].joined_to_prev) continue;
-        for (int j = 0; j < segments; ++j) {
-            std::uint32_t a = std::uint32_t(i * std::size_t(segments + 1) + std::size_t(j)),
-                          b = a + 1;
-            std::uint32_t c = a + std::uint32_t(segments + 1), d = c + 1;
-            Vec3 outward = out->normals[a] + out->normals[b] + out->normals[c] + out->normals[d];
-            add_oriented(out, a, c, d, outward);
-            add_oriented(out, a, d, b, outward);
-        }
-    }
-    return Status::success();
+    const int n = int(pts.size());
+    return build_into(
+        revolution_sizes(pts.data(), n, segments), out,
+        [&](Vec3* p, Vec3* nrm, Vec2* uv, int nv, std::uint32_t* i, int ni, MeshView* view) {
+            return make_revolution_arrays(pts.data(), n, segments, p, nrm, uv, nv, i, ni, view);
+        });
 }
 
 // Uniform Catmull-Rom spline through the control points, in double (okada1987: "the spline

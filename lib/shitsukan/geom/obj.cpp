@@ -1,8 +1,55 @@
 #include "shitsukan/geom/obj.hpp"
 
 #include <cstdio>
+#include <vector>
+
+#include "shitsukan/core/format_number.hpp"
 
 namespace shitsukan {
+
+namespace {
+
+// Text into a large buffer, written out in blocks: numbers by core/format_number (the
+// shortest decimal that reads back to the same float), no printf per number.
+class ObjText {
+public:
+    explicit ObjText(std::FILE* f) : f_(f), buf_(kBlock + kLine) {}
+    void text(const char* s) {
+        while (*s) buf_[n_++] = *s++;
+    }
+    void number(float v) {
+        buf_[n_++] = ' ';
+        n_ += std::size_t(format_float_round_trip(&buf_[n_], int(kLine), v));
+    }
+    void index(unsigned i) {
+        char digits[10];
+        int k = 0;
+        do {
+            digits[k++] = char('0' + i % 10u);
+            i /= 10u;
+        } while (i != 0);
+        while (k > 0) buf_[n_++] = digits[--k];
+    }
+    void end_line() {
+        buf_[n_++] = '\n';
+        if (n_ >= kBlock) flush();
+    }
+    void flush() {
+        if (n_ > 0 && std::fwrite(buf_.data(), 1, n_, f_) != n_) failed_ = true;
+        n_ = 0;
+    }
+    bool failed() const { return failed_; }
+
+private:
+    static constexpr std::size_t kBlock = std::size_t(1) << 16;
+    static constexpr std::size_t kLine = 256;  // the longest line: "v" and six numbers
+    std::FILE* f_;
+    std::vector<char> buf_;
+    std::size_t n_ = 0;
+    bool failed_ = false;
+};
+
+}  // namespace
 
 Status write_obj(const char* path, const TriangleMesh& mesh) {
     if (!path || !path[0])
@@ -16,38 +63,54 @@ Status write_obj(const char* path, const TriangleMesh& mesh) {
     if (!f) return Status::error(StatusCode::io_error, "cannot open %s for writing", path);
     bool has_n = mesh.normals.size() == nv && nv > 0, has_t = mesh.uvs.size() == nv && nv > 0;
     bool has_c = mesh.colors.size() == nv && nv > 0;
-    // %.9g: enough digits for every float to read back to the same bits.
     std::fprintf(f, "# shitsukan mesh: %zu vertices, %zu triangles\n", nv, mesh.indices.size() / 3);
+    // Every number is the shortest decimal that reads back (strtof) to the same float.
+    ObjText out(f);
     for (std::size_t i = 0; i < nv; ++i) {
         const Vec3& p = mesh.positions[i];
-        if (has_c)  // the widespread "v x y z r g b" vertex-colour extension
-            std::fprintf(f, "v %.9g %.9g %.9g %.4g %.4g %.4g\n", double(p.x), double(p.y),
-                         double(p.z), double(mesh.colors[i].x), double(mesh.colors[i].y),
-                         double(mesh.colors[i].z));
-        else
-            std::fprintf(f, "v %.9g %.9g %.9g\n", double(p.x), double(p.y), double(p.z));
+        out.text("v");
+        out.number(p.x);
+        out.number(p.y);
+        out.number(p.z);
+        if (has_c) {  // the widespread "v x y z r g b" vertex-colour extension
+            out.number(mesh.colors[i].x);
+            out.number(mesh.colors[i].y);
+            out.number(mesh.colors[i].z);
+        }
+        out.end_line();
     }
     if (has_t)
-        for (const Vec2& t : mesh.uvs) std::fprintf(f, "vt %.9g %.9g\n", double(t.x), double(t.y));
+        for (const Vec2& t : mesh.uvs) {
+            out.text("vt");
+            out.number(t.x);
+            out.number(t.y);
+            out.end_line();
+        }
     if (has_n)
-        for (const Vec3& n : mesh.normals)
-            std::fprintf(f, "vn %.6g %.6g %.6g\n", double(n.x), double(n.y), double(n.z));
+        for (const Vec3& n : mesh.normals) {
+            out.text("vn");
+            out.number(n.x);
+            out.number(n.y);
+            out.number(n.z);
+            out.end_line();
+        }
+    const char* separator = has_t && has_n ? "/" : has_n ? "//" : "/";
+    const int repeats = (has_t ? 1 : 0) + (has_n ? 1 : 0);
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        std::fprintf(f, "f");
+        out.text("f");
         for (int k = 0; k < 3; ++k) {
             unsigned i = mesh.indices[t + std::size_t(k)] + 1;  // OBJ indices start at 1
-            if (has_t && has_n)
-                std::fprintf(f, " %u/%u/%u", i, i, i);
-            else if (has_t)
-                std::fprintf(f, " %u/%u", i, i);
-            else if (has_n)
-                std::fprintf(f, " %u//%u", i, i);
-            else
-                std::fprintf(f, " %u", i);
+            out.text(" ");
+            out.index(i);  // v, then v/vt/vn, v/vt or v//vn
+            for (int r = 0; r < repeats; ++r) {
+                out.text(r == 0 ? separator : "/");
+                out.index(i);
+            }
         }
-        std::fprintf(f, "\n");
+        out.end_line();
     }
-    bool ok = !std::ferror(f);
+    out.flush();
+    bool ok = !out.failed() && !std::ferror(f);
     ok = (std::fclose(f) == 0) && ok;
     if (!ok) return Status::error(StatusCode::io_error, "writing %s failed", path);
     return Status::success();

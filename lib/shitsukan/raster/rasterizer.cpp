@@ -27,9 +27,9 @@ namespace {
 
 using i64 = std::int64_t;
 
-constexpr int kSubpixelBits = 8;             // chosen here: 1/256 pixel vertex positions
+constexpr int kSubpixelBits = 8;  // chosen here: 1/256 pixel vertex positions
 constexpr i64 kSubpixel = i64(1) << kSubpixelBits;
-constexpr i64 kHalfPixel = kSubpixel / 2;    // pixel centres are at integer + 1/2
+constexpr i64 kHalfPixel = kSubpixel / 2;  // pixel centres are at integer + 1/2
 
 // The attributes of one original mesh vertex, in the form the fragment needs them.
 struct VertexData {
@@ -59,9 +59,9 @@ struct MeshContext {
 // A sub-triangle corner after the divide: fixed-point screen position, depth, 1/w and the
 // barycentric coordinates in the original triangle.
 struct ScreenVertex {  // no default member values: arrays of these are not zeroed
-    i64 x, y;     // pixels · 256
-    float z;      // depth in [0, 1]
-    float inv_w;  // 1 / w_clip, for perspective-correct interpolation
+    i64 x, y;          // pixels · 256
+    float z;           // depth in [0, 1]
+    float inv_w;       // 1 / w_clip, for perspective-correct interpolation
     Vec3 bary;
 };
 
@@ -73,21 +73,83 @@ struct DrawContext {
     long fragments = 0;
 };
 
-// ceil(a / b) for b > 0, exact for negative a too.
-inline i64 ceil_div(i64 a, i64 b) { return a >= 0 ? (a + b - 1) / b : -((-a) / b); }
-
-// The first pixel column whose centre lies at or right of the edge e0 -> e1 on the scanline
-// through the fixed-point height yc (e0.y <= yc < e1.y). Exact: x_edge = e0.x + dx·(yc -
-// e0.y)/dy is compared as a fraction, so a centre exactly on an edge is decided the same way
-// by both triangles sharing it. Used as the start of a span (left edge: centre on the edge is
-// inside) and as its exclusive end (right edge: centre on the edge is outside): that is the
-// top-left rule for non-horizontal edges.
-inline i64 first_column_at_or_right_of(const ScreenVertex& e0, const ScreenVertex& e1, i64 yc) {
-    i64 dy = e1.y - e0.y;
-    i64 n = e0.x * dy + (e1.x - e0.x) * (yc - e0.y);  // x_edge · dy
-    // centre 256·x + 128 >= n / dy  <=>  x >= (n - 128·dy) / (256·dy)
-    return ceil_div(n - kHalfPixel * dy, kSubpixel * dy);
+// q = floor(a / b), r = a - q·b in [0, b), for b > 0: shift and subtract on 32-bit words
+// (Armv7-M divides 32 bits in hardware; libgcc's 64-bit __aeabi_ldivmod is 700 bytes and
+// slow). Runs once per edge per band, never per row.
+inline void floor_divmod(i64 a, i64 b, i64* q, i64* r) {
+    const bool negative = a < 0;
+    std::uint64_t n = negative ? 0u - std::uint64_t(a) : std::uint64_t(a);
+    const std::uint64_t d = std::uint64_t(b);
+    std::uint64_t quotient = 0, rest = 0;
+    if ((n >> 32) == 0 && (d >> 32) == 0) {
+        quotient = std::uint32_t(n) / std::uint32_t(d);
+        rest = std::uint32_t(n) - std::uint32_t(quotient) * std::uint32_t(d);
+    } else {
+        for (int bit = 63; bit >= 0; --bit) {
+            rest = (rest << 1) | ((n >> bit) & 1u);
+            if (rest >= d) {
+                rest -= d;
+                quotient |= std::uint64_t(1) << bit;
+            }
+        }
+    }
+    i64 fq = i64(quotient), fr = i64(rest);
+    if (negative) {  // -(quotient·d + rest) = -(quotient + 1)·d + (d - rest)
+        fq = -fq;
+        fr = -fr;
+        if (fr < 0) {
+            fq -= 1;
+            fr += b;
+        }
+    }
+    *q = fq;
+    *r = fr;
 }
+
+// ceil(a / 256), exact for negative a too (an arithmetic shift, no division).
+inline i64 ceil_div_subpixel(i64 a) { return -((-a) >> kSubpixelBits); }
+
+// The first pixel column whose centre lies at or right of the edge e0 -> e1, on consecutive
+// scanlines (e0.y <= yc < e1.y). Exact: x_edge = e0.x + dx·(yc - e0.y)/dy is compared as a
+// fraction, so a centre exactly on an edge is decided the same way by both triangles sharing
+// it. Used as the start of a span (left edge: centre on the edge is inside) and as its
+// exclusive end (right edge: centre on the edge is outside): that is the top-left rule for
+// non-horizontal edges. The column is ceil(N / D) with N = x_edge·dy - 128·dy and D = 256·dy
+// (centre 256·x + 128 >= x_edge <=> x >= N / D); from one row to the next N grows by
+// 256·dx, so the walk keeps the quotient and remainder and adds that step's quotient and
+// remainder: two divisions when the walk starts, none per row, the same columns exactly.
+struct EdgeWalk {
+    i64 column = 0;              // ceil(N / D) on the current row
+    i64 slack = 0;               // column·D - N, in [0, D)
+    i64 d = 0;                   // D = 256·dy
+    i64 step_q = 0, step_r = 0;  // 256·dx = step_q·D + step_r, 0 <= step_r < D
+    i64 next_y = 0;              // the row the walk is on
+    bool started = false;
+
+    // The column on row y; rows must come in increasing order, one by one.
+    i64 at_row(const ScreenVertex& e0, const ScreenVertex& e1, i64 y) {
+        if (!started || y != next_y) {
+            const i64 dy = e1.y - e0.y, yc = y * kSubpixel + kHalfPixel;
+            d = kSubpixel * dy;
+            const i64 n = e0.x * dy + (e1.x - e0.x) * (yc - e0.y) - kHalfPixel * dy;
+            i64 q, r;
+            floor_divmod(n, d, &q, &r);
+            column = r == 0 ? q : q + 1;
+            slack = r == 0 ? 0 : d - r;
+            floor_divmod(kSubpixel * (e1.x - e0.x), d, &step_q, &step_r);
+            started = true;
+        } else {  // N += step: ceil moves by step_q, and by one more when the slack runs out
+            column += step_q;
+            slack -= step_r;
+            if (slack < 0) {
+                slack += d;
+                column += 1;
+            }
+        }
+        next_y = y + 1;
+        return column;
+    }
+};
 
 inline Vec3d to_double(Vec3 v) { return {double(v.x), double(v.y), double(v.z)}; }
 
@@ -222,14 +284,26 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
     const ScreenVertex* v0 = &a;
     const ScreenVertex* v1 = &b;
     const ScreenVertex* v2 = &c;
-    if (v1->y < v0->y) { const ScreenVertex* t = v0; v0 = v1; v1 = t; }
-    if (v2->y < v1->y) { const ScreenVertex* t = v1; v1 = v2; v2 = t; }
-    if (v1->y < v0->y) { const ScreenVertex* t = v0; v0 = v1; v1 = t; }
+    if (v1->y < v0->y) {
+        const ScreenVertex* t = v0;
+        v0 = v1;
+        v1 = t;
+    }
+    if (v2->y < v1->y) {
+        const ScreenVertex* t = v1;
+        v1 = v2;
+        v2 = t;
+    }
+    if (v1->y < v0->y) {
+        const ScreenVertex* t = v0;
+        v0 = v1;
+        v1 = t;
+    }
 
     // Rows whose centre lies in [v0.y, v2.y): the top vertex row is in, the bottom one is
     // out (the top-left rule for horizontal edges), intersected with the band.
-    i64 row_begin = ceil_div(v0->y - kHalfPixel, kSubpixel);
-    i64 row_end = ceil_div(v2->y - kHalfPixel, kSubpixel);
+    i64 row_begin = ceil_div_subpixel(v0->y - kHalfPixel);
+    i64 row_end = ceil_div_subpixel(v2->y - kHalfPixel);
     i64 band_begin = band.y0, band_end = i64(band.y0) + band.color.height;
     if (row_begin < band_begin) row_begin = band_begin;
     if (row_end > band_end) row_end = band_end;
@@ -245,19 +319,19 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
     float lb_dx = float(double(c.y - a.y) * inv_area), lb_dy = float(-double(c.x - a.x) * inv_area);
     float lc_dx = float(-double(b.y - a.y) * inv_area), lc_dy = float(double(b.x - a.x) * inv_area);
     float dz_b = b.z - a.z, dz_c = c.z - a.z;
-    const bool unclipped = a.bary == Vec3{1, 0, 0} && b.bary == Vec3{0, 1, 0} &&
-                           c.bary == Vec3{0, 0, 1};
+    const bool unclipped =
+        a.bary == Vec3{1, 0, 0} && b.bary == Vec3{0, 1, 0} && c.bary == Vec3{0, 0, 1};
 
     Fragment f;
     f.triangle = src.index;
     f.front_facing = front;
     const i64 width = band.frame_width;
+    EdgeWalk long_edge, upper_edge, lower_edge;
     for (i64 y = row_begin; y < row_end; ++y) {
         i64 yc = y * kSubpixel + kHalfPixel;
         // The short edge on this row: v0 -> v1 above the middle vertex, v1 -> v2 below.
-        i64 x_long = first_column_at_or_right_of(*v0, *v2, yc);
-        i64 x_short = yc < v1->y ? first_column_at_or_right_of(*v0, *v1, yc)
-                                 : first_column_at_or_right_of(*v1, *v2, yc);
+        i64 x_long = long_edge.at_row(*v0, *v2, y);
+        i64 x_short = yc < v1->y ? upper_edge.at_row(*v0, *v1, y) : lower_edge.at_row(*v1, *v2, y);
         i64 x_begin = middle_right ? x_long : x_short;
         i64 x_end = middle_right ? x_short : x_long;
         if (x_begin < 0) x_begin = 0;
@@ -267,11 +341,14 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
         int band_row = int(y - band.y0);
         Rgb8* color_row = band.color.row(band_row);
         float* depth_row = band.depth.row(band_row);
-        float ry = float(yc - a.y);  // exact integer, small enough for float
+        // |yc - a.y| and |256·x + 128 - a.x| stay below 2^29 (coordinates below kMaxFixed =
+        // 2^28): through int32 the conversion is the FPU's (an int64 one is libgcc's
+        // __aeabi_l2f per pixel on a Cortex-M4F), rounding the same integer the same way.
+        float ry = float(std::int32_t(yc - a.y));
         float lb_row = ry * lb_dy, lc_row = ry * lc_dy;
         f.y = int(y);
         for (i64 x = x_begin; x < x_end; ++x) {
-            float rx = float(x * kSubpixel + kHalfPixel - a.x);
+            float rx = float(std::int32_t(x * kSubpixel + kHalfPixel - a.x));
             float lb = lb_row + rx * lb_dx;  // screen-space (affine) barycentrics
             float lc = lc_row + rx * lc_dx;
             float la = 1.0f - lb - lc;
@@ -317,6 +394,98 @@ bool to_screen(const Camera& camera, const ClipSpaceVertex& v, ScreenVertex* r) 
     return true;
 }
 
+// ---- 1. Fetch the three corners, into clip space ----
+// false for a degenerate triangle (zero area, NaN/inf corner). The plane normal is computed
+// in double so that huge but finite coordinates do not overflow.
+bool fetch_corners(const MeshView& mesh, const Mat4& mvp, int t, SourceTriangle* src,
+                   ClipSpaceVertex corners[3]) {
+    src->index = t;
+    src->corner_index = mesh.indices + 3 * std::size_t(t);  // no int overflow
+    bool finite = true;
+    for (int k = 0; k < 3; ++k) {
+        Vec3 p = mesh.positions[src->corner_index[k]];
+        finite = finite && is_finite(p);
+        src->v[k].object_position = p;
+        corners[k].clip = transform_homogeneous(mvp, p);
+        corners[k].bary = Vec3{k == 0 ? 1.0f : 0.0f, k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f};
+    }
+    Vec3d e1 = to_double(src->v[1].object_position - src->v[0].object_position);
+    Vec3d e2 = to_double(src->v[2].object_position - src->v[0].object_position);
+    src->object_cross = cross(e1, e2);
+    double cross2 = length_squared(src->object_cross);
+    return finite && cross2 > 0.0 && is_finite(cross2);
+}
+
+enum class Projected { drawable, outside, rejected };
+
+// ---- 2. Clip in homogeneous space (most triangles need not: outcodes tell) ----
+// ---- 3. Divide and snap each corner of the (clipped) polygon ----
+Projected clip_and_snap(const Camera& camera, const ClipSpaceVertex corners[3],
+                        ScreenVertex s[kMaxClipVertices], int* count, bool* clipped,
+                        RasterStats* local) {
+    *clipped = false;  // went through clip_triangle (near plane or guard band)
+    unsigned c0 = clip_outcode(corners[0].clip), c1 = clip_outcode(corners[1].clip),
+             c2 = clip_outcode(corners[2].clip);
+    if (c0 & c1 & c2 & kOutsideBits) return Projected::outside;  // beyond one side of the view
+    // The fast path needs every corner strictly in front of the eye (w >= kMinClipW), not
+    // only inside the clip planes: a corner with w == 0 (at the eye) has outcode 0 when
+    // x = y = 0, and dividing by it would give NaN.
+    bool fast = ((c0 | c1 | c2) & kClipPlaneBits) == 0;
+    for (int k = 0; k < 3 && fast; ++k)
+        fast = finite_clip(corners[k].clip) && corners[k].clip.w >= kMinClipW;
+    bool usable = true;
+    if (fast) {
+        for (int k = 0; k < 3; ++k) usable = to_screen(camera, corners[k], &s[k]) && usable;
+        *count = 3;
+    } else {
+        ClipPolygon poly;
+        ClipResult clip = clip_triangle(corners, &poly);
+        if (clip.not_finite) return Projected::rejected;
+        if (clip.outside) return Projected::outside;
+        if (clip.clipped_near) ++local->triangles_clipped;
+        *clipped = true;
+        // After near clipping w > 0 for the cameras this library makes; a corner on the eye
+        // plane (w == 0, e.g. through a projective model matrix) or a custom projection can
+        // still give w <= 0: such a triangle cannot be drawn (its plane passes through the
+        // eye, or it wraps around behind it).
+        for (int k = 0; k < poly.count; ++k) usable = to_screen(camera, poly.v[k], &s[k]) && usable;
+        *count = poly.count;
+    }
+    return usable ? Projected::drawable : Projected::rejected;
+}
+
+// ---- 4. Decide the facing once for the whole triangle ----
+// Unclipped: the sign of the snapped area, so that the snapped triangles of a closed mesh
+// still pair up exactly (as many front as back ones over every pixel). Clipped: the
+// clip-space orientation, which all pieces share (a sliver's snapped area may flip sign),
+// or failing that (edge-on) the whole polygon's snapped area. false: it covers nothing.
+bool decide_facing(bool clipped, const ClipSpaceVertex corners[3], const ScreenVertex* s, int count,
+                   bool* front) {
+    if (!clipped) {
+        i64 area2 = snapped_area2(s[0], s[1], s[2]);
+        *front = area2 < 0;
+        return area2 != 0;
+    }
+    double orientation = clip_orientation(corners);
+    if (orientation == 0.0) {
+        i64 area2 = 0;
+        for (int k = 1; k + 1 < count; ++k) area2 += snapped_area2(s[0], s[k], s[k + 1]);
+        if (area2 == 0) return false;
+        orientation = area2 < 0 ? 1.0 : -1.0;
+    }
+    *front = orientation > 0.0;
+    return true;
+}
+
+void add_stats(const RasterStats& local, long fragments, RasterStats* stats) {
+    if (!stats) return;
+    stats->triangles_in += local.triangles_in;
+    stats->triangles_drawn += local.triangles_drawn;
+    stats->triangles_clipped += local.triangles_clipped;
+    stats->triangles_rejected += local.triangles_rejected;
+    stats->fragments_shaded += fragments;
+}
+
 }  // namespace
 
 Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
@@ -337,115 +506,29 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
     local.triangles_in = mesh.triangle_count;
 
     for (int t = 0; t < mesh.triangle_count; ++t) {
-        // ---- 1. Fetch the three corners, into clip space ----
         SourceTriangle src;
-        src.index = t;
-        src.corner_index = mesh.indices + 3 * std::size_t(t);  // no int overflow
         ClipSpaceVertex corners[3];
-        bool finite = true;
-        for (int k = 0; k < 3; ++k) {
-            Vec3 p = mesh.positions[src.corner_index[k]];
-            finite = finite && is_finite(p);
-            src.v[k].object_position = p;
-            corners[k].clip = transform_homogeneous(mvp, p);
-            corners[k].bary = Vec3{k == 0 ? 1.0f : 0.0f, k == 1 ? 1.0f : 0.0f,
-                                   k == 2 ? 1.0f : 0.0f};
-        }
-        // Zero-area and NaN/inf triangles are degenerate: skipped and counted. The plane
-        // normal is computed in double so that huge but finite coordinates do not overflow.
-        Vec3d e1 = to_double(src.v[1].object_position - src.v[0].object_position);
-        Vec3d e2 = to_double(src.v[2].object_position - src.v[0].object_position);
-        src.object_cross = cross(e1, e2);
-        double cross2 = length_squared(src.object_cross);
-        if (!finite || !(cross2 > 0.0) || !is_finite(cross2)) {
+        if (!fetch_corners(mesh, mvp, t, &src, corners)) {
             ++local.triangles_rejected;
             continue;
         }
-
-        // ---- 2. Clip in homogeneous space (most triangles need not: outcodes tell) ----
         ScreenVertex s[kMaxClipVertices];
         int count = 0;
-        bool clipped = false;  // went through clip_triangle (near plane or guard band)
-        unsigned c0 = clip_outcode(corners[0].clip), c1 = clip_outcode(corners[1].clip),
-                 c2 = clip_outcode(corners[2].clip);
-        if (c0 & c1 & c2 & kOutsideBits) continue;  // wholly beyond one side of the view
-        // The fast path needs every corner strictly in front of the eye (w >= kMinClipW), not
-        // only inside the clip planes: a corner with w == 0 (at the eye) has outcode 0 when
-        // x = y = 0, and dividing by it would give NaN.
-        bool fast = ((c0 | c1 | c2) & kClipPlaneBits) == 0;
-        for (int k = 0; k < 3 && fast; ++k)
-            fast = finite_clip(corners[k].clip) && corners[k].clip.w >= kMinClipW;
-        if (fast) {
-            // ---- 3. Divide and snap ----
-            bool usable = true;
-            for (int k = 0; k < 3; ++k) usable = to_screen(camera, corners[k], &s[k]) && usable;
-            if (!usable) {
-                ++local.triangles_rejected;
-                continue;
-            }
-            count = 3;
-        } else {
-            ClipPolygon poly;
-            ClipResult clip = clip_triangle(corners, &poly);
-            if (clip.not_finite) {
-                ++local.triangles_rejected;
-                continue;
-            }
-            if (clip.outside) continue;
-            if (clip.clipped_near) ++local.triangles_clipped;
-            clipped = true;
-            // ---- 3. Divide and snap each corner of the clipped polygon ----
-            bool usable = true;
-            for (int k = 0; k < poly.count; ++k) {
-                // After near clipping w > 0 for the cameras this library makes; a corner on
-                // the eye plane (w == 0, e.g. through a projective model matrix) or a custom
-                // projection can still give w <= 0: such a triangle cannot be drawn (its
-                // plane passes through the eye, or it wraps around behind it).
-                usable = to_screen(camera, poly.v[k], &s[k]) && usable;
-            }
-            if (!usable) {
-                ++local.triangles_rejected;
-                continue;
-            }
-            count = poly.count;
-        }
-
-        // ---- 4. Cull (once for the whole triangle) and walk each piece of the fan ----
-        // Unclipped: the sign of the snapped area, so that the snapped triangles of a closed
-        // mesh still pair up exactly (as many front as back ones over every pixel). Clipped:
-        // the clip-space orientation, which all pieces share (a sliver's snapped area may
-        // flip sign), or failing that (edge-on) the whole polygon's snapped area.
-        bool front;
-        if (!clipped) {
-            i64 area2 = snapped_area2(s[0], s[1], s[2]);
-            if (area2 == 0) continue;
-            front = area2 < 0;
-        } else {
-            double orientation = clip_orientation(corners);
-            if (orientation == 0.0) {
-                i64 area2 = 0;
-                for (int k = 1; k + 1 < count; ++k) area2 += snapped_area2(s[0], s[k], s[k + 1]);
-                if (area2 == 0) continue;
-                orientation = area2 < 0 ? 1.0 : -1.0;
-            }
-            front = orientation > 0.0;
-        }
+        bool clipped = false, front = false;
+        Projected projected = clip_and_snap(camera, corners, s, &count, &clipped, &local);
+        if (projected == Projected::rejected) ++local.triangles_rejected;
+        if (projected != Projected::drawable) continue;
+        if (!decide_facing(clipped, corners, s, count, &front)) continue;
         if ((options.cull == CullMode::back && !front) ||
             (options.cull == CullMode::front && front))
             continue;
+        // ---- 5. Walk each piece of the fan ----
         bool drawn = false;
         for (int k = 1; k + 1 < count; ++k)
             drawn = raster_triangle(ctx, src, s[0], s[k], s[k + 1], front) || drawn;
         if (drawn) ++local.triangles_drawn;
     }
-
-    if (stats) {
-        stats->triangles_in += local.triangles_in;
-        stats->triangles_drawn += local.triangles_drawn;
-        stats->triangles_clipped += local.triangles_clipped;
-        stats->triangles_rejected += local.triangles_rejected;
-        stats->fragments_shaded += ctx.fragments;
-    }
+    add_stats(local, ctx.fragments, stats);
     return Status::success();
 }
 

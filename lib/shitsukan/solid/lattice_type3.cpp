@@ -18,6 +18,7 @@ Status TypeIIILattice::init(const FractalParams& params) {
                              "Type III lattice: needs NoiseSource::hash (a sequential stream "
                              "depends on the order of queries)");
     R_ = params.R;
+    built_ = true;
     hash_start_ = hash_start(params.seed, kLatticeStream);
     for (int n = 1; n <= R_; ++n) amplitude_[n] = level_amplitude(n, params.beta);
     for (int i = 0; i < 8; ++i) corners0_[i] = params.corners[i];
@@ -74,17 +75,17 @@ static void block_corners(const float* grid, int ox, int oy, int oz, float out[8
                 out[i + 2 * j + 4 * k] = grid[grid_index(ox + i, oy + j, oz + k)];
 }
 
-const float* TypeIIILattice::unit_cell_corners(std::int32_t ix, std::int32_t iy,
-                                               std::int32_t iz) {
-    if (!reuse_) cached_depth_ = 0;  // okada1989 §3-3: a fresh list for every point
-    if (reuse_ && ix == last_cell_[0] && iy == last_cell_[1] && iz == last_cell_[2]) return cell_;
+const float* TypeIIILattice::unit_cell_corners(std::int32_t ix, std::int32_t iy, std::int32_t iz) {
+    if (no_reuse_) cached_depth_ = 0;  // okada1989 §3-3: a fresh list for every point
+    if (!no_reuse_ && ix == last_cell_[0] && iy == last_cell_[1] && iz == last_cell_[2])
+        return cell_;
     if (R_ == 0) {
         for (int i = 0; i < 8; ++i) cell_[i] = corners0_[i];
     } else {
         // The finest block (edge 2) holding the unit cell: first look in the row cache.
         const std::int32_t fx0 = ix & ~1, fy0 = iy & ~1, fz0 = iz & ~1;
         Block* slot = nullptr;
-        if (kTypeIIIRowCache > 0 && reuse_) {
+        if (kTypeIIIRowCache > 0 && !no_reuse_) {
             std::uint32_t key = (std::uint32_t(fx0 >> 1) * 73856093u) ^
                                 (std::uint32_t(fy0 >> 1) * 19349663u) ^
                                 (std::uint32_t(fz0 >> 1) * 83492791u);
@@ -107,8 +108,8 @@ const float* TypeIIILattice::unit_cell_corners(std::int32_t ix, std::int32_t iy,
                 for (int i = 0; i < 8; ++i) corners[i] = corners0_[i];
             } else {
                 const Block& up = blocks_[n - 1];
-                block_corners(up.v, (x0 - up.x0) / edge, (y0 - up.y0) / edge,
-                              (z0 - up.z0) / edge, corners);
+                block_corners(up.v, (x0 - up.x0) / edge, (y0 - up.y0) / edge, (z0 - up.z0) / edge,
+                              corners);
             }
             subdivide(n, corners, x0, y0, z0);
             cached_depth_ = n;
@@ -122,7 +123,7 @@ const float* TypeIIILattice::unit_cell_corners(std::int32_t ix, std::int32_t iy,
 }
 
 float TypeIIILattice::node_value(std::int32_t x, std::int32_t y, std::int32_t z) {
-    SHITSUKAN_REQUIRE_BUILT(R_ >= 0, "TypeIIILattice::init()", "a TypeIIILattice");
+    SHITSUKAN_REQUIRE_BUILT(built_, "TypeIIILattice::init()", "a TypeIIILattice");
     const std::int32_t last = std::int32_t(1) << R_;
     SHITSUKAN_ASSERT(x >= 0 && y >= 0 && z >= 0 && x <= last && y <= last && z <= last);
     // The unit cell whose lower corner is the node (the last node uses the last cell).
@@ -134,7 +135,7 @@ float TypeIIILattice::node_value(std::int32_t x, std::int32_t y, std::int32_t z)
 
 Status TypeIIILattice::node_value_checked(std::int32_t x, std::int32_t y, std::int32_t z,
                                           float* out) {
-    if (R_ < 0)
+    if (!built_)
         return Status::error(StatusCode::invalid_argument, "Type III lattice: not initialised");
     const std::int32_t last = std::int32_t(1) << R_;
     if (x < 0 || y < 0 || z < 0 || x > last || y > last || z > last)
@@ -147,7 +148,7 @@ Status TypeIIILattice::node_value_checked(std::int32_t x, std::int32_t y, std::i
 }
 
 float TypeIIILattice::turbulence(Vec3 p) {
-    SHITSUKAN_REQUIRE_BUILT(R_ >= 0, "TypeIIILattice::init()", "a TypeIIILattice");
+    SHITSUKAN_REQUIRE_BUILT(built_, "TypeIIILattice::init()", "a TypeIIILattice");
     const int cells = 1 << R_;
     int ix, iy, iz;
     float fx, fy, fz;
@@ -158,7 +159,7 @@ float TypeIIILattice::turbulence(Vec3 p) {
 }
 
 Status TypeIIILattice::turbulence_checked(Vec3 p, float* out) {
-    if (R_ < 0)
+    if (!built_)
         return Status::error(StatusCode::invalid_argument, "Type III lattice: not initialised");
     if (out == nullptr) return Status::error(StatusCode::invalid_argument, "out must not be null");
     SHITSUKAN_TRY(check_lattice_point(p, R_));

@@ -5,8 +5,9 @@
 //
 // Manual
 //   FractalParams p;  p.R = 20;                     // 1,048,577 points a side, never stored
-//   TypeIIILattice lattice;                          // 10.9 KB object, fixed capacity
-//                                                    // (3.3 KB without the row cache below)
+//   TypeIIILattice lattice;                          // 10,888 bytes, fixed capacity
+//                                                    // (3,328 without the row cache below);
+//                                                    // all zero until init(): .bss if static
 //   Status s = lattice.init(p);                      // hash noise only (see below)
 //   if (!s) return s;
 //   float v = lattice.node_value(7, 1 << 19, 3);     // one node, 0 <= x, y, z <= 2^R
@@ -64,8 +65,8 @@ public:
     // library's Type III). false: okada1989's own Type III (§3-3: the list is cleared for
     // every new point), every query descends all R levels from the initial cube; the values
     // are the same, only the time differs.
-    void set_reuse(bool reuse) { reuse_ = reuse; }
-    bool reuse() const { return reuse_; }
+    void set_reuse(bool reuse) { no_reuse_ = !reuse; }
+    bool reuse() const { return !no_reuse_; }
 
     // Teaching/bench counters: how many cell subdivisions (19 new nodes each) were computed.
     long subdivisions() const { return subdivisions_; }
@@ -77,7 +78,7 @@ private:
     // The 27 nodes of one subdivided cell of level n-1: node (a, b, c), a, b, c in 0..2, is at
     // (x0 + a·h, y0 + b·h, z0 + c·h) with h = 2^(R-n); index a + 3b + 9c.
     struct Block {
-        std::int32_t x0 = -1, y0 = -1, z0 = -1;
+        std::int32_t x0 = 0, y0 = 0, z0 = 0;  // valid once init() has run (see below)
         float v[27] = {};
     };
 
@@ -85,14 +86,17 @@ private:
     void subdivide(int n, const float corners[8], std::int32_t x0, std::int32_t y0,
                    std::int32_t z0);
 
-    int R_ = -1;
+    // Every member starts at zero, so a static TypeIIILattice is .bss (no flash for its
+    // initial value); init() marks the caches empty (coordinates -1).
+    bool built_ = false;
+    int R_ = 0;
     std::uint64_t hash_start_ = 0;
     int cached_depth_ = 0;  // blocks_[1..cached_depth_] hold the ancestry of the last query
-    bool reuse_ = true;
+    bool no_reuse_ = false;
     long subdivisions_ = 0;
-    std::int32_t last_cell_[3] = {-1, -1, -1};  // unit cell of the last query
-    float corners0_[8] = {};                    // the eight initial corner values
-    float cell_[8] = {};                        // corners of the last query's unit cell
+    std::int32_t last_cell_[3] = {};  // unit cell of the last query
+    float corners0_[8] = {};          // the eight initial corner values
+    float cell_[8] = {};              // corners of the last query's unit cell
     float amplitude_[kTypeIIIMaxDepth + 1] = {};
     Block blocks_[kTypeIIIMaxDepth + 1];
     Block row_cache_[kTypeIIIRowCache > 0 ? kTypeIIIRowCache : 1];
