@@ -26,6 +26,7 @@
 #include "shitsukan/core/config.hpp"
 #include "shitsukan/core/core.hpp"
 #include "shitsukan/core/detmath.hpp"
+#include "shitsukan/core/format_number.hpp"
 #include "shitsukan/core/gaussian.hpp"
 #include "shitsukan/core/hash.hpp"
 #include "shitsukan/core/memory_budget.hpp"
