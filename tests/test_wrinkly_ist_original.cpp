@@ -240,3 +240,30 @@ TEST_CASE("original IST round trip is exact on every sub-interval left end (issu
     CHECK(ist_original_inverse(ist, ist_original_forward(ist, 2.0 / 9.0)) == 2.0 / 9.0);
     CHECK(ist_original_inverse(ist, ist_original_forward(ist, 0.0)) == 0.0);
 }
+
+// fuzz_ist finding: with skewed edges and unequal M the groups dealt into a wide base are
+// stretched and those in a narrow one squeezed, so u^K sub-intervals can be far narrower
+// than u^0's: forward() mapped different u onto one double and the inverse returned a point
+// 0.99 away. ist_original_check now bounds the finest sub-interval of u^K too.
+TEST_CASE("original IST: axes whose u^K sub-intervals doubles cannot resolve are refused") {
+    const int crossing[4] = {7, 12, 2, 7};
+    const double edges[5] = {0.0, 26 / 1024.0, 52 / 1024.0, 78 / 1024.0, 1.0};
+    IstOriginal ist;
+    ist.base_intervals = 4;
+    ist.crossing = crossing;
+    ist.edges = edges;
+    ist.iterations = 8;
+    const Status s = ist_original_check(ist);
+    CHECK(s.code() == StatusCode::out_of_range);
+    CHECK(std::string(s.message()).find("u^K") != std::string::npos);
+    // the accepted K of this axis go back and forth without a jump
+    for (ist.iterations = 0; ist_original_check(ist).ok(); ++ist.iterations) {
+        for (int i = 0; i < 4000; ++i) {
+            const double u = (i + 0.37) / 4000.0;
+            const double v = ist_original_forward(ist, u);
+            REQUIRE(v < 1.0);
+            REQUIRE(std::fabs(ist_original_inverse(ist, v) - u) < 0.02);
+        }
+    }
+    CHECK(ist.iterations >= 2);
+}

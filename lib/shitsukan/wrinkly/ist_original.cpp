@@ -163,6 +163,26 @@ Status ist_original_check(const IstOriginal& ist) {
                                  "original IST: K = %d steps of up to %d parts leave "
                                  "sub-intervals %g wide, below the 2^-45 that doubles resolve",
                                  ist.iterations, widest, finest);
+        // The same on u^K: with unequal M_i or widths the groups dealt into a base are scaled
+        // to fill it, and a group can shrink more than 1 / (2M + 1) a step (found by
+        // fuzz_ist: skewed edges and M up to 12 mapped different u onto one double, and the
+        // inverse returned a point 0.99 away). Each step keeps at least the smallest share
+        // of a group in its base.
+        double share = 1.0;
+        for (int j = 0; j < ist.base_intervals; ++j) {
+            Arrival list[kMaxArrivals];
+            const int count = arrivals_in(ist, j, list, kMaxArrivals);
+            double total = 0.0;
+            for (int a = 0; a < count; ++a) total += list[a].width;
+            for (int a = 0; a < count; ++a) share = std::min(share, list[a].width / total);
+        }
+        const double finest_k = narrowest * det_pow(share, double(ist.iterations));
+        if (!(finest_k >= std::ldexp(1.0, -45)))
+            return Status::error(StatusCode::out_of_range,
+                                 "original IST: K = %d steps leave sub-intervals of u^K %g "
+                                 "wide (a group keeps down to %g of its base a step), below "
+                                 "the 2^-45 that doubles resolve",
+                                 ist.iterations, finest_k, share);
     }
     return Status::success();
 }

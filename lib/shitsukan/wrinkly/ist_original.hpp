@@ -35,7 +35,10 @@
 // Round trips: a sub-interval of u^0 with parts g_1..g_K (a mixed-radix fraction I / D of its
 // base) has the left end x_b + w_b I / D; forward and inverse map left ends to left ends
 // exactly, so inverse(forward(u)) == u there (u = 0 included), and keep every other point
-// inside its image sub-interval (round trip to a few ulps). Cost O(K (2M + 1)) forward,
+// inside its image sub-interval (the offset inside is kept as a fraction, so the round trip
+// is good to a few ulps times the ratio of the two sub-intervals' widths: ulps with equal
+// bases and constant M). ist_original_check refuses axes whose finest sub-interval on u^0
+// or on u^K would be narrower than 2^-45. Cost O(K (2M + 1)) forward,
 // O(K^2 (2M + 1)^2) inverse.
 #pragma once
 
