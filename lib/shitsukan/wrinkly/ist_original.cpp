@@ -363,22 +363,35 @@ double ist_original_inverse(const IstOriginal& ist, double q) {
     const int k = ist.iterations;
     if (k == 0) return q;
     // Locate q on u^K: from the outermost group inwards, the last group whose first
-    // sub-interval starts at or before q.
+    // sub-interval starts at or before q. With the groups below level l all first ones
+    // (before = 0), the fraction of base[l] is before(a) / total and the levels above map it
+    // by the same affine steps as measure_upk, bit for bit: O(K (2M + 1)) per level.
     UpK s;
-    s.base[k] = base_of(ist, q);
+    const int j = base_of(ist, q);
+    s.base[k] = j;
     for (int l = 1; l <= k; ++l) s.arrival[l] = 0;
+    double before_at[kMaxLevels], group_at[kMaxLevels], total_at[kMaxLevels];
     for (int l = k; l >= 1; --l) {
         Arrival list[kMaxArrivals];
-        double left, w;
-        measure_upk(ist, k, &s, &left, &w);  // fills base[l] for this prefix
         const int count = arrivals_in(ist, s.base[l], list, kMaxArrivals);
-        for (int a = 1; a < count; ++a) {
-            UpK trial = s;
-            trial.arrival[l] = a;
-            measure_upk(ist, k, &trial, &left, &w);
-            if (left > q) break;
-            s.arrival[l] = a;
+        double total = 0.0;
+        for (int a = 0; a < count; ++a) total += list[a].width;
+        double sum = 0.0;
+        int chosen = 0;
+        double chosen_before = 0.0;
+        for (int a = 0; a < count; ++a) {
+            double f = sum / total;  // (before + 0 * group) / total, as measure_upk
+            for (int m = l + 1; m <= k; ++m) f = (before_at[m] + f * group_at[m]) / total_at[m];
+            if (a > 0 && edge(ist, j) + width(ist, j) * f > q) break;
+            chosen = a;
+            chosen_before = sum;
+            sum += list[a].width;
         }
+        s.arrival[l] = chosen;
+        before_at[l] = chosen_before;
+        group_at[l] = list[chosen].width;
+        total_at[l] = total;
+        s.base[l - 1] = list[chosen].source;
     }
     double left, w;
     measure_upk(ist, k, &s, &left, &w);

@@ -38,8 +38,7 @@
 // inside its image sub-interval (the offset inside is kept as a fraction, so the round trip
 // is good to a few ulps times the ratio of the two sub-intervals' widths: ulps with equal
 // bases and constant M). ist_original_check refuses axes whose finest sub-interval on u^0
-// or on u^K would be narrower than 2^-45. Cost O(K (2M + 1)) forward,
-// O(K^2 (2M + 1)^2) inverse.
+// or on u^K would be narrower than 2^-45. Cost: O(K^2 (2M + 1)) at most, forward or inverse.
 #pragma once
 
 #include "shitsukan/core/status.hpp"
