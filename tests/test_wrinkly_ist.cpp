@@ -588,3 +588,17 @@ TEST_CASE("IST interior points: forward stays in the image sub-interval, round t
         REQUIRE(std::fabs(ist_inverse_double(axis, v) - u) < 1e-12);
     }
 }
+
+// fuzz_ist finding: with B N^K beyond double's 2^53 (N = 3, K = 33, B = 4) the last left
+// ends rounded up to 1, so forward() returned 1 for u < 1. Points below 1 now stay below 1.
+TEST_CASE("IST beyond double resolution: values below 1 stay below 1 (fuzz_ist regression)") {
+    IstAxis axis;
+    REQUIRE(ist_fully_connected_axis(3, 33, 4, IstEnds::cyclic, &axis).ok());
+    for (double u : {0.0, 0.25, 0.5, 0.75, 0.999999, 1.0 - 1e-16}) {
+        const double v = ist_forward_double(axis, u), w = ist_inverse_double(axis, u);
+        CHECK(v >= 0.0);
+        CHECK(v < 1.0);
+        CHECK(w < 1.0);
+    }
+    CHECK(ist_forward_double(axis, 1.0) <= 1.0);
+}

@@ -20,7 +20,11 @@ Real left_end(const IstAxis& axis, int base, std::uint64_t index, std::uint64_t 
 
 template <class Real>
 Real join(const IstAxis& axis, int base, std::uint64_t index, Real offset, std::uint64_t count) {
-    const Real a = left_end<Real>(axis, base, index, count);
+    // Where Real cannot resolve B N^K sub-intervals (B N^K > 2^53 in double; fuzz_ist found
+    // N = 3, K = 33, B = 4) the last left ends round up to 1; a point below 1 stays below 1.
+    const Real below_one = std::nextafter(Real(1), Real(0));
+    const Real a0 = left_end<Real>(axis, base, index, count);
+    const Real a = a0 < Real(1) ? a0 : below_one;
     if (!(offset > Real(0))) return a;  // a left end maps to a left end, exactly
     const Real v = (Real(base) + (Real(index) + offset) / Real(count)) / Real(axis.base_intervals);
     // The right end: the next sub-interval's left end (base + 1 after the last one).
