@@ -159,6 +159,9 @@ FUZZ_FLAGS   := -std=c++17 -O1 -g -fno-omit-frame-pointer -ffp-contract=off \
 FUZZ_SRCS    := $(sort $(wildcard fuzz/fuzz_*.cpp))
 FUZZERS      := $(FUZZ_SRCS:fuzz/%.cpp=$(BUILD)/fuzz/%)
 FUZZ_OBJS    := $(LIB_SRCS:%.cpp=$(BUILD)/fuzzobj/%.o)
+# kept between runs (only prerequisites of the pattern rule below, make would delete them);
+# compiled with libFuzzer's coverage (fuzzer-no-link) so that it guides into the library
+.SECONDARY: $(FUZZ_OBJS)
 
 fuzz-deps:
 	$(call ensure_packages,$(FUZZ_REQUIRED))
@@ -191,7 +194,7 @@ $(BUILD)/fuzz/%: fuzz/%.cpp fuzz/fuzz_input.hpp $(FUZZ_OBJS)
 
 $(BUILD)/fuzzobj/%.o: %.cpp $(FLAGS_STAMP)
 	@mkdir -p $(@D)
-	$(FUZZ_CXX) $(CPPFLAGS) $(FUZZ_FLAGS) -MMD -MP -c $< -o $@
+	$(FUZZ_CXX) $(CPPFLAGS) $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link -MMD -MP -c $< -o $@
 
 # ---- determinism: the quick figures from g++ and from clang++ must be the same files ----
 # (images, SVG, CSV, OBJ; the .md notes and tables carry measured times and are not compared)

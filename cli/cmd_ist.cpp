@@ -1,7 +1,6 @@
 // cli/cmd_ist.cpp — `shitsukan ist` (fujimoto2000 §2: the Iterated Shuffle Transformation as
 // a table alpha^0 -> alpha^K).
 #include <cstdio>
-#include <cstring>
 
 #include "commands.hpp"
 #include "flags.hpp"
@@ -42,34 +41,14 @@ int run_ist(int argc, char** argv) {
         if (s) s = ist_connected_axis(shuffle, K, bases, e, &axis);
     }
     if (!s) return f.fail_status(s);
-    const std::uint64_t count = ist_sub_interval_count(axis);
-    const std::uint64_t kMaxLines = 1000000u;
-    if (count > kMaxLines / std::uint64_t(axis.base_intervals))
-        return f.fail("--N, --K, --bases: N^K x B = %llu x %d lines is over the limit of %llu",
-                      static_cast<unsigned long long>(count), axis.base_intervals,
-                      static_cast<unsigned long long>(kMaxLines));
-    const bool connected = axis.kind != IstKind::unit;
-    std::printf("# fujimoto2000 IST (%s), N = %d, K = %d", kinds[kind], axis.n, axis.iterations);
-    if (connected)
-        std::printf(", %d base intervals (%s axis)", axis.base_intervals,
-                    ends == 0 ? "cyclic" : "translation");
-    std::printf("\n# %s\n", inverse ? "alpha^K alpha^0" : "alpha^0 alpha^K");
-    char left[96], right[96];
-    for (int b = 0; b < axis.base_intervals; ++b)
-        for (std::uint64_t i = 0; i < count; ++i) {
-            IstDigits a, image;
-            ist_digits_from_index(axis, b, i, &a);
-            if (inverse)
-                ist_digits_inverse(axis, a, &image);
-            else
-                ist_digits_forward(axis, a, &image);
-            ist_digits_format(a, first, left, sizeof left);
-            ist_digits_format(image, first, right, sizeof right);
-            const bool plain = !connected && axis.base_intervals == 1;
-            const char* l = plain && std::strchr(left, '.') ? std::strchr(left, '.') + 1 : left;
-            const char* r = plain && std::strchr(right, '.') ? std::strchr(right, '.') + 1 : right;
-            std::printf("%s %s\n", l, r);
-        }
+    IstTableOptions o;
+    o.name = kinds[kind];
+    o.first = first;
+    o.inverse = inverse;
+    s = ist_table(axis, o, [](const char* line, void*) { std::puts(line); }, nullptr);
+    if (s.code() == StatusCode::too_large)
+        return f.fail("--N, --K, --bases: %s", s.message());
+    if (!s) return f.fail_status(s);
     return 0;
 }
 

@@ -10,5 +10,6 @@ int run_leather(int argc, char** argv);
 int run_wrinkly(int argc, char** argv);
 int run_bark(int argc, char** argv);
 int run_ist(int argc, char** argv);
+int run_normals(int argc, char** argv);
 
 }  // namespace shitsukan::cli

@@ -24,6 +24,7 @@ int usage(std::FILE* out) {
                  "  wrinkly   fujimoto2000 §3-4: a WR or superposed surface from a control-mesh file\n"
                  "  bark      hirota1998 §3: growing and cracking bark of Table 2's three species\n"
                  "  ist       fujimoto2000 §2: the table of an Iterated Shuffle Transformation\n"
+                 "  normals   a normal map from any height map (an image or PFM you give it)\n"
                  "  version   the library version\n");
     return out == stderr ? 2 : 0;
 }
@@ -46,7 +47,8 @@ int main(int argc, char** argv) {
     if (std::strcmp(c, "wrinkly") == 0) return run_wrinkly(argc - 2, argv + 2);
     if (std::strcmp(c, "bark") == 0) return run_bark(argc - 2, argv + 2);
     if (std::strcmp(c, "ist") == 0) return run_ist(argc - 2, argv + 2);
+    if (std::strcmp(c, "normals") == 0) return run_normals(argc - 2, argv + 2);
     std::fprintf(stderr, "shitsukan: unknown command \"%s\" (marble, wood, leather, wrinkly, bark, "
-                         "ist, version; see shitsukan --help)\n", c);
+                         "ist, normals, version; see shitsukan --help)\n", c);
     return 2;
 }

@@ -121,51 +121,14 @@ int main(int argc, char** argv) {
         }
         if (s) s = ist_connected_axis(shuffle, k, bases, ends, &axis);
     }
+    IstTableOptions o;  // wrinkly/ist_table.hpp: the same table as `shitsukan ist`
+    o.name = kind;
+    o.first = first;
+    o.inverse = inverse;
+    if (s) s = ist_table(axis, o, [](const char* line, void*) { std::puts(line); }, nullptr);
     if (!s) {
         std::fprintf(stderr, "ist_table: %s\n", s.message());
         return 1;
-    }
-    const std::uint64_t count = ist_sub_interval_count(axis);
-    const std::uint64_t kMaxLines = 1000000u;
-    // count (up to 2^53) times B (up to 2^20) can wrap a 64-bit integer: compare by division.
-    if (count > kMaxLines / std::uint64_t(axis.base_intervals)) {
-        std::fprintf(stderr,
-                     "ist_table: N^K = %llu sub-intervals times %d base intervals is too many "
-                     "lines to print (limit %llu); lower N, K or B\n",
-                     static_cast<unsigned long long>(count), axis.base_intervals,
-                     static_cast<unsigned long long>(kMaxLines));
-        return 1;
-    }
-    const bool connected = axis.kind != IstKind::unit;
-    std::printf("# fujimoto2000 IST (%s), N = %d, K = %d", kind, axis.n, axis.iterations);
-    if (connected)
-        std::printf(", %d base intervals (%s axis)", axis.base_intervals,
-                    ends == IstEnds::cyclic ? "cyclic" : "translation");
-    std::printf("\n# %s\n", inverse ? "alpha^K alpha^0" : "alpha^0 alpha^K");
-    if (connected) {
-        std::printf("# external shuffle (group: offset slot):");
-        for (int g = 0; g < axis.n; ++g)
-            std::printf(" %d:%+d %d", g, axis.shuffle.offset[g], axis.shuffle.slot[g]);
-        std::printf("\n");
-    }
-    char left[96], right[96];
-    for (int b = 0; b < axis.base_intervals; ++b) {
-        for (std::uint64_t i = 0; i < count; ++i) {
-            IstDigits a, image;
-            ist_digits_from_index(axis, b, i, &a);
-            if (inverse)
-                ist_digits_inverse(axis, a, &image);
-            else
-                ist_digits_forward(axis, a, &image);
-            ist_digits_format(a, first, left, sizeof left);
-            ist_digits_format(image, first, right, sizeof right);
-            // A unit-IST on one base interval is written with its digits only, as in fig 3.
-            const char* l =
-                connected || axis.base_intervals > 1 ? left : std::strchr(left, '.') + 1;
-            const char* r =
-                connected || axis.base_intervals > 1 ? right : std::strchr(right, '.') + 1;
-            std::printf("%s %s\n", l, r);
-        }
     }
     return 0;
 }

@@ -526,3 +526,79 @@ TEST_CASE("procedure steps == digit steps at every u^k and u^{k.5} (eqs. 25, 26)
         }
     }
 }
+
+// Issue 17.5: inverse(forward(u)) missed u by up to the whole axis on about 25 % of the
+// sub-interval left ends (u = 0 included): split() floored u B N^K, which rounds just below
+// an integer at many left ends, so the inverse read the neighbouring sub-interval.
+TEST_CASE("IST round trip is exact on every sub-interval left end (issue 17.5 regression)") {
+    long checked = 0;
+    for (int n = 1; n <= 7; ++n)
+        for (int k = 0; k <= 6; ++k)
+            for (int b = 1; b <= 6; ++b)
+                for (int kind = 0; kind < 3; ++kind)
+                    for (IstEnds ends : {IstEnds::cyclic, IstEnds::translation}) {
+                        IstAxis axis;
+                        Status s;
+                        if (kind == 0) {
+                            if (ends == IstEnds::translation) continue;
+                            s = ist_unit_axis(n, k, b, &axis);
+                        } else if (kind == 1) {
+                            s = ist_fully_connected_axis(n, k, b, ends, &axis);
+                        } else {
+                            IstShuffle sh;
+                            if (!ist_shuffle_named("fig7c", n, &sh)) continue;
+                            s = ist_connected_axis(sh, k, b, ends, &axis);
+                        }
+                        if (!s) continue;
+                        const std::uint64_t count = ist_sub_interval_count(axis);
+                        if (count * std::uint64_t(b) > 4000) continue;
+                        for (int base = 0; base < b; ++base)
+                            for (std::uint64_t i = 0; i < count; ++i) {
+                                IstLocation at;
+                                ist_digits_from_index(axis, base, i, &at.alpha);
+                                const double u = ist_position(axis, at);  // a left end
+                                const double v = ist_forward_double(axis, u);
+                                REQUIRE(ist_inverse_double(axis, v) == u);
+                                REQUIRE(ist_forward_double(axis, ist_inverse_double(axis, u)) ==
+                                        u);
+                                REQUIRE(v < 1.0);
+                                // float: no jump to another sub-interval (float(u) may lie
+                                // an ulp left of the float left end: a few ulps allowed)
+                                const float uf = float(u);
+                                CHECK(std::fabs(ist_inverse(axis, ist_forward(axis, uf)) - uf) <=
+                                      4e-7f);
+                                ++checked;
+                            }
+                    }
+    CHECK(checked > 100000);
+    IstAxis axis;  // u = 0, the first left end, on the case the probe reported
+    REQUIRE(ist_fully_connected_axis(3, 2, 1, IstEnds::cyclic, &axis).ok());
+    CHECK(ist_inverse_double(axis, ist_forward_double(axis, 0.0)) == 0.0);
+}
+
+TEST_CASE("IST interior points: forward stays in the image sub-interval, round trip to ulps") {
+    IstAxis axis;
+    REQUIRE(ist_fully_connected_axis(5, 4, 7, IstEnds::cyclic, &axis).ok());
+    std::uint32_t x = 12345;
+    for (int r = 0; r < 20000; ++r) {
+        x = x * 1664525u + 1013904223u;
+        const double u = double(x) / 4294967296.0;
+        const double v = ist_forward_double(axis, u);
+        REQUIRE((v >= 0.0 && v < 1.0));
+        REQUIRE(std::fabs(ist_inverse_double(axis, v) - u) < 1e-12);
+    }
+}
+
+// fuzz_ist finding: with B N^K beyond double's 2^53 (N = 3, K = 33, B = 4) the last left
+// ends rounded up to 1, so forward() returned 1 for u < 1. Points below 1 now stay below 1.
+TEST_CASE("IST beyond double resolution: values below 1 stay below 1 (fuzz_ist regression)") {
+    IstAxis axis;
+    REQUIRE(ist_fully_connected_axis(3, 33, 4, IstEnds::cyclic, &axis).ok());
+    for (double u : {0.0, 0.25, 0.5, 0.75, 0.999999, 1.0 - 1e-16}) {
+        const double v = ist_forward_double(axis, u), w = ist_inverse_double(axis, u);
+        CHECK(v >= 0.0);
+        CHECK(v < 1.0);
+        CHECK(w < 1.0);
+    }
+    CHECK(ist_forward_double(axis, 1.0) <= 1.0);
+}

@@ -75,8 +75,14 @@ good marble --obj pine_trunk.obj --size 64 --view view.png -o baked.png -- baked
 if [ "$(sed -n 2p m.pfm)" = "64 64" ]; then ok; else bad "m.pfm header $(sed -n 2p m.pfm)"; fi
 "$BIN" ist --N 3 --K 2 > ist.txt
 if [ "$(grep -vc '^#' ist.txt)" = 9 ] && grep -q '^12 21$' ist.txt; then ok; else bad "ist table"; cat ist.txt; fi
+# normals from any height map: the leather run's 16-bit PNG, the tileable marble's PFM
+good normals own_height16.png -o own_n.png --strength 20 -- own_n.png
+good normals --in m.pfm --wrap -o m_n.png -- m_n.png
+"$BIN" normals /nonexistent.png -o x.png > out.txt 2> err.txt
+rc=$?
+if [ $rc = 1 ] && grep -q 'nonexistent.png' err.txt; then ok; else bad "normals of a missing file: rc $rc"; fi
 # help cites the paper and exits 0
-for c in marble wood leather wrinkly bark ist; do
+for c in marble wood leather wrinkly bark ist normals; do
     if "$BIN" $c --help > help.txt && grep -qE 'okada|tokai|fujimoto|hirota|§' help.txt; then ok
     else bad "$c --help"; fi
 done
@@ -113,6 +119,9 @@ refused "--kappa1 must be a number" bark --kappa1 0.9
 refused "--K must be an integer in [0, 40]" ist --K 99
 refused "--kind must be one of" ist --kind spiral
 refused "--N, --K, --bases" ist --N 10 --K 7
+refused "--strength must be a number in [0, 1e+06]" normals own_height16.png --strength -1
+refused "a height map is required" normals
+refused "-o must name a .png file" normals own_height16.png -o n.jpg
 refused "unknown command" frobnicate
 refused "takes no value" marble --tileable=yes
 refused "unexpected argument" marble stray

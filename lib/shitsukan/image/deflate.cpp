@@ -232,42 +232,67 @@ Status zlib_deflate(const std::uint8_t* data, std::size_t size, std::vector<std:
     BitWriter bw(out);
     std::vector<Symbol> block;
     block.reserve(kBlock);
-    std::size_t i = 0;
-    while (i < size) {
-        int best_len = 0, best_dist = 0;
-        if (i + 2 < size) {
-            const std::size_t max_len = std::min<std::size_t>(258, size - i);
-            std::int64_t cand = head[hash3(i)];
-            for (int tries = 0; cand >= 0 && tries < kDeflateChain; ++tries) {
-                const std::size_t c = std::size_t(cand);
-                if (i - c > kWindow - 1 || c >= i) break;
+    // The longest match at i (0 if none of 3 or more), from at most kDeflateChain candidates.
+    auto longest_match = [&](std::size_t i, int* dist) {
+        int best_len = 0;
+        if (i + 2 >= size) return 0;
+        const std::size_t max_len = std::min<std::size_t>(258, size - i);
+        std::int64_t cand = head[hash3(i)];
+        for (int tries = 0; cand >= 0 && tries < kDeflateChain; ++tries) {
+            const std::size_t c = std::size_t(cand);
+            if (i - c > kWindow - 1 || c >= i) break;
+            if (data[c + std::size_t(best_len)] == data[i + std::size_t(best_len)]) {
                 std::size_t len = 0;
                 while (len < max_len && data[c + len] == data[i + len]) ++len;
                 if (int(len) > best_len) {
                     best_len = int(len);
-                    best_dist = int(i - c);
+                    *dist = int(i - c);
                     if (len == max_len) break;
                 }
-                const std::int64_t p = prev[c % kWindow];
-                if (p >= cand) break;  // the slot was overwritten by a newer position
-                cand = p;
             }
+            const std::int64_t p = prev[c % kWindow];
+            if (p >= cand) break;  // the slot was overwritten by a newer position
+            cand = p;
         }
-        if (best_len >= 3) {
-            block.push_back({std::uint16_t(best_len), std::uint16_t(best_dist)});
-            for (int k = 0; k < best_len; ++k) insert(i + std::size_t(k));
-            i += std::size_t(best_len);
-        } else {
-            block.push_back({data[i], 0});
-            insert(i);
-            ++i;
-        }
+        return best_len >= 3 ? best_len : 0;
+    };
+    auto emit = [&](Symbol s) {
+        block.push_back(s);
         if (block.size() == kBlock) {
-            write_block(bw, block.data(), block.size(), i >= size);
+            write_block(bw, block.data(), block.size(), false);
             block.clear();
         }
+    };
+    // Lazy matching (RFC 1951 §4, as zlib does it): a match found at i is kept back for one
+    // position; if i + 1 starts a longer one, i goes out as a literal instead.
+    std::size_t i = 0;
+    int dist = 0;
+    int len = longest_match(i, &dist);
+    while (i < size) {
+        if (len == 0) {
+            emit({data[i], 0});
+            insert(i);
+            ++i;
+            len = longest_match(i, &dist);
+            continue;
+        }
+        insert(i);
+        int next_dist = 0;
+        const int next_len = len < kDeflateLazy ? longest_match(i + 1, &next_dist) : 0;
+        if (next_len > len) {
+            emit({data[i], 0});
+            ++i;
+            len = next_len;
+            dist = next_dist;
+            continue;
+        }
+        emit({std::uint16_t(len), std::uint16_t(dist)});
+        for (int k = 1; k < len; ++k) insert(i + std::size_t(k));
+        i += std::size_t(len);
+        len = longest_match(i, &dist);
     }
-    if (!block.empty() || size == 0 || out->size() == 2) write_block(bw, block.data(), block.size(), true);
+    // the last block (possibly empty: an end-of-block symbol alone) carries BFINAL
+    write_block(bw, block.data(), block.size(), true);
     bw.flush();
     const std::uint32_t adler = detail::adler32(data, size);
     for (int k = 3; k >= 0; --k) out->push_back(std::uint8_t(adler >> (8 * k)));

@@ -2,6 +2,10 @@
 // stbi_* function private to this file (see image_io.cpp for the same with stb_image_write).
 #include "shitsukan/image/image_read.hpp"
 
+#include <cstdint>
+
+#include "shitsukan/core/memory_budget.hpp"
+
 #if !defined(SHITSUKAN_NO_STB) && defined(__has_include)
 #if __has_include(<stb/stb_image.h>)
 #define SHITSUKAN_USE_STB_IMAGE 1
@@ -42,6 +46,14 @@ Status read_image(const char* path, LoadedImage* out) {
 #ifdef SHITSUKAN_USE_STB_IMAGE
     int w = 0, h = 0, c = 0;
     LoadedImage img;
+    // The decoded buffer (stb's) and our copy must fit the memory budget before decoding:
+    // a 100-byte PNG can announce 65535 x 65535 pixels.
+    if (stbi_info(path, &w, &h, &c)) {
+        const std::uint64_t samples =
+            budget_mul(budget_mul(std::uint64_t(w), std::uint64_t(h)), std::uint64_t(c));
+        const std::uint64_t per = stbi_is_16_bit(path) ? 2 + 2 : 1 + 2;
+        SHITSUKAN_TRY(check_memory_budget(budget_mul(samples, per), "read_image: the image"));
+    }
     if (stbi_is_16_bit(path)) {
         stbi_us* p = stbi_load_16(path, &w, &h, &c, 0);
         if (!p)

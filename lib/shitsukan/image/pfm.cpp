@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "shitsukan/core/memory_budget.hpp"
+
 namespace shitsukan {
 namespace {
 
@@ -66,6 +68,15 @@ Status read_pfm(const char* path, PfmImage* out) {
         std::fclose(f);
         return Status::error(StatusCode::too_large, "%s: PFM size %d x %d outside 1..65536",
                              path, width, height);
+    }
+    {
+        const std::uint64_t bytes = budget_mul(
+            budget_mul(budget_mul(std::uint64_t(width), std::uint64_t(height)), channels), 4);
+        Status budget = check_memory_budget(bytes, "read_pfm: the image");
+        if (!budget) {
+            std::fclose(f);
+            return budget;
+        }
     }
     PfmImage img;
     img.width = width, img.height = height, img.channels = channels;

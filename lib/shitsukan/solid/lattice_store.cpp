@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "shitsukan/core/memory_budget.hpp"
+
 namespace shitsukan {
 namespace {
 
@@ -22,7 +24,9 @@ Status check_budget(int R, std::uint64_t budget) {
                              R, static_cast<unsigned long long>(need),
                              static_cast<long long>(lattice_side(R)),
                              static_cast<unsigned long long>(budget));
-    return Status::success();
+    // The lattice's own budget (kDefaultLatticeBudget, or the caller's) and the process-wide
+    // per-request one (core/memory_budget.hpp): the smaller decides.
+    return check_memory_budget(need, "Type I lattice");
 }
 
 void put_u32(unsigned char* p, std::uint32_t v) {

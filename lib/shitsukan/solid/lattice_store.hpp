@@ -32,6 +32,8 @@
 
 namespace shitsukan {
 
+// The lattice's own budget; build() and load_lattice() also respect the process-wide memory
+// budget (core/memory_budget.hpp): a lattice must fit both.
 constexpr std::uint64_t kDefaultLatticeBudget = std::uint64_t(512) << 20;  // 512 MiB: R <= 8
 
 class FractalLattice {

@@ -2,6 +2,7 @@
 #include "shitsukan/solid/lattice_type2.hpp"
 
 #include "shitsukan/core/assert.hpp"
+#include "shitsukan/core/memory_budget.hpp"
 #include "shitsukan/solid/fractal_node.hpp"
 #include "shitsukan/solid/turbulence.hpp"
 
@@ -72,8 +73,19 @@ Status TypeIILattice::node_value_checked(std::int32_t x, std::int32_t y, std::in
                              "Type II lattice: node (%d, %d, %d) is outside [0, %d]^3", int(x),
                              int(y), int(z), int(last));
     if (out == nullptr) return Status::error(StatusCode::invalid_argument, "out must not be null");
+    SHITSUKAN_TRY(check_list_growth());
     *out = compute(x, y, z);
     return Status::success();
+}
+
+// A query adds at most 27 nodes a level (the node and its ancestors, R + 1 levels); the hash
+// map may also double its bucket array. The list after the query must fit the memory budget
+// (core/memory_budget.hpp): with sequential noise it can never be cleared, so a long run
+// stops here with the byte count instead of dying of std::bad_alloc.
+Status TypeIILattice::check_list_growth() const {
+    const std::uint64_t nodes = budget_add(list_.size(), budget_mul(27, params_.R + 1));
+    const std::uint64_t bytes = budget_add(budget_mul(nodes, 32), budget_mul(nodes, 2 * 8));
+    return check_memory_budget(bytes, "Type II lattice: the list of computed nodes");
 }
 
 float TypeIILattice::turbulence(Vec3 p) {

@@ -41,6 +41,8 @@ public:
 
     int depth() const { return params_.R; }
     float node_value(std::int32_t x, std::int32_t y, std::int32_t z);  // asserts the range
+    // Also refuses (too_large) when the list after this query could outgrow the memory
+    // budget (core/memory_budget.hpp; 32 bytes a node and 16 of buckets counted).
     Status node_value_checked(std::int32_t x, std::int32_t y, std::int32_t z, float* out);
     float turbulence(Vec3 p);
 
@@ -56,6 +58,7 @@ public:
     std::size_t container_bytes() const;
 
 private:
+    Status check_list_growth() const;
     float compute(std::int32_t x, std::int32_t y, std::int32_t z);
 
     FractalParams params_;

@@ -19,3 +19,4 @@
 #include "shitsukan/wrinkly/ist_formula.hpp"
 #include "shitsukan/wrinkly/ist_procedure.hpp"
 #include "shitsukan/wrinkly/ist_original.hpp"
+#include "shitsukan/wrinkly/ist_table.hpp"

@@ -2,33 +2,79 @@
 // fujimoto2000 eqs. (9), (10), (14): the IST on a real coordinate.
 #include "shitsukan/wrinkly/ist_formula.hpp"
 
+#include <cmath>
+
 #include "shitsukan/core/assert.hpp"
 
 namespace shitsukan {
 
 namespace {
 
-// Eq. (9) read backwards: base b, sub-interval index and the offset inside it (in units of
-// one sub-interval). The last sub-interval keeps u = 1 (offset 1).
+// Eq. (9) forwards: the left end of sub-interval `index` of base `base`, plus `offset`
+// sub-intervals. Every rounding step is monotone, so the left ends are non-decreasing in
+// (base, index); split() below is written against exactly these values.
 template <class Real>
-void split(const IstAxis& axis, Real u, std::uint64_t count, int* base, std::uint64_t* index,
-           Real* offset) {
-    if (!(u > Real(0))) u = Real(0);  // also NaN
-    if (u > Real(1)) u = Real(1);
-    Real t = u * Real(axis.base_intervals);
-    int b = int(t);
-    if (b >= axis.base_intervals) b = axis.base_intervals - 1;
-    Real s = (t - Real(b)) * Real(count);
-    std::uint64_t i = std::uint64_t(s);
-    if (i >= count) i = count - 1;
-    *base = b;
-    *index = i;
-    *offset = s - Real(i);
+Real left_end(const IstAxis& axis, int base, std::uint64_t index, std::uint64_t count) {
+    return (Real(base) + Real(index) / Real(count)) / Real(axis.base_intervals);
 }
 
 template <class Real>
 Real join(const IstAxis& axis, int base, std::uint64_t index, Real offset, std::uint64_t count) {
-    return (Real(base) + (Real(index) + offset) / Real(count)) / Real(axis.base_intervals);
+    // Where Real cannot resolve B N^K sub-intervals (B N^K > 2^53 in double; fuzz_ist found
+    // N = 3, K = 33, B = 4) the last left ends round up to 1; a point below 1 stays below 1.
+    const Real below_one = std::nextafter(Real(1), Real(0));
+    const Real a0 = left_end<Real>(axis, base, index, count);
+    const Real a = a0 < Real(1) ? a0 : below_one;
+    if (!(offset > Real(0))) return a;  // a left end maps to a left end, exactly
+    const Real v = (Real(base) + (Real(index) + offset) / Real(count)) / Real(axis.base_intervals);
+    // The right end: the next sub-interval's left end (base + 1 after the last one).
+    const Real z = index + 1 < count ? left_end<Real>(axis, base, index + 1, count)
+                                     : Real(base + 1) / Real(axis.base_intervals);
+    if (offset >= Real(1)) return z;  // u = 1: the right end of the last sub-interval
+    // Rounding must not carry a point out of its sub-interval [a, z): the inverse would then
+    // read it as the neighbour's and send it anywhere on the axis (issue 17.5).
+    if (v >= z) return z > a ? std::nextafter(z, a) : a;
+    return v < a ? a : v;
+}
+
+// Eq. (9) read backwards: base b, sub-interval index and the offset inside it (in units of
+// one sub-interval). The last sub-interval keeps u = 1 (offset 1).
+// The sub-interval is the last one whose computed left end (left_end above) is <= u, so that
+// split(join(b, i, 0)) == (b, i, 0) exactly; the plain floor of u B N^K missed this on about
+// 20 % of the left ends (u B rounded just below b, or (t - b) N^K just below i), and the
+// inverse then returned the image of the neighbouring sub-interval (issue 17.5).
+template <class Real>
+void split(const IstAxis& axis, Real u, std::uint64_t count, int* base, std::uint64_t* index,
+           Real* offset) {
+    if (!(u > Real(0))) u = Real(0);  // also NaN
+    const int nb = axis.base_intervals;
+    if (u >= Real(1)) {
+        *base = nb - 1;
+        *index = count - 1;
+        *offset = Real(1);
+        return;
+    }
+    Real t = u * Real(nb);
+    int b = int(t);
+    if (b >= nb) b = nb - 1;
+    while (b > 0 && Real(b) / Real(nb) > u) --b;  // the base's left end b / B, as join()
+    while (b + 1 < nb && Real(b + 1) / Real(nb) <= u) ++b;
+    Real s = (t - Real(b)) * Real(count);
+    std::uint64_t i = s > Real(0) ? std::uint64_t(s) : 0;
+    if (i >= count) i = count - 1;
+    // The floor is off by at most one where Real resolves the left ends (B N^K within the
+    // header's bounds); beyond them left ends coincide and a few steps are all that is owed.
+    for (int step = 0; step < 4 && i > 0 && left_end<Real>(axis, b, i, count) > u; ++step) --i;
+    for (int step = 0; step < 4 && i + 1 < count && left_end<Real>(axis, b, i + 1, count) <= u;
+         ++step)
+        ++i;
+    const Real a = left_end<Real>(axis, b, i, count);
+    Real f = (u - a) * Real(nb) * Real(count);  // u - a is exact (Sterbenz) near a
+    if (!(f > Real(0))) f = Real(0);
+    if (f >= Real(1)) f = std::nextafter(Real(1), Real(0));  // u < 1 stays inside [a, z)
+    *base = b;
+    *index = i;
+    *offset = f;
 }
 
 // The digit part of eq. (10) on the integer index, without a digit array: the digits are

@@ -108,58 +108,6 @@ void place_of(const IstOriginal& ist, int j, int source, int part, double* scale
     *scale = width(ist, j) / total;
 }
 
-// Inverse of one step at a point q of u^k: the group holding q and q's place inside it,
-// read on u^{k-1} as the point `compressed` = x_i + (2 M_i + 1) · (offset in the group).
-struct Origin {
-    int destination = 0, source = 0, part = 0;
-    double scale = 1.0, before = 0.0, compressed = 0.0;
-};
-
-Origin origin_of(const IstOriginal& ist, double q) {
-    Origin o;
-    o.destination = base_holding(ist, q);
-    Arrival list[kMaxArrivals];
-    int count = arrivals_in(ist, o.destination, list, kMaxArrivals);
-    double total = 0.0;
-    for (int a = 0; a < count; ++a) total += list[a].width;
-    o.scale = width(ist, o.destination) / total;
-    double local = (q - edge(ist, o.destination)) / o.scale;  // unscaled offset in j
-    int a = 0;
-    double before = 0.0;
-    while (a + 1 < count && local >= before + list[a].width) before += list[a++].width;
-    o.source = list[a].source;
-    o.part = list[a].part;
-    o.before = before;
-    double in_group = local - before;
-    if (in_group < 0.0) in_group = 0.0;
-    if (in_group > list[a].width) in_group = list[a].width;
-    int m = ist_original_crossing(ist, o.source);
-    o.compressed = edge(ist, o.source) + in_group * double(2 * m + 1);
-    return o;
-}
-
-// The sub-interval of u^level that holds point p: follow p back to its base interval on u^0,
-// then divide forward again.
-void locate(const IstOriginal& ist, double p, int level, double* start, double* end) {
-    Origin chain[kIstMaxIterations];
-    for (int l = level; l >= 1; --l) {
-        chain[l - 1] = origin_of(ist, p);
-        p = chain[l - 1].compressed;
-    }
-    int b = base_holding(ist, p);
-    double a = edge(ist, b), z = edge(ist, b + 1);
-    for (int l = 1; l <= level; ++l) {
-        const Origin& o = chain[l - 1];
-        int n = 2 * ist_original_crossing(ist, o.source) + 1;
-        double x_i = edge(ist, o.source);
-        double new_a = edge(ist, o.destination) + o.scale * (o.before + (a - x_i) / double(n));
-        z = new_a + o.scale * (z - a) / double(n);
-        a = new_a;
-    }
-    *start = a;
-    *end = z;
-}
-
 }  // namespace
 
 int ist_original_crossing(const IstOriginal& ist, int base) {
@@ -215,6 +163,26 @@ Status ist_original_check(const IstOriginal& ist) {
                                  "original IST: K = %d steps of up to %d parts leave "
                                  "sub-intervals %g wide, below the 2^-45 that doubles resolve",
                                  ist.iterations, widest, finest);
+        // The same on u^K: with unequal M_i or widths the groups dealt into a base are scaled
+        // to fill it, and a group can shrink more than 1 / (2M + 1) a step (found by
+        // fuzz_ist: skewed edges and M up to 12 mapped different u onto one double, and the
+        // inverse returned a point 0.99 away). Each step keeps at least the smallest share
+        // of a group in its base.
+        double share = 1.0;
+        for (int j = 0; j < ist.base_intervals; ++j) {
+            Arrival list[kMaxArrivals];
+            const int count = arrivals_in(ist, j, list, kMaxArrivals);
+            double total = 0.0;
+            for (int a = 0; a < count; ++a) total += list[a].width;
+            for (int a = 0; a < count; ++a) share = std::min(share, list[a].width / total);
+        }
+        const double finest_k = narrowest * det_pow(share, double(ist.iterations));
+        if (!(finest_k >= std::ldexp(1.0, -45)))
+            return Status::error(StatusCode::out_of_range,
+                                 "original IST: K = %d steps leave sub-intervals of u^K %g "
+                                 "wide (a group keeps down to %g of its base a step), below "
+                                 "the 2^-45 that doubles resolve",
+                                 ist.iterations, finest_k, share);
     }
     return Status::success();
 }
@@ -255,28 +223,194 @@ void ist_original_step(const IstOriginal& ist, IstPoint* point, int* part) {
     if (part != nullptr) *part = g;
 }
 
+// ---- forward / inverse on sub-interval identities (issue 17.5) ----
+// Following a point step by step (ist_original_step) lets rounding move it into the
+// neighbouring part: inverse(forward(u)) then missed u by up to the whole axis on about a
+// quarter of the sub-interval left ends, and forward() returned values just above 1. Here a
+// point is first given its sub-interval's identity, the transformation acts on identities,
+// and coordinates are computed from identities by one fixed formula per axis:
+//   u^0: base b and the parts g_1..g_K, a mixed-radix fraction I / D of the base (exact
+//        integers), left end x_b + w_b I / D;
+//   u^K: base j and the arrivals a_K..a_1 (which group of the base at each level), left end
+//        from the groups' widths (place_of's layout).
+// Locating a coordinate picks the last sub-interval whose computed left end is <= it, so a
+// left end is found exactly; the offset inside is kept as a fraction t of the width, and a
+// result is held inside [left end, next left end).
+namespace {
+
+constexpr int kMaxLevels = kIstMaxIterations + 1;
+
+// The base whose computed left edge is the last one <= u.
+int base_of(const IstOriginal& ist, double u) {
+    int b = base_holding(ist, u);
+    while (b > 0 && edge(ist, b) > u) --b;
+    while (b + 1 < ist.base_intervals && edge(ist, b + 1) <= u) ++b;
+    return b;
+}
+
+double left_on_u0(const IstOriginal& ist, int b, std::uint64_t index, std::uint64_t count) {
+    return edge(ist, b) + width(ist, b) * (double(index) / double(count));
+}
+
+int arrival_index(const IstOriginal& ist, int j, int source, int part) {
+    Arrival list[kMaxArrivals];
+    const int count = arrivals_in(ist, j, list, kMaxArrivals);
+    for (int a = 0; a < count; ++a)
+        if (list[a].source == source && list[a].part == part) return a;
+    SHITSUKAN_ASSERT(false);
+    return 0;
+}
+
+// A sub-interval of u^K: base[K] = j, arrival[l] (l = 1..K) the group of base[l] it lies in;
+// base[l - 1] is that group's source. Fills base[], part[] and the left end and width.
+struct UpK {
+    int base[kMaxLevels];
+    int arrival[kMaxLevels];
+    int part[kMaxLevels];
+};
+
+void measure_upk(const IstOriginal& ist, int k, UpK* s, double* left, double* w) {
+    double before[kMaxLevels], group[kMaxLevels], total[kMaxLevels];
+    for (int l = k; l >= 1; --l) {
+        Arrival list[kMaxArrivals];
+        const int count = arrivals_in(ist, s->base[l], list, kMaxArrivals);
+        SHITSUKAN_ASSERT(s->arrival[l] < count);
+        double sum = 0.0;
+        for (int a = 0; a < count; ++a) {
+            if (a == s->arrival[l]) before[l] = sum;
+            sum += list[a].width;
+        }
+        total[l] = sum;
+        group[l] = list[s->arrival[l]].width;
+        s->base[l - 1] = list[s->arrival[l]].source;
+        s->part[l] = list[s->arrival[l]].part;
+    }
+    double frac = 0.0, share = 1.0;  // of base[l]: left end, width
+    for (int l = 1; l <= k; ++l) {
+        frac = (before[l] + frac * group[l]) / total[l];
+        share = share * group[l] / total[l];
+    }
+    const int j = s->base[k];
+    *left = edge(ist, j) + width(ist, j) * frac;
+    *w = width(ist, j) * share;
+}
+
+// The left end of the sub-interval after s on u^K (1 after the last one).
+double next_left_upk(const IstOriginal& ist, int k, const UpK& s) {
+    UpK n = s;
+    for (int l = 1; l <= k; ++l) {
+        Arrival list[kMaxArrivals];
+        if (n.arrival[l] + 1 < arrivals_in(ist, n.base[l], list, kMaxArrivals)) {
+            ++n.arrival[l];
+            for (int i = 1; i < l; ++i) n.arrival[i] = 0;
+            double left, w;
+            measure_upk(ist, k, &n, &left, &w);
+            return left;
+        }
+    }
+    return edge(ist, s.base[k] + 1);
+}
+
+// Keeps v inside [a, z) (or [a, z] when the point is the axis' end u = 1).
+double hold_inside(double v, double a, double z, bool closed) {
+    if (!closed && v >= z) v = z > a ? std::nextafter(z, a) : a;
+    if (closed && v > z) v = z;
+    return v < a ? a : v;
+}
+
+}  // namespace
+
 double ist_original_forward(const IstOriginal& ist, double u) {
-    IstPoint point;
-    ist_original_start(ist, u, &point);
-    for (int k = 1; k <= ist.iterations; ++k) ist_original_step(ist, &point);
-    // the steps' roundings can leave u an ulp above 1 (or below 0): the axis is [0, 1]
-    return point.u < 0.0 ? 0.0 : (point.u > 1.0 ? 1.0 : point.u);
+    if (!(u > 0.0)) u = 0.0;
+    if (u > 1.0) u = 1.0;
+    const int k = ist.iterations;
+    if (k == 0) return u;
+    // Locate u on u^0: base b and parts g_1..g_K, each the last one whose left end is <= u.
+    const int b = base_of(ist, u);
+    UpK s;
+    std::uint64_t index = 0, count = 1;
+    int source = b;
+    for (int l = 1; l <= k; ++l) {
+        const int m = ist_original_crossing(ist, source), n = 2 * m + 1;
+        const double guess =
+            ((u - edge(ist, b)) / width(ist, b) * double(count) - double(index)) * double(n);
+        int g = guess > 0.0 ? (guess < double(n) ? int(guess) : n - 1) : 0;
+        while (g > 0 && left_on_u0(ist, b, index * n + std::uint64_t(g), count * n) > u) --g;
+        while (g + 1 < n && left_on_u0(ist, b, index * n + std::uint64_t(g + 1), count * n) <= u)
+            ++g;
+        index = index * std::uint64_t(n) + std::uint64_t(g);
+        count *= std::uint64_t(n);
+        // §2.1(1) 2): part g goes to base interval source + g - M (stays home past an end).
+        int j = neighbour(ist, source, g - m);
+        if (j < 0) j = source;
+        s.arrival[l] = arrival_index(ist, j, source, g);
+        source = j;
+    }
+    s.base[k] = source;
+    const double a0 = left_on_u0(ist, b, index, count);
+    double t = (u - a0) / (width(ist, b) / double(count));
+    t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+    double left, w;
+    measure_upk(ist, k, &s, &left, &w);
+    const double v = t > 0.0 ? left + t * w : left;  // a left end goes to a left end, exactly
+    const double v_in = hold_inside(v, left, next_left_upk(ist, k, s), u >= 1.0);
+    return v_in > 1.0 ? 1.0 : v_in;
 }
 
 double ist_original_inverse(const IstOriginal& ist, double q) {
     if (!(q > 0.0)) q = 0.0;
     if (q > 1.0) q = 1.0;
-    for (int k = ist.iterations; k >= 1; --k) {
-        Origin o = origin_of(ist, q);
-        double a = 0.0, z = 0.0;
-        locate(ist, o.compressed, k - 1, &a, &z);  // the parent sub-interval on u^{k-1}
-        const int n = 2 * ist_original_crossing(ist, o.source) + 1;
-        // The part o.part of [a, z), at the same relative place as `compressed` in [a, z).
-        double rel = z > a ? (o.compressed - a) / (z - a) : 0.0;  // never 0 / 0
-        rel = rel < 0.0 ? 0.0 : (rel > 1.0 ? 1.0 : rel);
-        q = a + (z - a) * (double(o.part) + rel) / double(n);
+    const int k = ist.iterations;
+    if (k == 0) return q;
+    // Locate q on u^K: from the outermost group inwards, the last group whose first
+    // sub-interval starts at or before q. With the groups below level l all first ones
+    // (before = 0), the fraction of base[l] is before(a) / total and the levels above map it
+    // by the same affine steps as measure_upk, bit for bit: O(K (2M + 1)) per level.
+    UpK s;
+    const int j = base_of(ist, q);
+    s.base[k] = j;
+    for (int l = 1; l <= k; ++l) s.arrival[l] = 0;
+    double before_at[kMaxLevels], group_at[kMaxLevels], total_at[kMaxLevels];
+    for (int l = k; l >= 1; --l) {
+        Arrival list[kMaxArrivals];
+        const int count = arrivals_in(ist, s.base[l], list, kMaxArrivals);
+        double total = 0.0;
+        for (int a = 0; a < count; ++a) total += list[a].width;
+        double sum = 0.0;
+        int chosen = 0;
+        double chosen_before = 0.0;
+        for (int a = 0; a < count; ++a) {
+            double f = sum / total;  // (before + 0 * group) / total, as measure_upk
+            for (int m = l + 1; m <= k; ++m) f = (before_at[m] + f * group_at[m]) / total_at[m];
+            if (a > 0 && edge(ist, j) + width(ist, j) * f > q) break;
+            chosen = a;
+            chosen_before = sum;
+            sum += list[a].width;
+        }
+        s.arrival[l] = chosen;
+        before_at[l] = chosen_before;
+        group_at[l] = list[chosen].width;
+        total_at[l] = total;
+        s.base[l - 1] = list[chosen].source;
     }
-    return q;
+    double left, w;
+    measure_upk(ist, k, &s, &left, &w);
+    double t = (q - left) / w;
+    t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+    // Back on u^0: base[0] and the parts, most significant first.
+    const int b = s.base[0];
+    std::uint64_t index = 0, count = 1;
+    for (int l = 1; l <= k; ++l) {
+        const std::uint64_t n = std::uint64_t(2 * ist_original_crossing(ist, s.base[l - 1]) + 1);
+        index = index * n + std::uint64_t(s.part[l]);
+        count *= n;
+    }
+    const double a0 = left_on_u0(ist, b, index, count);
+    const double z0 =
+        index + 1 < count ? left_on_u0(ist, b, index + 1, count) : edge(ist, b + 1);
+    const double u = t > 0.0 ? a0 + t * (width(ist, b) / double(count)) : a0;
+    const double u_in = hold_inside(u, a0, z0, q >= 1.0);
+    return u_in > 1.0 ? 1.0 : u_in;
 }
 
 namespace {

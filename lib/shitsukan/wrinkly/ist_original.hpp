@@ -32,7 +32,15 @@
 // Ranges: 1 <= B <= kIstMaxBase, 0 <= M_i <= 15, 0 <= K <= kIstMaxIterations; double
 // precision resolves the sub-intervals while prod (2 M + 1) stays below about 2^45, and
 // ist_original_check refuses K, M and edges whose finest sub-interval would be narrower than
-// 2^-45 (there the inverse used to divide 0 by 0). forward() returns values in [0, 1].
+// 2^-45 (there the inverse used to divide 0 by 0). forward() returns values in [0, 1), and 1
+// only for u = 1 (the paper's rule: u = 1 belongs to the last sub-interval).
+// Round trips: a sub-interval of u^0 with parts g_1..g_K (a mixed-radix fraction I / D of its
+// base) has the left end x_b + w_b I / D; forward and inverse map left ends to left ends
+// exactly, so inverse(forward(u)) == u there (u = 0 included), and keep every other point
+// inside its image sub-interval (the offset inside is kept as a fraction, so the round trip
+// is good to a few ulps times the ratio of the two sub-intervals' widths: ulps with equal
+// bases and constant M). ist_original_check refuses axes whose finest sub-interval on u^0
+// or on u^K would be narrower than 2^-45. Cost: O(K^2 (2M + 1)) at most, forward or inverse.
 #pragma once
 
 #include "shitsukan/core/status.hpp"
@@ -62,9 +70,8 @@ void ist_original_start(const IstOriginal& ist, double u, IstPoint* point);
 void ist_original_step(const IstOriginal& ist, IstPoint* point, int* part = nullptr);
 
 double ist_original_forward(const IstOriginal& ist, double u);
-// Undoes the iterations K..1. To undo iteration k the sub-interval of u^{k-1} that held the
-// point must be known; it is found by following the point back to u^0 and forward again, so
-// the inverse costs O(K^2) steps.
+// Undoes the iterations K..1: the sub-interval of u^K holding the point is located group by
+// group (outermost first), its parts read back onto u^0.
 double ist_original_inverse(const IstOriginal& ist, double u);
 
 // For user input: check the description (ist_original_check) and u in [0, 1] first, and
