@@ -4,10 +4,15 @@
 // store (leather/maps.hpp), encoded the same way (OpenGL convention, green = +y).
 //
 // Manual
+//   #include <vector>
+//
+//   const int w = 64, h_rows = 32;
 //   std::vector<float> h(w * h_rows);            // heights in [0, 1], top row first
+//   for (int i = 0; i < w * h_rows; ++i) h[i] = float(i % w) / float(w);   // a ramp along x
 //   HeightNormalOptions o;  o.strength = 8.0f;   // the full height range is 8 pixels tall
 //   std::vector<Vec3> n(h.size());
 //   Status s = height_map_normals(h.data(), w, h_rows, o, n.data());
+//   if (!s) return s;
 //   std::vector<std::uint8_t> rgb(3 * h.size());
 //   encode_normal_rgb8(n.data(), n.size(), rgb.data());   // rgb = (n + 1) / 2 · 255
 //

@@ -3,11 +3,14 @@
 // them. Used by `shitsukan ist` (cli/cmd_ist.cpp) and examples/20_ist_table.cpp.
 //
 // Manual
+//   #include <cstdio>
+//
 //   IstAxis axis;
-//   if (!ist_unit_axis(3, 2, &axis)) ...
+//   Status s = ist_unit_axis(3, 2, &axis);   // fig. 3: N = 3, K = 2
+//   if (!s) return s;
 //   IstTableOptions o;                       // name "unit", first base 0, forward
 //   auto print = [](const char* line, void*) { std::puts(line); };
-//   Status s = ist_table(axis, o, print, nullptr);
+//   s = ist_table(axis, o, print, nullptr);
 //   // # fujimoto2000 IST (unit), N = 3, K = 2
 //   // # alpha^0 alpha^K
 //   // 00 00
