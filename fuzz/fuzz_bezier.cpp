@@ -39,14 +39,6 @@ void section(fuzz::Input& in) {
             if (joined && k > 0 && i == 0) p = chain.segments[k - 1].p[3];
         }
     if (!validate_section(chain).ok()) return;
-    // Open finding (fuzz/findings/fuzz_bezier/): validate_section accepts control points near
-    // FLT_MAX whose eq. (3) derivative overflows to inf. Kept out of the exploration so that
-    // it can find other defects; its input is replayed by hand until geom/ refuses them.
-    for (int k = 0; k < chain.count; ++k)
-        for (int i = 0; i < 4; ++i)
-            if (!(std::fabs(chain.segments[k].p[i].x) < 1e30f &&
-                  std::fabs(chain.segments[k].p[i].y) < 1e30f))
-                return;
     float zmin = INFINITY, zmax = -INFINITY, rscale = 0.0f;
     for (int k = 0; k < chain.count; ++k)
         for (int i = 0; i < 4; ++i) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <initializer_list>
+#include <string>
 
 #include "shitsukan/geom/bezier_curve.hpp"
 #include "shitsukan/leather/relief.hpp"
@@ -174,5 +175,29 @@ TEST_CASE("bezier: a vertical segment makes a step in z(r) (§3.2: discontinuous
         CHECK(std::isfinite(q.z));
         CHECK(std::isfinite(q.t));
         CHECK(q.segment != 1);
+    }
+}
+
+TEST_CASE("fuzz_bezier finding: a section with a control point near FLT_MAX is refused") {
+    // fuzz/corpus/fuzz_bezier/finding_section_dz_overflow: z = -1.7e38 was accepted and
+    // section_at_r returned dz = -inf (eq. (3)'s 3 (p1 - p0) overflows float).
+    BezierChain chain;
+    chain.count = 1;
+    chain.segments[0].p[0] = {0.0f, 0.0f};
+    chain.segments[0].p[1] = {0.3f, -1.7e38f};
+    chain.segments[0].p[2] = {0.6f, 1.0f};
+    chain.segments[0].p[3] = {1.0f, 0.0f};
+    Status s = validate_section(chain);
+    CHECK(s.code() == StatusCode::invalid_argument);
+    CHECK(std::string(s.message()).find("within +-1e+15") != std::string::npos);
+    // At the limit the derivative stays finite.
+    chain.segments[0].p[1] = {0.3f, -kMaxSectionCoordinate};
+    chain.segments[0].p[2] = {0.6f, kMaxSectionCoordinate};
+    REQUIRE(validate_section(chain).ok());
+    for (float r = 0.0f; r <= 1.0f; r += 0.125f) {
+        SectionSample q = section_at_r(chain, r);
+        CHECK(std::isfinite(q.z));
+        CHECK(std::isfinite(q.dz));
+        CHECK(std::isfinite(q.dr));
     }
 }

@@ -305,3 +305,31 @@ TEST_CASE("shader forms: function + user pointer, functor, captureless two-argum
     CHECK(b.lit() == a.lit());
     CHECK(c.lit() == a.lit());
 }
+
+TEST_CASE("fuzz_raster finding: a projective model sending corners to w ~ 0 draws no NaN") {
+    // fuzz/corpus/fuzz_raster/finding_projective_model_nan_world: a bottom row of
+    // (-1.6e-23, -1.6e-23, 9.4e-38, 1.5e-36) passed validate_model (finite, invertible) and
+    // the shader got NaN world positions (x / w overflowed). Such triangles are now rejected.
+    // The same defect on a readable matrix: w = x + 1 (invertible, det 1) and a corner at
+    // x = -0.99999994, y = 1e32, whose world y = y / 5.96e-8 overflows to inf.
+    Camera cam = perspective_camera({0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 60.0f, 32, 32);
+    DrawOptions opt;
+    opt.model = Mat4::identity();
+    opt.model.m[3][0] = 1.0f;
+    opt.cull = CullMode::none;
+    Mat4 normal_matrix;
+    REQUIRE(validate_model(opt.model, &normal_matrix).ok());  // projective models are allowed
+    TriangleMesh m;
+    m.positions = {{-0.99999994f, 1e32f, 0}, {0, 0, 0}, {0.5f, 0, 0}};
+    m.indices = {0, 1, 2};
+    Frame f;
+    RasterStats stats;
+    long nan_fragments = 0;
+    auto shader = [](const Fragment& fr, void* user) -> Rgb8 {
+        if (!is_finite(fr.world_position)) ++*static_cast<long*>(user);
+        return Rgb8{255, 255, 255};
+    };
+    CHECK(draw_mesh(cam, f.band, m.view(), opt, shader, &nan_fragments, &stats).ok());
+    CHECK(nan_fragments == 0);
+    CHECK(stats.triangles_rejected == 1);
+}

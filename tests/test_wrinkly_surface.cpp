@@ -407,3 +407,28 @@ TEST_CASE("grid evaluation with bases located per row and column: the same bits 
         }
     }
 }
+
+TEST_CASE("fuzz_wr_tessellation finding: control points beyond kMaxWrCoordinate are refused") {
+    // fuzz/corpus/fuzz_wr_tessellation/finding_nonfinite_mesh: a point at z = -3.4e35 (another
+    // at y = -4.5e11) was accepted and the tessellation had NaN positions and normals.
+    WrControlMesh mesh = make_control_mesh(4, 4);
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) mesh.at(c, r).position = {c / 3.0f, r / 3.0f, 0.0f};
+    REQUIRE(validate_control_mesh(mesh, SurfaceBasis::bspline, 3).ok());
+    mesh.at(1, 2).position.z = -3.4e35f;
+    Status s = validate_control_mesh(mesh, SurfaceBasis::bspline, 3);
+    CHECK(s.code() == StatusCode::invalid_argument);
+    CHECK(std::string(s.message()).find("(1, 2)") != std::string::npos);
+    // At the limit everything the surface computes stays finite.
+    mesh.at(1, 2).position.z = -kMaxWrCoordinate;
+    mesh.at(2, 1).position.y = kMaxWrCoordinate;
+    mesh.at(2, 2).height = kMaxWrCoordinate;
+    WrSurface surface;
+    REQUIRE(make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface).ok());
+    for (float u = 0.0f; u <= 1.0f; u += 0.25f)
+        for (float v = 0.0f; v <= 1.0f; v += 0.25f) {
+            BasePoint b = surface.base_point(u, v);
+            CHECK(is_finite(b.position));
+            CHECK(is_finite(b.normal));
+        }
+}

@@ -61,9 +61,18 @@ Status validate_section(const BezierChain& chain) {
                              chain.count);
     for (int k = 0; k < chain.count; ++k)
         for (int i = 0; i < 4; ++i)
-            if (!is_finite(chain.segments[k].p[i]))
+        {
+            const Vec2 p = chain.segments[k].p[i];
+            if (!is_finite(p))
                 return Status::error(StatusCode::invalid_argument,
                                      "section: control point %d of segment %d is not finite", i, k);
+            if (std::fabs(p.x) > kMaxSectionCoordinate || std::fabs(p.y) > kMaxSectionCoordinate)
+                return Status::error(StatusCode::invalid_argument,
+                                     "section: control point %d of segment %d is (%g, %g); "
+                                     "coordinates must be within +-%g",
+                                     i, k, double(p.x), double(p.y),
+                                     double(kMaxSectionCoordinate));
+        }
     for (int k = 0; k + 1 < chain.count; ++k) {
         Vec2 gap = chain.segments[k + 1].p[0] - chain.segments[k].p[3];
         if (length(gap) > 1e-5f)

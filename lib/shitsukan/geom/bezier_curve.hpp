@@ -57,8 +57,14 @@ struct SectionSample {
 // Point and derivative of segment `segment` at t (no validation: programmer's indices).
 SectionSample chain_point(const BezierChain& chain, int segment, float t);
 
-// invalid_argument when: count outside 1..kMaxChainSegments, a control point is NaN/inf,
-// consecutive segments do not join (|gap| > 1e-5), or r(t) decreases somewhere (the message
+// Largest |coordinate| of a section's control point (chosen here: 1e15, far beyond any
+// section a relief uses, and small enough that eq. (3)'s derivative, 3 x a difference of two
+// points, and the products of two differences the monotonicity test and z(r) form stay
+// finite in float: fuzz_bezier found dz = -inf at z = -1.7e38).
+constexpr float kMaxSectionCoordinate = 1e15f;
+
+// invalid_argument when: count outside 1..kMaxChainSegments, a control point is NaN/inf or
+// beyond kMaxSectionCoordinate, consecutive segments do not join (|gap| > 1e-5), or r(t) decreases somewhere (the message
 // names the segment and its a, b, c). degenerate when the whole chain has r_last <= r_first.
 Status validate_section(const BezierChain& chain);
 

@@ -397,8 +397,8 @@ bool to_screen(const Camera& camera, const ClipSpaceVertex& v, ScreenVertex* r) 
 // ---- 1. Fetch the three corners, into clip space ----
 // false for a degenerate triangle (zero area, NaN/inf corner). The plane normal is computed
 // in double so that huge but finite coordinates do not overflow.
-bool fetch_corners(const MeshView& mesh, const Mat4& mvp, int t, SourceTriangle* src,
-                   ClipSpaceVertex corners[3]) {
+bool fetch_corners(const MeshView& mesh, const Mat4& model, const Mat4& mvp, int t,
+                   SourceTriangle* src, ClipSpaceVertex corners[3]) {
     src->index = t;
     src->corner_index = mesh.indices + 3 * std::size_t(t);  // no int overflow
     bool finite = true;
@@ -413,6 +413,13 @@ bool fetch_corners(const MeshView& mesh, const Mat4& mvp, int t, SourceTriangle*
     Vec3d e2 = to_double(src->v[2].object_position - src->v[0].object_position);
     src->object_cross = cross(e1, e2);
     double cross2 = length_squared(src->object_cross);
+    // A projective model can send a corner to w ~ 0: world positions (and the differences the
+    // fragments interpolate) overflow to inf and NaN (fuzz_raster finding). Such a triangle
+    // has no place in the world: rejected like a degenerate one.
+    const Vec3 w0 = model_point(model, src->v[0].object_position);
+    const Vec3 w1 = model_point(model, src->v[1].object_position);
+    const Vec3 w2 = model_point(model, src->v[2].object_position);
+    finite = finite && is_finite(w0) && is_finite(w1 - w0) && is_finite(w2 - w0);
     return finite && cross2 > 0.0 && is_finite(cross2);
 }
 
@@ -508,7 +515,7 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
     for (int t = 0; t < mesh.triangle_count; ++t) {
         SourceTriangle src;
         ClipSpaceVertex corners[3];
-        if (!fetch_corners(mesh, mvp, t, &src, corners)) {
+        if (!fetch_corners(mesh, options.model, mvp, t, &src, corners)) {
             ++local.triangles_rejected;
             continue;
         }

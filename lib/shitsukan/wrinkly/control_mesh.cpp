@@ -47,6 +47,14 @@ Status validate_control_mesh(const WrControlMesh& mesh, SurfaceBasis basis, int 
                                      "control point (%d, %d) has a non-finite position, height, "
                                      "colour or direction",
                                      c, r);
+            const float big[7] = {p.position.x, p.position.y,  p.position.z, p.height,
+                                  p.direction.x, p.direction.y, p.direction.z};
+            for (float v : big)
+                if (!(v >= -kMaxWrCoordinate && v <= kMaxWrCoordinate))
+                    return Status::error(StatusCode::invalid_argument,
+                                         "control point (%d, %d): position, height and direction "
+                                         "must be within +-%g (got %g)",
+                                         c, r, double(kMaxWrCoordinate), double(v));
             if (!(p.transparency >= 0.0f && p.transparency <= 1.0f))
                 return Status::error(
                     StatusCode::invalid_argument,

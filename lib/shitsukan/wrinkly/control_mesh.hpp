@@ -52,9 +52,16 @@ constexpr long kMaxWrControlPoints = 1L << 20;  // cols·rows (about 50 MB of po
 // validate_control_mesh then reports the size.
 WrControlMesh make_control_mesh(int cols, int rows);
 
+// Largest |value| of a control point's position, height and direction components (chosen
+// here: 1e5, far beyond the papers' scenes). It keeps every float product the evaluation
+// forms finite for every accepted mesh: |dP/du| |dP/dv| <= 16 spans_u spans_v C^2 with
+// spans_u spans_v <= kMaxWrControlPoints, so the normal's squared length stays below 3e34
+// (fuzz_wr_tessellation found NaN positions and normals from a point at z = -3.4e35).
+constexpr float kMaxWrCoordinate = 1e5f;
+
 // Checks the grid shape against the base surface (the paper restricts WR surfaces to square
-// meshes, §3.1 and §6), the point count, and every value's range. Returns a Status naming the
-// offending point.
+// meshes, §3.1 and §6), the point count, and every value's range (finite; positions, heights
+// and directions within +-kMaxWrCoordinate). Returns a Status naming the offending point.
 Status validate_control_mesh(const WrControlMesh& mesh, SurfaceBasis basis, int degree);
 
 }  // namespace shitsukan
