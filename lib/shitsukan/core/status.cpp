@@ -350,114 +350,142 @@ Status Status::error(StatusCode code, const char* format, ...) {
     return s;
 }
 
+namespace {
+
+// The kept arguments read back in the order the format asks for them; once one is missing
+// (it did not fit when the Status was made) every later one prints as '?'.
+struct KeptArguments {
+    const unsigned char* bytes;
+    int used;
+    std::uint32_t narrow;  // bit i: the i-th argument is kept in 4 bytes
+    int offset = 0, index = 0;
+    bool missing = false;
+
+    // The next number as 64 bits (a narrow float widened to double, a narrow integer extended).
+    bool number(std::uint64_t& bits, bool is_signed, bool floating) {
+        const bool is_narrow = index < 32 && (narrow >> index & 1u) != 0;
+        const int size = is_narrow ? 4 : 8;
+        if (missing || offset + size > used) {
+            missing = true;
+            return false;
+        }
+        if (is_narrow) {
+            std::uint32_t u;
+            std::memcpy(&u, bytes + offset, 4);
+            if (floating) {
+                float f;
+                std::memcpy(&f, &u, 4);
+                double d = f;
+                std::memcpy(&bits, &d, 8);
+            } else {
+                bits = is_signed ? std::uint64_t(std::int64_t(std::int32_t(u))) : u;
+            }
+        } else {
+            std::memcpy(&bits, bytes + offset, 8);
+        }
+        offset += size;
+        ++index;
+        return true;
+    }
+
+    // The next kept string (nullptr when missing) and its length.
+    const char* string(int* length) {
+        if (missing || offset >= used) {
+            missing = true;
+            return nullptr;
+        }
+        const char* str = reinterpret_cast<const char*>(bytes + offset);
+        *length = string_length(str, -1);
+        offset += *length + 1;
+        ++index;
+        return str;
+    }
+};
+
+// One numeric conversion (d i u x X o c p and the floating ones) of a kept value.
+void put_number_conversion(Text& t, char c, Spec& s, std::uint64_t bits) {
+    const bool is_signed = is_signed_conversion(c) || c == 'c';
+    int room = 0;
+    if (c == 'c') {
+        char ch = char(bits);
+        put_padded_text(t, &ch, 1, s.number);
+    } else if (c == 'p' && bits == 0) {
+        put_padded_text(t, "(nil)", 5, s.number);
+    } else if (is_floating_conversion(c)) {
+        double d;
+        std::memcpy(&d, &bits, 8);
+        s.number.conversion = c == 'a' ? 'e' : c == 'A' ? 'E' : c;
+        char* dst = t.room(room);
+        t.length += format_double(dst, room, d, s.number);
+    } else {
+        bool negative = false;
+        std::uint64_t magnitude = bits;
+        if (is_signed) {
+            std::int64_t v = narrow_signed(std::int64_t(bits), s.length);
+            negative = v < 0;
+            magnitude = negative ? 0u - std::uint64_t(v) : std::uint64_t(v);
+        } else {
+            magnitude = narrow_unsigned(bits, s.length);
+        }
+        s.number.conversion = c == 'p' ? 'x' : c == 'i' ? 'd' : c;
+        if (c == 'p') s.number.alternate = true;
+        char* dst = t.room(room);
+        t.length += format_integer(dst, room, magnitude, negative, s.number);
+    }
+}
+
+// The format with its conversions filled from the kept arguments.
+void put_formatted(Text& t, const char* format, KeptArguments& kept) {
+    for (const char* p = format; *p != '\0';) {
+        if (*p != '%') {
+            t.put(*p++);
+            continue;
+        }
+        ++p;
+        Spec s = parse_spec(p);
+        std::uint64_t bits = 0;
+        if (s.width_star && kept.number(bits, true, false)) {
+            int w = int(std::int64_t(bits));
+            s.number.left = s.number.left || w < 0;
+            s.number.width = w < 0 ? -w : w;
+        }
+        if (s.precision_star && kept.number(bits, true, false)) {
+            int w = int(std::int64_t(bits));
+            s.number.precision = w < 0 ? -1 : w;
+        }
+        const char c = s.conversion;
+        if (c == '%') {
+            t.put('%');
+        } else if (c == 's') {
+            int n = 0;
+            const char* str = kept.string(&n);
+            if (str)
+                put_padded_text(t, str, n, s.number);
+            else
+                t.put('?');
+        } else if (is_signed_conversion(c) || is_unsigned_conversion(c) || c == 'c' ||
+                   c == 'p' || is_floating_conversion(c)) {
+            const bool is_signed = is_signed_conversion(c) || c == 'c';
+            if (kept.number(bits, is_signed, is_floating_conversion(c)))
+                put_number_conversion(t, c, s, bits);
+            else
+                t.put('?');
+        } else if (c != 'n' && c != 0) {  // not a conversion printf knows: as written
+            t.put('%');
+            t.put(c);
+        }
+    }
+}
+
+}  // namespace
+
 int Status::format_message(char* out, int capacity) const {
     Text t{out, capacity};
     if (ok()) {
         for (const char* c = "ok"; *c; ++c) t.put(*c);
     } else {
-        int offset = 0, index = 0;
-        bool missing = false;
-        // The next kept number (false when it did not fit).
-        auto next_number = [&](std::uint64_t& bits, bool is_signed, bool floating) -> bool {
-            bool narrow = index < 32 && (narrow_ >> index & 1u) != 0;
-            int bytes = narrow ? 4 : 8;
-            if (missing || offset + bytes > used_) {
-                missing = true;
-                return false;
-            }
-            if (narrow) {
-                std::uint32_t u;
-                std::memcpy(&u, arguments_ + offset, 4);
-                if (floating) {
-                    float f;
-                    std::memcpy(&f, &u, 4);
-                    double d = f;
-                    std::memcpy(&bits, &d, 8);
-                } else {
-                    bits = is_signed ? std::uint64_t(std::int64_t(std::int32_t(u))) : u;
-                }
-            } else {
-                std::memcpy(&bits, arguments_ + offset, 8);
-            }
-            offset += bytes;
-            ++index;
-            return true;
-        };
-        for (const char* p = format_; *p != '\0';) {
-            if (*p != '%') {
-                t.put(*p++);
-                continue;
-            }
-            ++p;
-            Spec s = parse_spec(p);
-            std::uint64_t bits = 0;
-            if (s.width_star && next_number(bits, true, false)) {
-                int w = int(std::int64_t(bits));
-                s.number.left = s.number.left || w < 0;
-                s.number.width = w < 0 ? -w : w;
-            }
-            if (s.precision_star && next_number(bits, true, false)) {
-                int w = int(std::int64_t(bits));
-                s.number.precision = w < 0 ? -1 : w;
-            }
-            char c = s.conversion;
-            int room = 0;
-            if (c == '%') {
-                t.put('%');
-            } else if (c == 's') {
-                if (missing || offset >= used_) {
-                    missing = true;
-                    t.put('?');
-                    continue;
-                }
-                const char* str = reinterpret_cast<const char*>(arguments_ + offset);
-                int n = string_length(str, -1);
-                offset += n + 1;
-                ++index;
-                put_padded_text(t, str, n, s.number);
-            } else if (is_signed_conversion(c) || is_unsigned_conversion(c) || c == 'c' ||
-                       c == 'p' || is_floating_conversion(c)) {
-                bool is_signed = is_signed_conversion(c) || c == 'c';
-                if (!next_number(bits, is_signed, is_floating_conversion(c))) {
-                    t.put('?');
-                    continue;
-                }
-                if (c == 'c') {
-                    char ch = char(bits);
-                    put_padded_text(t, &ch, 1, s.number);
-                } else if (c == 'p' && bits == 0) {
-                    put_padded_text(t, "(nil)", 5, s.number);
-                } else if (is_floating_conversion(c)) {
-                    double d;
-                    std::memcpy(&d, &bits, 8);
-                    if (c == 'a')
-                        s.number.conversion = 'e';
-                    else if (c == 'A')
-                        s.number.conversion = 'E';
-                    else
-                        s.number.conversion = c;
-                    char* dst = t.room(room);
-                    t.length += format_double(dst, room, d, s.number);
-                } else {
-                    bool negative = false;
-                    std::uint64_t magnitude = bits;
-                    if (is_signed) {
-                        std::int64_t v = narrow_signed(std::int64_t(bits), s.length);
-                        negative = v < 0;
-                        magnitude = negative ? 0u - std::uint64_t(v) : std::uint64_t(v);
-                    } else {
-                        magnitude = narrow_unsigned(bits, s.length);
-                    }
-                    s.number.conversion = c == 'p' ? 'x' : c == 'i' ? 'd' : c;
-                    if (c == 'p') s.number.alternate = true;
-                    char* dst = t.room(room);
-                    t.length += format_integer(dst, room, magnitude, negative, s.number);
-                }
-            } else if (c != 'n' && c != 0) {  // not a conversion printf knows: as written
-                t.put('%');
-                t.put(c);
-            }
-        }
+        KeptArguments kept{arguments_, used_, narrow_};
+        put_formatted(t, format_, kept);
     }
     if (capacity > 0) out[t.length < capacity ? t.length : capacity - 1] = '\0';
     return t.length;
