@@ -463,8 +463,8 @@ void put_formatted(Text& t, const char* format, KeptArguments& kept) {
                 put_padded_text(t, str, n, s.number);
             else
                 t.put('?');
-        } else if (is_signed_conversion(c) || is_unsigned_conversion(c) || c == 'c' ||
-                   c == 'p' || is_floating_conversion(c)) {
+        } else if (is_signed_conversion(c) || is_unsigned_conversion(c) || c == 'c' || c == 'p' ||
+                   is_floating_conversion(c)) {
             const bool is_signed = is_signed_conversion(c) || c == 'c';
             if (kept.number(bits, is_signed, is_floating_conversion(c)))
                 put_number_conversion(t, c, s, bits);
