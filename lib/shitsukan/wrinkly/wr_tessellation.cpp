@@ -149,8 +149,13 @@ Status evaluate_wr_grid(const WrSurface& surface, const HierarchicalSampling* sa
                 if (s.levels_used > m.max_levels_used) m.max_levels_used = s.levels_used;
             } else {
                 const BasePoint b = surface.base_point(au, av, u, v);
-                const WrBasisAt* iu = bu.inverse.data() + std::size_t(i) * steps;
-                const WrBasisAt* iv = bv.inverse.data() + std::size_t(j) * steps;
+                // The inverses exist for the wr and superposed_direct forms only (no offset
+                // from an empty vector's null data: fuzz_wr_tessellation, UBSan).
+                const bool inverted = !bu.inverse.empty() && !bv.inverse.empty();
+                const WrBasisAt* iu =
+                    inverted ? bu.inverse.data() + std::size_t(i) * steps : nullptr;
+                const WrBasisAt* iv =
+                    inverted ? bv.inverse.data() + std::size_t(j) * steps : nullptr;
                 if (o.form == WrSurfaceForm::wr)
                     a = surface.attributes(iu[o.levels], iv[o.levels]);  // eq. (15)
                 else if (o.form == WrSurfaceForm::superposed_direct)
