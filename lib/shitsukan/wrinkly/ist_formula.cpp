@@ -3,6 +3,7 @@
 #include "shitsukan/wrinkly/ist_formula.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "shitsukan/core/assert.hpp"
 
@@ -18,10 +19,28 @@ Real left_end(const IstAxis& axis, int base, std::uint64_t index, std::uint64_t 
     return (Real(base) + Real(index) / Real(count)) / Real(axis.base_intervals);
 }
 
+// A distance, in sub-intervals, beyond which a point's sub-interval (and base) is sure without
+// comparing against the computed left ends: eight times the few ulps of B N^K by which
+// u B N^K and the left ends of eq. (9) can be off (each a handful of roundings, each at most
+// half an ulp of a value below B). Nearer to an end, split() and join() compare exactly.
+template <class Real>
+Real far_from_ends(const IstAxis& axis, std::uint64_t count) {
+    return Real(8) * std::numeric_limits<Real>::epsilon() * Real(axis.base_intervals) *
+           Real(count);
+}
+
 template <class Real>
 Real join(const IstAxis& axis, int base, std::uint64_t index, Real offset, std::uint64_t count) {
     // Where Real cannot resolve B N^K sub-intervals (B N^K > 2^53 in double; fuzz_ist found
     // N = 3, K = 33, B = 4) the last left ends round up to 1; a point below 1 stays below 1.
+    if (offset > Real(0) && Real(1) - offset > far_from_ends<Real>(axis, count)) {
+        // Fast path, the same value as below: rounding is monotone, so a <= v, and a gap of
+        // (1 - offset) / (B N^K) far above the few ulps the three expressions can be off keeps
+        // v below the right end z; only v < 1 is left to see.
+        const Real v =
+            (Real(base) + (Real(index) + offset) / Real(count)) / Real(axis.base_intervals);
+        if (v < Real(1)) return v;
+    }
     const Real below_one = std::nextafter(Real(1), Real(0));
     const Real a0 = left_end<Real>(axis, base, index, count);
     const Real a = a0 < Real(1) ? a0 : below_one;
@@ -57,17 +76,27 @@ void split(const IstAxis& axis, Real u, std::uint64_t count, int* base, std::uin
     Real t = u * Real(nb);
     int b = int(t);
     if (b >= nb) b = nb - 1;
-    while (b > 0 && Real(b) / Real(nb) > u) --b;  // the base's left end b / B, as join()
-    while (b + 1 < nb && Real(b + 1) / Real(nb) <= u) ++b;
+    // Far from every end the floors are the answer (far_from_ends); near one, compare with
+    // the computed left ends, as join() computes them.
+    const Real far = far_from_ends<Real>(axis, count);
+    const Real far_b = Real(8) * std::numeric_limits<Real>::epsilon() * Real(nb);
+    const bool base_sure = t - Real(b) > far_b && Real(b + 1) - t > far_b;
+    if (!base_sure) {
+        while (b > 0 && Real(b) / Real(nb) > u) --b;  // the base's left end b / B, as join()
+        while (b + 1 < nb && Real(b + 1) / Real(nb) <= u) ++b;
+    }
     Real s = (t - Real(b)) * Real(count);
     std::uint64_t i = s > Real(0) ? std::uint64_t(s) : 0;
     if (i >= count) i = count - 1;
-    // The floor is off by at most one where Real resolves the left ends (B N^K within the
-    // header's bounds); beyond them left ends coincide and a few steps are all that is owed.
-    for (int step = 0; step < 4 && i > 0 && left_end<Real>(axis, b, i, count) > u; ++step) --i;
-    for (int step = 0; step < 4 && i + 1 < count && left_end<Real>(axis, b, i + 1, count) <= u;
-         ++step)
-        ++i;
+    if (!(base_sure && s - Real(i) > far && Real(i + 1) - s > far)) {
+        // The floor is off by at most one where Real resolves the left ends (B N^K within the
+        // header's bounds); beyond them left ends coincide and a few steps are all that is owed.
+        for (int step = 0; step < 4 && i > 0 && left_end<Real>(axis, b, i, count) > u; ++step)
+            --i;
+        for (int step = 0;
+             step < 4 && i + 1 < count && left_end<Real>(axis, b, i + 1, count) <= u; ++step)
+            ++i;
+    }
     const Real a = left_end<Real>(axis, b, i, count);
     Real f = (u - a) * Real(nb) * Real(count);  // u - a is exact (Sterbenz) near a
     if (!(f > Real(0))) f = Real(0);
