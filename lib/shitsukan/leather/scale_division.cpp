@@ -79,6 +79,15 @@ Status check_scale_params(const ScaleParams& prm) {
         return Status::error(StatusCode::invalid_argument,
                              "scale pattern: distance d from the centre line must be >= 0 (got %g)",
                              double(prm.d));
+    // chosen: two stage-1 rows closer than 1e-6 of the pattern (a thousand weld distances) put
+    // their Voronoi vertices within the stage-1 weld and the joint collapses (fuzz finding:
+    // d = 1.8e-15 on a 1.3 x 1 pattern gave cells with a one-sided edge); d = 0 is one row
+    const double min_d = 1e3 * kWeldRelative * std::max(double(prm.width), double(prm.height));
+    if (prm.d > 0.0f && double(prm.d) < min_d)
+        return Status::error(StatusCode::invalid_argument,
+                             "scale pattern: distance d = %g from the centre line must be 0 (one "
+                             "row) or at least %g (1e-6 of the pattern's longer side)",
+                             double(prm.d), min_d);
     if (!(prm.a >= 0.0f && prm.a <= 1.0f))
         return Status::error(StatusCode::invalid_argument,
                              "scale pattern: relative displacement a must be in [0, 1] (got %g)",
