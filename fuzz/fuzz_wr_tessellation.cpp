@@ -94,6 +94,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // (found: 200 x 200 vertices of the direct superposition exceeded the 1 s timeout under
     // the sanitizers: work that grows with the request, not a defect; 64 keeps inputs fast)
     if (side > 64) return 0;
+    // The work is not the grid alone: every vertex sums (degree + 1)^2 control points for its
+    // base point (P, dP/du, dP/dv: 12 channels) and again for each attribute evaluation (8
+    // channels): one for eq. (15) or the plain surface, K + 1 for eq. (16), 1 + K' for eq. (20).
+    // (found: timeout_ist_inverse_per_vertex, 53 x 53 vertices of eq. (15) on a bicubic patch,
+    // about 0.9 M of these units, 40 ms under the sanitizers, timed out on a loaded machine;
+    // the IST inverse it pointed at is < 0.1 % of the time, evaluated once per grid line.
+    // A degree-7 patch with eq. (16), K = 5, 56 x 56 vertices is 12 M units, 0.46 s. Keep an
+    // input to 2 M units, under 0.1 s.)
+    const int evaluations = o.form == WrSurfaceForm::base                ? 0
+                            : o.form == WrSurfaceForm::superposed_direct ? o.levels + 1
+                            : o.form == WrSurfaceForm::superposed        ? 1 + hs.levels()
+                                                                         : 1;
+    const double points = double(degree + 1) * double(degree + 1);
+    if (side * side * points * (12.0 + 8.0 * evaluations) > 2e6) return 0;
     WrMesh wm;
     if (!tessellate_wr_surface(surface, sampling, o, &wm).ok()) return 0;
     const TriangleMesh& m = wm.mesh;

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstring>
 #include <string>
 
 #include "shitsukan/wrinkly/hierarchical_sampling.hpp"
@@ -240,4 +241,95 @@ TEST_CASE(
     const SuperposedSample q = superposed_sampled(s, hs, 0.0f, 0.3f);
     CHECK(length(p.position - q.position) < 1e-6f);
     CHECK(length(p.attributes.color - q.attributes.color) < 1e-6f);
+}
+
+namespace {
+
+// A WrAxis that forwards to another and counts its (F^k)^{-1} evaluations.
+struct CountedAxis {
+    WrAxis inner;
+    long calls = 0;
+    static float inverse(const void* self, float s, int k) {
+        auto* a = const_cast<CountedAxis*>(static_cast<const CountedAxis*>(self));
+        ++a->calls;
+        return a->inner.inverse_at(s, k);
+    }
+    WrAxis axis() const {
+        WrAxis w = inner;
+        w.inverse = &CountedAxis::inverse;
+        w.context = this;
+        return w;
+    }
+};
+
+bool same_vec_bits(Vec3 a, Vec3 b) { return std::memcmp(&a, &b, sizeof(Vec3)) == 0; }
+
+}  // namespace
+
+TEST_CASE(
+    "fuzz timeout_ist_inverse_per_vertex: (F^K)^{-1} once per grid column and row, same "
+    "bits as the per-point eq. (15)") {
+    // fuzz/corpus/fuzz_wr_tessellation/timeout_ist_inverse_per_vertex: a bicubic Bezier patch,
+    // fully-connected IST N = 5, K = 2 on a translation axis (the digit-stepping inverse),
+    // eq. (15) on a 53 x 53 grid (L = 2, 2 subdivisions). It timed out once on a loaded machine
+    // under the sanitizers; measured, the IST inverse is < 0.1 % of its time (the tensor sums
+    // are the rest): the grid evaluates it once per column and row, never per vertex.
+    const float p[16][4] = {
+        {0x0p+0f, 0x0p+0f, 0x0p+0f, 0x1.08p+11f},
+        {0x0p+0f, 0x1.8p+1f, 0x1p+0f, 0x1.4p-2f},
+        {-0x1.e5e8p+6f, -0x1.e5e8p+6f, -0x1.e5e8p+6f, -0x1.e5e8p+6f},
+        {-0x1.e5e8p+6f, -0x1.e5e8p+6f, -0x1.e5e8p+6f, -0x1.e5e8p+6f},
+        {0x1.452p+4f, 0x1p+13f, 0x0p+0f, -0x1.e5e8p+6f},
+        {-0x1.e5e8p+6f, -0x1.e5e8p+6f, -0x1.e5e8p+6f, -0x1.e5e8p+6f},
+        {-0x1.e5e8p+6f, -0x1.e5e8p+6f, -0x1.e5e8p+6f, -0x1.e5e8p+6f},
+        {-0x1.e5e8p+6f, -0x1.e5e8p+6f, -0x1.e5e8p+6f, -0x1p-5f},
+        {0x1p+11f, 0x1p+12f, 0x1.0008p+14f, 0x1p+14f},
+        {0x1p+14f, 0x1p+6f, 0x1p+14f, 0x0p+0f},
+        {0x1p+5f, 0x1p+11f, 0x1p+14f, 0x1p+6f},
+        {0x1.8p+1f, 0x0p+0f, 0x1p-1f, 0x1.04p+12f},
+        {0x1.8p+5f, 0x1p-3f, -0x1p-1f, 0x1.02p+13f},
+        {0x1.8p+1f, 0x1.8p-3f, 0x1p-1f, 0x1.82p+13f},
+        {0x1.02p-128f, 0x1.8p+1f, 0x1.8p-3f, 0x1p-1f},
+        {0x1.8p+1f, 0x1.8p+1f, 0x1.4p-2f, -0x1p-1f},
+    };
+    WrControlMesh m = make_control_mesh(4, 4);
+    for (int i = 0; i < 16; ++i) {
+        m.points[std::size_t(i)].position = {p[i][0], p[i][1], p[i][2]};
+        m.points[std::size_t(i)].height = p[i][3];
+    }
+    WrSurface s;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bezier, 3, &s));
+    IstAxis iu, iv;
+    REQUIRE(ist_fully_connected_axis(5, 1, s.spans_u(), IstEnds::translation, &iu));
+    REQUIRE(ist_fully_connected_axis(5, 1, s.spans_v(), IstEnds::translation, &iv));
+    WrIstAxis au, av;
+    REQUIRE(make_wr_ist_axis(iu, 2, &au));
+    REQUIRE(make_wr_ist_axis(iv, 2, &av));
+    CountedAxis cu{au.axis()}, cv{av.axis()};
+    REQUIRE(s.set_axes(cu.axis(), cv.axis()));
+    WrTessellationOptions o;
+    o.form = WrSurfaceForm::wr;
+    o.levels = 2;
+    o.grid_level = 2;
+    o.subdivisions = 2;
+    WrMesh wm;
+    REQUIRE(tessellate_wr_surface(s, nullptr, o, &wm));
+    REQUIRE(wm.grid_u == 53);
+    REQUIRE(wm.grid_v == 53);
+    CHECK(cu.calls == wm.grid_u);  // one (F^2)^{-1}(u) per column (k = 0 is the identity)
+    CHECK(cv.calls == wm.grid_v);  // one per row
+    // The slow reference: eq. (15) point by point, the inverses evaluated at every vertex.
+    int mismatches = 0;
+    for (std::size_t id = 0; id < wm.mesh.positions.size(); ++id) {
+        const float u = wm.mesh.uvs[id].x, v = wm.mesh.uvs[id].y;
+        const Vec3 want = s.wr_point(u, v, 2);
+        const WrAttributes a = s.wr_attributes(u, v, 2);
+        const Vec3 colour = {clamp(a.color.x, 0.0f, 1.0f), clamp(a.color.y, 0.0f, 1.0f),
+                             clamp(a.color.z, 0.0f, 1.0f)};
+        if (!same_vec_bits(wm.mesh.positions[id], want) ||
+            !same_vec_bits(wm.mesh.colors[id], colour))
+            ++mismatches;
+    }
+    CHECK(mismatches == 0);
+    CHECK(cu.calls == wm.grid_u + 2 * long(wm.mesh.positions.size()));  // + the reference's
 }
