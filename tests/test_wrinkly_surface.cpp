@@ -432,3 +432,25 @@ TEST_CASE("fuzz_wr_tessellation finding: control points beyond kMaxWrCoordinate 
             CHECK(is_finite(b.normal));
         }
 }
+
+TEST_CASE("fuzz_wr_tessellation finding: jitter_height beyond kMaxJitterHeight is refused") {
+    // fuzz/corpus/fuzz_wr_tessellation/finding_jitter_height_overflow: jitter_height = 3.4e38
+    // was accepted and the height samples (1 + jitter g) h overflowed: -inf positions.
+    WrControlMesh mesh = make_control_mesh(4, 4);
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) {
+            mesh.at(c, r).position = {c / 3.0f, r / 3.0f, 0.0f};
+            mesh.at(c, r).height = 0.1f;
+        }
+    WrSurface surface;
+    REQUIRE(make_wr_surface(mesh, SurfaceBasis::bezier, 3, &surface).ok());
+    HierarchicalOptions o;
+    o.levels = 0;
+    o.jitter_height = 3.4e38f;
+    HierarchicalSampling hs;
+    Status s = sample_hierarchy(surface, o, &hs);
+    CHECK(s.code() == StatusCode::invalid_argument);
+    CHECK(std::string(s.message()).find("jitter_height") != std::string::npos);
+    o.jitter_height = kMaxJitterHeight;
+    CHECK(sample_hierarchy(surface, o, &hs).ok());
+}

@@ -151,6 +151,10 @@ Status sample_hierarchy(const WrSurface& surface, const HierarchicalOptions& o,
                              "jitter deviations must be finite and >= 0 (got %g, %g, %g)",
                              double(o.jitter_height), double(o.jitter_color),
                              double(o.jitter_transparency));
+    if (o.jitter_height > kMaxJitterHeight)
+        return Status::error(StatusCode::invalid_argument,
+                             "jitter_height must be <= %g (got %g)", double(kMaxJitterHeight),
+                             double(o.jitter_height));
     if (o.levels > surface.max_level())
         return Status::error(StatusCode::invalid_argument,
                              "levels K = %d exceeds the IST steps the surface's axes hold (%d): "

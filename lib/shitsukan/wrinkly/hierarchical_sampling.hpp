@@ -37,8 +37,9 @@
 //   - eq. (18) is kept on the finite sum: every attribute (height and vector too) is divided by
 //     the weights actually used, 1 - delta^(k_last + 1) (superposition.hpp). The omitted tail
 //     would otherwise lower the surface by delta^(K+1) of its height (fig. 21 (g): 23 %).
-// Ranges: levels (K) in 0..surface.max_level() (<= kMaxWrLevel), jitters >= 0, sample count per
-// step at most kMaxHierarchicalSamples (too_large otherwise).
+// Ranges: levels (K) in 0..surface.max_level() (<= kMaxWrLevel), jitters >= 0 (jitter_height
+// <= kMaxJitterHeight), sample count per step at most kMaxHierarchicalSamples (too_large
+// otherwise).
 #pragma once
 
 #include <cstdint>
@@ -51,10 +52,15 @@ namespace shitsukan {
 
 enum class SampleInterpolation : std::uint8_t { linear, hermite };
 
+// Largest relative height jitter (chosen here: 100; a deviation of 100 times the height already
+// turns a hill into noise, and with heights <= kMaxWrCoordinate the scaled samples stay far inside
+// float: fuzz_wr_tessellation found infinite positions at 3.4e38).
+constexpr float kMaxJitterHeight = 100.0f;
+
 struct HierarchicalOptions {
     int levels = 3;  // K: steps k = 0..K are superposed
     SampleInterpolation interpolation = SampleInterpolation::linear;
-    float jitter_height = 0;        // relative std. dev. of the height samples
+    float jitter_height = 0;        // relative std. dev. of the height samples (<= 100)
     float jitter_color = 0;         // absolute std. dev. per colour channel
     float jitter_transparency = 0;  // absolute std. dev.
     std::uint32_t seed = 1;
