@@ -616,3 +616,19 @@ TEST_CASE("fuzz_scale_pattern finding: stage-1 rows 1.8e-15 apart are refused, n
     prm.d = 2e-6f;  // just above the limit: fine
     CHECK(generate_scale_pattern(prm, &pat).ok());
 }
+
+TEST_CASE("fuzz_scale_pattern finding: stage-1 rows far outside a tiny pattern are refused") {
+    // fuzz/corpus/fuzz_scale_pattern/finding_rows_far_outside: W = H = 1e-30, D = 1e-31,
+    // d = 1.8e-15: the joint's rounding (ulps of d) exceeded the pattern; a one-sided edge.
+    ScaleParams prm;
+    prm.width = 1e-30f;
+    prm.height = 1e-30f;
+    prm.D = 1e-31f;
+    prm.d = 1.78e-15f;
+    ScalePattern pat;
+    Status s = generate_scale_pattern(prm, &pat);
+    CHECK(s.code() == StatusCode::invalid_argument);
+    CHECK(std::string(s.message()).find("at most the width") != std::string::npos);
+    prm.d = 1e-31f;  // rows one spacing from the centre line: fine at this scale too
+    CHECK(generate_scale_pattern(prm, &pat).ok());
+}

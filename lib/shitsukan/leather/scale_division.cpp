@@ -83,6 +83,14 @@ Status check_scale_params(const ScaleParams& prm) {
     // their Voronoi vertices within the stage-1 weld and the joint collapses (fuzz finding:
     // d = 1.8e-15 on a 1.3 x 1 pattern gave cells with a one-sided edge); d = 0 is one row
     const double min_d = 1e3 * kWeldRelative * std::max(double(prm.width), double(prm.height));
+    // chosen: the rows at most half a width outside the rectangle (d <= W); far beyond it the
+    // stage-1 joint is a bisector of points d away, rounded by ulps of d, which can exceed the
+    // pattern itself (fuzz finding: d = 1.8e-15 on a 1e-30 pattern: a one-sided edge)
+    if (prm.d > prm.width)
+        return Status::error(StatusCode::invalid_argument,
+                             "scale pattern: distance d = %g from the centre line must be at most "
+                             "the width %g",
+                             double(prm.d), double(prm.width));
     if (prm.d > 0.0f && double(prm.d) < min_d)
         return Status::error(StatusCode::invalid_argument,
                              "scale pattern: distance d = %g from the centre line must be 0 (one "

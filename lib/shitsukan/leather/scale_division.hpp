@@ -34,7 +34,7 @@
 // Parameters (validated, Status on error): width, height > 0 and D > 0, all three normal
 // floats (subnormal sizes left gaps in the float pattern), D <= min(width, height) (chosen:
 // one scale must fit across; thinner regions left rows without cells); D > 0 (chosen default 0.1: ten
-// rows on the unit square); d = 0 or d >= 1e-6 max(W, H) (default 1.0 D); a in [0, 1]; edge_ratio in (0.05, 1];
+// rows on the unit square); d = 0 or 1e-6 max(W, H) <= d <= W (default 1.0 D); a in [0, 1]; edge_ratio in (0.05, 1];
 // perturbation.p >= 0. NaN anywhere is refused.
 //
 // Cost: stage 1 is one Voronoi division of n1 ~ 2 H / D seeds, O(n1 log n1); stage 2 one
