@@ -206,7 +206,7 @@ void prepare(const MeshContext& mc, SourceTriangle* t) {
     for (int k = 0; k < 3; ++k) {
         std::uint32_t i = t->corner_index[k];
         VertexData& v = t->v[k];
-        v.world_position = model_point(*mc.model, v.object_position);
+        // v.world_position: set by fetch_corners (step 1), the same model_point.
         v.uv = mesh.uvs ? mesh.uvs[i] : Vec2{0, 0};
         v.color = mesh.colors ? mesh.colors[i] : Vec3{1, 1, 1};
         if (mesh.normals) {
@@ -416,10 +416,12 @@ bool fetch_corners(const MeshView& mesh, const Mat4& model, const Mat4& mvp, int
     // A projective model can send a corner to w ~ 0: world positions (and the differences the
     // fragments interpolate) overflow to inf and NaN (fuzz_raster finding). Such a triangle
     // has no place in the world: rejected like a degenerate one.
-    const Vec3 w0 = model_point(model, src->v[0].object_position);
-    const Vec3 w1 = model_point(model, src->v[1].object_position);
-    const Vec3 w2 = model_point(model, src->v[2].object_position);
-    finite = finite && is_finite(w0) && is_finite(w1 - w0) && is_finite(w2 - w0);
+    // The world positions are kept for prepare(), which would otherwise compute them again.
+    for (int k = 0; k < 3; ++k)
+        src->v[k].world_position = model_point(model, src->v[k].object_position);
+    const Vec3 w0 = src->v[0].world_position;
+    finite = finite && is_finite(w0) && is_finite(src->v[1].world_position - w0) &&
+             is_finite(src->v[2].world_position - w0);
     return finite && cross2 > 0.0 && is_finite(cross2);
 }
 
