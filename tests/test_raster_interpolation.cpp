@@ -110,6 +110,36 @@ TEST_CASE("normals are interpolated, transformed by the normal matrix and normal
     CHECK(max_dev < 0.02);  // tessellation error of a 32 x 16 sphere
 }
 
+TEST_CASE("normals keep unit length under a model that scales them to denormals") {
+    // A model scaling z by 1e22 leaves the quad z = 0 where it is, but its normal matrix
+    // scales z by 1e-22: the normal (0, 0, 1e-22) squares to a denormal and loses its
+    // digits (a fuzz finding, fuzz_raster: normals of length 0.9 before normalize_or
+    // rescaled such vectors).
+    Camera cam = perspective_camera({0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 40.0f, 32, 32);
+    TriangleMesh quad = quad_mesh();
+    RgbImage color(32, 32);
+    FloatImage depth(32, 32);
+    FrameBand band = full_frame_band(color.view(), depth.view());
+    for (bool with_normals : {true, false}) {  // interpolated, and the plane's (flat)
+        clear_band(band, Rgb8{0, 0, 0});
+        double max_dev = 0;
+        long fragments = 0;
+        auto check = [&](const Fragment& f) {
+            max_dev = std::fmax(max_dev, std::fabs(f.normal.x) + std::fabs(f.normal.y) +
+                                             std::fabs(f.normal.z - 1.0f));
+            ++fragments;
+            return Rgb8{255, 255, 255};
+        };
+        DrawOptions opt;
+        opt.model = Mat4::scale({1.0f, 1.0f, 1.0e22f});
+        MeshView view = quad.view();
+        if (!with_normals) view.normals = nullptr;
+        REQUIRE(draw_mesh(cam, band, view, opt, check).ok());
+        CHECK(fragments > 100);
+        CHECK(max_dev < 1e-6);  // the world normal is (0, 0, 1), of length 1
+    }
+}
+
 TEST_CASE("depth order of intersecting triangles does not depend on drawing order") {
     // Two triangles crossing along x = 0: A lies in z = 0.5·x, B in z = -0.5·x. Seen from +z,
     // A is in front for x > 0 and B for x < 0.

@@ -169,11 +169,21 @@ inline bool to_fixed(float v, i64* out) {
     return true;
 }
 
-// One square root and one division per vector: this runs twice per fragment.
+// One square root and one division per vector: this runs twice per fragment. A vector whose
+// squared length leaves the normal floats (a model scaled by 1e22 has a normal matrix of
+// 1e-22, whose products square to denormals and lose their digits) is first divided by its
+// largest component, so that the result still has unit length; zero, NaN and inf give the
+// fallback.
 inline Vec3 normalize_or(Vec3 v, Vec3 fallback) {
     float l2 = v.x * v.x + v.y * v.y + v.z * v.z;
-    if (!(l2 > 0.0f) || !(l2 < 3.0e38f)) return fallback;
-    return v * (1.0f / std::sqrt(l2));
+    if (l2 >= std::numeric_limits<float>::min() && l2 < 3.0e38f)
+        return v * (1.0f / std::sqrt(l2));
+    if (!(l2 >= 0.0f)) return fallback;  // NaN
+    const float ax = std::fabs(v.x), ay = std::fabs(v.y), az = std::fabs(v.z);
+    const float m = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
+    if (!(m > 0.0f) || !(m <= std::numeric_limits<float>::max())) return fallback;
+    v = v / m;  // largest component +-1: the squared length lies in [1, 3]
+    return v * (1.0f / std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z));
 }
 
 // M·(p, 1) without the divide (inline: three of these per triangle).
