@@ -3,7 +3,8 @@
 // (positions with NaN/inf/huge values, optional normals/uvs/colours, any indices).
 // Contract: a non-ok Status, or a draw in which every fragment handed to the shader lies in
 // the band and the frame, has depth in [0, 1], finite positions and, for a mesh whose
-// normals, uvs and colours are finite, finite interpolants and normals of unit length;
+// normals are finite and not 0 and whose uvs and colours lie within +-1e30 (the bound
+// rasterizer.hpp states), finite interpolants and normals of unit length;
 // afterwards every depth is +inf or in [0, 1]; the pixels of the buffers' padding (stride
 // beyond width, rows beyond the band) are untouched.
 #include <cmath>
@@ -26,7 +27,7 @@ Vec3 vec3(fuzz::Input& in) { return {value(in), value(in), value(in)}; }
 
 struct Check {
     int y0, rows, frame_w, frame_h;
-    bool attributes_finite;  // normals, uvs, colours of the mesh all finite (and normals not 0)
+    bool attributes_finite;  // normals finite and not 0, uvs and colours within +-1e30
 };
 
 bool finite3(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
@@ -118,10 +119,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     mesh.vertex_count = nv;
     mesh.indices = indices.empty() ? nullptr : indices.data();
     mesh.triangle_count = int(indices.size() / 3);
+    // draw_mesh's promise (rasterizer.hpp): finite interpolants for uvs and colours within
+    // +-1e30 (finding_raster_colour_overflow: colours of +-3e38 overflow q - p).
+    auto bounded = [](float v) { return std::fabs(v) <= 1e30f; };
     bool attributes_finite = true;
     for (const Vec3& n : normals) attributes_finite = attributes_finite && finite3(n) && length(n) > 1e-3f;
-    for (const Vec2& t : uvs) attributes_finite = attributes_finite && std::isfinite(t.x) && std::isfinite(t.y);
-    for (const Vec3& c : colors) attributes_finite = attributes_finite && finite3(c);
+    for (const Vec2& t : uvs) attributes_finite = attributes_finite && bounded(t.x) && bounded(t.y);
+    for (const Vec3& c : colors)
+        attributes_finite = attributes_finite && bounded(c.x) && bounded(c.y) && bounded(c.z);
     Check check{y0, rows, w, h, attributes_finite};
     RasterStats stats;
     Status s = draw_mesh(camera, band, mesh, opt, shader, &check, &stats);

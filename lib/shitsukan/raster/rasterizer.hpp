@@ -121,7 +121,10 @@ Status validate_model(const Mat4& model, Mat4* normal_matrix);
 // torus) can shade a pixel once per front-facing layer that arrives nearer).
 // Returns invalid_argument for a camera that fails validate_camera, a band whose buffers
 // disagree in size, a mesh with out-of-range indices, etc. Degenerate triangles (zero area,
-// NaN/inf) are skipped and counted, not an error.
+// NaN/inf) are skipped and counted, not an error. Normals are normalised (any finite non-zero
+// length); uvs and colours are interpolated as given (NaN in, NaN out) and stay finite for
+// values within +-1e30 (chosen here: the interpolation works from the differences q - p,
+// which overflow for values near the float maximum, 3.4e38).
 Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
                  const DrawOptions& options, FragmentShader shader, void* user,
                  RasterStats* stats = nullptr);
