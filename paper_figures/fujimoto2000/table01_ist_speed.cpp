@@ -34,13 +34,95 @@ double seconds_for(F&& body) {
 
 volatile double g_sink = 0.0;
 
+const int kNs[3] = {3, 5, 7};
+const int kBaseIntervals = 5;
+
+int coordinates_of(const FigureContext& ctx) { return ctx.quick() ? 20000 : 1000000; }
+int chunk_of(const FigureContext& ctx) {
+    return ctx.quick() ? 1000 : 5000;  // a few ms: often inside one time slice
+}
+
+// One part of the table: the six rows of N = kNs[ni] (K = 1..6), kept as the rows' Markdown
+// and the "ratio at K = 1 -> ratio at K = 6" text for the closing line.
+Status time_rows_of_n(FigureContext& ctx, int ni) {
+    const int coordinates = coordinates_of(ctx), chunk = chunk_of(ctx);
+    const int base_intervals = kBaseIntervals;
+    Pcg32 rng(2000u, 1u);
+    std::vector<float> u(static_cast<std::size_t>(coordinates));
+    for (float& x : u) x = rng.uniform();
+
+    std::string md;
+    double ratio_k1 = 0.0, ratio_k6 = 0.0;
+    const int n = kNs[ni];
+    for (int k = 1; k <= 6; ++k) {
+        IstAxis axis;
+        SHITSUKAN_TRY(ist_fully_connected_axis(n, k, base_intervals, IstEnds::cyclic, &axis));
+        IstOriginal original;
+        original.base_intervals = base_intervals;
+        original.crossing_all = (n - 1) / 2;
+        original.iterations = k;
+        original.ends = IstEnds::cyclic;
+        SHITSUKAN_TRY(ist_original_check(original));
+        // The coordinates are timed in chunks, the three methods in turn, so a disturbance
+        // of the shared machine falls on all three; the mean over all chunks is the
+        // paper's measure, the ratio of the fastest chunks is shown beside it.
+        double sum_p = 0.0, sum_q = 0.0, sum_f = 0.0;
+        double t_proc = 0.0, t_step = 0.0, t_form = 0.0;  // sums over the chunks: the mean
+        double b_form = 1e300, b_proc = 1e300;            // fastest chunk, scaled
+        for (int c0 = 0; c0 < coordinates; c0 += chunk) {
+            const int c1 = c0 + chunk < coordinates ? c0 + chunk : coordinates;
+            const double share = double(coordinates) / double(c1 - c0);
+            const double tp = seconds_for([&] {
+                for (int i = c0; i < c1; ++i)
+                    sum_p += ist_original_forward(original, double(u[std::size_t(i)]));
+            });
+            t_step += seconds_for([&] {
+                for (int i = c0; i < c1; ++i)
+                    sum_q += ist_procedure_forward(axis, double(u[std::size_t(i)]));
+            });
+            const double tf = seconds_for([&] {
+                for (int i = c0; i < c1; ++i)
+                    sum_f += double(ist_forward(axis, u[std::size_t(i)]));
+            });
+            t_proc += tp;
+            t_form += tf;
+            b_proc = std::fmin(b_proc, share * tp);
+            b_form = std::fmin(b_form, share * tf);
+        }
+        g_sink = g_sink + sum_p + sum_q + sum_f;
+        // The three must agree (the same transformation): a cheap guard on the timing run.
+        if (std::abs(sum_p - sum_q) > 1e-6 * coordinates ||
+            std::abs(sum_p - sum_f) > 1e-3 * coordinates)
+            return Status::error(StatusCode::degenerate,
+                                 "table01: procedure and formula disagree at N = %d, K = %d "
+                                 "(sums %.6f, %.6f, %.6f)",
+                                 n, k, sum_p, sum_q, sum_f);
+        const double us = 1e6 / double(coordinates);
+        const double p = t_proc * us, q = t_step * us, f = t_form * us;
+        md += fmt("| %d | %d | %.2f | %.2f | %.0f | %.3f | %.3f | %.4f | %.1f | %.1f | %.1f |\n",
+                  n, k, kPaper[ni][k - 1][0], kPaper[ni][k - 1][1],
+                  kPaper[ni][k - 1][0] / kPaper[ni][k - 1][1], p, q, f, p / f, q / f,
+                  b_proc / b_form);
+        if (k == 1) ratio_k1 = p / f;
+        if (k == 6) ratio_k6 = p / f;
+        ctx.progress("N = %d, K = %d: procedure %.3f us, div/in/ex %.3f us, formula %.4f us", n,
+                     k, p, q, f);
+    }
+    ctx.keep(md);
+    ctx.keep(fmt("%.1f -> %.1f", ratio_k1, ratio_k6));
+    return Status::success();
+}
+
 }  // namespace
 
-SHITSUKAN_FIGURE(table01_ist_speed, "fujimoto2000", "table01",
-                 "Time per coordinate: IST procedure vs. scale reverse formula (Table 1)") {
-    const int coordinates = ctx.quick() ? 20000 : 1000000;
-    const int base_intervals = 5;
-    const int chunk = ctx.quick() ? 1000 : 5000;  // a few ms: often inside one time slice
+// The three values of N are timed as three parts (jobs of their own with --jobs), each on the
+// same coordinates, and assembled in the order N = 3, 5, 7.
+SHITSUKAN_FIGURE_PARTS(table01_ist_speed, "fujimoto2000", "table01",
+                       "Time per coordinate: IST procedure vs. scale reverse formula (Table 1)",
+                       3) {
+    if (ctx.in_part()) return time_rows_of_n(ctx, ctx.part());
+    const int coordinates = coordinates_of(ctx), chunk = chunk_of(ctx);
+    const int base_intervals = kBaseIntervals;
     ctx.given("N", "3, 5, 7", "Table 1");
     ctx.given("K", "1 .. 6", "Table 1");
     ctx.given("coordinates", ctx.quick() ? "20000 (--quick; paper 10^6)" : "10^6 pseudo-random",
@@ -64,10 +146,6 @@ SHITSUKAN_FIGURE(table01_ist_speed, "fujimoto2000", "table01",
     ctx.chosen("formula", "ist_forward (float): eq. (9) split, eq. (12) on the digits, eq. (14)",
                "float is the library's scalar; the digit work is integer");
 
-    Pcg32 rng(2000u, 1u);
-    std::vector<float> u(static_cast<std::size_t>(coordinates));
-    for (float& x : u) x = rng.uniform();
-
     std::string md;
     md += "# fujimoto2000 Table 1 — time per coordinate (microseconds)\n\n";
     md += fmt(
@@ -82,73 +160,19 @@ SHITSUKAN_FIGURE(table01_ist_speed, "fujimoto2000", "table01",
         "| N | K | paper procedure | paper formula | paper ratio | procedure | div/in/ex | "
         "formula | ratio procedure/formula | ratio div/in/ex/formula | ratio, fastest chunks |\n";
     md += "|---|---|---|---|---|---|---|---|---|---|---|\n";
-    const int ns[3] = {3, 5, 7};
-    double ratio_k1[3] = {0, 0, 0}, ratio_k6[3] = {0, 0, 0};
     for (int ni = 0; ni < 3; ++ni) {
-        const int n = ns[ni];
-        for (int k = 1; k <= 6; ++k) {
-            IstAxis axis;
-            SHITSUKAN_TRY(ist_fully_connected_axis(n, k, base_intervals, IstEnds::cyclic, &axis));
-            IstOriginal original;
-            original.base_intervals = base_intervals;
-            original.crossing_all = (n - 1) / 2;
-            original.iterations = k;
-            original.ends = IstEnds::cyclic;
-            SHITSUKAN_TRY(ist_original_check(original));
-            // The coordinates are timed in chunks, the three methods in turn, so a disturbance
-            // of the shared machine falls on all three; the mean over all chunks is the
-            // paper's measure, the ratio of the fastest chunks is shown beside it.
-            double sum_p = 0.0, sum_q = 0.0, sum_f = 0.0;
-            double t_proc = 0.0, t_step = 0.0, t_form = 0.0;  // sums over the chunks: the mean
-            double b_form = 1e300, b_proc = 1e300;            // fastest chunk, scaled
-            for (int c0 = 0; c0 < coordinates; c0 += chunk) {
-                const int c1 = c0 + chunk < coordinates ? c0 + chunk : coordinates;
-                const double share = double(coordinates) / double(c1 - c0);
-                const double tp = seconds_for([&] {
-                    for (int i = c0; i < c1; ++i)
-                        sum_p += ist_original_forward(original, double(u[std::size_t(i)]));
-                });
-                t_step += seconds_for([&] {
-                    for (int i = c0; i < c1; ++i)
-                        sum_q += ist_procedure_forward(axis, double(u[std::size_t(i)]));
-                });
-                const double tf = seconds_for([&] {
-                    for (int i = c0; i < c1; ++i)
-                        sum_f += double(ist_forward(axis, u[std::size_t(i)]));
-                });
-                t_proc += tp;
-                t_form += tf;
-                b_proc = std::fmin(b_proc, share * tp);
-                b_form = std::fmin(b_form, share * tf);
-            }
-            g_sink = g_sink + sum_p + sum_q + sum_f;
-            // The three must agree (the same transformation): a cheap guard on the timing run.
-            if (std::abs(sum_p - sum_q) > 1e-6 * coordinates ||
-                std::abs(sum_p - sum_f) > 1e-3 * coordinates)
-                return Status::error(StatusCode::degenerate,
-                                     "table01: procedure and formula disagree at N = %d, K = %d "
-                                     "(sums %.6f, %.6f, %.6f)",
-                                     n, k, sum_p, sum_q, sum_f);
-            const double us = 1e6 / double(coordinates);
-            const double p = t_proc * us, q = t_step * us, f = t_form * us;
-            md +=
-                fmt("| %d | %d | %.2f | %.2f | %.0f | %.3f | %.3f | %.4f | %.1f | %.1f | %.1f |\n",
-                    n, k, kPaper[ni][k - 1][0], kPaper[ni][k - 1][1],
-                    kPaper[ni][k - 1][0] / kPaper[ni][k - 1][1], p, q, f, p / f, q / f,
-                    b_proc / b_form);
-            if (k == 1) ratio_k1[ni] = p / f;
-            if (k == 6) ratio_k6[ni] = p / f;
-            ctx.progress("N = %d, K = %d: procedure %.3f us, div/in/ex %.3f us, formula %.4f us",
-                         n, k, p, q, f);
-        }
+        if (ctx.kept(ni).size() != 2)
+            return Status::error(StatusCode::degenerate, "table01: part N = %d kept no rows",
+                                 kNs[ni]);
+        md += ctx.kept(ni)[0];
     }
     md +=
         "\nShape to compare: in the paper the procedure grows linearly in K (about 110-146 us per "
         "iteration) and with N, while the formula grows slowly (1.55 -> 4.16 us) and not "
         "with N, so the ratio grows with K (74 -> 159 at N = 3).\n";
-    md += fmt("Measured here, procedure/formula from K = 1 to K = 6: N = 3 %.1f -> %.1f, "
-              "N = 5 %.1f -> %.1f, N = 7 %.1f -> %.1f.\n",
-              ratio_k1[0], ratio_k6[0], ratio_k1[1], ratio_k6[1], ratio_k1[2], ratio_k6[2]);
+    md += fmt("Measured here, procedure/formula from K = 1 to K = 6: N = 3 %s, "
+              "N = 5 %s, N = 7 %s.\n",
+              ctx.kept(0)[1].c_str(), ctx.kept(1)[1].c_str(), ctx.kept(2)[1].c_str());
     ctx.note("Timings vary with the load of the machine; compare the ratios and their growth "
              "with K rather than the absolute times.");
     return ctx.save_markdown(md);
