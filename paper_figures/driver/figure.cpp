@@ -61,8 +61,18 @@ std::vector<FigureSpec> registered_figures() {
     return list;
 }
 
-FigureContext::FigureContext(std::string out_dir, std::string paper, std::string id, bool quick)
-    : out_dir_(std::move(out_dir)), paper_(std::move(paper)), id_(std::move(id)), quick_(quick) {}
+FigureContext::FigureContext(std::string out_dir, std::string paper, std::string id, bool quick,
+                             bool full)
+    : out_dir_(std::move(out_dir)),
+      paper_(std::move(paper)),
+      id_(std::move(id)),
+      quick_(quick),
+      full_(full) {}
+
+const std::vector<std::string>& FigureContext::kept(int part) const {
+    static const std::vector<std::string> none;
+    return part >= 0 && std::size_t(part) < parts_.size() ? parts_[std::size_t(part)] : none;
+}
 
 void FigureContext::given(const std::string& name, const std::string& value,
                           const std::string& where) {
@@ -81,7 +91,11 @@ void FigureContext::progress(const char* format, ...) {
     va_start(args, format);
     std::string s = vformat(format, args);
     va_end(args);
-    std::printf("      %s/%s: %s\n", paper_.c_str(), id_.c_str(), s.c_str());
+    if (part_ >= 0)
+        std::printf("      %s/%s (part %d): %s\n", paper_.c_str(), id_.c_str(), part_ + 1,
+                    s.c_str());
+    else
+        std::printf("      %s/%s: %s\n", paper_.c_str(), id_.c_str(), s.c_str());
     std::fflush(stdout);
 }
 

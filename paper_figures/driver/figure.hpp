@@ -21,6 +21,12 @@
 // - Figures run in parallel (--jobs N): a figure's own state is local; anything shared
 //   between figures (a memoised simulation, a lattice) is built once under a lock, and a
 //   figure that needs another's results registers with SHITSUKAN_FIGURE_AFTER(..., "fig21").
+// - A long figure made of independent pieces (a table timed row block by row block) registers
+//   with SHITSUKAN_FIGURE_PARTS(..., parts): the driver runs it `parts` times as separate jobs
+//   (ctx.in_part(), ctx.part() = 0 .. parts - 1; each hands its results on with ctx.keep(text))
+//   and then once more to assemble (ctx.in_part() false, ctx.kept(p) = what part p kept), so
+//   the output is the same whatever --jobs is. Parameters, notes and files belong to the
+//   assembling call.
 // Every figure's parameters appear in paper_figures/out/index.md as a table with a
 // "given / chosen" column (docs/DESIGN.md: given vs. chosen).
 #pragma once
@@ -42,9 +48,12 @@ struct Parameter {
 
 class FigureContext {
 public:
-    FigureContext(std::string out_dir, std::string paper, std::string id, bool quick);
+    FigureContext(std::string out_dir, std::string paper, std::string id, bool quick,
+                  bool full = false);
 
     bool quick() const { return quick_; }
+    bool full() const { return full_; }  // --full: the paper's own counts where a figure
+                                         // chose fewer for the default run (said in its notes)
     const std::string& paper() const { return paper_; }
     const std::string& id() const { return id_; }
 
@@ -62,13 +71,28 @@ public:
     Status save_markdown(const std::string& markdown);
     Status save_text(const std::string& suffix, const std::string& text);
 
+    // SHITSUKAN_FIGURE_PARTS: which part this job is (-1: the assembling call), what it keeps
+    // for the assembling call, and there what part p kept (in the order it kept it).
+    bool in_part() const { return part_ >= 0; }
+    int part() const { return part_; }
+    void keep(std::string text) { kept_.push_back(std::move(text)); }
+    const std::vector<std::string>& kept(int part) const;
+
+    // For the driver.
+    void set_part(int part) { part_ = part; }
+    void set_kept_parts(std::vector<std::vector<std::string>> parts) { parts_ = std::move(parts); }
+    std::vector<std::string> take_kept() { return std::move(kept_); }
+
     const std::vector<Parameter>& parameters() const { return parameters_; }
     const std::vector<std::string>& notes() const { return notes_; }
     const std::vector<std::string>& outputs() const { return outputs_; }
 
 private:
     std::string out_dir_, paper_, id_;
-    bool quick_;
+    bool quick_, full_;
+    int part_ = -1;
+    std::vector<std::string> kept_;                // a part job's results
+    std::vector<std::vector<std::string>> parts_;  // the assembling call's: kept per part
     std::vector<Parameter> parameters_;
     std::vector<std::string> notes_;
     std::vector<std::string> outputs_;  // file names relative to <out>/<paper>/
@@ -85,6 +109,8 @@ struct FigureSpec {
     // recorded (a table of a figure's stage times) names their id prefix here and starts only
     // after every figure of its paper whose id starts with it has finished.
     const char* after = nullptr;
+    // SHITSUKAN_FIGURE_PARTS: the number of independent part jobs before the assembling call.
+    int parts = 1;
 };
 
 bool register_figure(const FigureSpec& spec);
@@ -108,4 +134,10 @@ std::string fmt(const char* format, ...);
     static ::shitsukan::Status name(::shitsukan::figures::FigureContext& ctx);         \
     static const bool name##_registered_ =                                              \
         ::shitsukan::figures::register_figure({paper, id, caption, &name, after});      \
+    static ::shitsukan::Status name([[maybe_unused]] ::shitsukan::figures::FigureContext& ctx)
+
+#define SHITSUKAN_FIGURE_PARTS(name, paper, id, caption, parts)                         \
+    static ::shitsukan::Status name(::shitsukan::figures::FigureContext& ctx);         \
+    static const bool name##_registered_ = ::shitsukan::figures::register_figure(      \
+        {paper, id, caption, &name, nullptr, parts});                                   \
     static ::shitsukan::Status name([[maybe_unused]] ::shitsukan::figures::FigureContext& ctx)

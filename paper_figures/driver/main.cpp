@@ -1,7 +1,7 @@
 // build/paper_figures — runs the registered paper figures and writes an index.
 //
-//   build/paper_figures [--list] [--only <paper>/<id> | --only <paper>] [--out DIR] [--quick]
-//                       [--jobs N]
+//   build/paper_figures [--list] [--only <paper>/<id> | --only <paper>] [--out DIR]
+//                       [--quick | --full] [--jobs N]
 //
 // Writes DIR/<paper>/<id>.png (or .md for tables) and DIR/index.md (image, caption,
 // parameter table marking each value given/chosen, wall time). Default DIR:
@@ -10,8 +10,12 @@
 // --jobs N renders N figures at once on N threads (default: the number of cores). The files
 // are the same bytes whatever N is, and so is the index (in registry order) apart from the
 // measured times; the longest figures start first (kLongFirst below), and a figure registered
-// with SHITSUKAN_FIGURE_AFTER waits for the figures it reads. The last line gives the total
-// wall time and the process's CPU time (user + sys).
+// with SHITSUKAN_FIGURE_AFTER waits for the figures it reads, and one registered with
+// SHITSUKAN_FIGURE_PARTS runs as independent part jobs (on any thread) and an assembling job.
+// The last line gives the total wall time and the process's CPU time (user + sys).
+//
+// --quick: the CI smoke run (small sizes). --full: the paper's own counts where a figure
+// chose fewer for the default run (the figure's parameters and notes say which and why).
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <time.h>
@@ -66,15 +70,16 @@ struct Result {
 };
 
 // The long poles of a full run, longest first (measured: per-figure CPU seconds printed by
-// this driver). They start before everything else so that no long figure is left alone at
-// the end; the others follow in registry order.
+// this driver, median of full runs with --jobs 2). They start before everything else so that
+// no long figure is left alone at the end; the others follow in registry order.
 const char* const kLongFirst[] = {
-    "fujimoto2000/table01", "fujimoto2000/fig22",   "fujimoto2000/fig23",
-    "hirota1998/fig06",     "hirota1998/fig05",     "fujimoto2000/fig21f",
-    "fujimoto2000/fig18b5", "fujimoto2000/fig18b4", "fujimoto2000/fig21g",
-    "fujimoto2000/fig21d",  "fujimoto2000/fig21e",  "hirota1998/fig04",
-    "fujimoto2000/fig18a5", "fujimoto2000/fig18a4", "okada1987/table01",
-    "okada1989/table-types"};
+    "fujimoto2000/fig22",   "hirota1998/fig05",     "fujimoto2000/fig23",
+    "hirota1998/fig06",     "okada1989/table-types", "fujimoto2000/table01",
+    "fujimoto2000/fig21f",  "okada1987/table01",    "fujimoto2000/fig18b5",
+    "tokai1994/fig18",      "fujimoto2000/fig18b4", "tokai1994/fig15c",
+    "tokai1994/fig14c",     "fujimoto2000/fig21d",  "fujimoto2000/fig18a5",
+    "fujimoto2000/fig18a4", "fujimoto2000/fig21g",  "tokai1994/fig13c",
+    "fujimoto2000/fig21e",  "hirota1998/fig04",     "tokai1994/fig19"};
 
 std::string key_of(const FigureSpec& s) { return std::string(s.paper) + "/" + s.id; }
 
@@ -106,16 +111,27 @@ double process_cpu_seconds() {
 }
 
 // Runs the figures on `jobs` threads. A figure waits until every figure of its paper whose
-// id starts with its `after` prefix is done.
+// id starts with its `after` prefix is done. A figure registered with parts runs as that many
+// part jobs, then an assembling job once they are all done; its time is the sum of its jobs.
 class Scheduler {
 public:
-    Scheduler(const std::vector<FigureSpec>& figures, std::string out, bool quick)
+    Scheduler(const std::vector<FigureSpec>& figures, std::string out, bool quick, bool full)
         : figures_(figures),
           out_(std::move(out)),
           quick_(quick),
-          state_(figures.size(), State::pending),
-          order_(schedule_order(figures)),
-          results_(figures.size()) {}
+          full_(full),
+          done_(figures.size(), false),
+          kept_(figures.size()),
+          cost_(figures.size()),
+          results_(figures.size()) {
+        for (std::size_t i : schedule_order(figures)) {
+            const int parts = figures[i].parts > 1 ? figures[i].parts : 0;
+            kept_[i].resize(std::size_t(parts));
+            for (int p = 0; p < parts; ++p) jobs_.push_back({i, p});
+            jobs_.push_back({i, -1});
+        }
+        state_.assign(jobs_.size(), State::pending);
+    }
 
     std::vector<Result> run(int jobs) {
         std::vector<std::thread> threads;
@@ -127,73 +143,118 @@ public:
 
 private:
     enum class State { pending, running, done };
+    struct Job {
+        std::size_t figure;
+        int part;  // 0 .. parts - 1, or -1: the whole figure (or its assembling call)
+    };
+    struct Cost {
+        double seconds = 0.0, cpu = 0.0;
+        std::string error;  // of a failed part
+    };
 
-    bool ready(std::size_t i) const {
-        const FigureSpec& s = figures_[i];
+    bool ready(const Job& job, std::size_t index) const {
+        const FigureSpec& s = figures_[job.figure];
+        if (job.part < 0)  // the assembling call follows the figure's parts (listed before it)
+            for (std::size_t k = index; k-- > 0 && jobs_[k].figure == job.figure;)
+                if (state_[k] != State::done) return false;
         if (!s.after) return true;
         const std::size_t n = std::strlen(s.after);
         for (std::size_t j = 0; j < figures_.size(); ++j)
-            if (j != i && std::strcmp(figures_[j].paper, s.paper) == 0 &&
-                std::strncmp(figures_[j].id, s.after, n) == 0 && state_[j] != State::done)
+            if (j != job.figure && std::strcmp(figures_[j].paper, s.paper) == 0 &&
+                std::strncmp(figures_[j].id, s.after, n) == 0 && !done_[j])
                 return false;
         return true;
     }
 
-    // The next figure to run, or figures.size() when none is left.
+    std::string job_name(const Job& job) const {
+        const FigureSpec& s = figures_[job.figure];
+        std::string name = std::string(s.paper) + "/" + s.id;
+        if (job.part >= 0) name += fmt(" part %d/%d", job.part + 1, s.parts);
+        return name;
+    }
+
+    // The next job to run, or jobs_.size() when none is left.
     std::size_t next() {
         std::unique_lock<std::mutex> lock(mutex_);
         for (;;) {
             bool pending = false;
-            for (std::size_t i : order_) {
-                if (state_[i] != State::pending) continue;
+            for (std::size_t k = 0; k < jobs_.size(); ++k) {
+                if (state_[k] != State::pending) continue;
                 pending = true;
-                if (ready(i)) {
-                    state_[i] = State::running;
+                if (ready(jobs_[k], k)) {
+                    state_[k] = State::running;
                     ++started_;
-                    std::printf("[%zu/%zu] %s/%s ...\n", started_, figures_.size(),
-                                figures_[i].paper, figures_[i].id);
+                    std::printf("[%zu/%zu] %s ...\n", started_, jobs_.size(),
+                                job_name(jobs_[k]).c_str());
                     std::fflush(stdout);
-                    return i;
+                    return k;
                 }
             }
-            if (!pending) return figures_.size();
+            if (!pending) return jobs_.size();
             changed_.wait(lock);
         }
     }
 
-    void work() {
-        for (std::size_t i = next(); i < figures_.size(); i = next()) {
-            const FigureSpec& s = figures_[i];
-            FigureContext ctx(out_, s.paper, s.id, quick_);
-            const double c0 = thread_cpu_seconds();
-            auto t0 = std::chrono::steady_clock::now();
-            Status st = s.run(ctx);
-            const double secs =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            const double cpu = thread_cpu_seconds() - c0;
-            if (st.ok() && ctx.outputs().empty())
-                st = Status::error(StatusCode::io_error, "figure wrote no output");
+    // Runs one job; its kept results go to kept_ (a part) or the figure's result is made.
+    void run_job(std::size_t k) {
+        const Job job = jobs_[k];
+        const FigureSpec& s = figures_[job.figure];
+        FigureContext ctx(out_, s.paper, s.id, quick_, full_);
+        ctx.set_part(job.part);
+        std::string failed_part;
+        if (job.part < 0 && s.parts > 1) {
             std::lock_guard<std::mutex> lock(mutex_);
-            ++finished_;
-            if (st.ok())
-                std::printf("[%zu/%zu] %s/%s ... %.2f s (CPU %.2f s)\n", finished_, figures_.size(),
-                            s.paper, s.id, secs, cpu);
-            else
-                std::printf("[%zu/%zu] %s/%s ... FAILED (%s)\n", finished_, figures_.size(),
-                            s.paper, s.id, st.message());
-            std::fflush(stdout);
-            results_[i] = {s,           st.ok(),      st.message(), secs, ctx.parameters(),
-                           ctx.notes(), ctx.outputs()};
-            state_[i] = State::done;
-            changed_.notify_all();
+            ctx.set_kept_parts(std::move(kept_[job.figure]));
+            failed_part = cost_[job.figure].error;
         }
+        const double c0 = thread_cpu_seconds();
+        auto t0 = std::chrono::steady_clock::now();
+        Status st = failed_part.empty() ? s.run(ctx)
+                                        : Status::error(StatusCode::io_error, "%s",
+                                                        failed_part.c_str());
+        const double secs =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const double cpu = thread_cpu_seconds() - c0;
+        if (st.ok() && job.part < 0 && ctx.outputs().empty())
+            st = Status::error(StatusCode::io_error, "figure wrote no output");
+        std::lock_guard<std::mutex> lock(mutex_);
+        Cost& cost = cost_[job.figure];
+        cost.seconds += secs;
+        cost.cpu += cpu;
+        ++finished_;
+        if (st.ok())
+            std::printf("[%zu/%zu] %s ... %.2f s (CPU %.2f s)\n", finished_, jobs_.size(),
+                        job_name(job).c_str(), job.part < 0 ? cost.seconds : secs,
+                        job.part < 0 ? cost.cpu : cpu);
+        else
+            std::printf("[%zu/%zu] %s ... FAILED (%s)\n", finished_, jobs_.size(),
+                        job_name(job).c_str(), st.message());
+        std::fflush(stdout);
+        if (job.part >= 0) {
+            kept_[job.figure][std::size_t(job.part)] = ctx.take_kept();
+            if (!st.ok() && cost.error.empty())
+                cost.error = fmt("part %d: %s", job.part + 1, st.message());
+        } else {
+            results_[job.figure] = {s,           st.ok(),      st.message(), cost.seconds,
+                                    ctx.parameters(), ctx.notes(), ctx.outputs()};
+            done_[job.figure] = true;
+        }
+        state_[k] = State::done;
+        changed_.notify_all();
+    }
+
+    void work() {
+        for (std::size_t k = next(); k < jobs_.size(); k = next()) run_job(k);
     }
 
     const std::vector<FigureSpec>& figures_;
     std::string out_;
-    bool quick_;
-    std::vector<State> state_;
-    std::vector<std::size_t> order_;
+    bool quick_, full_;
+    std::vector<bool> done_;  // per figure
+    std::vector<std::vector<std::vector<std::string>>> kept_;  // per figure, per part
+    std::vector<Cost> cost_;                                   // per figure
+    std::vector<Job> jobs_;                                    // in the order they start
+    std::vector<State> state_;                                 // per job
     std::vector<Result> results_;
     std::size_t started_ = 0, finished_ = 0;
     std::mutex mutex_;
@@ -245,7 +306,7 @@ bool write_index(const std::string& out, const std::vector<Result>& results, boo
 
 void usage() {
     std::fprintf(stderr,
-                 "usage: paper_figures [--list] [--only <paper>[/<id>]]... [--out DIR] [--quick] "
+                 "usage: paper_figures [--list] [--only <paper>[/<id>]]... [--out DIR] [--quick | --full] "
                  "[--jobs N]\n");
 }
 
@@ -254,7 +315,7 @@ void usage() {
 int main(int argc, char** argv) {
     std::string out = "paper_figures/out";
     std::vector<std::string> only;
-    bool list = false, quick = false;
+    bool list = false, quick = false, full = false;
     int jobs = int(std::thread::hardware_concurrency());
     if (jobs < 1) jobs = 1;
     for (int i = 1; i < argc; ++i) {
@@ -263,6 +324,8 @@ int main(int argc, char** argv) {
             list = true;
         else if (a == "--quick")
             quick = true;
+        else if (a == "--full")
+            full = true;
         else if (a == "--out" && i + 1 < argc)
             out = argv[++i];
         else if (a == "--jobs" && i + 1 < argc) {
@@ -291,6 +354,10 @@ int main(int argc, char** argv) {
             if (o == key || o == s.paper) take = true;
         if (take) figures.push_back(s);
     }
+    if (quick && full) {
+        std::fprintf(stderr, "paper_figures: --quick and --full exclude each other\n");
+        return 2;
+    }
     if (!only.empty() && figures.empty()) {
         std::fprintf(stderr, "paper_figures: no figure matches --only (try --list)\n");
         return 2;
@@ -303,8 +370,10 @@ int main(int argc, char** argv) {
     auto start_all = std::chrono::steady_clock::now();
     const double cpu_start = process_cpu_seconds();
     for (const FigureSpec& s : figures) make_dir(out + "/" + s.paper);
-    if (jobs > int(figures.size())) jobs = int(figures.size()) > 0 ? int(figures.size()) : 1;
-    const std::vector<Result> results = Scheduler(figures, out, quick).run(jobs);
+    int job_count = 0;  // a figure with parts is that many jobs (and a short assembling one)
+    for (const FigureSpec& s : figures) job_count += s.parts > 1 ? s.parts : 1;
+    if (jobs > job_count) jobs = job_count > 0 ? job_count : 1;
+    const std::vector<Result> results = Scheduler(figures, out, quick, full).run(jobs);
     for (const Result& r : results)
         if (!r.ok) ++failures;
     make_dir(out);
