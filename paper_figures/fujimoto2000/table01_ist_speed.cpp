@@ -88,7 +88,7 @@ SHITSUKAN_FIGURE(table01_ist_speed, "fujimoto2000", "table01",
         const int n = ns[ni];
         for (int k = 1; k <= 6; ++k) {
             IstAxis axis;
-            SHITSUKAN_TRY(ist_fully_connected_axis(n, k, base_intervals, IstEnds::cyclic, &axis));
+            SHITSUKAN_TRY(ist_fully_connected_axis(n, k, base_intervals, IstEnds::cyclic, axis));
             IstOriginal original;
             original.base_intervals = base_intervals;
             original.crossing_all = (n - 1) / 2;

@@ -186,8 +186,8 @@ void section_slice(const char* name, const SolidMaterial& m) {
 // ---- IST axes ----
 void section_ist() {
     IstAxis full, unit;
-    if (!check(ist_fully_connected_axis(5, 3, 5, IstEnds::cyclic, &full), "IST axis")) return;
-    if (!check(ist_unit_axis(3, 4, &unit), "IST unit axis")) return;
+    if (!check(ist_fully_connected_axis(5, 3, 5, IstEnds::cyclic, full), "IST axis")) return;
+    if (!check(ist_unit_axis(3, 4, unit), "IST unit axis")) return;
     const IstAxis* axes[2] = {&full, &unit};
     const char* names[2] = {"ist fully-connected N5 K3 B5", "ist unit N3 K4"};
     for (int a = 0; a < 2; ++a) {
