@@ -127,7 +127,7 @@ TypeIIILattice g_type3;  // static: 10.9 KB is no stack object on a microcontrol
 
 void section_lattice() {
     const FractalParams p = okada1987_lattice_params();
-    if (!check(build_fractal_lattice(p, g_lattice, sizeof g_lattice, &g_view), "Type I")) return;
+    if (!check(build_fractal_lattice(p, g_lattice, sizeof g_lattice, g_view), "Type I")) return;
     Fnv all;
     for (float v : g_lattice) all.f(v);
     put("lattice type1 65^3 fnv ");
@@ -339,7 +339,7 @@ void section_status() {
     p.beta = -0.25f;
     float tiny[8];
     LatticeView v;
-    const Status refused = build_fractal_lattice(p, tiny, sizeof tiny, &v);
+    const Status refused = build_fractal_lattice(p, tiny, sizeof tiny, v);
     put("status ");
     put(refused.ok() ? "ok (expected a refusal)" : refused.message());
     put("\n");
