@@ -7,7 +7,8 @@
 #   make check-api        headers compile alone, umbrella header complete, only shitsukan
 #                         symbols exported, a program with its own stb links, PNGs without
 #                         the stb header, dropped Status is a compile error under -Werror,
-#                         README's module map matches the tree
+#                         README's module map matches the tree, required outputs are
+#                         references (tools/check_output_params.py)
 #   make check-manuals    every header's manual example compiles (and runs, unless compile-only)
 #   make check-lengths    no function in lib/ over 100 lines (tools/function_lengths.py)
 #   make test-consumers   installs cmake/pkg-config if missing; builds tests/consumer four ways
@@ -319,6 +320,8 @@ check-api: deps
 	@echo "check-api: a dropped Status does not compile under -Werror (nodiscard)"
 	@# 6. README.md's module map lists what the tree holds, and nothing else
 	@python3 tools/check_module_map.py
+	@# 7. required outputs are references, not pointers every function null-checks (issue 16)
+	@python3 tools/check_output_params.py
 
 # Every header's manual example (the lines under "// Manual") compiled into a program of its
 # own against the library and, unless tagged "// Manual (compile-only)", run

@@ -99,11 +99,11 @@ int run_bark(int argc, char** argv) {
     CrackRunOptions opt;
     opt.progress = bark_progress;
     opt.progress_user = &progress;
-    s = build_cylinder(p, &bark);
-    if (s) s = grow_and_crack(bark, opt, &run);
+    s = build_cylinder(p, bark);
+    if (s) s = grow_and_crack(bark, opt, run);
     const float T = p.T;
     const Vec3* W = bark.net.W.data();
-    if (s) s = measure_regions(bark, T, W, &rep);
+    if (s) s = measure_regions(bark, T, W, rep);
     if (!s) return f.fail_status(s);
     RgbImage map;
     if (!(s = draw_cracks(bark, T, W, px_per_cm, &map))) return f.fail_status(s);
@@ -112,7 +112,7 @@ int run_bark(int argc, char** argv) {
         return f.fail_status(s);
     if (csv && !(s = write_bark_csv(bark, T, W, out.c_str()))) return f.fail_status(s);
     TriangleMesh trunk;
-    if (!(s = make_trunk_mesh(bark, T, W, &trunk))) return f.fail_status(s);
+    if (!(s = make_trunk_mesh(bark, T, W, trunk))) return f.fail_status(s);
     if (!(s = write_obj((out + "_trunk.obj").c_str(), trunk))) return f.fail_status(s);
     std::fprintf(stderr,
                  "shitsukan bark: %s, %d breaks, %zu regions of mean %.2f x %.2f cm (width x "

@@ -32,13 +32,13 @@ int run_ist(int argc, char** argv) {
     IstAxis axis;
     Status s;
     if (kind == 0) {
-        s = ist_unit_axis(N, K, &axis);
+        s = ist_unit_axis(N, K, axis);
     } else if (kind == 1) {
-        s = ist_fully_connected_axis(N, K, bases, e, &axis);
+        s = ist_fully_connected_axis(N, K, bases, e, axis);
     } else {
         IstShuffle shuffle;
-        s = ist_shuffle_named(kinds[kind], N, &shuffle);
-        if (s) s = ist_connected_axis(shuffle, K, bases, e, &axis);
+        s = ist_shuffle_named(kinds[kind], N, shuffle);
+        if (s) s = ist_connected_axis(shuffle, K, bases, e, axis);
     }
     if (!s) return f.fail_status(s);
     IstTableOptions o;

@@ -27,7 +27,7 @@ bool ends_with(const std::string& s, const char* tail) {
 Status read_heights(const std::string& path, std::vector<float>* h, int* w, int* rows) {
     if (ends_with(path, ".pfm") || ends_with(path, ".PFM")) {
         PfmImage pfm;
-        SHITSUKAN_TRY(read_pfm(path.c_str(), &pfm));
+        SHITSUKAN_TRY(read_pfm(path.c_str(), pfm));
         *w = pfm.width, *rows = pfm.height;
         h->resize(std::size_t(pfm.width) * std::size_t(pfm.height));
         for (std::size_t i = 0; i < h->size(); ++i)
@@ -35,7 +35,7 @@ Status read_heights(const std::string& path, std::vector<float>* h, int* w, int*
         return Status::success();
     }
     LoadedImage img;
-    SHITSUKAN_TRY(read_image(path.c_str(), &img));
+    SHITSUKAN_TRY(read_image(path.c_str(), img));
     *w = img.width, *rows = img.height;
     const float scale = img.bits == 16 ? 1.0f / 65535.0f : 1.0f / 255.0f;
     h->resize(std::size_t(img.width) * std::size_t(img.height));

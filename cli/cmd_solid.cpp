@@ -172,7 +172,7 @@ int run_solid(int argc, char** argv, bool wood) {
         const ObjectToLattice mapping = object_to_lattice_mapping(R);
         if (!mesh.uvs.empty()) {
             RgbImage texture;
-            s = bake_solid_texture(mesh.view(), lattice, material, mapping, size, size, &texture,
+            s = bake_solid_texture(mesh.view(), lattice, material, mapping, size, size, texture,
                                    Rgb8{0, 0, 0}, 4, f.progress("baking onto the uv map"));
             if (s) s = write_png(out.c_str(), texture.view());
             if (!s) return f.fail_status(s);
@@ -188,7 +188,7 @@ int run_solid(int argc, char** argv, bool wood) {
             const Camera cam = perspective_camera({1.9f, 2.4f, 4.2f}, {0, 0, 0}, {0, 1, 0}, 30.0f,
                                                   size, size);
             RgbImage picture;
-            s = render_solid_texture(cam, mesh.view(), lattice, material, &picture, shading);
+            s = render_solid_texture(cam, mesh.view(), lattice, material, picture, shading);
             if (s) s = write_png(view.c_str(), picture.view());
             if (!s) return f.fail_status(s);
             std::fprintf(stderr, "shitsukan %s: wrote %s (%d triangles)\n", f.command(),
@@ -210,7 +210,7 @@ int run_solid(int argc, char** argv, bool wood) {
     }
     RgbImage image;
     FloatImage density;
-    s = render_solid_slice(lattice, material, slice, size, size, &image,
+    s = render_solid_slice(lattice, material, slice, size, size, image,
                            pfm.empty() ? nullptr : &density, f.progress("slice"));
     if (s) s = write_png(out.c_str(), image.view());
     if (s && !pfm.empty()) s = write_pfm(pfm.c_str(), density.data(), size, size, 1);

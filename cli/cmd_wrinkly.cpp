@@ -140,13 +140,13 @@ int run_wrinkly(int argc, char** argv) {
     Progress progress = f.progress("surface");
     progress.report(0.0f);
     WrSurface surface;
-    s = make_wr_surface(mesh, SurfaceBasis(basis), degree, &surface);
+    s = make_wr_surface(mesh, SurfaceBasis(basis), degree, surface);
     IstAxis ist_u, ist_v;
     WrIstAxis axis_u, axis_v;
-    if (s) s = ist_fully_connected_axis(N, 1, surface.spans_u(), IstEnds::translation, &ist_u);
-    if (s) s = ist_fully_connected_axis(N, 1, surface.spans_v(), IstEnds::translation, &ist_v);
-    if (s) s = make_wr_ist_axis(ist_u, std::max(K, 1), &axis_u);
-    if (s) s = make_wr_ist_axis(ist_v, std::max(K, 1), &axis_v);
+    if (s) s = ist_fully_connected_axis(N, 1, surface.spans_u(), IstEnds::translation, ist_u);
+    if (s) s = ist_fully_connected_axis(N, 1, surface.spans_v(), IstEnds::translation, ist_v);
+    if (s) s = make_wr_ist_axis(ist_u, std::max(K, 1), axis_u);
+    if (s) s = make_wr_ist_axis(ist_v, std::max(K, 1), axis_v);
     if (s) s = surface.set_axes(axis_u.axis(), axis_v.axis());
     if (!s) return f.fail_status(s);
     progress.report(0.2f);
@@ -161,14 +161,14 @@ int run_wrinkly(int argc, char** argv) {
         HierarchicalOptions ho;
         ho.levels = K;
         ho.interpolation = SampleInterpolation(interpolation);
-        if (!(s = sample_hierarchy(surface, ho, &hs))) return f.fail_status(s);
+        if (!(s = sample_hierarchy(surface, ho, hs))) return f.fail_status(s);
         o.form = WrSurfaceForm::superposed;
     }
     progress.report(0.4f);
     ProgressPart tessellation{progress, 0.4f, 0.7f};  // the grid rows as they are sampled
     o.progress = Progress{report_part, &tessellation};
     WrMesh wm;
-    if (!(s = tessellate_wr_surface(surface, form == 0 ? nullptr : &hs, o, &wm)))
+    if (!(s = tessellate_wr_surface(surface, form == 0 ? nullptr : &hs, o, wm)))
         return f.fail_status(s);
     progress.report(0.7f);
     if (!(s = write_obj((out + ".obj").c_str(), wm.mesh))) return f.fail_status(s);

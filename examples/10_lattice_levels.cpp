@@ -29,7 +29,7 @@ int main() {
     for (int n = 1; n <= params.R; ++n) {
         LatticeView v;
         Status s =
-            build_fractal_lattice(params, values.data(), values.size() * sizeof(float), &v, n);
+            build_fractal_lattice(params, values.data(), values.size() * sizeof(float), v, n);
         if (!s) {
             std::fprintf(stderr, "%s\n", s.message());
             return 1;

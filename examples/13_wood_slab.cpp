@@ -24,7 +24,7 @@ int main() {
     s = validate_wood(wood);
     if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
     Vec3 u;
-    Status on_axis = wood_radial_direction(Vec3{26.0f, 30.0f, 5.0f}, wood, &u);
+    Status on_axis = wood_radial_direction(Vec3{26.0f, 30.0f, 5.0f}, wood, u);
     std::printf("on the axis: %s\n", on_axis.message());
     const Vec3 winter{128, 72, 34}, summer{226, 184, 128};  // I_max, I_min of eq. (12)
 

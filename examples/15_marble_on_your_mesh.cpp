@@ -23,11 +23,11 @@ int main() {
     const Camera camera =
         perspective_camera({1.6f, 2.5f, 2.8f}, {0, 0, 0}, {0, 1, 0}, 30.0f, 512, 512);
     RgbImage image;
-    s = render_solid_texture(camera, mesh.view(), lattice.view(), okada1987_marble(), &image);
+    s = render_solid_texture(camera, mesh.view(), lattice.view(), okada1987_marble(), image);
     if (s) s = write_png("15_marble_torus.png", image.view());
     if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
 
-    s = render_solid_texture(camera, mesh.view(), lattice.view(), okada1987_wood(), &image);
+    s = render_solid_texture(camera, mesh.view(), lattice.view(), okada1987_wood(), image);
     if (s) s = write_png("15_wood_torus.png", image.view());
     if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
     std::printf("wrote 15_marble_torus.png and 15_wood_torus.png (okada1987 presets)\n");

@@ -65,7 +65,7 @@ Status parse_table(const char* text, int n, IstShuffle* out) {
     if (count != n)
         return Status::error(StatusCode::invalid_argument,
                              "shuffle table has %d entries, N = %d needs one per group", count, n);
-    return ist_shuffle_from_table(n, offsets, slots, out);
+    return ist_shuffle_from_table(n, offsets, slots, *out);
 }
 
 }  // namespace
@@ -108,18 +108,18 @@ int main(int argc, char** argv) {
     IstAxis axis;
     Status s;
     if (std::strcmp(kind, "unit") == 0) {
-        s = ist_unit_axis(n, k, &axis);
+        s = ist_unit_axis(n, k, axis);
     } else if (std::strcmp(kind, "fully") == 0) {
-        s = ist_fully_connected_axis(n, k, bases, ends, &axis);
+        s = ist_fully_connected_axis(n, k, bases, ends, axis);
     } else {
         IstShuffle shuffle;
         if (std::strncmp(kind, "table:", 6) == 0) {
             s = (n >= 1 && n <= kIstMaxN) ? parse_table(kind + 6, n, &shuffle)
-                                          : ist_unit_axis(n, k, &axis);  // reports the bad N
+                                          : ist_unit_axis(n, k, axis);   // reports the bad N
         } else {
-            s = ist_shuffle_named(kind, n, &shuffle);
+            s = ist_shuffle_named(kind, n, shuffle);
         }
-        if (s) s = ist_connected_axis(shuffle, k, bases, ends, &axis);
+        if (s) s = ist_connected_axis(shuffle, k, bases, ends, axis);
     }
     IstTableOptions o;  // wrinkly/ist_table.hpp: the same table as `shitsukan ist`
     o.name = kind;

@@ -35,16 +35,16 @@ int main() {
             p.color = {1.0f - float(c) / 6.0f, 0.3f, float(c) / 6.0f};
         }
     WrSurface surface;
-    Status s = make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface);
+    Status s = make_wr_surface(mesh, SurfaceBasis::bspline, 3, surface);
     if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
 
     // 2. The IST on both axes: fully-connected, N = 3, one base interval per knot span, open
     //    ends ("translation axis"). WrIstAxis keeps F^k for k = 0..3.
     IstAxis ist;
-    s = ist_fully_connected_axis(3, 1, surface.spans_u(), IstEnds::translation, &ist);
+    s = ist_fully_connected_axis(3, 1, surface.spans_u(), IstEnds::translation, ist);
     if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
     WrIstAxis axis;
-    s = make_wr_ist_axis(ist, 3, &axis);
+    s = make_wr_ist_axis(ist, 3, axis);
     if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
     s = surface.set_axes(axis.axis(), axis.axis());  // spans_u == spans_v: one axis serves both
     if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
@@ -56,7 +56,7 @@ int main() {
     o.grid_level = 3;
     o.subdivisions = 2;
     WrMesh wm;
-    s = tessellate_wr_surface(surface, nullptr, o, &wm);
+    s = tessellate_wr_surface(surface, nullptr, o, wm);
     if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
     std::printf("%d triangles\n", wm.mesh.triangle_count());
 

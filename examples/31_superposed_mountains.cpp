@@ -34,11 +34,11 @@ int main() {
                 p.delta = delta;
             }
         WrSurface surface;
-        Status s = make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface);
+        Status s = make_wr_surface(mesh, SurfaceBasis::bspline, 3, surface);
         IstAxis ist;
-        if (s) s = ist_fully_connected_axis(3, 1, surface.spans_u(), IstEnds::translation, &ist);
+        if (s) s = ist_fully_connected_axis(3, 1, surface.spans_u(), IstEnds::translation, ist);
         WrIstAxis axis;
-        if (s) s = make_wr_ist_axis(ist, 4, &axis);
+        if (s) s = make_wr_ist_axis(ist, 4, axis);
         if (s) s = surface.set_axes(axis.axis(), axis.axis());
         if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
 
@@ -47,7 +47,7 @@ int main() {
         ho.levels = 4;
         ho.interpolation = SampleInterpolation::hermite;
         HierarchicalSampling hs;
-        s = sample_hierarchy(surface, ho, &hs);
+        s = sample_hierarchy(surface, ho, hs);
         if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
         std::printf("delta %.2f: weights", double(delta));
         for (int k = 0; k <= 4; ++k)
@@ -64,7 +64,7 @@ int main() {
         o.grid_level = 3;
         o.subdivisions = 2;
         WrMesh wm;
-        s = tessellate_wr_surface(surface, &hs, o, &wm);
+        s = tessellate_wr_surface(surface, &hs, o, wm);
         if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
         const int size = 400;
         Camera camera =

@@ -31,14 +31,14 @@ void formula(fuzz::Input& in) {
     IstAxis axis;
     Status s;
     if (kind == 0) {
-        s = ist_unit_axis(n, k, b, &axis);
+        s = ist_unit_axis(n, k, b, axis);
     } else if (kind == 1) {
-        s = ist_fully_connected_axis(n, k, b, ends, &axis);
+        s = ist_fully_connected_axis(n, k, b, ends, axis);
     } else if (kind == 2) {
         static const char* names[] = {"fully", "none", "fig6b", "fig7a", "fig7c", "bogus"};
         IstShuffle sh;
-        s = ist_shuffle_named(names[in.take<std::uint8_t>() % 6], n, &sh);
-        if (s) s = ist_connected_axis(sh, k, b, ends, &axis);
+        s = ist_shuffle_named(names[in.take<std::uint8_t>() % 6], n, sh);
+        if (s) s = ist_connected_axis(sh, k, b, ends, axis);
     } else {
         int offsets[kIstMaxN], slots[kIstMaxN];
         const int m = n < 1 ? 1 : (n > kIstMaxN ? kIstMaxN : n);
@@ -47,8 +47,8 @@ void formula(fuzz::Input& in) {
             slots[g] = int(in.take<std::uint8_t>() % (m + 1));
         }
         IstShuffle sh;
-        s = ist_shuffle_from_table(n, offsets, slots, &sh);
-        if (s) s = ist_connected_axis(sh, k, b, ends, &axis);
+        s = ist_shuffle_from_table(n, offsets, slots, sh);
+        if (s) s = ist_connected_axis(sh, k, b, ends, axis);
     }
     if (!s) return;
     FUZZ_REQUIRE(ist_validate(axis).ok());

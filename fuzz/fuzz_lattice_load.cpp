@@ -17,7 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::fwrite(data, 1, size, f);
     std::fclose(f);
     FractalLattice lat;
-    Status s = load_lattice(path, &lat, std::uint64_t(4) << 20);
+    Status s = load_lattice(path, lat, std::uint64_t(4) << 20);
     if (!s) return 0;
     const LatticeView v = lat.view();
     const long side = v.side;

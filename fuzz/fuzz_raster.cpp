@@ -70,9 +70,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const Vec3 eye = vec3(in), target = vec3(in), up = vec3(in);
         const float a = value(in), near_plane = value(in), far_plane = value(in);
         Status s = cam_mode == 0 ? make_perspective_camera(eye, target, up, a, w, h, near_plane,
-                                                           far_plane, &camera)
+                                                           far_plane, camera)
                                  : make_orthographic_camera(eye, target, up, a, w, h,
-                                                            near_plane, far_plane, &camera);
+                                                            near_plane, far_plane, camera);
         if (!s) return 0;
     }
     // A band of rows [y0, y0 + rows) of the frame, in buffers with padding around it.

@@ -47,16 +47,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // validate_control_mesh refuses coordinates beyond kMaxWrCoordinate (finding_nonfinite_mesh,
     // now in the corpus: 3.4e35 overflowed the derivative products).
     WrSurface surface;
-    if (!make_wr_surface(mesh, basis, degree, &surface).ok()) return 0;
+    if (!make_wr_surface(mesh, basis, degree, surface).ok()) return 0;
     if (in.take<std::uint8_t>() & 1) surface.set_displacement(DisplacementMode::direction);
     const int n = int(in.take<std::uint8_t>() % 8), k = int(in.take<std::uint8_t>() % 6);
     const IstEnds ends = (in.take<std::uint8_t>() & 1) ? IstEnds::translation : IstEnds::cyclic;
     IstAxis ist_u, ist_v;
     WrIstAxis axis_u, axis_v;
-    Status s = ist_fully_connected_axis(n, 1, surface.spans_u(), ends, &ist_u);
-    if (s) s = ist_fully_connected_axis(n, 1, surface.spans_v(), ends, &ist_v);
-    if (s) s = make_wr_ist_axis(ist_u, k, &axis_u);
-    if (s) s = make_wr_ist_axis(ist_v, k, &axis_v);
+    Status s = ist_fully_connected_axis(n, 1, surface.spans_u(), ends, ist_u);
+    if (s) s = ist_fully_connected_axis(n, 1, surface.spans_v(), ends, ist_v);
+    if (s) s = make_wr_ist_axis(ist_u, k, axis_u);
+    if (s) s = make_wr_ist_axis(ist_v, k, axis_v);
     if (s) s = surface.set_axes(axis_u.axis(), axis_v.axis());
     if (!s) return 0;
     WrTessellationOptions o;
@@ -85,7 +85,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                     std::pow(double(n < 1 ? 1 : n), ho.levels) +
                                 2;
         if (per_axis > 64) return 0;
-        if (!sample_hierarchy(surface, ho, &hs).ok()) return 0;
+        if (!sample_hierarchy(surface, ho, hs).ok()) return 0;
         sampling = &hs;
     }
     // Keep one input cheap: at most (B N^L s + 2)^2 vertices with B, N, L, s small.
@@ -111,7 +111,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const double points = double(degree + 1) * double(degree + 1);
     if (side * side * points * (12.0 + 8.0 * evaluations) > 2e6) return 0;
     WrMesh wm;
-    if (!tessellate_wr_surface(surface, sampling, o, &wm).ok()) return 0;
+    if (!tessellate_wr_surface(surface, sampling, o, wm).ok()) return 0;
     const TriangleMesh& m = wm.mesh;
     const std::size_t nv = m.positions.size();
     FUZZ_REQUIRE(nv == std::size_t(wm.grid_u) * std::size_t(wm.grid_v));

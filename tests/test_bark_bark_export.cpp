@@ -38,9 +38,9 @@ TEST_CASE("write_bark_csv: node positions, areas and spring values read back bit
     p.N_R = 16, p.N_H = 12;
     p.species = species_preset(Species::chinese_tallow);
     BarkCylinder bark;
-    REQUIRE(build_cylinder(p, &bark).ok());
+    REQUIRE(build_cylinder(p, bark).ok());
     CrackRun run;
-    REQUIRE(grow_and_crack(bark, CrackRunOptions{}, &run).ok());
+    REQUIRE(grow_and_crack(bark, CrackRunOptions{}, run).ok());
     const std::string prefix = "build/test_bark_csv_roundtrip";
     REQUIRE(write_bark_csv(bark, p.T, bark.net.W.data(), prefix.c_str()).ok());
     const auto nodes = read_csv(prefix + "_nodes.csv");

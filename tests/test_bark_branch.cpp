@@ -14,7 +14,7 @@ TEST_CASE("connection areas on the branch mesh sum to its area; every spring has
     BranchBarkParams p;
     p.edge_length = 0.6f;  // coarse: fast
     BranchBark b;
-    REQUIRE(build_branch_bark(p, &b).ok());
+    REQUIRE(build_branch_bark(p, b).ok());
     double total = 0, mesh_area = 0;
     for (float a : b.node_area) total += a;
     for (const ConnectionTriangle& t : b.triangles)
@@ -35,9 +35,9 @@ TEST_CASE("branch cracks: around the trunk where hoop growth dominates, denser o
     BranchBarkParams p;
     p.edge_length = 0.6f;
     BranchBark b;
-    REQUIRE(build_branch_bark(p, &b).ok());
+    REQUIRE(build_branch_bark(p, b).ok());
     CrackRun run;
-    REQUIRE(grow_branch_bark(b, CrackRunOptions{}, &run).ok());
+    REQUIRE(grow_branch_bark(b, CrackRunOptions{}, run).ok());
     REQUIRE(run.breaks.size() > 50);
     int trunk = 0, around = 0, branch = 0;
     double trunk_area = 0, branch_area = 0;
@@ -70,41 +70,41 @@ TEST_CASE("springs on a mesh refuse NaN, degenerate and non-manifold input") {
     m.add_triangle(0, 1, 2);
     std::vector<ConnectionTriangle> tris;
     std::vector<std::uint32_t> edges;
-    REQUIRE(mesh_springs(m, &tris, &edges).ok());
+    REQUIRE(mesh_springs(m, tris, edges).ok());
     CHECK(edges.size() == 6);
     // Three triangles on one edge: not a manifold.
     TriangleMesh fan = m;
     fan.add_vertex({1, 1, 1});
     fan.add_triangle(0, 1, 3), fan.add_triangle(0, 1, 4);
-    CHECK(mesh_springs(fan, &tris, &edges).code() == StatusCode::invalid_argument);
+    CHECK(mesh_springs(fan, tris, edges).code() == StatusCode::invalid_argument);
     TriangleMesh bad = m;
     bad.positions[1].x = std::nanf("");
-    CHECK(mesh_springs(bad, &tris, &edges).code() == StatusCode::invalid_argument);
+    CHECK(mesh_springs(bad, tris, edges).code() == StatusCode::invalid_argument);
     TriangleMesh repeated = m;
     repeated.add_triangle(0, 0, 2);
-    CHECK(mesh_springs(repeated, &tris, &edges).code() == StatusCode::invalid_argument);
+    CHECK(mesh_springs(repeated, tris, edges).code() == StatusCode::invalid_argument);
     // A flat (zero-area) triangle has no connection area.
     TriangleMesh flat;
     flat.add_vertex({0, 0, 0}), flat.add_vertex({1, 0, 0}), flat.add_vertex({2, 0, 0});
     flat.add_triangle(0, 1, 2);
-    REQUIRE(mesh_springs(flat, &tris, &edges).ok());
+    REQUIRE(mesh_springs(flat, tris, edges).ok());
     std::vector<float> area(3), face(3);
     CHECK(connection_areas(tris.data(), 1, 3, 3, area.data(), face.data()).code() ==
           StatusCode::degenerate);
     BranchBarkParams p;
     p.kappa = 1.0f;
     BranchBark b;
-    CHECK(build_branch_bark(p, &b).code() == StatusCode::invalid_argument);
+    CHECK(build_branch_bark(p, b).code() == StatusCode::invalid_argument);
     p = BranchBarkParams{};
     p.D = std::nanf("");
-    CHECK(build_branch_bark(p, &b).code() == StatusCode::invalid_argument);
+    CHECK(build_branch_bark(p, b).code() == StatusCode::invalid_argument);
 }
 
 TEST_CASE("the break sequence does not depend on how the mesh is numbered") {
     BranchBarkParams p;
     p.edge_length = 0.6f;
     BranchBark b;
-    REQUIRE(build_branch_bark(p, &b).ok());
+    REQUIRE(build_branch_bark(p, b).ok());
     // The same mesh with its vertices in reverse order.
     TriangleMesh r = b.mesh;
     const int n = r.vertex_count();
@@ -114,10 +114,10 @@ TEST_CASE("the break sequence does not depend on how the mesh is numbered") {
     }
     for (std::uint32_t& v : r.indices) v = std::uint32_t(n - 1) - v;
     BranchBark rb;
-    REQUIRE(build_bark_on_mesh(p, r, &rb).ok());
+    REQUIRE(build_bark_on_mesh(p, r, rb).ok());
     CrackRun ra, rr;
-    REQUIRE(grow_branch_bark(b, CrackRunOptions{}, &ra).ok());
-    REQUIRE(grow_branch_bark(rb, CrackRunOptions{}, &rr).ok());
+    REQUIRE(grow_branch_bark(b, CrackRunOptions{}, ra).ok());
+    REQUIRE(grow_branch_bark(rb, CrackRunOptions{}, rr).ok());
     REQUIRE(ra.breaks.size() == rr.breaks.size());
     bool same = true;
     for (std::size_t i = 0; i < ra.breaks.size(); ++i)
@@ -125,5 +125,5 @@ TEST_CASE("the break sequence does not depend on how the mesh is numbered") {
     CHECK(same);
     TriangleMesh no_normals = r;
     no_normals.normals.clear();
-    CHECK(build_bark_on_mesh(p, no_normals, &rb).code() == StatusCode::invalid_argument);
+    CHECK(build_bark_on_mesh(p, no_normals, rb).code() == StatusCode::invalid_argument);
 }

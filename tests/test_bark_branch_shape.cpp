@@ -91,7 +91,7 @@ TEST_CASE("branch mesh: manifold pair of pants with near-uniform edges (MODEL.md
     BranchShapeParams s;
     TriangleMesh m;
     BranchMeshStats st;
-    Status status = make_branch_mesh(s, 0.33f, &m, &st);
+    Status status = make_branch_mesh(s, 0.33f, m, &st);
     INFO(status.message());
     REQUIRE(status);
     MeshTopology topo;
@@ -122,8 +122,8 @@ TEST_CASE("branch mesh: manifold pair of pants with near-uniform edges (MODEL.md
             float z = m.positions[m.indices[h]].z;
             CHECK((z == 0.0f || z == 16.0f));
         }
-    CHECK(make_branch_mesh(s, 0.0f, &m).code() == StatusCode::invalid_argument);
-    CHECK(make_branch_mesh(s, 0.01f, &m).code() == StatusCode::too_large);
+    CHECK(make_branch_mesh(s, 0.0f, m).code() == StatusCode::invalid_argument);
+    CHECK(make_branch_mesh(s, 0.01f, m).code() == StatusCode::too_large);
 }
 
 TEST_CASE("growth: s(t), d(t) and the anchor (§5.2, Fig. 10)") {

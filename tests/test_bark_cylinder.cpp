@@ -72,16 +72,15 @@ TEST_CASE("bad parameters get a Status that names the value") {
     CHECK(code(q) == StatusCode::too_large);
     CHECK(std::strstr(validate(q).message(), "bytes") != nullptr);
     BarkCylinder bark;
-    CHECK(build_cylinder(q, &bark).code() == StatusCode::too_large);
+    CHECK(build_cylinder(q, bark).code() == StatusCode::too_large);
     CHECK(bark.net.X.empty());  // refused before anything was allocated
-    CHECK(build_cylinder(p, nullptr).code() == StatusCode::invalid_argument);
 }
 
 TEST_CASE("the cylinder: counts, every spring L0 long, the seam closes the circumference") {
     CylinderParams p;
     p.N_R = 36, p.N_H = 10;
     BarkCylinder bark;
-    REQUIRE(build_cylinder(p, &bark).ok());
+    REQUIRE(build_cylinder(p, bark).ok());
     const int n = p.N_R * p.N_H;
     CHECK(bark.net.node_count() == n);
     CHECK(bark.net.spring_count() == p.N_R * (3 * p.N_H - 2));
@@ -108,7 +107,7 @@ TEST_CASE("connection areas on the regular lattice: S = D L0 / sqrt(3), A = (sqr
     CylinderParams p;
     p.N_R = 16, p.N_H = 8;
     BarkCylinder bark;
-    REQUIRE(build_cylinder(p, &bark).ok());
+    REQUIRE(build_cylinder(p, bark).ok());
     const double L0 = 0.33, tri_area = std::sqrt(3.0) / 4 * L0 * L0;
     double total = 0;
     for (float a : bark.node_area) total += a;
@@ -154,7 +153,7 @@ TEST_CASE("thresholds come from the spring's coordinates: eps_c around kappa - 1
     CylinderParams p;
     p.N_R = 32, p.N_H = 16;
     BarkCylinder bark;
-    REQUIRE(build_cylinder(p, &bark).ok());
+    REQUIRE(build_cylinder(p, bark).ok());
     double sum = 0, sum2 = 0;
     int n = 0;
     for (const BarkSpring& s : bark.net.springs)

@@ -46,10 +46,10 @@ void cut_grid(BarkCylinder& bark, bool columns, bool only_up_right) {
 TEST_CASE("regions on a synthetic crack grid: 16 x 8 regions of 64 nodes, sizes exact") {
     CylinderParams p;  // 128 x 64
     BarkCylinder bark;
-    REQUIRE(build_cylinder(p, &bark).ok());
+    REQUIRE(build_cylinder(p, bark).ok());
     cut_grid(bark, /*columns=*/true, /*only_up_right=*/false);
     RegionReport rep;
-    REQUIRE(measure_regions(bark, p.T, bark.net.W.data(), &rep).ok());  // W = 0: affine
+    REQUIRE(measure_regions(bark, p.T, bark.net.W.data(), rep).ok());   // W = 0: affine
     REQUIRE(rep.regions.size() == 128);
     const float et = hoop_strain(p, p.T), ez = axial_strain(p, p.T);
     for (const BarkRegion& r : rep.regions) {
@@ -73,10 +73,10 @@ TEST_CASE("regions on a synthetic crack grid: 16 x 8 regions of 64 nodes, sizes 
 TEST_CASE("a crack with one diagonal family broken still separates (strong connectivity)") {
     CylinderParams p;
     BarkCylinder bark;
-    REQUIRE(build_cylinder(p, &bark).ok());
+    REQUIRE(build_cylinder(p, bark).ok());
     cut_grid(bark, true, /*only_up_right=*/true);
     RegionReport rep;
-    REQUIRE(measure_regions(bark, p.T, bark.net.W.data(), &rep).ok());
+    REQUIRE(measure_regions(bark, p.T, bark.net.W.data(), rep).ok());
     CHECK(rep.regions.size() == 128);
     std::vector<std::uint8_t> strong;
     strong_springs(bark, p.T, &strong);
@@ -89,10 +89,10 @@ TEST_CASE("a crack with one diagonal family broken still separates (strong conne
 TEST_CASE("with no column cuts the bands close around the trunk: flagged, width = circumference") {
     CylinderParams p;
     BarkCylinder bark;
-    REQUIRE(build_cylinder(p, &bark).ok());
+    REQUIRE(build_cylinder(p, bark).ok());
     cut_grid(bark, /*columns=*/false, false);
     RegionReport rep;
-    REQUIRE(measure_regions(bark, p.T, bark.net.W.data(), &rep).ok());
+    REQUIRE(measure_regions(bark, p.T, bark.net.W.data(), rep).ok());
     REQUIRE(rep.regions.size() == 8);
     for (const BarkRegion& r : rep.regions) {
         CHECK(r.wraps);
@@ -106,11 +106,11 @@ TEST_CASE("Fig. 4: a crack is centred on the spring's midpoint with width l - l0
     p.N_R = 32, p.N_H = 24;
     p.species = species_preset(Species::camphor);
     BarkCylinder bark;
-    REQUIRE(build_cylinder(p, &bark).ok());
+    REQUIRE(build_cylinder(p, bark).ok());
     CrackRun run;
-    REQUIRE(grow_and_crack(bark, CrackRunOptions{}, &run).ok());
+    REQUIRE(grow_and_crack(bark, CrackRunOptions{}, run).ok());
     std::vector<CrackRibbon> cracks;
-    REQUIRE(crack_ribbons(bark, p.T, bark.net.W.data(), &cracks).ok());
+    REQUIRE(crack_ribbons(bark, p.T, bark.net.W.data(), cracks).ok());
     REQUIRE(cracks.size() == run.breaks.size());
     int shared = 0;
     for (const CrackRibbon& r : cracks) {
@@ -136,11 +136,11 @@ TEST_CASE("the CSV export lets others rebuild the regions without the library") 
     p.N_R = 32, p.N_H = 24;
     p.species = species_preset(Species::chinese_tallow);
     BarkCylinder bark;
-    REQUIRE(build_cylinder(p, &bark).ok());
+    REQUIRE(build_cylinder(p, bark).ok());
     CrackRun run;
-    REQUIRE(grow_and_crack(bark, CrackRunOptions{}, &run).ok());
+    REQUIRE(grow_and_crack(bark, CrackRunOptions{}, run).ok());
     RegionReport rep;
-    REQUIRE(measure_regions(bark, p.T, bark.net.W.data(), &rep).ok());
+    REQUIRE(measure_regions(bark, p.T, bark.net.W.data(), rep).ok());
     const std::string prefix = "build/test_bark_export";
     REQUIRE(write_bark_csv(bark, p.T, bark.net.W.data(), prefix.c_str()).ok());
     REQUIRE(write_crack_svg(bark, p.T, bark.net.W.data(), (prefix + ".svg").c_str()).ok());
@@ -192,7 +192,7 @@ TEST_CASE("the CSV export lets others rebuild the regions without the library") 
     CHECK(int(sizes.size()) == rep.components);
 
     TriangleMesh trunk;
-    REQUIRE(make_trunk_mesh(bark, p.T, bark.net.W.data(), &trunk).ok());
+    REQUIRE(make_trunk_mesh(bark, p.T, bark.net.W.data(), trunk).ok());
     CHECK(trunk.vertex_count() == p.N_R * p.N_H + p.N_H);
     CHECK(trunk.triangle_count() == int(bark.triangles.size()));
     // Every vertex on the grown radius.
@@ -218,10 +218,10 @@ TEST_CASE("the three species at full size read as Table 3's notes say" *
         CylinderParams p;  // the fig05 size, 128 x 64
         p.species = species_preset(species[i]);
         BarkCylinder bark;
-        REQUIRE(build_cylinder(p, &bark).ok());
+        REQUIRE(build_cylinder(p, bark).ok());
         CrackRun run;
-        REQUIRE(grow_and_crack(bark, CrackRunOptions{}, &run).ok());
-        REQUIRE(measure_regions(bark, p.T, bark.net.W.data(), &rep[i]).ok());
+        REQUIRE(grow_and_crack(bark, CrackRunOptions{}, run).ok());
+        REQUIRE(measure_regions(bark, p.T, bark.net.W.data(), rep[i]).ok());
         MESSAGE(std::string(p.species.name) << ": " << rep[i].regions.size() << " regions, mean "
                                << rep[i].mean_width << " x " << rep[i].mean_height << ", max "
                                << rep[i].max_width << " x " << rep[i].max_height);

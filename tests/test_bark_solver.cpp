@@ -45,7 +45,7 @@ TEST_CASE("one spring on its anchors: e(t) = g t k_sh / (k_sh + 2k), and it brea
     CHECK(net.W[0].x == doctest::Approx(-net.W[1].x).epsilon(1e-6));  // symmetric
     CrackRun run;
     const double t_b = eps_c / expected;
-    REQUIRE(run_cracking(net, float(2 * t_b), 1e-12f, CrackRunOptions{}, &run).ok());
+    REQUIRE(run_cracking(net, float(2 * t_b), 1e-12f, CrackRunOptions{}, run).ok());
     REQUIRE(run.breaks.size() == 1);
     CHECK(run.breaks[0].t == doctest::Approx(t_b).epsilon(1e-5));
     // After the break nothing pulls: the nodes sit on their anchors.
@@ -77,7 +77,7 @@ TEST_CASE("every node update lowers the energy; relaxation ends below the tolera
     CylinderParams p;
     p.N_R = 16, p.N_H = 12;
     BarkCylinder bark;
-    REQUIRE(build_cylinder(p, &bark).ok());
+    REQUIRE(build_cylinder(p, bark).ok());
     Pcg32 rng(7, 3);
     for (Vec3& w : bark.net.W) w = {rng.uniform() - 0.5f, rng.uniform() - 0.5f, 0.0f};
     double phi = network_energy(bark.net);
@@ -107,15 +107,15 @@ TEST_CASE("growth below every threshold breaks nothing; after a run no intact sp
         low.delta_r = 0.3f * 0.015f * (1 - 3 * low.sigma) * initial_radius(low) / low.T;
         low.delta_h = 0.3f * 0.015f * (1 - 3 * low.sigma) * initial_height(low) / low.T;
         BarkCylinder bark;
-        REQUIRE(build_cylinder(low, &bark).ok());
+        REQUIRE(build_cylinder(low, bark).ok());
         CrackRun run;
-        REQUIRE(grow_and_crack(bark, CrackRunOptions{}, &run).ok());
+        REQUIRE(grow_and_crack(bark, CrackRunOptions{}, run).ok());
         CHECK(run.breaks.empty());
     }
     BarkCylinder bark;
-    REQUIRE(build_cylinder(p, &bark).ok());
+    REQUIRE(build_cylinder(p, bark).ok());
     CrackRun run;
-    REQUIRE(grow_and_crack(bark, CrackRunOptions{}, &run).ok());
+    REQUIRE(grow_and_crack(bark, CrackRunOptions{}, run).ok());
     CHECK(run.breaks.size() > 100);
     float worst = 0;
     for (std::uint32_t s = 0; s < std::uint32_t(bark.net.springs.size()); ++s)
@@ -131,12 +131,12 @@ TEST_CASE("the break sequence is deterministic and does not depend on how spring
     p.N_R = 32, p.N_H = 24;
     p.species = species_preset(Species::camphor);
     BarkCylinder a, b;
-    REQUIRE(build_cylinder(p, &a).ok());
-    REQUIRE(build_cylinder(p, &b, /*reverse_springs=*/true).ok());
+    REQUIRE(build_cylinder(p, a).ok());
+    REQUIRE(build_cylinder(p, b, /*reverse_springs=*/true).ok());
     CHECK(a.net.springs.front().key == b.net.springs.back().key);
     CrackRun ra, rb;
-    REQUIRE(grow_and_crack(a, CrackRunOptions{}, &ra).ok());
-    REQUIRE(grow_and_crack(b, CrackRunOptions{}, &rb).ok());
+    REQUIRE(grow_and_crack(a, CrackRunOptions{}, ra).ok());
+    REQUIRE(grow_and_crack(b, CrackRunOptions{}, rb).ok());
     REQUIRE(ra.breaks.size() == rb.breaks.size());
     REQUIRE(ra.breaks.size() >= 500);
     bool same = true;
@@ -157,13 +157,13 @@ TEST_CASE("snapshots hold the field valid at their time; cracks widen as the tru
     p.N_R = 32, p.N_H = 24;
     p.species = species_preset(Species::chinese_tallow);
     BarkCylinder bark;
-    REQUIRE(build_cylinder(p, &bark).ok());
+    REQUIRE(build_cylinder(p, bark).ok());
     const float times[] = {0.6f * p.T, 0.75f * p.T, 0.9f * p.T, p.T};
     CrackRunOptions opt;
     opt.snapshot_times = times;
     opt.snapshot_count = 4;
     CrackRun run;
-    REQUIRE(grow_and_crack(bark, opt, &run).ok());
+    REQUIRE(grow_and_crack(bark, opt, run).ok());
     REQUIRE(run.snapshots.size() == 4);
     std::vector<std::uint32_t> early;
     for (const BreakEvent& e : run.breaks)
@@ -183,13 +183,13 @@ TEST_CASE("snapshots hold the field valid at their time; cracks widen as the tru
 TEST_CASE("run_cracking refuses bad times") {
     SpringNetwork net = chain(3, 1.0f, 1.0f, 1.0f, 0.01f);
     CrackRun run;
-    CHECK(run_cracking(net, -1.0f, 1e-6f, CrackRunOptions{}, &run).code() ==
+    CHECK(run_cracking(net, -1.0f, 1e-6f, CrackRunOptions{}, run).code() ==
           StatusCode::invalid_argument);
-    CHECK(run_cracking(net, 1.0f, std::nanf(""), CrackRunOptions{}, &run).code() ==
+    CHECK(run_cracking(net, 1.0f, std::nanf(""), CrackRunOptions{}, run).code() ==
           StatusCode::invalid_argument);
     const float times[] = {0.5f, 0.25f};
     CrackRunOptions opt;
     opt.snapshot_times = times;
     opt.snapshot_count = 2;
-    CHECK(run_cracking(net, 1.0f, 1e-6f, opt, &run).code() == StatusCode::invalid_argument);
+    CHECK(run_cracking(net, 1.0f, 1e-6f, opt, run).code() == StatusCode::invalid_argument);
 }

@@ -43,20 +43,20 @@ TEST_CASE("read_pfm and read_image refuse images over the memory budget before d
     {
         BudgetGuard guard(8 * 1024);  // 64 x 64 floats are 16 KiB
         PfmImage back;
-        Status s = read_pfm("build/budget_test.pfm", &back);
+        Status s = read_pfm("build/budget_test.pfm", back);
         CHECK(s.code() == StatusCode::too_large);
         CHECK(std::strstr(s.message(), "16384") != nullptr);
         if (image_reading_available()) {
             LoadedImage img;
-            s = read_image("build/budget_test.png", &img);
+            s = read_image("build/budget_test.png", img);
             CHECK(s.code() == StatusCode::too_large);
         }
     }
     PfmImage back;
-    CHECK(read_pfm("build/budget_test.pfm", &back).ok());
+    CHECK(read_pfm("build/budget_test.pfm", back).ok());
     if (image_reading_available()) {
         LoadedImage img;
-        CHECK(read_image("build/budget_test.png", &img).ok());
+        CHECK(read_image("build/budget_test.png", img).ok());
     }
     std::remove("build/budget_test.pfm");
     std::remove("build/budget_test.png");

@@ -106,7 +106,7 @@ DrawResult draw_with(const Camera& cam) {
 TEST_CASE("checked camera builders: the same camera for good input, a clear Status for bad") {
     const Vec3 eye{0, 0, 3}, target{0, 0, 0}, up{0, 1, 0};
     Camera checked;
-    REQUIRE(make_perspective_camera(eye, target, up, 45.0f, 16, 16, 0.05f, 100.0f, &checked)
+    REQUIRE(make_perspective_camera(eye, target, up, 45.0f, 16, 16, 0.05f, 100.0f, checked)
                 .ok());
     Camera plain = perspective_camera(eye, target, up, 45.0f, 16, 16);
     CHECK(std::memcmp(&checked.view, &plain.view, sizeof(Mat4)) == 0);
@@ -117,7 +117,7 @@ TEST_CASE("checked camera builders: the same camera for good input, a clear Stat
     CHECK(good.edges.ok());
     CHECK(good.lit > 20);
     Camera ortho;
-    REQUIRE(make_orthographic_camera(eye, target, up, 1.5f, 16, 16, 0.05f, 100.0f, &ortho).ok());
+    REQUIRE(make_orthographic_camera(eye, target, up, 1.5f, 16, 16, 0.05f, 100.0f, ortho).ok());
     CHECK(validate_camera(ortho).ok());
     CHECK(ortho.orthographic);
 
@@ -150,7 +150,7 @@ TEST_CASE("checked camera builders: the same camera for good input, a clear Stat
         Camera out = plain;
         out.width = 7;  // must stay untouched
         Status s = make_perspective_camera(b.eye, b.target, b.up, b.fov, 16, 16, b.near_plane,
-                                           b.far_plane, &out);
+                                           b.far_plane, out);
         CHECK(s.code() == StatusCode::invalid_argument);
         CHECK(says(s, b.message));
         CHECK(out.width == 7);
@@ -163,12 +163,12 @@ TEST_CASE("checked camera builders: the same camera for good input, a clear Stat
         CHECK(r.lit == 0);
     }
     // The orthographic builder's own parameter, and its near/far order.
-    CHECK(says(make_orthographic_camera(eye, target, up, 0, 16, 16, 0.05f, 100, &ortho),
+    CHECK(says(make_orthographic_camera(eye, target, up, 0, 16, 16, 0.05f, 100, ortho),
                "half_height 0"));
-    CHECK(says(make_orthographic_camera(eye, target, up, 1, 16, 16, 5, 1, &ortho), "far"));
+    CHECK(says(make_orthographic_camera(eye, target, up, 1, 16, 16, 5, 1, ortho), "far"));
     CHECK(!validate_camera(orthographic_camera(eye, target, up, -1, 16, 16)).ok());
     CHECK(!validate_camera(orthographic_camera(eye, target, up, 1, 16, 16, 5, 1)).ok());
-    CHECK(says(make_perspective_camera(eye, target, up, 45, 0, 16, 0.05f, 100, &ortho),
+    CHECK(says(make_perspective_camera(eye, target, up, 45, 0, 16, 0.05f, 100, ortho),
                "0 x 16"));
 }
 

@@ -107,7 +107,7 @@ TEST_CASE("a corner with w_clip == 0 (at the eye) is not divided by: rejected, n
     // The wireframe drops the two edges ending at the eye and draws the third.
     WireEdge edges[3];
     int n = 0;
-    REQUIRE(collect_edges(m.view(), edges, 3, &n).ok());
+    REQUIRE(collect_edges(m.view(), edges, 3, n).ok());
     WireOptions w;
     w.model = opt.model;
     long pixels = 0;
@@ -208,7 +208,7 @@ TEST_CASE("bad buffers, meshes, shaders and matrices: a clear Status, nothing dr
         TriangleMesh m = good;
         WireEdge edges[3];
         int n = 0;
-        REQUIRE(collect_edges(m.view(), edges, 3, &n).ok());
+        REQUIRE(collect_edges(m.view(), edges, 3, n).ok());
         for (int stride : {31, 16, 0, -32}) {
             for (int which = 0; which < 2; ++which) {
                 FrameBand band = f.band;
@@ -318,7 +318,7 @@ TEST_CASE("fuzz_raster finding: a projective model sending corners to w ~ 0 draw
     opt.model.m[3][0] = 1.0f;
     opt.cull = CullMode::none;
     Mat4 normal_matrix;
-    REQUIRE(validate_model(opt.model, &normal_matrix).ok());  // projective models are allowed
+    REQUIRE(validate_model(opt.model, normal_matrix).ok());   // projective models are allowed
     TriangleMesh m;
     m.positions = {{-0.99999994f, 1e32f, 0}, {0, 0, 0}, {0.5f, 0, 0}};
     m.indices = {0, 1, 2};

@@ -89,7 +89,7 @@ TEST_CASE("Gouraud: vertices lit once, colours interpolated by the rasterizer") 
     Light l = directional_light({1, 1, 1});
     Vec3 eye{0, 0, 4};
     Mat4 model = Mat4::translate({0.1f, 0, 0});
-    REQUIRE(apply_gouraud(&sphere, model, m, {0.8f, 0.6f, 0.4f}, eye, &l, 1).ok());
+    REQUIRE(apply_gouraud(sphere, model, m, {0.8f, 0.6f, 0.4f}, eye, &l, 1).ok());
     REQUIRE(sphere.colors.size() == sphere.positions.size());
     for (std::size_t i = 0; i < sphere.positions.size(); i += 17) {
         Vec3 expected = shade_blinn_phong(m, {0.8f, 0.6f, 0.4f},
@@ -100,11 +100,11 @@ TEST_CASE("Gouraud: vertices lit once, colours interpolated by the rasterizer") 
     // Errors: no normals, too small a buffer, singular model.
     TriangleMesh bare;
     bare.positions = {{0, 0, 0}};
-    CHECK(!apply_gouraud(&bare, model, m, {1, 1, 1}, eye, &l, 1).ok());
+    CHECK(!apply_gouraud(bare, model, m, {1, 1, 1}, eye, &l, 1).ok());
     Vec3 out[2];
     CHECK(light_vertices(sphere.view(), model, m, {1, 1, 1}, eye, &l, 1, out, 2).code() ==
           StatusCode::buffer_too_small);
-    CHECK(!apply_gouraud(&sphere, Mat4::scale({0, 1, 1}), m, {1, 1, 1}, eye, &l, 1).ok());
+    CHECK(!apply_gouraud(sphere, Mat4::scale({0, 1, 1}), m, {1, 1, 1}, eye, &l, 1).ok());
 
     // The rasterizer interpolates the lit colours: a smooth picture with the lit side bright.
     Camera cam = perspective_camera(eye, {0, 0, 0}, {0, 1, 0}, 40.0f, 48, 48);

@@ -36,7 +36,7 @@ TEST_CASE("the raster headers alone draw into caller memory (no image.hpp)") {
     clear_band(band, Rgb8{0, 0, 0});
     Camera cam;
     REQUIRE(make_perspective_camera({0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 45.0f, W, H, 0.05f, 100.0f,
-                                    &cam)
+                                    cam)
                 .ok());
     const Vec3 positions[3] = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
     const std::uint32_t indices[3] = {0, 1, 2};

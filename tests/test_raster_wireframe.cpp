@@ -16,7 +16,7 @@ namespace {
 std::vector<WireEdge> edges_of(const MeshView& mesh) {
     std::vector<WireEdge> e(std::size_t(3 * mesh.triangle_count));
     int n = 0;
-    CHECK(collect_edges(mesh, e.data(), int(e.size()), &n).ok());
+    CHECK(collect_edges(mesh, e.data(), int(e.size()), n).ok());
     e.resize(std::size_t(n));
     return e;
 }
@@ -50,11 +50,11 @@ TEST_CASE("collect_edges: each shared edge once, also across duplicated corner v
     // Too little room, bad indices.
     WireEdge two[2];
     int n = -1;
-    CHECK(collect_edges(tri.view(), two, 2, &n).code() == StatusCode::buffer_too_small);
+    CHECK(collect_edges(tri.view(), two, 2, n).code() == StatusCode::buffer_too_small);
     CHECK(n == 0);
     tri.indices = {0, 1, 5};
     WireEdge three[3];
-    CHECK(!collect_edges(tri.view(), three, 3, &n).ok());
+    CHECK(!collect_edges(tri.view(), three, 3, n).ok());
 }
 
 TEST_CASE("collect_edges: 3·triangle_count beyond INT_MAX is refused before any index is read") {
@@ -69,13 +69,13 @@ TEST_CASE("collect_edges: 3·triangle_count beyond INT_MAX is refused before any
     mesh.triangle_count = 800000000;
     WireEdge room[16];
     int n = -1;
-    Status s = collect_edges(mesh, room, 16, &n);
+    Status s = collect_edges(mesh, room, 16, n);
     CHECK(s.code() == StatusCode::buffer_too_small);
     CHECK(std::strstr(s.message(), "need 2400000000") != nullptr);
     CHECK(n == 0);
-    CHECK(collect_edges(mesh, room, -1, &n).code() == StatusCode::invalid_argument);
+    CHECK(collect_edges(mesh, room, -1, n).code() == StatusCode::invalid_argument);
     mesh.triangle_count = 1;  // the same arrays with the true count are fine
-    CHECK(collect_edges(mesh, room, 16, &n).ok());
+    CHECK(collect_edges(mesh, room, 16, n).ok());
     CHECK(n == 3);
 }
 

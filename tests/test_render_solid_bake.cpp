@@ -40,7 +40,7 @@ TEST_CASE("bake_solid_texture: texels are the colour of the surface point behind
     const int W = 64, H = 32;
     RgbImage tex;
     std::vector<float> seen;
-    REQUIRE(bake_solid_texture(quad.view(), lattice.view(), m, map, W, H, &tex, Rgb8{1, 2, 3}, 2,
+    REQUIRE(bake_solid_texture(quad.view(), lattice.view(), m, map, W, H, tex, Rgb8{1, 2, 3}, 2,
                                Progress{count_progress, &seen})
                 .ok());
     CHECK(tex.width() == W);
@@ -64,11 +64,11 @@ TEST_CASE("bake_solid_texture: texels are the colour of the surface point behind
 
     TriangleMesh no_uv = quad;
     no_uv.uvs.clear();
-    Status s = bake_solid_texture(no_uv.view(), lattice.view(), m, map, W, H, &tex);
+    Status s = bake_solid_texture(no_uv.view(), lattice.view(), m, map, W, H, tex);
     CHECK(s.code() == StatusCode::invalid_argument);
-    CHECK(bake_solid_texture(quad.view(), lattice.view(), m, map, 0, H, &tex).code() ==
+    CHECK(bake_solid_texture(quad.view(), lattice.view(), m, map, 0, H, tex).code() ==
           StatusCode::invalid_argument);
-    CHECK(bake_solid_texture(quad.view(), LatticeView{}, m, map, W, H, &tex).code() ==
+    CHECK(bake_solid_texture(quad.view(), LatticeView{}, m, map, W, H, tex).code() ==
           StatusCode::invalid_argument);
 }
 
@@ -79,12 +79,12 @@ TEST_CASE("render_solid_slice: pixels are the colours at their lattice points; d
     SolidSlice slice;  // y = 32, x right, z up, 64 units
     RgbImage img;
     FloatImage g;
-    REQUIRE(render_solid_slice(lattice.view(), m, slice, 32, 16, &img, &g).ok());
+    REQUIRE(render_solid_slice(lattice.view(), m, slice, 32, 16, img, &g).ok());
     const int i = 7, j = 3;  // image row 3 from the top = v index 12 from the bottom
     const Vec3 p{(float(i) + 0.5f) * 2.0f, 32.0f, (float(16 - 1 - j) + 0.5f) * 4.0f};
     CHECK(g.at(i, j) == solid_density(m, lattice.view(), p));
     CHECK(img.at(i, j) == bytes(solid_color(m, lattice.view(), p)));
     slice.extent = 0.0f;
-    CHECK(render_solid_slice(lattice.view(), m, slice, 32, 16, &img).code() ==
+    CHECK(render_solid_slice(lattice.view(), m, slice, 32, 16, img).code() ==
           StatusCode::invalid_argument);
 }

@@ -110,7 +110,7 @@ TEST_CASE("render_solid_texture: one call equals drawing band by band; colours i
     const SolidMaterial marble = okada1987_marble();
     const Rgb8 bg{24, 26, 32};
     RgbImage one;
-    REQUIRE(render_solid_texture(cam, mesh.view(), okada_lattice().view(), marble, &one).ok());
+    REQUIRE(render_solid_texture(cam, mesh.view(), okada_lattice().view(), marble, one).ok());
     REQUIRE(one.width() == 96);
     REQUIRE(one.height() == 80);
 
@@ -146,12 +146,12 @@ TEST_CASE("render_solid_texture refuses an unbuilt lattice and a bad material wi
     const TriangleMesh mesh = unit_torus();
     const Camera cam = perspective_camera({1.6f, 2.5f, 2.8f}, {0, 0, 0}, {0, 1, 0}, 30.0f, 32, 32);
     RgbImage img;
-    Status s = render_solid_texture(cam, mesh.view(), LatticeView{}, okada1987_marble(), &img);
+    Status s = render_solid_texture(cam, mesh.view(), LatticeView{}, okada1987_marble(), img);
     CHECK(s.code() == StatusCode::invalid_argument);
     CHECK(std::string(s.message()).find("lattice") != std::string::npos);
     SolidMaterial bad = okada1987_wood();
     bad.wood.k2 = -1.0f;
-    s = render_solid_texture(cam, mesh.view(), okada_lattice().view(), bad, &img);
+    s = render_solid_texture(cam, mesh.view(), okada_lattice().view(), bad, img);
     CHECK_FALSE(s.ok());
 }
 
@@ -204,7 +204,7 @@ TEST_CASE("render/leather_mesh: bumps change the shading, gamma, tangents must m
     TriangleMesh box;
     REQUIRE(make_box({-0.8f, -0.8f, -0.8f}, {0.8f, 0.8f, 0.8f}, &box).ok());
     TextureTangents tangents;
-    REQUIRE(compute_texture_tangents(box.view(), &tangents).ok());
+    REQUIRE(compute_texture_tangents(box.view(), tangents).ok());
     const Camera cam = perspective_camera({2.5f, 2.0f, 3.0f}, {0, 0, 0}, {0, 1, 0}, 35.0f, 64, 64);
 
     auto render = [&](bool bumps, RgbImage* img) {

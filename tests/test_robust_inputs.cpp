@@ -76,17 +76,17 @@ std::string edited_lattice(const char* name, void (*edit)(std::vector<unsigned c
 TEST_CASE("load_lattice: refuses NaN values and trailing bytes") {
     std::string ok = edited_lattice("robust_ok.shl", [](std::vector<unsigned char>&) {});
     FractalLattice back;
-    CHECK(load_lattice(ok, &back).ok());
+    CHECK(load_lattice(ok, back).ok());
     std::string nan = edited_lattice("robust_nan.shl", [](std::vector<unsigned char>& b) {
         const unsigned char q[4] = {0x00, 0x00, 0xc0, 0x7f};  // quiet NaN, little-endian
         std::memcpy(b.data() + b.size() - 8, q, 4);
     });
-    Status s = load_lattice(nan, &back);
+    Status s = load_lattice(nan, back);
     CHECK(s.code() == StatusCode::io_error);
     CHECK(std::string(s.message()).find("not finite") != std::string::npos);
     std::string extra = edited_lattice("robust_extra.shl",
                                        [](std::vector<unsigned char>& b) { b.push_back(0); });
-    s = load_lattice(extra, &back);
+    s = load_lattice(extra, back);
     CHECK(s.code() == StatusCode::io_error);
     CHECK(std::string(s.message()).find("bytes after") != std::string::npos);
     for (const std::string& p : {ok, nan, extra}) std::remove(p.c_str());

@@ -15,7 +15,7 @@ namespace {
 
 std::vector<float> build_type1(const FractalParams& p, LatticeView* view, int levels = -1) {
     std::vector<float> values(std::size_t(lattice_bytes(p.R) / sizeof(float)));
-    Status s = build_fractal_lattice(p, values.data(), values.size() * sizeof(float), view, levels);
+    Status s = build_fractal_lattice(p, values.data(), values.size() * sizeof(float), *view, levels);
     REQUIRE_MESSAGE(s.ok(), s.message());
     return values;
 }
@@ -228,8 +228,8 @@ TEST_CASE("Type III works at R = 20 in O(R) memory and agrees with Type II there
     CHECK(per_cell <= 3);
     CHECK(max_step < 0.05f);  // continuous: level-20 amplitude is e^-9.5 ~ 7.5e-5 per cell
     float out;
-    CHECK(t3.node_value_checked(0, last + 1, 0, &out).code() == StatusCode::out_of_range);
-    CHECK(t3.turbulence_checked(Vec3{-1.0f, 0.0f, 0.0f}, &out).code() == StatusCode::out_of_range);
+    CHECK(t3.node_value_checked(0, last + 1, 0, out).code() == StatusCode::out_of_range);
+    CHECK(t3.turbulence_checked(Vec3{-1.0f, 0.0f, 0.0f}, out).code() == StatusCode::out_of_range);
 }
 
 TEST_CASE("bad lattice parameters get a clear status") {
@@ -237,24 +237,24 @@ TEST_CASE("bad lattice parameters get a clear status") {
     p.R = -1;
     std::vector<float> buf(65 * 65 * 65);
     LatticeView v;
-    Status s = build_fractal_lattice(p, buf.data(), buf.size() * 4, &v);
+    Status s = build_fractal_lattice(p, buf.data(), buf.size() * 4, v);
     CHECK(s.code() == StatusCode::invalid_argument);
     CHECK(std::string(s.message()).find("got -1") != std::string::npos);
     p.R = 11;
-    CHECK(build_fractal_lattice(p, buf.data(), buf.size() * 4, &v).code() ==
+    CHECK(build_fractal_lattice(p, buf.data(), buf.size() * 4, v).code() ==
           StatusCode::invalid_argument);
     p = FractalParams();
     p.beta = -0.1f;
-    CHECK(build_fractal_lattice(p, buf.data(), buf.size() * 4, &v).code() ==
+    CHECK(build_fractal_lattice(p, buf.data(), buf.size() * 4, v).code() ==
           StatusCode::invalid_argument);
     p.beta = std::nanf("");
-    CHECK(build_fractal_lattice(p, buf.data(), buf.size() * 4, &v).code() ==
+    CHECK(build_fractal_lattice(p, buf.data(), buf.size() * 4, v).code() ==
           StatusCode::invalid_argument);
     p = FractalParams();
     p.corners[5] = INFINITY;
-    CHECK(!build_fractal_lattice(p, buf.data(), buf.size() * 4, &v).ok());
+    CHECK(!build_fractal_lattice(p, buf.data(), buf.size() * 4, v).ok());
     p = FractalParams();
-    s = build_fractal_lattice(p, buf.data(), 1000, &v);
+    s = build_fractal_lattice(p, buf.data(), 1000, v);
     CHECK(s.code() == StatusCode::buffer_too_small);
     CHECK(std::string(s.message()).find("1098500") != std::string::npos);
     p.R = 25;
@@ -267,19 +267,19 @@ TEST_CASE("bad lattice parameters get a clear status") {
     CHECK(s.code() == StatusCode::invalid_argument);
     CHECK(std::string(s.message()).find("got 21") != std::string::npos);
     float out = 0.0f;
-    CHECK(t2.node_value_checked(0, 0, 0, &out).code() == StatusCode::invalid_argument);  // no init
+    CHECK(t2.node_value_checked(0, 0, 0, out).code() == StatusCode::invalid_argument);   // no init
     p.R = 3;
     REQUIRE(t2.init(p).ok());
-    s = t2.node_value_checked(9, 0, 0, &out);
+    s = t2.node_value_checked(9, 0, 0, out);
     CHECK(s.code() == StatusCode::out_of_range);
     CHECK(std::string(s.message()).find("(9, 0, 0)") != std::string::npos);
-    CHECK(t2.node_value_checked(0, -1, 0, &out).code() == StatusCode::out_of_range);
-    CHECK(t2.node_value_checked(8, 8, 8, &out).ok());
+    CHECK(t2.node_value_checked(0, -1, 0, out).code() == StatusCode::out_of_range);
+    CHECK(t2.node_value_checked(8, 8, 8, out).ok());
     CHECK(out == p.corners[7]);
     // Type III before init.
     TypeIIILattice fresh;
-    CHECK(fresh.node_value_checked(0, 0, 0, &out).code() == StatusCode::invalid_argument);
-    CHECK(fresh.turbulence_checked(Vec3{0.0f, 0.0f, 0.0f}, &out).code() ==
+    CHECK(fresh.node_value_checked(0, 0, 0, out).code() == StatusCode::invalid_argument);
+    CHECK(fresh.turbulence_checked(Vec3{0.0f, 0.0f, 0.0f}, out).code() ==
           StatusCode::invalid_argument);
 }
 
@@ -289,17 +289,17 @@ TEST_CASE("quadtree lattice (okada1987 §2.1): midpoints and centres, level by l
     q.corners[1] = 2.0f;
     float h[17 * 17];
     int side = 0;
-    REQUIRE(build_quadtree_lattice(q, h, sizeof h, &side, 1).ok());
+    REQUIRE(build_quadtree_lattice(q, h, sizeof h, side, 1).ok());
     CHECK(side == 17);
     CHECK(std::isnan(h[4]));
     // Level 1 centre = mean of the four corners + g·1
     float g = hash_gaussian(q.seed, kQuadtreeStream, 8, 8, 0);
     CHECK(h[8 * 17 + 8] == doctest::Approx(0.5f + g).epsilon(1e-6));
-    REQUIRE(build_quadtree_lattice(q, h, sizeof h, &side).ok());
+    REQUIRE(build_quadtree_lattice(q, h, sizeof h, side).ok());
     for (float v : h) CHECK(std::isfinite(v));
-    CHECK(build_quadtree_lattice(q, h, 10, &side).code() == StatusCode::buffer_too_small);
+    CHECK(build_quadtree_lattice(q, h, 10, side).code() == StatusCode::buffer_too_small);
     q.R = 13;
-    CHECK(build_quadtree_lattice(q, h, sizeof h, &side).code() == StatusCode::invalid_argument);
+    CHECK(build_quadtree_lattice(q, h, sizeof h, side).code() == StatusCode::invalid_argument);
 }
 
 TEST_CASE("tiny lattices (R = 0, 1, 2): the three types still agree") {

@@ -30,14 +30,14 @@ TEST_CASE("Type I lattice: the global memory budget applies besides the lattice'
         CHECK(s.code() == StatusCode::too_large);
         CHECK(std::strstr(s.message(), "143748") != nullptr);
         CHECK(small.empty());
-        s = load_lattice("build/budget_lattice.shl", &small);
+        s = load_lattice("build/budget_lattice.shl", small);
         CHECK(s.code() == StatusCode::too_large);
         p.R = 4;  // 17^3 floats = 19652 bytes
         CHECK(small.build(p).ok());
     }
     FractalLattice back;
-    CHECK(load_lattice("build/budget_lattice.shl", &back).ok());
-    CHECK(load_lattice("build/budget_lattice.shl", &back, 1000).code() == StatusCode::too_large);
+    CHECK(load_lattice("build/budget_lattice.shl", back).ok());
+    CHECK(load_lattice("build/budget_lattice.shl", back, 1000).code() == StatusCode::too_large);
     std::remove("build/budget_lattice.shl");
 }
 
@@ -54,7 +54,7 @@ TEST_CASE("Type II lattice: the list of computed nodes stops at the memory budge
     for (int z = 0; z <= 256 && s.ok(); z += 3)
         for (int y = 0; y <= 256 && s.ok(); y += 3)
             for (int x = 0; x <= 256 && s.ok(); x += 3) {
-                s = lat.node_value_checked(x, y, z, &v);
+                s = lat.node_value_checked(x, y, z, v);
                 if (s) ++queries;
             }
     CHECK(s.code() == StatusCode::too_large);

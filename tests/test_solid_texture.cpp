@@ -86,12 +86,12 @@ TEST_CASE("turbulence outside the lattice: clamped, or refused by the checked fo
     CHECK(same_bits(turbulence(v, Vec3{70.0f, 3.0f, 3.0f}), v.at(64, 3, 3)));
     CHECK(std::isfinite(turbulence(v, Vec3{std::nanf(""), 3.0f, 3.0f})));
     float out = 0;
-    Status s = turbulence_checked(v, Vec3{64.5f, 1.0f, 1.0f}, &out);
+    Status s = turbulence_checked(v, Vec3{64.5f, 1.0f, 1.0f}, out);
     CHECK(s.code() == StatusCode::out_of_range);
     CHECK(std::string(s.message()).find("64.5") != std::string::npos);
-    CHECK(turbulence_checked(v, Vec3{std::nanf(""), 1.0f, 1.0f}, &out).code() ==
+    CHECK(turbulence_checked(v, Vec3{std::nanf(""), 1.0f, 1.0f}, out).code() ==
           StatusCode::invalid_argument);
-    CHECK(turbulence_checked(v, Vec3{64.0f, 0.0f, 32.0f}, &out).ok());
+    CHECK(turbulence_checked(v, Vec3{64.0f, 0.0f, 32.0f}, out).ok());
 }
 
 TEST_CASE("turbulence_row and turbulence_points: the same bits as single calls") {
@@ -180,7 +180,7 @@ TEST_CASE("wood eqs. (10), (11): radial sine, radial displacement, r = 0") {
     CHECK(wood_original(Vec3{10.0f, 20.0f - 2.0f * pi, -3.0f}, w) ==
           doctest::Approx(0.0f).epsilon(1e-5));
     Vec3 u;
-    REQUIRE(wood_radial_direction(Vec3{13.0f, 24.0f, 0.0f}, w, &u).ok());
+    REQUIRE(wood_radial_direction(Vec3{13.0f, 24.0f, 0.0f}, w, u).ok());
     CHECK(u.x == doctest::Approx(0.6f));
     CHECK(u.y == doctest::Approx(0.8f));
     CHECK(u.z == 0.0f);
@@ -191,7 +191,7 @@ TEST_CASE("wood eqs. (10), (11): radial sine, radial displacement, r = 0") {
     w.k = 0.0f;
     CHECK(wood_texture(p, 3.0f, w) == wood_original(p, w));
     // On the axis: a degenerate status, and the texture stays defined (no displacement).
-    Status s = wood_radial_direction(Vec3{10.0f, 20.0f, 5.0f}, w, &u);
+    Status s = wood_radial_direction(Vec3{10.0f, 20.0f, 5.0f}, w, u);
     CHECK(s.code() == StatusCode::degenerate);
     CHECK(u == Vec3{0.0f, 0.0f, 0.0f});
     w.k = 1.6f;
@@ -229,7 +229,7 @@ TEST_CASE("lattice file: save and load round trip, header and budget") {
                        std::to_string(long(getpid())) + ".shl";
     REQUIRE(save_lattice(path, lattice).ok());
     FractalLattice back;
-    REQUIRE(load_lattice(path, &back).ok());
+    REQUIRE(load_lattice(path, back).ok());
     CHECK(back.params().R == 6);
     CHECK(back.params().seed == lattice.params().seed);
     CHECK(back.params().beta == lattice.params().beta);
@@ -241,7 +241,7 @@ TEST_CASE("lattice file: save and load round trip, header and budget") {
     CHECK(std::ftell(f) == 56 + 65 * 65 * 65 * 4);
     std::fclose(f);
     FractalLattice small;
-    Status s = load_lattice(path, &small, 1000);
+    Status s = load_lattice(path, small, 1000);
     CHECK(s.code() == StatusCode::too_large);
     // Damaged files: a status naming the problem, never a crash or a half-filled lattice.
     auto rewrite = [&](long offset, const void* bytes, std::size_t count) {
@@ -253,26 +253,26 @@ TEST_CASE("lattice file: save and load round trip, header and budget") {
     };
     const unsigned char noise_256[4] = {0, 1, 0, 0};  // little-endian 256: no such source
     rewrite(20, noise_256, 4);
-    s = load_lattice(path, &small);
+    s = load_lattice(path, small);
     CHECK(s.code() == StatusCode::io_error);
     CHECK(std::string(s.message()).find("noise source 256") != std::string::npos);
     CHECK(small.empty());
     const unsigned char r_99[4] = {99, 0, 0, 0};  // R = 99: beyond Type I
     rewrite(20, "\0\0\0\0", 4);
     rewrite(8, r_99, 4);
-    CHECK(load_lattice(path, &small).code() == StatusCode::invalid_argument);
+    CHECK(load_lattice(path, small).code() == StatusCode::invalid_argument);
     rewrite(0, "SHKLAT02", 8);
-    s = load_lattice(path, &small);
+    s = load_lattice(path, small);
     CHECK(s.code() == StatusCode::io_error);
     CHECK(std::string(s.message()).find("not a lattice file") != std::string::npos);
     REQUIRE(save_lattice(path, lattice).ok());
     REQUIRE(truncate(path.c_str(), 56 + 1000) == 0);  // header + 250 of the 65^3 values
-    s = load_lattice(path, &small);
+    s = load_lattice(path, small);
     CHECK(s.code() == StatusCode::io_error);
     CHECK(std::string(s.message()).find("truncated") != std::string::npos);
     CHECK(small.empty());
     std::remove(path.c_str());
-    CHECK(load_lattice(path, &back).code() == StatusCode::io_error);
+    CHECK(load_lattice(path, back).code() == StatusCode::io_error);
     FractalParams big;
     big.R = 9;
     Status b = small.build(big);

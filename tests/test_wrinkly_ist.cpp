@@ -24,31 +24,31 @@ namespace {
 std::vector<IstAxis> axes_for(int n, int k) {
     std::vector<IstAxis> out;
     IstAxis a;
-    REQUIRE(ist_unit_axis(n, k, &a).ok());
+    REQUIRE(ist_unit_axis(n, k, a).ok());
     out.push_back(a);
-    REQUIRE(ist_unit_axis(n, k, 3, &a).ok());
+    REQUIRE(ist_unit_axis(n, k, 3, a).ok());
     out.push_back(a);
     if (n % 2 == 1) {
         for (IstEnds ends : {IstEnds::cyclic, IstEnds::translation}) {
-            REQUIRE(ist_fully_connected_axis(n, k, 5, ends, &a).ok());
+            REQUIRE(ist_fully_connected_axis(n, k, 5, ends, a).ok());
             out.push_back(a);
             IstShuffle none;
-            REQUIRE(ist_shuffle_none(n, &none).ok());
-            REQUIRE(ist_connected_axis(none, k, 4, ends, &a).ok());
+            REQUIRE(ist_shuffle_none(n, none).ok());
+            REQUIRE(ist_connected_axis(none, k, 4, ends, a).ok());
             out.push_back(a);
             if (n == 5) {
                 for (const char* name : {"fig6b", "fig7a", "fig7c"}) {
                     IstShuffle s;
-                    REQUIRE(ist_shuffle_named(name, 5, &s).ok());
-                    REQUIRE(ist_connected_axis(s, k, 6, ends, &a).ok());
+                    REQUIRE(ist_shuffle_named(name, 5, s).ok());
+                    REQUIRE(ist_connected_axis(s, k, 6, ends, a).ok());
                     out.push_back(a);
                 }
             }
         }
         // B = 1 and B = 2 on a cyclic axis: offsets wrap onto the same base intervals.
-        REQUIRE(ist_fully_connected_axis(n, k, 1, IstEnds::cyclic, &a).ok());
+        REQUIRE(ist_fully_connected_axis(n, k, 1, IstEnds::cyclic, a).ok());
         out.push_back(a);
-        REQUIRE(ist_fully_connected_axis(n, k, 2, IstEnds::cyclic, &a).ok());
+        REQUIRE(ist_fully_connected_axis(n, k, 2, IstEnds::cyclic, a).ok());
         out.push_back(a);
     }
     return out;
@@ -163,7 +163,7 @@ TEST_CASE("IST is a bijection of the sub-intervals; unit and fully-connected are
 
 TEST_CASE("unit-IST eq. (7): N = 5, K = 3, 124 -> 421 and back (the paper's example)") {
     IstAxis axis;
-    REQUIRE(ist_unit_axis(5, 3, &axis).ok());
+    REQUIRE(ist_unit_axis(5, 3, axis).ok());
     IstDigits a, b;
     ist_digits_from_index(axis, 0, 1 * 25 + 2 * 5 + 4, &a);
     ist_digits_forward(axis, a, &b);
@@ -239,7 +239,7 @@ void check_differences(const std::vector<long>& numbers, int n, int level, const
 
 TEST_CASE("fig 6a: number differences 0.400 / 0.440 / 0.444 on u^3 (§2.2.2(2))") {
     IstAxis axis;
-    REQUIRE(ist_fully_connected_axis(5, 3, 15, IstEnds::cyclic, &axis).ok());
+    REQUIRE(ist_fully_connected_axis(5, 3, 15, IstEnds::cyclic, axis).ok());
     // Base 7 of 15: numbers come from at most K·M = 6 base intervals away, never across the wrap.
     std::vector<long> numbers = numbers_on_last_axis(axis, 7);
     // In units of 5^-3: 0.400 = 100, 0.440 = 120, 0.444 = 124.
@@ -253,7 +253,7 @@ TEST_CASE("fig 6a: number differences 0.400 / 0.440 / 0.444 on u^3 (§2.2.2(2))"
 
 TEST_CASE("fig 6b: the inferred shuffle reproduces all three levels of differences") {
     IstAxis axis;
-    REQUIRE(ist_connected_axis(ist_shuffle_fig6b(), 3, 15, IstEnds::cyclic, &axis).ok());
+    REQUIRE(ist_connected_axis(ist_shuffle_fig6b(), 3, 15, IstEnds::cyclic, axis).ok());
     std::vector<long> numbers = numbers_on_last_axis(axis, 7);
     // 0.200 = 50, 0.100 = 25 | 0.420 = 110, 0.010 = 5 | 0.442 = 122, 0.001 = 1 (units 5^-3)
     const long level1[4] = {50, 25, 25, 50};
@@ -264,7 +264,7 @@ TEST_CASE("fig 6b: the inferred shuffle reproduces all three levels of differenc
     check_differences(numbers, 5, 3, level3);
     // ... and fully-connected does not (the test can fail).
     IstAxis fully;
-    REQUIRE(ist_fully_connected_axis(5, 3, 15, IstEnds::cyclic, &fully).ok());
+    REQUIRE(ist_fully_connected_axis(5, 3, 15, IstEnds::cyclic, fully).ok());
     std::vector<long> other = numbers_on_last_axis(fully, 7);
     CHECK(other[1] - other[0] != level1[0]);
 }
@@ -272,8 +272,8 @@ TEST_CASE("fig 6b: the inferred shuffle reproduces all three levels of differenc
 TEST_CASE("real forms eqs. (9), (10), (14): offset kept, continuous inside, u = 1 rule") {
     for (int n : {2, 3, 5}) {
         IstAxis unit, fully;
-        REQUIRE(ist_unit_axis(n, 3, &unit).ok());
-        if (n % 2 == 1) REQUIRE(ist_fully_connected_axis(n, 3, 4, IstEnds::cyclic, &fully).ok());
+        REQUIRE(ist_unit_axis(n, 3, unit).ok());
+        if (n % 2 == 1) REQUIRE(ist_fully_connected_axis(n, 3, 4, IstEnds::cyclic, fully).ok());
         for (const IstAxis* axis : {&unit, &fully}) {
             if (axis == &fully && n % 2 == 0) continue;
             CAPTURE(describe(*axis));
@@ -322,7 +322,7 @@ TEST_CASE("real forms eqs. (9), (10), (14): offset kept, continuous inside, u = 
 
 TEST_CASE("procedure with unequal base intervals (fig 6 draws base 6 wider) stays a bijection") {
     IstAxis axis;
-    REQUIRE(ist_fully_connected_axis(5, 2, 5, IstEnds::translation, &axis).ok());
+    REQUIRE(ist_fully_connected_axis(5, 2, 5, IstEnds::translation, axis).ok());
     const double edges[6] = {0.0, 0.15, 0.3, 0.7, 0.85, 1.0};
     REQUIRE(ist_check_edges(axis, edges).ok());
     Pcg32 rng(5u, 5u);
@@ -355,35 +355,35 @@ TEST_CASE("procedure with unequal base intervals (fig 6 draws base 6 wider) stay
 
 TEST_CASE("IST bad input: clear status, no crash") {
     IstAxis axis;
-    Status s = ist_unit_axis(0, 2, &axis);
+    Status s = ist_unit_axis(0, 2, axis);
     CHECK_FALSE(s.ok());
     CHECK(std::string(s.message()).find("N must be in [1, 32] (got 0)") != std::string::npos);
-    s = ist_fully_connected_axis(4, 2, 5, IstEnds::cyclic, &axis);
+    s = ist_fully_connected_axis(4, 2, 5, IstEnds::cyclic, axis);
     CHECK_FALSE(s.ok());
     CHECK(std::string(s.message()).find("odd") != std::string::npos);
-    s = ist_unit_axis(3, 36, &axis);
+    s = ist_unit_axis(3, 36, axis);
     CHECK_FALSE(s.ok());
     CHECK(s.code() == StatusCode::too_large);
     CHECK(std::string(s.message()).find("K <= 33") != std::string::npos);
-    CHECK(ist_unit_axis(3, 33, &axis).ok());
-    s = ist_unit_axis(3, 41, &axis);
+    CHECK(ist_unit_axis(3, 33, axis).ok());
+    s = ist_unit_axis(3, 41, axis);
     CHECK_FALSE(s.ok());
-    CHECK(ist_unit_axis(1, 40, &axis).ok());  // N = 1: no transformation (fig 4a), any K
-    s = ist_unit_axis(3, -1, &axis);
+    CHECK(ist_unit_axis(1, 40, axis).ok());   // N = 1: no transformation (fig 4a), any K
+    s = ist_unit_axis(3, -1, axis);
     CHECK_FALSE(s.ok());
-    s = ist_fully_connected_axis(3, 2, 0, IstEnds::cyclic, &axis);
+    s = ist_fully_connected_axis(3, 2, 0, IstEnds::cyclic, axis);
     CHECK_FALSE(s.ok());
     CHECK(std::string(s.message()).find("got 0") != std::string::npos);
 
-    REQUIRE(ist_unit_axis(3, 2, &axis).ok());
+    REQUIRE(ist_unit_axis(3, 2, axis).ok());
     float out = -1.0f;
-    s = ist_forward_checked(axis, 1.5f, &out);
+    s = ist_forward_checked(axis, 1.5f, out);
     CHECK(s.code() == StatusCode::out_of_range);
     CHECK(std::string(s.message()).find("1.5") != std::string::npos);
     CHECK(out == -1.0f);
-    CHECK_FALSE(ist_inverse_checked(axis, -0.25f, &out).ok());
-    CHECK_FALSE(ist_forward_checked(axis, std::nanf(""), &out).ok());
-    CHECK(ist_forward_checked(axis, 1.0f, &out).ok());
+    CHECK_FALSE(ist_inverse_checked(axis, -0.25f, out).ok());
+    CHECK_FALSE(ist_forward_checked(axis, std::nanf(""), out).ok());
+    CHECK(ist_forward_checked(axis, 1.0f, out).ok());
     CHECK(out == 1.0f);
     // The unchecked forms clamp instead of failing.
     CHECK(ist_forward(axis, 7.0f) == 1.0f);
@@ -393,18 +393,18 @@ TEST_CASE("IST bad input: clear status, no crash") {
     IstShuffle table;
     const int offsets[3] = {-1, 0, 1};
     const int twice[3] = {2, 1, 2};
-    s = ist_shuffle_from_table(3, offsets, twice, &table);
+    s = ist_shuffle_from_table(3, offsets, twice, table);
     CHECK_FALSE(s.ok());
     CHECK(std::string(s.message()).find("slot 2 is filled twice") != std::string::npos);
     const int outside[3] = {2, 1, 3};
-    CHECK_FALSE(ist_shuffle_from_table(3, offsets, outside, &table).ok());
+    CHECK_FALSE(ist_shuffle_from_table(3, offsets, outside, table).ok());
     const int even_offsets[2] = {0, 0}, even_slots[2] = {0, 1};
-    CHECK_FALSE(ist_shuffle_from_table(2, even_offsets, even_slots, &table).ok());
+    CHECK_FALSE(ist_shuffle_from_table(2, even_offsets, even_slots, table).ok());
     // A permutation that is not an exchange: fine on a cyclic axis, refused on a translation one.
     const int shift[3] = {1, 1, 1}, same[3] = {0, 1, 2};
-    REQUIRE(ist_shuffle_from_table(3, shift, same, &table).ok());
-    CHECK(ist_connected_axis(table, 2, 4, IstEnds::cyclic, &axis).ok());
-    s = ist_connected_axis(table, 2, 4, IstEnds::translation, &axis);
+    REQUIRE(ist_shuffle_from_table(3, shift, same, table).ok());
+    CHECK(ist_connected_axis(table, 2, 4, IstEnds::cyclic, axis).ok());
+    s = ist_connected_axis(table, 2, 4, IstEnds::translation, axis);
     CHECK_FALSE(s.ok());
     CHECK(std::string(s.message()).find("exchange") != std::string::npos);
     // A hand-made axis is rechecked.
@@ -413,20 +413,20 @@ TEST_CASE("IST bad input: clear status, no crash") {
     broken.n = 3;
     broken.shuffle.n = 3;  // all slots 0
     CHECK_FALSE(ist_validate(broken).ok());
-    CHECK_FALSE(ist_shuffle_named("fig6b", 3, &table).ok());
-    s = ist_shuffle_named("zigzag", 5, &table);
+    CHECK_FALSE(ist_shuffle_named("fig6b", 3, table).ok());
+    s = ist_shuffle_named("zigzag", 5, table);
     CHECK(std::string(s.message()).find("known: fully, none, fig6b") != std::string::npos);
     // Digit strings from users.
-    REQUIRE(ist_unit_axis(3, 2, &axis).ok());
+    REQUIRE(ist_unit_axis(3, 2, axis).ok());
     IstDigits d, e;
     d.count = 2;
     d.digit[1] = 3;
-    CHECK_FALSE(ist_digits_forward_checked(axis, d, &e).ok());
+    CHECK_FALSE(ist_digits_forward_checked(axis, d, e).ok());
     d.digit[1] = 2;
     d.base = 1;
-    CHECK_FALSE(ist_digits_forward_checked(axis, d, &e).ok());
+    CHECK_FALSE(ist_digits_forward_checked(axis, d, e).ok());
     d.base = 0;
-    CHECK(ist_digits_forward_checked(axis, d, &e).ok());
+    CHECK(ist_digits_forward_checked(axis, d, e).ok());
     // Formatting an unchecked string: no read past the digit table or the digit array, no
     // signed overflow of the label, truncation to the buffer.
     IstDigits wild;
@@ -449,9 +449,9 @@ TEST_CASE("connected IST with an exchange table is an involution, on both kinds 
         for (IstEnds ends : {IstEnds::cyclic, IstEnds::translation}) {
             for (int k = 1; k <= 4; ++k) {
                 IstShuffle s;
-                REQUIRE(ist_shuffle_named(name, 5, &s).ok());
+                REQUIRE(ist_shuffle_named(name, 5, s).ok());
                 IstAxis axis;
-                REQUIRE(ist_connected_axis(s, k, 6, ends, &axis).ok());
+                REQUIRE(ist_connected_axis(s, k, 6, ends, axis).ok());
                 CAPTURE(describe(axis));
                 const std::uint64_t count = ist_sub_interval_count(axis);
                 for (int b = 0; b < 6; ++b)
@@ -474,10 +474,10 @@ TEST_CASE("on a cyclic axis any table has a closed scale reverse form like eq. (
     // shuffle exactly once, as the first digit. The step algorithm must agree.
     IstShuffle shift;
     const int offsets[5] = {2, -1, 0, 1, 3}, slots[5] = {1, 3, 0, 4, 2};  // not an exchange
-    REQUIRE(ist_shuffle_from_table(5, offsets, slots, &shift).ok());
+    REQUIRE(ist_shuffle_from_table(5, offsets, slots, shift).ok());
     for (int k = 1; k <= 4; ++k) {
         IstAxis axis;
-        REQUIRE(ist_connected_axis(shift, k, 7, IstEnds::cyclic, &axis).ok());
+        REQUIRE(ist_connected_axis(shift, k, 7, IstEnds::cyclic, axis).ok());
         const std::uint64_t count = ist_sub_interval_count(axis);
         for (int b = 0; b < 7; ++b)
             for (std::uint64_t i = 0; i < count; ++i) {
@@ -499,9 +499,9 @@ TEST_CASE("procedure steps == digit steps at every u^k and u^{k.5} (eqs. 25, 26)
             if (n != 5 && std::string(name) == "fig6b") continue;
             for (IstEnds ends : {IstEnds::cyclic, IstEnds::translation}) {
                 IstShuffle s;
-                REQUIRE(ist_shuffle_named(name, n, &s).ok());
+                REQUIRE(ist_shuffle_named(name, n, s).ok());
                 IstAxis axis;
-                REQUIRE(ist_connected_axis(s, 3, 5, ends, &axis).ok());
+                REQUIRE(ist_connected_axis(s, 3, 5, ends, axis).ok());
                 CAPTURE(describe(axis));
                 const std::uint64_t count = ist_sub_interval_count(axis);
                 for (int b = 0; b < 5; ++b)
@@ -541,13 +541,13 @@ TEST_CASE("IST round trip is exact on every sub-interval left end (issue 17.5 re
                         Status s;
                         if (kind == 0) {
                             if (ends == IstEnds::translation) continue;
-                            s = ist_unit_axis(n, k, b, &axis);
+                            s = ist_unit_axis(n, k, b, axis);
                         } else if (kind == 1) {
-                            s = ist_fully_connected_axis(n, k, b, ends, &axis);
+                            s = ist_fully_connected_axis(n, k, b, ends, axis);
                         } else {
                             IstShuffle sh;
-                            if (!ist_shuffle_named("fig7c", n, &sh)) continue;
-                            s = ist_connected_axis(sh, k, b, ends, &axis);
+                            if (!ist_shuffle_named("fig7c", n, sh)) continue;
+                            s = ist_connected_axis(sh, k, b, ends, axis);
                         }
                         if (!s) continue;
                         const std::uint64_t count = ist_sub_interval_count(axis);
@@ -572,13 +572,13 @@ TEST_CASE("IST round trip is exact on every sub-interval left end (issue 17.5 re
                     }
     CHECK(checked > 100000);
     IstAxis axis;  // u = 0, the first left end, on the case the probe reported
-    REQUIRE(ist_fully_connected_axis(3, 2, 1, IstEnds::cyclic, &axis).ok());
+    REQUIRE(ist_fully_connected_axis(3, 2, 1, IstEnds::cyclic, axis).ok());
     CHECK(ist_inverse_double(axis, ist_forward_double(axis, 0.0)) == 0.0);
 }
 
 TEST_CASE("IST interior points: forward stays in the image sub-interval, round trip to ulps") {
     IstAxis axis;
-    REQUIRE(ist_fully_connected_axis(5, 4, 7, IstEnds::cyclic, &axis).ok());
+    REQUIRE(ist_fully_connected_axis(5, 4, 7, IstEnds::cyclic, axis).ok());
     std::uint32_t x = 12345;
     for (int r = 0; r < 20000; ++r) {
         x = x * 1664525u + 1013904223u;
@@ -593,7 +593,7 @@ TEST_CASE("IST interior points: forward stays in the image sub-interval, round t
 // ends rounded up to 1, so forward() returned 1 for u < 1. Points below 1 now stay below 1.
 TEST_CASE("IST beyond double resolution: values below 1 stay below 1 (fuzz_ist regression)") {
     IstAxis axis;
-    REQUIRE(ist_fully_connected_axis(3, 33, 4, IstEnds::cyclic, &axis).ok());
+    REQUIRE(ist_fully_connected_axis(3, 33, 4, IstEnds::cyclic, axis).ok());
     for (double u : {0.0, 0.25, 0.5, 0.75, 0.999999, 1.0 - 1e-16}) {
         const double v = ist_forward_double(axis, u), w = ist_inverse_double(axis, u);
         CHECK(v >= 0.0);

@@ -64,7 +64,7 @@ TEST_CASE("original IST with constant M == fully-connected IST at every sub-inte
                 ist.ends = ends;
                 REQUIRE(ist_original_check(ist).ok());
                 IstAxis axis;
-                REQUIRE(ist_fully_connected_axis(n, k, 5, ends, &axis).ok());
+                REQUIRE(ist_fully_connected_axis(n, k, 5, ends, axis).ok());
                 CAPTURE(m);
                 CAPTURE(k);
                 CAPTURE(int(ends));
@@ -171,19 +171,19 @@ TEST_CASE("original IST bad input") {
     }
     // The checked forms: a status for a bad description or u, never an assert.
     double out = -1.0;
-    CHECK(ist_original_forward_checked(ist, 0.37, &out).ok());
+    CHECK(ist_original_forward_checked(ist, 0.37, out).ok());
     CHECK(out == ist_original_forward(ist, 0.37));
     double back = -1.0;
-    CHECK(ist_original_inverse_checked(ist, out, &back).ok());
+    CHECK(ist_original_inverse_checked(ist, out, back).ok());
     CHECK(std::fabs(back - 0.37) < 1e-9);
-    s = ist_original_forward_checked(ist, 1.25, &out);
+    s = ist_original_forward_checked(ist, 1.25, out);
     CHECK(s.code() == StatusCode::out_of_range);
     CHECK(std::string(s.message()).find("1.25") != std::string::npos);
-    CHECK(ist_original_inverse_checked(ist, std::nan(""), &out).code() ==
+    CHECK(ist_original_inverse_checked(ist, std::nan(""), out).code() ==
           StatusCode::out_of_range);
     const int too_many[3] = {1, 16, 1};  // 2 M + 1 = 33 parts: past kIstMaxCrossing
     ist.crossing = too_many;
-    s = ist_original_forward_checked(ist, 0.5, &out);
+    s = ist_original_forward_checked(ist, 0.5, out);
     CHECK(s.code() == StatusCode::invalid_argument);
     CHECK(std::string(s.message()).find("M_1") != std::string::npos);
 }

@@ -47,7 +47,7 @@ TEST_CASE("WR surface with zero heights equals the base surface; with K = 0 the 
             test_mesh(basis == SurfaceBasis::bezier ? 4 : 7, basis == SurfaceBasis::bezier ? 4 : 6);
         for (auto& p : m.points) p.height = 0;
         WrSurface s;
-        REQUIRE(make_wr_surface(m, basis, 3, &s));
+        REQUIRE(make_wr_surface(m, basis, 3, s));
         WrAxis au = identity_axis(s.spans_u(), 3), av = identity_axis(s.spans_v(), 3);
         au.inverse = reflect_inverse;
         av.inverse = reflect_inverse;
@@ -59,7 +59,7 @@ TEST_CASE("WR surface with zero heights equals the base surface; with K = 0 the 
                 CHECK(length(r - p) < 1e-6f);
             }
         WrControlMesh m2 = test_mesh(m.cols, m.rows);
-        REQUIRE(make_wr_surface(m2, basis, 3, &s));
+        REQUIRE(make_wr_surface(m2, basis, 3, s));
         REQUIRE(s.set_axes(au, av));
         // K = 0: F^0 is the identity, R = P + H N exactly.
         const BasePoint b = s.base_point(0.37f, 0.61f);
@@ -85,7 +85,7 @@ TEST_CASE("superposition weights: eq. (19) and the truncated eq. (18)") {
 TEST_CASE("hierarchical sampling: samples take H at F^{-1}; H^k passes through them") {
     WrControlMesh m = test_mesh(7, 6);
     WrSurface s;
-    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, s));
     WrAxis au = identity_axis(s.spans_u(), 3), av = identity_axis(s.spans_v(), 3);
     au.inverse = reflect_inverse;
     av.inverse = reflect_inverse;
@@ -95,7 +95,7 @@ TEST_CASE("hierarchical sampling: samples take H at F^{-1}; H^k passes through t
         o.levels = 2;
         o.interpolation = mode;
         HierarchicalSampling hs;
-        REQUIRE(sample_hierarchy(s, o, &hs));
+        REQUIRE(sample_hierarchy(s, o, hs));
         for (int k = 1; k <= 2; ++k) {
             const auto& pu = hs.positions_u(k);
             const auto& pv = hs.positions_v(k);
@@ -115,7 +115,7 @@ TEST_CASE("hierarchical sampling: samples take H at F^{-1}; H^k passes through t
     HierarchicalOptions o0;
     o0.levels = 0;
     HierarchicalSampling hs0;
-    REQUIRE(sample_hierarchy(s, o0, &hs0));
+    REQUIRE(sample_hierarchy(s, o0, hs0));
     const SuperposedSample p = superposed_sampled(s, hs0, 0.3f, 0.8f);
     CHECK(p.attributes.height == doctest::Approx(s.attributes(0.3f, 0.8f).height).epsilon(1e-5));
 }
@@ -160,12 +160,12 @@ TEST_CASE("linear and Hermite interpolation agree at the samples and differ betw
 TEST_CASE("adaptive end of the superposition: a tolerance drops the small steps") {
     WrControlMesh m = test_mesh(7, 6);
     WrSurface s;
-    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, s));
     REQUIRE(s.set_axes(identity_axis(s.spans_u(), 3), identity_axis(s.spans_v(), 3)));
     HierarchicalOptions o;
     o.levels = 4;
     HierarchicalSampling hs;
-    REQUIRE(sample_hierarchy(s, o, &hs));
+    REQUIRE(sample_hierarchy(s, o, hs));
     const SuperposedSample all = superposed_sampled(s, hs, 0.42f, 0.58f, 0.0f);
     CHECK(all.levels_used == 4);
     const float tol = 0.05f;
@@ -179,16 +179,16 @@ TEST_CASE("adaptive end of the superposition: a tolerance drops the small steps"
 TEST_CASE("tessellation: grid, triangle count, superposed vs plain") {
     WrControlMesh m = test_mesh(7, 6);
     WrSurface s;
-    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, s));
     REQUIRE(s.set_axes(identity_axis(s.spans_u(), 3), identity_axis(s.spans_v(), 3)));
     HierarchicalOptions ho;
     ho.levels = 2;
     HierarchicalSampling hs;
-    REQUIRE(sample_hierarchy(s, ho, &hs));
+    REQUIRE(sample_hierarchy(s, ho, hs));
     WrTessellationOptions o;
     o.grid_level = 2;
     WrMesh wm;
-    REQUIRE(tessellate_wr_surface(s, &hs, o, &wm));
+    REQUIRE(tessellate_wr_surface(s, &hs, o, wm));
     CHECK(wm.grid_u == 4 * 9 + 2);
     CHECK(wm.grid_v == 3 * 9 + 2);
     CHECK(wm.mesh.triangle_count() == 2 * (wm.grid_u - 1) * (wm.grid_v - 1));
@@ -198,7 +198,7 @@ TEST_CASE("tessellation: grid, triangle count, superposed vs plain") {
     // zoom window: only parameters inside it
     o.u0 = 0.25f;
     o.u1 = 0.5f;
-    REQUIRE(tessellate_wr_surface(s, &hs, o, &wm));
+    REQUIRE(tessellate_wr_surface(s, &hs, o, wm));
     for (const Vec2& uv : wm.mesh.uvs) CHECK((uv.x >= 0.25f && uv.x <= 0.5f));
 }
 
@@ -206,51 +206,51 @@ TEST_CASE("bad input gives a clear status, never a crash") {
     WrSurface s;
     WrControlMesh m = test_mesh(7, 6);
     m.points.pop_back();  // not a square grid any more
-    Status st = make_wr_surface(m, SurfaceBasis::bspline, 3, &s);
+    Status st = make_wr_surface(m, SurfaceBasis::bspline, 3, s);
     CHECK(!st);
     CHECK(std::string(st.message()).find("square grid") != std::string::npos);
-    CHECK(!make_wr_surface(test_mesh(3, 6), SurfaceBasis::bspline, 3, &s));  // too small
-    CHECK(!make_wr_surface(test_mesh(5, 5), SurfaceBasis::bezier, 3, &s));   // Bezier needs 4x4
+    CHECK(!make_wr_surface(test_mesh(3, 6), SurfaceBasis::bspline, 3, s));   // too small
+    CHECK(!make_wr_surface(test_mesh(5, 5), SurfaceBasis::bezier, 3, s));    // Bezier needs 4x4
     m = test_mesh(7, 6);
     m.at(2, 3).delta = 1.0f;
-    st = make_wr_surface(m, SurfaceBasis::bspline, 3, &s);
+    st = make_wr_surface(m, SurfaceBasis::bspline, 3, s);
     CHECK(!st);
     CHECK(std::string(st.message()).find("delta") != std::string::npos);
     m.at(2, 3).delta = 0.0f;
-    CHECK(!make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    CHECK(!make_wr_surface(m, SurfaceBasis::bspline, 3, s));
     m = test_mesh(7, 6);
     m.at(1, 1).position.y = std::nanf("");
-    CHECK(!make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    CHECK(!make_wr_surface(m, SurfaceBasis::bspline, 3, s));
     // a huge grid is refused before anything is allocated (was a 65536^2-point resize)
     m = make_control_mesh(1 << 16, 1 << 16);
     CHECK(m.points.empty());
-    st = make_wr_surface(m, SurfaceBasis::bspline, 3, &s);
+    st = make_wr_surface(m, SurfaceBasis::bspline, 3, s);
     CHECK(!st);
     CHECK(std::string(st.message()).find("limit") != std::string::npos);
     CHECK(make_control_mesh(-3, 5).points.empty());
-    CHECK(!make_wr_surface(make_control_mesh(-3, 5), SurfaceBasis::bspline, 3, &s));
+    CHECK(!make_wr_surface(make_control_mesh(-3, 5), SurfaceBasis::bspline, 3, s));
     m = test_mesh(7, 6);
     m.at(1, 1).transparency = 1.5f;
-    CHECK(!make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
-    REQUIRE(make_wr_surface(test_mesh(7, 6), SurfaceBasis::bspline, 3, &s));
+    CHECK(!make_wr_surface(m, SurfaceBasis::bspline, 3, s));
+    REQUIRE(make_wr_surface(test_mesh(7, 6), SurfaceBasis::bspline, 3, s));
     CHECK(!s.set_axes(identity_axis(3), identity_axis(3)));  // base intervals != spans
     HierarchicalOptions o;
     o.levels = 99;
     HierarchicalSampling hs;
-    CHECK(!sample_hierarchy(s, o, &hs));
+    CHECK(!sample_hierarchy(s, o, hs));
     o.levels = -1;
-    CHECK(!sample_hierarchy(s, o, &hs));
+    CHECK(!sample_hierarchy(s, o, hs));
     o.levels = 2;
     o.jitter_height = -1;
-    CHECK(!sample_hierarchy(s, o, &hs));
+    CHECK(!sample_hierarchy(s, o, hs));
     WrTessellationOptions to;
     to.form = WrSurfaceForm::superposed;
     WrMesh wm;
-    CHECK(!tessellate_wr_surface(s, nullptr, to, &wm));  // eq. (20) needs the sampling
+    CHECK(!tessellate_wr_surface(s, nullptr, to, wm));   // eq. (20) needs the sampling
     to.form = WrSurfaceForm::wr;
     to.u0 = 0.6f;
     to.u1 = 0.4f;
-    CHECK(!tessellate_wr_surface(s, nullptr, to, &wm));
+    CHECK(!tessellate_wr_surface(s, nullptr, to, wm));
 }
 
 TEST_CASE("constant h_i and c_i: eqs. (16) and (20) give h itself for every delta and K (eq. 18)") {
@@ -266,7 +266,7 @@ TEST_CASE("constant h_i and c_i: eqs. (16) and (20) give h itself for every delt
             p.delta = delta;
         }
         WrSurface s;
-        REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+        REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, s));
         WrAxis au = identity_axis(s.spans_u(), 3), av = identity_axis(s.spans_v(), 3);
         au.inverse = reflect_inverse;
         av.inverse = reflect_inverse;
@@ -278,7 +278,7 @@ TEST_CASE("constant h_i and c_i: eqs. (16) and (20) give h itself for every delt
                 o.levels = K;
                 o.interpolation = mode;
                 HierarchicalSampling hs;
-                REQUIRE(sample_hierarchy(s, o, &hs));
+                REQUIRE(sample_hierarchy(s, o, hs));
                 for (float u : {0.0f, 0.13f, 0.5f, 0.87f})
                     for (float v : {0.07f, 0.61f, 1.0f}) {
                         const WrAttributes d = superposed_attributes_direct(s, u, v, K);
@@ -313,13 +313,13 @@ TEST_CASE("tessellated normals face the side of N(u, v) = dP/du x dP/dv") {
     WrControlMesh m = test_mesh(7, 6);
     for (WrControlPoint& p : m.points) p.position.z = 0;
     WrSurface s;
-    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, s));
     CHECK(s.base_point(0.4f, 0.6f).normal.z == doctest::Approx(1.0f));
     WrTessellationOptions o;
     o.form = WrSurfaceForm::plain;
     o.grid_level = 1;
     WrMesh wm;
-    REQUIRE(tessellate_wr_surface(s, nullptr, o, &wm));
+    REQUIRE(tessellate_wr_surface(s, nullptr, o, wm));
     for (const Vec3& n : wm.mesh.normals) CHECK(n.z > 0.3f);
     // and the triangles wind counter-clockwise seen from +z (their face normal is +z too)
     for (int t = 0; t < wm.mesh.triangle_count(); t += 7) {
@@ -348,7 +348,7 @@ TEST_CASE("grid evaluation with bases located per row and column: the same bits 
     for (SurfaceBasis basis : {SurfaceBasis::bspline, SurfaceBasis::bezier}) {
         WrControlMesh m = basis == SurfaceBasis::bezier ? test_mesh(4, 4) : test_mesh(7, 6);
         WrSurface s;
-        REQUIRE(make_wr_surface(m, basis, 3, &s));
+        REQUIRE(make_wr_surface(m, basis, 3, s));
         WrAxis au = identity_axis(s.spans_u(), 3), av = identity_axis(s.spans_v(), 3);
         au.inverse = reflect_inverse;
         av.inverse = reflect_inverse;
@@ -370,7 +370,7 @@ TEST_CASE("grid evaluation with bases located per row and column: the same bits 
         HierarchicalOptions ho;
         ho.levels = 2;
         HierarchicalSampling hs;
-        REQUIRE(sample_hierarchy(s, ho, &hs));
+        REQUIRE(sample_hierarchy(s, ho, hs));
         for (WrSurfaceForm form : {WrSurfaceForm::base, WrSurfaceForm::plain, WrSurfaceForm::wr,
                                    WrSurfaceForm::superposed_direct, WrSurfaceForm::superposed}) {
             WrTessellationOptions o;
@@ -382,7 +382,7 @@ TEST_CASE("grid evaluation with bases located per row and column: the same bits 
             std::vector<float> seen;
             o.progress = Progress{count_progress, &seen};
             WrMesh wm;
-            REQUIRE(evaluate_wr_grid(s, &hs, o, &wm));
+            REQUIRE(evaluate_wr_grid(s, &hs, o, wm));
             CHECK(!seen.empty());
             CHECK(seen.size() <= 102);
             CHECK(seen.back() == 1.0f);
@@ -424,7 +424,7 @@ TEST_CASE("fuzz_wr_tessellation finding: control points beyond kMaxWrCoordinate 
     mesh.at(2, 1).position.y = kMaxWrCoordinate;
     mesh.at(2, 2).height = kMaxWrCoordinate;
     WrSurface surface;
-    REQUIRE(make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface).ok());
+    REQUIRE(make_wr_surface(mesh, SurfaceBasis::bspline, 3, surface).ok());
     for (float u = 0.0f; u <= 1.0f; u += 0.25f)
         for (float v = 0.0f; v <= 1.0f; v += 0.25f) {
             BasePoint b = surface.base_point(u, v);
@@ -443,14 +443,14 @@ TEST_CASE("fuzz_wr_tessellation finding: jitter_height beyond kMaxJitterHeight i
             mesh.at(c, r).height = 0.1f;
         }
     WrSurface surface;
-    REQUIRE(make_wr_surface(mesh, SurfaceBasis::bezier, 3, &surface).ok());
+    REQUIRE(make_wr_surface(mesh, SurfaceBasis::bezier, 3, surface).ok());
     HierarchicalOptions o;
     o.levels = 0;
     o.jitter_height = 3.4e38f;
     HierarchicalSampling hs;
-    Status s = sample_hierarchy(surface, o, &hs);
+    Status s = sample_hierarchy(surface, o, hs);
     CHECK(s.code() == StatusCode::invalid_argument);
     CHECK(std::string(s.message()).find("jitter_height") != std::string::npos);
     o.jitter_height = kMaxJitterHeight;
-    CHECK(sample_hierarchy(surface, o, &hs).ok());
+    CHECK(sample_hierarchy(surface, o, hs).ok());
 }

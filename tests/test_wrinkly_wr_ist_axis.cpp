@@ -32,20 +32,20 @@ WrControlMesh flat_mesh(int cols, int rows) {
 
 TEST_CASE("WrIstAxis: F^0 is the identity and F^k matches ist_inverse in base-interval units") {
     IstAxis ist;
-    REQUIRE(ist_fully_connected_axis(3, 1, 6, IstEnds::translation, &ist));
+    REQUIRE(ist_fully_connected_axis(3, 1, 6, IstEnds::translation, ist));
     WrIstAxis a;
-    REQUIRE(make_wr_ist_axis(ist, 4, &a));
+    REQUIRE(make_wr_ist_axis(ist, 4, a));
     const WrAxis w = a.axis();
     CHECK(w.base_intervals == 6);
     CHECK(w.division == 3);
     for (float s : {0.0f, 0.7f, 2.31f, 5.99f}) {
         CHECK(w.inverse_at(s, 0) == s);
         IstAxis k3;
-        REQUIRE(ist_with_iterations(ist, 3, &k3));
+        REQUIRE(ist_with_iterations(ist, 3, k3));
         CHECK(w.inverse_at(s, 3) ==
               doctest::Approx(6.0 * ist_inverse_double(k3, s / 6.0)).epsilon(1e-5));
     }
-    CHECK(!make_wr_ist_axis(ist, kMaxWrLevel + 1, &a));
+    CHECK(!make_wr_ist_axis(ist, kMaxWrLevel + 1, a));
 }
 
 TEST_CASE("IST-B-spline: one control point changes the surface only where the IST can carry it") {
@@ -55,15 +55,15 @@ TEST_CASE("IST-B-spline: one control point changes the surface only where the IS
     WrControlMesh m = flat_mesh(16, 9);
     const int K = 2, c0 = 8, r0 = 4;
     WrSurface s0, s1;
-    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s0));
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, s0));
     m.at(c0, r0).height += 0.5f;
-    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s1));
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, s1));
     IstAxis iu, iv;
-    REQUIRE(ist_fully_connected_axis(3, 1, s0.spans_u(), IstEnds::translation, &iu));
-    REQUIRE(ist_fully_connected_axis(3, 1, s0.spans_v(), IstEnds::translation, &iv));
+    REQUIRE(ist_fully_connected_axis(3, 1, s0.spans_u(), IstEnds::translation, iu));
+    REQUIRE(ist_fully_connected_axis(3, 1, s0.spans_v(), IstEnds::translation, iv));
     WrIstAxis au, av;
-    REQUIRE(make_wr_ist_axis(iu, K, &au));
-    REQUIRE(make_wr_ist_axis(iv, K, &av));
+    REQUIRE(make_wr_ist_axis(iu, K, au));
+    REQUIRE(make_wr_ist_axis(iv, K, av));
     REQUIRE(s0.set_axes(au.axis(), av.axis()));
     REQUIRE(s1.set_axes(au.axis(), av.axis()));
     int changed_inside = 0, changed_outside = 0, inside = 0;
@@ -88,14 +88,14 @@ TEST_CASE("IST-B-spline: one control point changes the surface only where the IS
 TEST_CASE("IST-Bezier: one control point changes the surface almost everywhere") {
     WrControlMesh m = flat_mesh(4, 4);
     WrSurface s0, s1;
-    REQUIRE(make_wr_surface(m, SurfaceBasis::bezier, 3, &s0));
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bezier, 3, s0));
     m.at(1, 2).height += 0.5f;
-    REQUIRE(make_wr_surface(m, SurfaceBasis::bezier, 3, &s1));
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bezier, 3, s1));
     IstAxis ist;
-    REQUIRE(ist_unit_axis(3, 1, &ist));
+    REQUIRE(ist_unit_axis(3, 1, ist));
     WrIstAxis au, av;
-    REQUIRE(make_wr_ist_axis(ist, 3, &au));
-    REQUIRE(make_wr_ist_axis(ist, 3, &av));
+    REQUIRE(make_wr_ist_axis(ist, 3, au));
+    REQUIRE(make_wr_ist_axis(ist, 3, av));
     REQUIRE(s0.set_axes(au.axis(), av.axis()));
     REQUIRE(s1.set_axes(au.axis(), av.axis()));
     int changed = 0, total = 0;
@@ -112,11 +112,11 @@ TEST_CASE("WR surface with the real IST: zero heights give the base surface") {
     WrControlMesh m = flat_mesh(7, 7);
     for (auto& p : m.points) p.height = 0;
     WrSurface s;
-    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, s));
     IstAxis ist;
-    REQUIRE(ist_fully_connected_axis(3, 1, 4, IstEnds::translation, &ist));
+    REQUIRE(ist_fully_connected_axis(3, 1, 4, IstEnds::translation, ist));
     WrIstAxis a;
-    REQUIRE(make_wr_ist_axis(ist, 4, &a));
+    REQUIRE(make_wr_ist_axis(ist, 4, a));
     REQUIRE(s.set_axes(a.axis(), a.axis()));
     for (float u : {0.0f, 0.21f, 0.5f, 0.83f, 1.0f})
         for (float v : {0.1f, 0.66f})
@@ -128,20 +128,20 @@ TEST_CASE("eq. (20) equals eq. (16) where every step samples (centres of base in
     // step k, so H^k there is the sample H((F^k)^{-1}(u)) itself, linear or Hermite.
     WrControlMesh m = flat_mesh(8, 7);
     WrSurface s;
-    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, s));
     IstAxis iu, iv;
-    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_u(), IstEnds::translation, &iu));
-    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_v(), IstEnds::translation, &iv));
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_u(), IstEnds::translation, iu));
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_v(), IstEnds::translation, iv));
     WrIstAxis au, av;
-    REQUIRE(make_wr_ist_axis(iu, 3, &au));
-    REQUIRE(make_wr_ist_axis(iv, 3, &av));
+    REQUIRE(make_wr_ist_axis(iu, 3, au));
+    REQUIRE(make_wr_ist_axis(iv, 3, av));
     REQUIRE(s.set_axes(au.axis(), av.axis()));
     for (SampleInterpolation mode : {SampleInterpolation::linear, SampleInterpolation::hermite}) {
         HierarchicalOptions o;
         o.levels = 3;
         o.interpolation = mode;
         HierarchicalSampling hs;
-        REQUIRE(sample_hierarchy(s, o, &hs));
+        REQUIRE(sample_hierarchy(s, o, hs));
         for (int i = 0; i < s.spans_u(); ++i)
             for (int j = 0; j < s.spans_v(); ++j) {
                 const float u = (float(i) + 0.5f) / float(s.spans_u());
@@ -157,14 +157,14 @@ TEST_CASE("adaptive levels grow with the projected size and stop at the cap") {
     WrControlMesh m = flat_mesh(8, 7);
     for (auto& p : m.points) p.delta = 0.6f;
     WrSurface s;
-    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, s));
     IstAxis iu;
-    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_u(), IstEnds::translation, &iu));
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_u(), IstEnds::translation, iu));
     WrIstAxis au, av;
     IstAxis iv;
-    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_v(), IstEnds::translation, &iv));
-    REQUIRE(make_wr_ist_axis(iu, 6, &au));
-    REQUIRE(make_wr_ist_axis(iv, 6, &av));
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_v(), IstEnds::translation, iv));
+    REQUIRE(make_wr_ist_axis(iu, 6, au));
+    REQUIRE(make_wr_ist_axis(iv, 6, av));
     REQUIRE(s.set_axes(au.axis(), av.axis()));
     const AdaptiveLevels small = choose_adaptive_levels(s, m, 10.0f, 2.0f, 0.5f, 6);
     const AdaptiveLevels large = choose_adaptive_levels(s, m, 1000.0f, 2.0f, 0.5f, 6);
@@ -181,32 +181,32 @@ TEST_CASE("K beyond the IST steps the axes hold is a status, not an abort") {
     // WrIstAxis::inverse with k = 3 and trip its assertion.
     WrControlMesh m = flat_mesh(7, 7);
     WrSurface s;
-    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, s));
     IstAxis iu, iv;
-    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_u(), IstEnds::translation, &iu));
-    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_v(), IstEnds::translation, &iv));
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_u(), IstEnds::translation, iu));
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_v(), IstEnds::translation, iv));
     WrIstAxis au, av;
-    REQUIRE(make_wr_ist_axis(iu, 2, &au));
-    REQUIRE(make_wr_ist_axis(iv, 2, &av));
+    REQUIRE(make_wr_ist_axis(iu, 2, au));
+    REQUIRE(make_wr_ist_axis(iv, 2, av));
     REQUIRE(s.set_axes(au.axis(), av.axis()));
     CHECK(s.max_level() == 2);
     HierarchicalOptions o;
     o.levels = 3;
     HierarchicalSampling hs;
-    const Status st = sample_hierarchy(s, o, &hs);
+    const Status st = sample_hierarchy(s, o, hs);
     CHECK(!st);
     CHECK(std::string(st.message()).find("K = 3") != std::string::npos);
     o.levels = 2;
-    CHECK(sample_hierarchy(s, o, &hs));
+    CHECK(sample_hierarchy(s, o, hs));
     WrTessellationOptions to;
     to.grid_level = 1;
     WrMesh wm;
     for (WrSurfaceForm f : {WrSurfaceForm::wr, WrSurfaceForm::superposed_direct}) {
         to.form = f;
         to.levels = 3;
-        CHECK(!tessellate_wr_surface(s, nullptr, to, &wm));
+        CHECK(!tessellate_wr_surface(s, nullptr, to, wm));
         to.levels = 2;
-        CHECK(tessellate_wr_surface(s, nullptr, to, &wm));
+        CHECK(tessellate_wr_surface(s, nullptr, to, wm));
     }
     WrAxis bad = au.axis();
     bad.max_level = -1;
@@ -220,17 +220,17 @@ TEST_CASE(
     // became int(NaN) as a knot-span index (a read far outside the control grid).
     WrControlMesh m = flat_mesh(7, 7);
     WrSurface s;
-    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, &s));
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, s));
     IstAxis iu;
-    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_u(), IstEnds::translation, &iu));
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_u(), IstEnds::translation, iu));
     WrIstAxis a;
-    REQUIRE(make_wr_ist_axis(iu, 2, &a));
+    REQUIRE(make_wr_ist_axis(iu, 2, a));
     REQUIRE(s.set_axes(a.axis(), a.axis()));
     HierarchicalOptions o;
     o.levels = 2;
     o.interpolation = SampleInterpolation::hermite;
     HierarchicalSampling hs;
-    REQUIRE(sample_hierarchy(s, o, &hs));
+    REQUIRE(sample_hierarchy(s, o, hs));
     const float nan = std::nanf("");
     const float inf = INFINITY;
     CHECK(length(s.wr_point(nan, 0.5f, 2) - s.wr_point(0.0f, 0.5f, 2)) < 1e-6f);
@@ -298,13 +298,13 @@ TEST_CASE(
         m.points[std::size_t(i)].height = p[i][3];
     }
     WrSurface s;
-    REQUIRE(make_wr_surface(m, SurfaceBasis::bezier, 3, &s));
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bezier, 3, s));
     IstAxis iu, iv;
-    REQUIRE(ist_fully_connected_axis(5, 1, s.spans_u(), IstEnds::translation, &iu));
-    REQUIRE(ist_fully_connected_axis(5, 1, s.spans_v(), IstEnds::translation, &iv));
+    REQUIRE(ist_fully_connected_axis(5, 1, s.spans_u(), IstEnds::translation, iu));
+    REQUIRE(ist_fully_connected_axis(5, 1, s.spans_v(), IstEnds::translation, iv));
     WrIstAxis au, av;
-    REQUIRE(make_wr_ist_axis(iu, 2, &au));
-    REQUIRE(make_wr_ist_axis(iv, 2, &av));
+    REQUIRE(make_wr_ist_axis(iu, 2, au));
+    REQUIRE(make_wr_ist_axis(iv, 2, av));
     CountedAxis cu{au.axis()}, cv{av.axis()};
     REQUIRE(s.set_axes(cu.axis(), cv.axis()));
     WrTessellationOptions o;
@@ -313,7 +313,7 @@ TEST_CASE(
     o.grid_level = 2;
     o.subdivisions = 2;
     WrMesh wm;
-    REQUIRE(tessellate_wr_surface(s, nullptr, o, &wm));
+    REQUIRE(tessellate_wr_surface(s, nullptr, o, wm));
     REQUIRE(wm.grid_u == 53);
     REQUIRE(wm.grid_v == 53);
     CHECK(cu.calls == wm.grid_u);  // one (F^2)^{-1}(u) per column (k = 0 is the identity)

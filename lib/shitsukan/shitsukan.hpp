@@ -11,7 +11,7 @@
 //   Camera camera = perspective_camera({1.9f, 2.4f, 4.2f}, {0, 0, 0}, {0, 1, 0}, 30, 128, 128);
 //   RgbImage image;
 //   if (s) s = render_solid_texture(camera, mesh.view(), lattice.view(), okada1987_marble(),
-//                                   &image);
+//                                   image);
 //   if (s) s = write_png("marble_torus.png", image.view());
 //   return s;
 //

@@ -140,7 +140,7 @@ SHITSUKAN_FIGURE(foundation_coverage, "foundation", "coverage",
     Camera big_cam = orthographic_camera({0, 0, 1}, {0, 0, 0}, {0, 1, 0}, 1.0f, big, big);
     std::vector<WireEdge> edges(std::size_t(3 * mesh.triangle_count));
     int n = 0;
-    SHITSUKAN_TRY(collect_edges(mesh, edges.data(), int(edges.size()), &n));
+    SHITSUKAN_TRY(collect_edges(mesh, edges.data(), int(edges.size()), n));
     WireOptions w;
     w.color = Rgb8{20, 20, 20};
     SHITSUKAN_TRY(draw_edges(big_cam, full_frame_band(out.view(), out_depth.view()), mesh,

@@ -114,7 +114,7 @@ SHITSUKAN_FIGURE(foundation_lit_torus, "foundation", "lit_torus",
     ctx.chosen("frame", fmt("%d x %d, fov 40 deg", size, size), "the papers' 512 x 512");
     DrawOptions opt;
     opt.model = Mat4::rotate_x(0.3f);
-    SHITSUKAN_TRY(apply_gouraud(&torus, opt.model, studio.material, {0.2f, 0.55f, 0.6f}, cam.eye,
+    SHITSUKAN_TRY(apply_gouraud(torus, opt.model, studio.material, {0.2f, 0.55f, 0.6f}, cam.eye,
                                 studio.lights, 2));
     auto shader = [](const Fragment& f) { return to_rgb8(f.color); };
     Target t(size);

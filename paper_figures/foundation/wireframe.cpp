@@ -49,7 +49,7 @@ SHITSUKAN_FIGURE(foundation_wireframe, "foundation", "wireframe",
         MeshView mesh = part.mesh->view();
         std::vector<WireEdge> edges(std::size_t(3 * mesh.triangle_count));
         int n = 0;
-        SHITSUKAN_TRY(collect_edges(mesh, edges.data(), int(edges.size()), &n));
+        SHITSUKAN_TRY(collect_edges(mesh, edges.data(), int(edges.size()), n));
         WireOptions w;
         w.model = part.opt->model;
         w.color = part.ink;

@@ -28,7 +28,7 @@ SHITSUKAN_FIGURE(fig03_unit_ist, "fujimoto2000", "fig03",
     ctx.chosen("followed moves", "000 .. 004 and their ancestors",
                "the paper marks 000, 001, .., 004 with symbols (§2.2.1(1))");
     IstDiagram d;
-    SHITSUKAN_TRY(ist_unit_axis(n, k_max, &d.ist.axis));
+    SHITSUKAN_TRY(ist_unit_axis(n, k_max, d.ist.axis));
     d.unit_labels = true;
     d.rows.push_back(diagram_row(d.ist, "u*", k_max, DiagramStage{0, false}));
     for (int k = 0; k <= k_max; ++k) {
@@ -66,7 +66,7 @@ SHITSUKAN_FIGURE(fig04_unit_ist_n, "fujimoto2000", "fig04",
     float height = 0;
     for (int n = 1; n <= 4; ++n) {
         IstDiagram d;
-        SHITSUKAN_TRY(ist_unit_axis(n, 2, &d.ist.axis));
+        SHITSUKAN_TRY(ist_unit_axis(n, 2, d.ist.axis));
         d.unit_labels = true;
         d.rows.push_back(diagram_row(d.ist, "u^1", 2, DiagramStage{1, false}));
         d.rows.push_back(diagram_row(d.ist, "u^2", 2, DiagramStage{2, false}));

@@ -53,7 +53,7 @@ Status connected_figure(FigureContext& ctx, const IstShuffle& shuffle, bool half
     const int k_max = 3;
     const double wide = 6.0;  // base interval 6 is this many times wider than the others
     IstDiagram d;
-    SHITSUKAN_TRY(ist_connected_axis(shuffle, k_max, kBases, IstEnds::cyclic, &d.ist.axis));
+    SHITSUKAN_TRY(ist_connected_axis(shuffle, k_max, kBases, IstEnds::cyclic, d.ist.axis));
     double total = double(kBases - 1) + wide, x = 0;
     d.ist.edges.push_back(0.0);
     for (int b = 0; b < kBases; ++b) {
@@ -123,7 +123,7 @@ SHITSUKAN_FIGURE(fig06a_fully_connected, "fujimoto2000", "fig06a",
              "step by 0.400 between neighbours, 0.440 between runs of 5 and 0.444 between runs "
              "of 25 (§2.2.2(2), fractions in base 5; checked in tests/test_wrinkly_ist.cpp).");
     IstShuffle s;
-    SHITSUKAN_TRY(ist_shuffle_fully_connected(5, &s));
+    SHITSUKAN_TRY(ist_shuffle_fully_connected(5, s));
     return connected_figure(ctx, s, true, "fig 6(a)  fully-connected IST  N = 5");
 }
 
@@ -159,9 +159,9 @@ SHITSUKAN_FIGURE(fig07_external_shuffles, "fujimoto2000", "fig07",
                              "fig 7(c)  crossed pairs"};
     for (int i = 0; i < 3; ++i) {
         IstShuffle s;
-        SHITSUKAN_TRY(ist_shuffle_named(names[i], 5, &s));
+        SHITSUKAN_TRY(ist_shuffle_named(names[i], 5, s));
         IstAxis axis;
-        SHITSUKAN_TRY(ist_connected_axis(s, 1, kBases, IstEnds::cyclic, &axis));
+        SHITSUKAN_TRY(ist_connected_axis(s, 1, kBases, IstEnds::cyclic, axis));
         panels.push_back(shuffle_panel(axis, titles[i]));
     }
     DiagramLayout layout;
@@ -181,7 +181,7 @@ SHITSUKAN_FIGURE(fig08_fully_connected_shuffles, "fujimoto2000", "fig08",
                              "fig 8(c)  N = 7"};
     for (int i = 0; i < 3; ++i) {
         IstAxis axis;
-        SHITSUKAN_TRY(ist_fully_connected_axis(ns[i], 1, kBases, IstEnds::cyclic, &axis));
+        SHITSUKAN_TRY(ist_fully_connected_axis(ns[i], 1, kBases, IstEnds::cyclic, axis));
         panels.push_back(shuffle_panel(axis, titles[i]));
     }
     DiagramLayout layout;
@@ -198,7 +198,7 @@ SHITSUKAN_FIGURE(fig09_translation_ends, "fujimoto2000", "fig09",
               "§2.2.2(1)");
     ctx.chosen("iterations", "3, with the u^{k.5} axes", "fig 9's depth is not stated");
     IstDiagram d;
-    SHITSUKAN_TRY(ist_fully_connected_axis(3, k_max, 5, IstEnds::translation, &d.ist.axis));
+    SHITSUKAN_TRY(ist_fully_connected_axis(3, k_max, 5, IstEnds::translation, d.ist.axis));
     for (int k = 0; k <= k_max; ++k) {
         DiagramRow row = diagram_row(d.ist, fmt("u^%d", k), k, DiagramStage{k, false});
         if (k < k_max) row.tick_depth = k + 1;

@@ -148,7 +148,7 @@ SHITSUKAN_FIGURE(fig11_scale_reverse_unit, "fujimoto2000", "fig11",
     ctx.given("rule", "alpha^3 = alpha^0 with its digits reversed", "eq. (7)");
     ctx.chosen("u^0 scale", "uniform", "the paper compresses parts of u^0 to fit the page");
     ScalePlotInput in;
-    SHITSUKAN_TRY(ist_unit_axis(5, 3, &in.axis));
+    SHITSUKAN_TRY(ist_unit_axis(5, 3, in.axis));
     in.title = "fig 11  unit-IST scale reverse rule  N = 5";
     in.y_label = "\xce\xb1^3 on u^3";
     ctx.note("Walking along u^0 (eq. 5, the last digit fastest) the image jumps by 100 (sc1), "
@@ -165,7 +165,7 @@ SHITSUKAN_FIGURE(fig12_scale_reverse_fully, "fujimoto2000", "fig12",
               "eq. (12)");
     ctx.chosen("axis", "13 base intervals 0..12, cyclic", "images reach 6 intervals away");
     ScalePlotInput in;
-    SHITSUKAN_TRY(ist_fully_connected_axis(5, 3, 13, IstEnds::cyclic, &in.axis));
+    SHITSUKAN_TRY(ist_fully_connected_axis(5, 3, 13, IstEnds::cyclic, in.axis));
     in.base = 6;
     in.title = "fig 12  fully-connected IST scale reverse rule  N = 5  base 6";
     in.y_label = "\xce\xb1^3 (base.digits, fraction base 5)";

@@ -115,7 +115,7 @@ Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
 
     WrControlMesh mesh = f.mesh();
     WrSurface surface;
-    SHITSUKAN_TRY(make_wr_surface(mesh, f.basis, 3, &surface));
+    SHITSUKAN_TRY(make_wr_surface(mesh, f.basis, 3, surface));
     AxisPair axes;
     SHITSUKAN_TRY(make_axes(surface, f.kind, "fully", f.n, K + 1, &axes));  // K + 1: zooms
     SHITSUKAN_TRY(surface.set_axes(axes.u.axis(), axes.v.axis()));
@@ -175,7 +175,7 @@ Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
                "adaptive sampling reduced to one level per view");
     const auto t0 = Clock::now();
     WrMesh wm;
-    SHITSUKAN_TRY(tessellate_wr_surface(surface, nullptr, o, &wm));
+    SHITSUKAN_TRY(tessellate_wr_surface(surface, nullptr, o, wm));
     const double t_tess = seconds_since(t0);
     const auto t1 = Clock::now();
     RasterStats stats;

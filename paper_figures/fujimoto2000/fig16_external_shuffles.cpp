@@ -48,7 +48,7 @@ Status run_panel(FigureContext& ctx, char panel) {
                "shows the external shuffle's connection density, as (b) shows the spans");
     WrControlMesh mesh = fig16_mesh();
     WrSurface surface;
-    SHITSUKAN_TRY(make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface));
+    SHITSUKAN_TRY(make_wr_surface(mesh, SurfaceBasis::bspline, 3, surface));
     RgbImage img(size, size);
     Shading shading;
     const Camera camera = shot_camera(kShot, size, size);
@@ -67,7 +67,7 @@ Status run_panel(FigureContext& ctx, char panel) {
     o.grid_level = K;
     o.subdivisions = quick ? 1 : 2;
     WrMesh wm;
-    SHITSUKAN_TRY(tessellate_wr_surface(surface, nullptr, o, &wm));
+    SHITSUKAN_TRY(tessellate_wr_surface(surface, nullptr, o, wm));
     if (panel == 'b') color_by_source_span(&wm, surface, 0);
     if (panel >= 'd') color_by_source_span(&wm, surface, K);
     RasterStats stats;

@@ -95,7 +95,7 @@ struct RowSurface {
 Status make_row_surface(const SuperFigure& f, bool changed, float delta, RowSurface* out) {
     out->mesh = f.mesh(changed);
     for (WrControlPoint& p : out->mesh.points) p.delta = delta;  // constant ratio function
-    SHITSUKAN_TRY(make_wr_surface(out->mesh, f.basis, 3, &out->surface));
+    SHITSUKAN_TRY(make_wr_surface(out->mesh, f.basis, 3, out->surface));
     SHITSUKAN_TRY(make_axes(out->surface, f.kind, "fully", 3, kMaxWrLevel, &out->axes));
     return out->surface.set_axes(out->axes.u.axis(), out->axes.v.axis());
 }
@@ -123,7 +123,7 @@ Status panel_options(const SuperFigure& f, const RowSurface& rs, int panel, bool
         HierarchicalOptions ho;
         ho.levels = std::max(a.sum_levels, 1);
         ho.interpolation = SampleInterpolation::hermite;
-        SHITSUKAN_TRY(sample_hierarchy(rs.surface, ho, hs));
+        SHITSUKAN_TRY(sample_hierarchy(rs.surface, ho, *hs));
         o->form = WrSurfaceForm::superposed;
         o->grid_level = coarse ? std::min(a.grid_level, 3) : a.grid_level;
         o->subdivisions = 1;
@@ -148,7 +148,7 @@ Status measure_reach(const SuperFigure& f, int panel, float delta, bool quick, i
         HierarchicalSampling hs;
         std::string unused;
         SHITSUKAN_TRY(panel_options(f, rs, panel, quick, true, size, &o, &hs, &unused));
-        SHITSUKAN_TRY(evaluate_wr_grid(rs.surface, panel >= 4 ? &hs : nullptr, o, &m[row]));
+        SHITSUKAN_TRY(evaluate_wr_grid(rs.surface, panel >= 4 ? &hs : nullptr, o, m[row]));
     }
     long moved = 0;
     double big = 0;
@@ -210,7 +210,7 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, char row, int panel) 
         ctx.chosen("adaptive sampling", chosen, "cells <= 2 px, omitted rest of the sum < 0.5 px");
     }
     WrMesh wm;
-    SHITSUKAN_TRY(tessellate_wr_surface(rs.surface, panel >= 4 ? &hs : nullptr, o, &wm));
+    SHITSUKAN_TRY(tessellate_wr_surface(rs.surface, panel >= 4 ? &hs : nullptr, o, wm));
     RasterStats stats;
     SHITSUKAN_TRY(render_opaque(camera, wm.mesh, img.view(), shading, &stats));
     ctx.note(fmt("%d triangles; superposition steps used: max %d, mean %.2f.",

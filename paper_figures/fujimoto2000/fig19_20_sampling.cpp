@@ -76,7 +76,7 @@ Status run19(FigureContext& ctx, char panel) {
                              "(c) linear interpolation H^2(u)", "(d) Hermite interpolation"};
     axes(c, p, titles[panel - 'a']);
     IstAxis ist;
-    SHITSUKAN_TRY(ist_unit_axis(3, 2, &ist));
+    SHITSUKAN_TRY(ist_unit_axis(3, 2, ist));
     const Rgb8 blue{30, 80, 200}, red{210, 40, 30}, light{170, 190, 235};
     const int n = quick ? 200 : 900;
     auto curve = [&](auto f, Rgb8 col, float width) {

@@ -132,7 +132,7 @@ TerrainMeasure measure_terrain(const WrSurface& surface, const WrMesh& wm) {
 
 Status make_terrain_surface(float delta, WrControlMesh* mesh, WrSurface* surface, AxisPair* axes) {
     *mesh = terrain_mesh(delta);
-    SHITSUKAN_TRY(make_wr_surface(*mesh, SurfaceBasis::bspline, 3, surface));
+    SHITSUKAN_TRY(make_wr_surface(*mesh, SurfaceBasis::bspline, 3, *surface));
     SHITSUKAN_TRY(make_axes(*surface, IstKind::fully_connected, "fully", 3, kMaxWrLevel, axes));
     return surface->set_axes(axes->u.axis(), axes->v.axis());
 }
@@ -167,14 +167,14 @@ Status render_panel(bool quick, char panel, RgbImage* img, StageTimes* times, Wr
         ho.jitter_height = kJitterHeight;
         ho.jitter_color = kJitterColor;
         ho.seed = 21;
-        SHITSUKAN_TRY(sample_hierarchy(surface, ho, &hs));
+        SHITSUKAN_TRY(sample_hierarchy(surface, ho, hs));
         o.form = WrSurfaceForm::superposed;
         o.tail_tolerance = a.world_tolerance;
         times->levels = ho.levels;
     }
     WrMesh wm;
     SHITSUKAN_TRY(
-        evaluate_wr_grid(surface, o.form == WrSurfaceForm::superposed ? &hs : nullptr, o, &wm));
+        evaluate_wr_grid(surface, o.form == WrSurfaceForm::superposed ? &hs : nullptr, o, wm));
     times->sampling = seconds_since(t0);
     t0 = Clock::now();
     polygonise_wr_grid(surface, &wm);

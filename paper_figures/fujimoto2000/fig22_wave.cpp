@@ -61,7 +61,7 @@ Status draw_panel(bool quick, char row, int col, RgbView view, StageTimes* t) {
     const float delta = col >= 2 ? kDeltas[col - 2] : 0.5f;
     WrControlMesh mesh = wave_mesh(delta);
     WrSurface surface;
-    SHITSUKAN_TRY(make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface));
+    SHITSUKAN_TRY(make_wr_surface(mesh, SurfaceBasis::bspline, 3, surface));
     const int levels = quick ? 2 : kLevels;  // quick: 5^2 instead of 5^3 small intervals
     AxisPair axes;
     SHITSUKAN_TRY(make_axes(surface, row == 'b' ? IstKind::connected : IstKind::fully_connected,
@@ -96,12 +96,12 @@ Status draw_panel(bool quick, char row, int col, RgbView view, StageTimes* t) {
         ho.jitter_height = 0.15f;
         ho.jitter_color = 0.04f;
         ho.seed = 22;
-        SHITSUKAN_TRY(sample_hierarchy(surface, ho, &hs));
+        SHITSUKAN_TRY(sample_hierarchy(surface, ho, hs));
         o.form = WrSurfaceForm::superposed;
     }
     WrMesh wm;
     SHITSUKAN_TRY(
-        evaluate_wr_grid(surface, o.form == WrSurfaceForm::superposed ? &hs : nullptr, o, &wm));
+        evaluate_wr_grid(surface, o.form == WrSurfaceForm::superposed ? &hs : nullptr, o, wm));
     t->sampling = seconds_since(t0);
     t0 = Clock::now();
     polygonise_wr_grid(surface, &wm);

@@ -69,7 +69,7 @@ const Shot kShot{{0.0f, 2.6f, 7.2f}, {0.0f, 2.3f, 0.0f}, {0, 1, 0}, 42.0f};
 Status draw_panel(bool quick, char kind, int setting, RgbView view, StageTimes* t, WrMesh* keep) {
     WrControlMesh mesh = flame_mesh(kSettings[setting]);
     WrSurface surface;
-    SHITSUKAN_TRY(make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface));
+    SHITSUKAN_TRY(make_wr_surface(mesh, SurfaceBasis::bspline, 3, surface));
     AxisPair axes;
     SHITSUKAN_TRY(make_axes(surface, IstKind::fully_connected, "fully", 3, kLevels, &axes));
     SHITSUKAN_TRY(surface.set_axes(axes.u.axis(), axes.v.axis()));
@@ -98,13 +98,13 @@ Status draw_panel(bool quick, char kind, int setting, RgbView view, StageTimes* 
         ho.jitter_color = 0.06f;
         ho.jitter_transparency = 0.08f;
         ho.seed = 23;
-        SHITSUKAN_TRY(sample_hierarchy(surface, ho, &hs));
+        SHITSUKAN_TRY(sample_hierarchy(surface, ho, hs));
         o.form = WrSurfaceForm::superposed;
     } else {
         o.form = WrSurfaceForm::plain;
     }
     WrMesh wm;
-    SHITSUKAN_TRY(evaluate_wr_grid(surface, kind == '3' ? &hs : nullptr, o, &wm));
+    SHITSUKAN_TRY(evaluate_wr_grid(surface, kind == '3' ? &hs : nullptr, o, wm));
     t->sampling = seconds_since(t0);
     t0 = Clock::now();
     polygonise_wr_grid(surface, &wm);

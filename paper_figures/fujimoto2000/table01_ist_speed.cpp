@@ -69,7 +69,7 @@ Status time_rows_of_n(FigureContext& ctx, int ni) {
     const int n = kNs[ni];
     for (int k = 1; k <= 6; ++k) {
         IstAxis axis;
-        SHITSUKAN_TRY(ist_fully_connected_axis(n, k, base_intervals, IstEnds::cyclic, &axis));
+        SHITSUKAN_TRY(ist_fully_connected_axis(n, k, base_intervals, IstEnds::cyclic, axis));
         IstOriginal original;
         original.base_intervals = base_intervals;
         original.crossing_all = (n - 1) / 2;

@@ -177,19 +177,19 @@ Status make_axes(const WrSurface& surface, IstKind kind, const char* shuffle_nam
                  int max_level, AxisPair* out) {
     IstAxis iu, iv;
     if (kind == IstKind::unit) {
-        SHITSUKAN_TRY(ist_unit_axis(n, 1, surface.spans_u(), &iu));
-        SHITSUKAN_TRY(ist_unit_axis(n, 1, surface.spans_v(), &iv));
+        SHITSUKAN_TRY(ist_unit_axis(n, 1, surface.spans_u(), iu));
+        SHITSUKAN_TRY(ist_unit_axis(n, 1, surface.spans_v(), iv));
     } else if (kind == IstKind::fully_connected) {
-        SHITSUKAN_TRY(ist_fully_connected_axis(n, 1, surface.spans_u(), IstEnds::translation, &iu));
-        SHITSUKAN_TRY(ist_fully_connected_axis(n, 1, surface.spans_v(), IstEnds::translation, &iv));
+        SHITSUKAN_TRY(ist_fully_connected_axis(n, 1, surface.spans_u(), IstEnds::translation, iu));
+        SHITSUKAN_TRY(ist_fully_connected_axis(n, 1, surface.spans_v(), IstEnds::translation, iv));
     } else {
         IstShuffle sh;
-        SHITSUKAN_TRY(ist_shuffle_named(shuffle_name, n, &sh));
-        SHITSUKAN_TRY(ist_connected_axis(sh, 1, surface.spans_u(), IstEnds::translation, &iu));
-        SHITSUKAN_TRY(ist_connected_axis(sh, 1, surface.spans_v(), IstEnds::translation, &iv));
+        SHITSUKAN_TRY(ist_shuffle_named(shuffle_name, n, sh));
+        SHITSUKAN_TRY(ist_connected_axis(sh, 1, surface.spans_u(), IstEnds::translation, iu));
+        SHITSUKAN_TRY(ist_connected_axis(sh, 1, surface.spans_v(), IstEnds::translation, iv));
     }
-    SHITSUKAN_TRY(make_wr_ist_axis(iu, max_level, &out->u));
-    SHITSUKAN_TRY(make_wr_ist_axis(iv, max_level, &out->v));
+    SHITSUKAN_TRY(make_wr_ist_axis(iu, max_level, out->u));
+    SHITSUKAN_TRY(make_wr_ist_axis(iv, max_level, out->v));
     return Status::success();
 }
 

@@ -15,15 +15,15 @@ Status species_run(Species species, bool quick, const SpeciesRun** out) {
         r.params.species = species_preset(species);
         if (quick) r.params.N_R = 32, r.params.N_H = 24;
         const auto t0 = std::chrono::steady_clock::now();
-        SHITSUKAN_TRY(build_cylinder(r.params, &r.bark));
+        SHITSUKAN_TRY(build_cylinder(r.params, r.bark));
         const float T = r.params.T;
         const float times[] = {0.6f * T, 0.75f * T, 0.9f * T, T};
         CrackRunOptions opt;
         opt.snapshot_times = times;
         opt.snapshot_count = 4;
-        SHITSUKAN_TRY(grow_and_crack(r.bark, opt, &r.run));
+        SHITSUKAN_TRY(grow_and_crack(r.bark, opt, r.run));
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        return measure_regions(r.bark, T, r.bark.net.W.data(), &r.regions);
+        return measure_regions(r.bark, T, r.bark.net.W.data(), r.regions);
     }, out);
 }
 

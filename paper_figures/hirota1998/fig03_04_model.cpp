@@ -38,7 +38,7 @@ SHITSUKAN_FIGURE(hirota_fig03, "hirota1998", "fig03",
     CylinderParams p;
     p.N_R = 36, p.N_H = 10;  // chosen here: reduced so every spring can be seen
     BarkCylinder bark;
-    SHITSUKAN_TRY(build_cylinder(p, &bark));
+    SHITSUKAN_TRY(build_cylinder(p, bark));
     ctx.chosen("N_R x N_H", "36 x 10", "a reduced cylinder: every node and spring visible");
     ctx.given("R0", fmt("sqrt(3) L0 N_R / (4 pi) = %.3f cm", double(bark.R0)), "Table 1");
     ctx.given("H0", fmt("L0 N_H = %.2f cm", double(bark.H0)), "Table 1");
@@ -202,7 +202,7 @@ SHITSUKAN_FIGURE(hirota_fig04, "hirota1998", "fig04",
     }
     // Cracks (ribbons), then springs, then nodes.
     std::vector<CrackRibbon> cracks;
-    SHITSUKAN_TRY(crack_ribbons(bark, T, W, &cracks));
+    SHITSUKAN_TRY(crack_ribbons(bark, T, W, cracks));
     for (const CrackRibbon& r : cracks) {
         if (!inside(r.midpoint)) continue;
         Vec3 q[2][4];

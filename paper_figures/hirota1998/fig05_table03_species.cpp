@@ -36,7 +36,7 @@ std::string cm(float x) { return x < 0 ? std::string("(>20)") : fmt("%.2f", doub
 Status render_trunk(const SpeciesRun& s, const RgbImage& map, float px_per_cm, RgbView target) {
     const float T = s.params.T;
     TriangleMesh trunk;
-    SHITSUKAN_TRY(make_trunk_mesh(s.bark, T, s.bark.net.W.data(), &trunk));
+    SHITSUKAN_TRY(make_trunk_mesh(s.bark, T, s.bark.net.W.data(), trunk));
     const float H = s.bark.H0 * (1.0f + axial_strain(s.params, T));
     const float R = s.bark.R0 + s.params.delta_r * T;
     const float C = s.bark.circumference * (1.0f + hoop_strain(s.params, T));
@@ -149,7 +149,7 @@ SHITSUKAN_FIGURE(hirota_fig05, "hirota1998", "fig05",
         SHITSUKAN_TRY(write_bark_csv(s.bark, T, s.bark.net.W.data(),
                                      ctx.path(fmt("_%d", i + 1)).c_str()));
         TriangleMesh trunk;
-        SHITSUKAN_TRY(make_trunk_mesh(s.bark, T, s.bark.net.W.data(), &trunk));
+        SHITSUKAN_TRY(make_trunk_mesh(s.bark, T, s.bark.net.W.data(), trunk));
         SHITSUKAN_TRY(write_obj(ctx.path(fmt("_%d.obj", i + 1)).c_str(), trunk));
     }
     // "Cracks widen as the trunk grows": the cracks that exist at 0.6 T, measured later.

@@ -33,9 +33,9 @@ Status branch_run(bool quick, const BranchRun** out) {
     return memoised<BranchRun>(quick ? 1 : 0, [&](BranchRun& r) {
         if (quick) r.params.edge_length = 0.6f;  // chosen here: CI's smoke size
         const auto t0 = std::chrono::steady_clock::now();
-        SHITSUKAN_TRY(build_branch_bark(r.params, &r.bark));
+        SHITSUKAN_TRY(build_branch_bark(r.params, r.bark));
         const auto t1 = std::chrono::steady_clock::now();
-        SHITSUKAN_TRY(grow_branch_bark(r.bark, CrackRunOptions{}, &r.run));
+        SHITSUKAN_TRY(grow_branch_bark(r.bark, CrackRunOptions{}, r.run));
         const auto t2 = std::chrono::steady_clock::now();
         r.mesh_seconds = std::chrono::duration<double>(t1 - t0).count();
         r.crack_seconds = std::chrono::duration<double>(t2 - t1).count();

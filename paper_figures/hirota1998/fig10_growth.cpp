@@ -137,7 +137,7 @@ SHITSUKAN_FIGURE(hirota1998_fig10, "hirota1998", "fig10",
     auto t0 = std::chrono::steady_clock::now();
     TriangleMesh mesh;
     BranchMeshStats ms;
-    SHITSUKAN_TRY(make_branch_mesh(shape, L0, &mesh, &ms));
+    SHITSUKAN_TRY(make_branch_mesh(shape, L0, mesh, &ms));
     const double mesh_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const MeshQuality& q = ms.remesh.after;

@@ -61,7 +61,7 @@ SHITSUKAN_FIGURE(okada1987_fig01, "okada1987", "fig01",
     int side = 0;
     for (int n = 1; n <= 6; ++n)
         SHITSUKAN_TRY(build_quadtree_lattice(q, levels[std::size_t(n)].data(),
-                                             levels[std::size_t(n)].size() * sizeof(float), &side,
+                                             levels[std::size_t(n)].size() * sizeof(float), side,
                                              n));
     ctx.note("Each panel shows the heights defined after level n, each as the square around it; "
              "a level halves the spacing and adds corrections of amplitude exp(-(n-1)·beta).");
@@ -82,7 +82,7 @@ SHITSUKAN_FIGURE(okada1987_fig02, "okada1987", "fig02",
     for (int n = 1; n <= 6; ++n)
         SHITSUKAN_TRY(build_fractal_lattice(p, levels[std::size_t(n)].data(),
                                             levels[std::size_t(n)].size() * sizeof(float),
-                                            &views[std::size_t(n)], n));
+                                            views[std::size_t(n)], n));
     // The finished partial build equals the shared lattice (same rules, same numbers).
     const LatticeView full = okada::shared_lattice().view();
     int differ = 0;

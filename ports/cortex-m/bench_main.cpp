@@ -85,7 +85,7 @@ int main() {
     const FractalParams p = okada1987_lattice_params();
     LatticeView view;
     timer_start();
-    if (!build_fractal_lattice(p, g_lattice, sizeof g_lattice, &view)) return 1;
+    if (!build_fractal_lattice(p, g_lattice, sizeof g_lattice, view)) return 1;
     bench_line("Type I lattice 65^3 build (M4F)", instructions_since_start(),
                std::uint64_t(kSide) * kSide * kSide, "lattice node");
 

@@ -127,7 +127,7 @@ TypeIIILattice g_type3;  // static: 10.9 KB is no stack object on a microcontrol
 
 void section_lattice() {
     const FractalParams p = okada1987_lattice_params();
-    if (!check(build_fractal_lattice(p, g_lattice, sizeof g_lattice, &g_view), "Type I")) return;
+    if (!check(build_fractal_lattice(p, g_lattice, sizeof g_lattice, g_view), "Type I")) return;
     Fnv all;
     for (float v : g_lattice) all.f(v);
     put("lattice type1 65^3 fnv ");
@@ -186,8 +186,8 @@ void section_slice(const char* name, const SolidMaterial& m) {
 // ---- IST axes ----
 void section_ist() {
     IstAxis full, unit;
-    if (!check(ist_fully_connected_axis(5, 3, 5, IstEnds::cyclic, &full), "IST axis")) return;
-    if (!check(ist_unit_axis(3, 4, &unit), "IST unit axis")) return;
+    if (!check(ist_fully_connected_axis(5, 3, 5, IstEnds::cyclic, full), "IST axis")) return;
+    if (!check(ist_unit_axis(3, 4, unit), "IST unit axis")) return;
     const IstAxis* axes[2] = {&full, &unit};
     const char* names[2] = {"ist fully-connected N5 K3 B5", "ist unit N3 K4"};
     for (int a = 0; a < 2; ++a) {
@@ -339,7 +339,7 @@ void section_status() {
     p.beta = -0.25f;
     float tiny[8];
     LatticeView v;
-    const Status refused = build_fractal_lattice(p, tiny, sizeof tiny, &v);
+    const Status refused = build_fractal_lattice(p, tiny, sizeof tiny, v);
     put("status ");
     put(refused.ok() ? "ok (expected a refusal)" : refused.message());
     put("\n");

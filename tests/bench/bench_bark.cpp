@@ -34,7 +34,7 @@ SHITSUKAN_BENCH(bark_species) {
             const auto t0 = std::chrono::steady_clock::now();
             BarkCylinder bark;
             CrackRun run;
-            if (!build_cylinder(p, &bark).ok() || !grow_and_crack(bark, CrackRunOptions{}, &run).ok()) {
+            if (!build_cylinder(p, bark).ok() || !grow_and_crack(bark, CrackRunOptions{}, run).ok()) {
                 bench::info("bark", "run failed");
                 return;
             }
@@ -52,7 +52,7 @@ SHITSUKAN_BENCH(bark_species) {
                 std::to_string(total).substr(0, 5) + " s (goal < 3 s)");
     // The naive way: re-solve the whole lattice after each break.
     BarkCylinder bark;
-    if (!build_cylinder(camphor, &bark).ok()) return;
+    if (!build_cylinder(camphor, bark).ok()) return;
     float g_max = 0;
     for (const BarkSpring& s : bark.net.springs) g_max = std::max(g_max, s.growth_rate);
     const float tol = camphor.tolerance * camphor.species.L0 * g_max;
@@ -86,11 +86,11 @@ SHITSUKAN_BENCH(bark_layered_and_branch) {
     if (quick) bp.edge_length = 0.6f;
     t0 = std::chrono::steady_clock::now();
     BranchBark branch;
-    if (!build_branch_bark(bp, &branch).ok()) return;
+    if (!build_branch_bark(bp, branch).ok()) return;
     const double mesh_s = seconds_since(t0);
     t0 = std::chrono::steady_clock::now();
     CrackRun run;
-    if (!grow_branch_bark(branch, CrackRunOptions{}, &run).ok()) return;
+    if (!grow_branch_bark(branch, CrackRunOptions{}, run).ok()) return;
     const double crack_s = seconds_since(t0);
     bench::info("bark branch growth run (fig11), " + std::to_string(branch.mesh.vertex_count()) +
                     " nodes",

@@ -13,7 +13,7 @@ using namespace shitsukan;
 
 SHITSUKAN_BENCH(ist_formula_vs_procedure) {
     IstAxis axis;
-    if (!ist_fully_connected_axis(5, 6, 5, IstEnds::cyclic, &axis)) return;
+    if (!ist_fully_connected_axis(5, 6, 5, IstEnds::cyclic, axis)) return;
     IstOriginal original;
     original.base_intervals = 5;
     original.crossing_all = 2;

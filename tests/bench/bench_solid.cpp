@@ -192,11 +192,11 @@ SHITSUKAN_BENCH(solid_lattice_build) {
     FractalParams params;
     std::vector<float> values(65 * 65 * 65);
     LatticeView v;
-    if (!set_up(build_fractal_lattice(params, values.data(), values.size() * sizeof(float), &v),
+    if (!set_up(build_fractal_lattice(params, values.data(), values.size() * sizeof(float), v),
                 "65^3 lattice build"))
         return;
     double build = bench::ns_per_op([&] {
-        (void)build_fractal_lattice(params, values.data(), values.size() * sizeof(float), &v);
+        (void)build_fractal_lattice(params, values.data(), values.size() * sizeof(float), v);
         bench::sink(values[1000]);
     });
     double draws = bench::ns_per_op([&] {

@@ -49,12 +49,12 @@ SHITSUKAN_BENCH(wrinkly_terrain) {
     const int size = 800;
     WrControlMesh mesh = terrain();
     WrSurface surface;
-    if (!make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface)) return;
+    if (!make_wr_surface(mesh, SurfaceBasis::bspline, 3, surface)) return;
     IstAxis iu;
-    Status s = ist_fully_connected_axis(3, 1, surface.spans_u(), IstEnds::translation, &iu);
+    Status s = ist_fully_connected_axis(3, 1, surface.spans_u(), IstEnds::translation, iu);
     WrIstAxis au, av;
-    if (s) s = make_wr_ist_axis(iu, 4, &au);
-    if (s) s = make_wr_ist_axis(iu, 4, &av);
+    if (s) s = make_wr_ist_axis(iu, 4, au);
+    if (s) s = make_wr_ist_axis(iu, 4, av);
     if (s) s = surface.set_axes(au.axis(), av.axis());
     if (!bench::set_up(s, "WR terrain")) return;
     const Vec3 eye{2.4f, 3.4f, 7.0f}, target{-0.3f, 0.2f, -0.3f};
@@ -82,8 +82,8 @@ SHITSUKAN_BENCH(wrinkly_terrain) {
         HierarchicalSampling hs;
         WrMesh wm;
         o.form = form;
-        if (form == WrSurfaceForm::superposed) ok &= sample_hierarchy(surface, ho, &hs).ok();
-        ok &= evaluate_wr_grid(surface, &hs, o, &wm).ok();
+        if (form == WrSurfaceForm::superposed) ok &= sample_hierarchy(surface, ho, hs).ok();
+        ok &= evaluate_wr_grid(surface, &hs, o, wm).ok();
         auto t1 = std::chrono::steady_clock::now();
         polygonise_wr_grid(surface, &wm);
         auto t2 = std::chrono::steady_clock::now();

@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
     const Camera camera =
         perspective_camera({1.6f, 2.5f, 2.8f}, {0, 0, 0}, {0, 1, 0}, 30.0f, 128, 128);
     RgbImage image;
-    if (s) s = render_solid_texture(camera, mesh.view(), lattice.view(), okada1987_marble(), &image);
+    if (s) s = render_solid_texture(camera, mesh.view(), lattice.view(), okada1987_marble(), image);
     if (s && argc > 1) s = write_png(argv[1], image.view());
     if (!s) {
         std::fprintf(stderr, "consumer: %s\n", s.message());

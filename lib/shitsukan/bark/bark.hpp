@@ -25,9 +25,9 @@
 // Manual (a camphor trunk, its Table 3 numbers):
 //   CylinderParams p;  p.species = species_preset(Species::camphor);
 //   BarkCylinder bark;  CrackRun run;  RegionReport rep;
-//   Status s = build_cylinder(p, &bark);
-//   if (s) s = grow_and_crack(bark, CrackRunOptions{}, &run);
-//   if (s) s = measure_regions(bark, p.T, bark.net.W.data(), &rep);
+//   Status s = build_cylinder(p, bark);
+//   if (s) s = grow_and_crack(bark, CrackRunOptions{}, run);
+//   if (s) s = measure_regions(bark, p.T, bark.net.W.data(), rep);
 //   // rep.mean_width x rep.mean_height: about 1.9 x 10.5 cm (paper 1.58 x 11.6)
 //   return s;
 #pragma once

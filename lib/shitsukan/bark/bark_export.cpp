@@ -164,7 +164,7 @@ Status write_crack_svg(const BarkCylinder& bark, float t, const Vec3* W, const c
     }
     std::fprintf(f.f, "</g>\n<g fill=\"#1c140e\">\n");
     std::vector<CrackRibbon> cracks;
-    SHITSUKAN_TRY(crack_ribbons(bark, t, W, &cracks));
+    SHITSUKAN_TRY(crack_ribbons(bark, t, W, cracks));
     for (const CrackRibbon& r : cracks) {
         Vec3 quads[2][4];
         ribbon_quads(r, quads);
@@ -178,10 +178,9 @@ Status write_crack_svg(const BarkCylinder& bark, float t, const Vec3* W, const c
     return f.close(path);
 }
 
-Status make_trunk_mesh(const BarkCylinder& bark, float t, const Vec3* W, TriangleMesh* out) {
+Status make_trunk_mesh(const BarkCylinder& bark, float t, const Vec3* W, TriangleMesh& out) {
     SHITSUKAN_TRY(check_time(bark, t, W));
-    if (!out) return Status::error(StatusCode::invalid_argument, "make_trunk_mesh: out is null");
-    *out = TriangleMesh{};
+    out = TriangleMesh{};
     const int N_R = bark.params.N_R, N_H = bark.params.N_H, n = N_R * N_H;
     const float R = bark.R0 + bark.params.delta_r * t;
     const float C = bark.circumference * (1.0f + hoop_strain(bark.params, t));
@@ -189,7 +188,7 @@ Status make_trunk_mesh(const BarkCylinder& bark, float t, const Vec3* W, Triangl
     auto add = [&](Vec3 x) {  // unrolled (u, z) -> the trunk
         const float angle = x.x / R;
         const Vec3 radial{det_sin(angle), 0.0f, det_cos(angle)};
-        return out->add_vertex({R * radial.x, x.y, R * radial.z}, radial, {x.x / C, x.y / H});
+        return out.add_vertex({R * radial.x, x.y, R * radial.z}, radial, {x.x / C, x.y / H});
     };
     for (int p = 0; p < n; ++p) add(node_position(bark, std::uint32_t(p), t, W));
     for (int r = 0; r < N_H; ++r) {  // column 0 again, one circumference on: closes the seam
@@ -205,7 +204,7 @@ Status make_trunk_mesh(const BarkCylinder& bark, float t, const Vec3* W, Triangl
         }
         // The lattice triangles are clockwise in (u, z); seen from outside (u right, z up)
         // counter-clockwise is the front: reverse.
-        out->add_triangle(v[0], v[2], v[1]);
+        out.add_triangle(v[0], v[2], v[1]);
     }
     return Status::success();
 }

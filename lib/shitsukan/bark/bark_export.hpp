@@ -4,9 +4,9 @@
 //   CylinderParams params;  params.N_R = 16;  params.N_H = 12;  // a small trunk (chosen 128 x 64)
 //   params.species = species_preset(Species::camphor);
 //   BarkCylinder bark;
-//   Status s = build_cylinder(params, &bark);
+//   Status s = build_cylinder(params, bark);
 //   CrackRun run;
-//   if (s) s = grow_and_crack(bark, CrackRunOptions{}, &run);
+//   if (s) s = grow_and_crack(bark, CrackRunOptions{}, run);
 //   if (!s) return s;
 //   float T = params.T;
 //   const Vec3* W = bark.net.W.data();
@@ -14,7 +14,7 @@
 //                                                          // _triangles.csv
 //   if (s) s = write_crack_svg(bark, T, W, "camphor.svg"); // the unrolled crack map
 //   TriangleMesh trunk;
-//   if (s) s = make_trunk_mesh(bark, T, W, &trunk);        // then write_obj(...)
+//   if (s) s = make_trunk_mesh(bark, T, W, trunk);         // then write_obj(...)
 //   return s;
 //   #include "shitsukan/bark/crack_events.hpp"
 //
@@ -44,6 +44,6 @@ namespace shitsukan {
 Status write_bark_csv(const BarkCylinder& bark, float t, const Vec3* W, const char* prefix);
 Status write_crack_svg(const BarkCylinder& bark, float t, const Vec3* W, const char* path,
                        float px_per_cm = 24.0f);
-Status make_trunk_mesh(const BarkCylinder& bark, float t, const Vec3* W, TriangleMesh* out);
+Status make_trunk_mesh(const BarkCylinder& bark, float t, const Vec3* W, TriangleMesh& out);
 
 }  // namespace shitsukan

@@ -52,10 +52,8 @@ Status validate(const BranchBarkParams& p) {
     return Status::success();
 }
 
-Status mesh_springs(const TriangleMesh& mesh, std::vector<ConnectionTriangle>* triangles,
-                    std::vector<std::uint32_t>* edge_nodes) {
-    if (!triangles || !edge_nodes)
-        return Status::error(StatusCode::invalid_argument, "mesh_springs: null output");
+Status mesh_springs(const TriangleMesh& mesh, std::vector<ConnectionTriangle>& triangles,
+                    std::vector<std::uint32_t>& edge_nodes) {
     const int nv = mesh.vertex_count(), nt = mesh.triangle_count();
     for (int i = 0; i < nv; ++i)
         if (!is_finite(mesh.positions[std::size_t(i)]))
@@ -83,14 +81,14 @@ Status mesh_springs(const TriangleMesh& mesh, std::vector<ConnectionTriangle>* t
                                  "mesh_springs: edge %u-%u is shared by more than two triangles",
                                  unsigned(sorted[i] >> 32), unsigned(sorted[i] & 0xffffffffu));
     sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
-    edge_nodes->clear();
+    edge_nodes.clear();
     for (std::uint64_t e : sorted) {
-        edge_nodes->push_back(std::uint32_t(e >> 32));
-        edge_nodes->push_back(std::uint32_t(e & 0xffffffffu));
+        edge_nodes.push_back(std::uint32_t(e >> 32));
+        edge_nodes.push_back(std::uint32_t(e & 0xffffffffu));
     }
-    triangles->assign(std::size_t(nt), ConnectionTriangle{});
+    triangles.assign(std::size_t(nt), ConnectionTriangle{});
     for (int t = 0; t < nt; ++t) {
-        ConnectionTriangle& ct = (*triangles)[std::size_t(t)];
+        ConnectionTriangle& ct = triangles[std::size_t(t)];
         for (int k = 0; k < 3; ++k) {
             ct.node[k] = mesh.indices[std::size_t(3 * t + k)];
             ct.corner[k] = mesh.positions[ct.node[k]];
@@ -102,20 +100,18 @@ Status mesh_springs(const TriangleMesh& mesh, std::vector<ConnectionTriangle>* t
     return Status::success();
 }
 
-Status build_branch_bark(const BranchBarkParams& params, BranchBark* out) {
-    if (!out) return Status::error(StatusCode::invalid_argument, "build_branch_bark: out is null");
+Status build_branch_bark(const BranchBarkParams& params, BranchBark& out) {
     SHITSUKAN_TRY(validate(params));
     TriangleMesh mesh;
     BranchMeshStats stats;
-    SHITSUKAN_TRY(make_branch_mesh(params.shape, params.edge_length, &mesh, &stats));
+    SHITSUKAN_TRY(make_branch_mesh(params.shape, params.edge_length, mesh, &stats));
     SHITSUKAN_TRY(build_bark_on_mesh(params, mesh, out));
-    out->mesh_stats = stats;
+    out.mesh_stats = stats;
     return Status::success();
 }
 
 Status build_bark_on_mesh(const BranchBarkParams& params, const TriangleMesh& mesh,
-                          BranchBark* out) {
-    if (!out) return Status::error(StatusCode::invalid_argument, "build_bark_on_mesh: out is null");
+                          BranchBark& out) {
     SHITSUKAN_TRY(validate(params));
     if (mesh.normals.size() != mesh.positions.size())
         return Status::error(StatusCode::invalid_argument,
@@ -126,12 +122,12 @@ Status build_bark_on_mesh(const BranchBarkParams& params, const TriangleMesh& me
         if (!is_finite(mesh.normals[i]) || std::fabs(length(mesh.normals[i]) - 1.0f) > 1e-3f)
             return Status::error(StatusCode::invalid_argument,
                                  "build_bark_on_mesh: normal %zu is not a unit vector", i);
-    BranchBark& b = *out;
+    BranchBark& b = out;
     b = BranchBark{};
     b.params = params;
     b.mesh = mesh;
     std::vector<std::uint32_t> edge_nodes;
-    SHITSUKAN_TRY(mesh_springs(b.mesh, &b.triangles, &edge_nodes));
+    SHITSUKAN_TRY(mesh_springs(b.mesh, b.triangles, edge_nodes));
     const int n = b.mesh.vertex_count(), m = int(edge_nodes.size() / 2);
     // §5.1, Fig. 9: connection areas -> constants (the cylinder's function).
     b.node_area.resize(std::size_t(n));
@@ -178,7 +174,7 @@ Status build_bark_on_mesh(const BranchBarkParams& params, const TriangleMesh& me
     return finalize_network(net);
 }
 
-Status grow_branch_bark(BranchBark& bark, const CrackRunOptions& options, CrackRun* out) {
+Status grow_branch_bark(BranchBark& bark, const CrackRunOptions& options, CrackRun& out) {
     float g_max = 0.0f;
     for (const BarkSpring& s : bark.net.springs) g_max = std::max(g_max, std::fabs(s.growth_rate));
     const float tol = bark.params.tolerance * bark.params.edge_length * g_max;

@@ -4,9 +4,9 @@
 //   BranchBarkParams p;                          // MODEL.md §2.3 branch values
 //   p.edge_length = 0.8f;                        // coarser than the figure's, to be quick
 //   BranchBark bark;
-//   Status s = build_branch_bark(p, &bark);     // mesh, springs on its edges, constants
+//   Status s = build_branch_bark(p, bark);      // mesh, springs on its edges, constants
 //   CrackRun run;
-//   if (s) s = grow_branch_bark(bark, CrackRunOptions{}, &run);
+//   if (s) s = grow_branch_bark(bark, CrackRunOptions{}, run);
 //   if (!s) return s;
 //   std::uint32_t i = 0;  float t = 0.5f * p.growth.duration;
 //   Vec3 x = branch_node_position(bark, i, t, bark.net.W.data());   // node i at time t
@@ -57,8 +57,8 @@ Status validate(const BranchBarkParams& p);
 // Springs and connection triangles of any triangle mesh: one spring per edge, in the order of
 // (smaller vertex, larger vertex). Refuses non-finite positions, degenerate triangles and edges
 // shared by more than two triangles.
-Status mesh_springs(const TriangleMesh& mesh, std::vector<ConnectionTriangle>* triangles,
-                    std::vector<std::uint32_t>* edge_nodes /* 2 per spring */);
+Status mesh_springs(const TriangleMesh& mesh, std::vector<ConnectionTriangle>& triangles,
+                    std::vector<std::uint32_t>& edge_nodes /* 2 per spring */);
 
 struct BranchBark {
     BranchBarkParams params;
@@ -70,12 +70,12 @@ struct BranchBark {
     SpringNetwork net;                          // dim 3
 };
 
-Status build_branch_bark(const BranchBarkParams& params, BranchBark* out);
+Status build_branch_bark(const BranchBarkParams& params, BranchBark& out);
 // The same on a mesh of your own (positions, unit normals per vertex, a manifold): the bark of
 // any shape. params.shape is used only for the growth's centre if you set it there.
 Status build_bark_on_mesh(const BranchBarkParams& params, const TriangleMesh& mesh,
-                          BranchBark* out);
-Status grow_branch_bark(BranchBark& bark, const CrackRunOptions& options, CrackRun* out);
+                          BranchBark& out);
+Status grow_branch_bark(BranchBark& bark, const CrackRunOptions& options, CrackRun& out);
 
 // Node i at time t: its anchor A_i(t) plus t·W_i.
 Vec3 branch_node_position(const BranchBark& bark, std::uint32_t i, float t, const Vec3* W);

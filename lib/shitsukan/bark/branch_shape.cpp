@@ -119,7 +119,7 @@ void branch_shape_box(const BranchShapeParams& s, float spacing, Vec3* box_min, 
 }
 
 Status make_branch_mesh(const BranchShapeParams& params, float target_edge_length,
-                        TriangleMesh* out, BranchMeshStats* stats) {
+                        TriangleMesh& out, BranchMeshStats* stats) {
     SHITSUKAN_TRY(validate_branch_shape(params));
     const float L0 = target_edge_length;
     if (!is_finite(L0) || !(L0 > 0.0f))
@@ -159,7 +159,7 @@ Status make_branch_mesh(const BranchShapeParams& params, float target_edge_lengt
     SHITSUKAN_TRY(mesh_topology(mesh, &topo));
     s->boundary_loops = topo.boundary_loops;
     s->euler_characteristic = topo.euler_characteristic;
-    *out = std::move(mesh);
+    out = std::move(mesh);
     return Status::success();
 }
 

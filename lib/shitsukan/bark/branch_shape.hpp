@@ -4,7 +4,7 @@
 // Manual
 //   BranchShapeParams shape;                               // MODEL.md §2.3 values
 //   TriangleMesh mesh;  BranchMeshStats stats;
-//   Status s = make_branch_mesh(shape, 0.6f, &mesh, &stats);  // 0.33: ~3,500 nodes; n = ∇f/|∇f|
+//   Status s = make_branch_mesh(shape, 0.6f, mesh, &stats);   // 0.33: ~3,500 nodes; n = ∇f/|∇f|
 //   Vec3 p{0.5f, 1.0f, 2.0f};
 //   float f = branch_shape_value(shape, p);                // < 0 inside the wood
 //   LimbDistances d = limb_distances(shape, p);            // trunk / branch zones (fig11)
@@ -100,7 +100,7 @@ struct BranchMeshStats {
 // L0 (8 passes); normals n_i = ∇f/|∇f| (analytic). L0 in [0.05, 5] cm (too_large below:
 // chosen here, ~160k nodes at 0.05 cm).
 Status make_branch_mesh(const BranchShapeParams& params, float target_edge_length,
-                        TriangleMesh* out, BranchMeshStats* stats = nullptr);
+                        TriangleMesh& out, BranchMeshStats* stats = nullptr);
 
 // ---- §5.2 anisotropic growth ----
 struct AnisotropicGrowth {

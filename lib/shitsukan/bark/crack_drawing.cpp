@@ -44,10 +44,11 @@ CrackRibbon crack_ribbon(const BarkCylinder& bark, std::uint32_t spring, float t
 }
 
 Status crack_ribbons(const BarkCylinder& bark, float t, const Vec3* W,
-                     std::vector<CrackRibbon>* out, bool include_weak) {
-    if (!out || !W)
-        return Status::error(StatusCode::invalid_argument, "crack_ribbons: null argument");
-    out->clear();
+                     std::vector<CrackRibbon>& out, bool include_weak) {
+    if (!W)
+        return Status::error(StatusCode::invalid_argument,
+                             "crack_ribbons: null displacement field W");
+    out.clear();
     std::vector<std::uint8_t> strong;
     if (include_weak) strong_springs(bark, t, &strong);
     for (std::size_t s = 0; s < bark.net.springs.size(); ++s) {
@@ -57,7 +58,7 @@ Status crack_ribbons(const BarkCylinder& bark, float t, const Vec3* W,
         if (!broken && !weak) continue;
         CrackRibbon r = crack_ribbon(bark, std::uint32_t(s), t, W);
         if (weak) r.weak = true, r.width = 0.0f;
-        out->push_back(r);
+        out.push_back(r);
     }
     return Status::success();
 }

@@ -4,15 +4,15 @@
 //   CylinderParams params;  params.N_R = 16;  params.N_H = 12;  // a small trunk (chosen 128 x 64)
 //   params.species = species_preset(Species::camphor);
 //   BarkCylinder bark;
-//   Status s = build_cylinder(params, &bark);
+//   Status s = build_cylinder(params, bark);
 //   CrackRun run;
-//   if (s) s = grow_and_crack(bark, CrackRunOptions{}, &run);
+//   if (s) s = grow_and_crack(bark, CrackRunOptions{}, run);
 //   if (!s) return s;
 //   float T = params.T;
 //   const Vec3* W = bark.net.W.data();
 //   float t = T;
 //   std::vector<CrackRibbon> cracks;
-//   s = crack_ribbons(bark, t, W, &cracks);         // one per spring broken by time t
+//   s = crack_ribbons(bark, t, W, cracks);          // one per spring broken by time t
 //   Vec3 quads[2][4];
 //   if (!cracks.empty()) ribbon_quads(cracks[0], quads);  // fill both quads in a dark colour
 //   return s;
@@ -56,7 +56,7 @@ CrackRibbon crack_ribbon(const BarkCylinder& bark, std::uint32_t spring, float t
 
 // Every spring broken by time t (and, with include_weak, every weak spring), in spring order.
 Status crack_ribbons(const BarkCylinder& bark, float t, const Vec3* W,
-                     std::vector<CrackRibbon>* out, bool include_weak = false);
+                     std::vector<CrackRibbon>& out, bool include_weak = false);
 
 // The ribbon as two quads, C1-M and M-C2, each widened by width/2 (at least min_width/2) on
 // both sides along the spring.

@@ -34,8 +34,7 @@ void record_snapshot(const SpringNetwork& net, float t, int breaks, CrackRun* ou
 }  // namespace
 
 Status run_cracking(SpringNetwork& net, float T, float tol, const CrackRunOptions& options,
-                    CrackRun* out) {
-    if (!out) return Status::error(StatusCode::invalid_argument, "run_cracking: out is null");
+                    CrackRun& out) {
     if (!(is_finite(T) && T > 0.0f) || !(is_finite(tol) && tol > 0.0f))
         return Status::error(StatusCode::invalid_argument,
                              "run_cracking: T and the tolerance must be > 0 (got %g, %g)",
@@ -53,8 +52,8 @@ Status run_cracking(SpringNetwork& net, float T, float tol, const CrackRunOption
                                  "(time %d is %g)",
                                  double(T), i, double(ts));
     }
-    *out = CrackRun{};
-    out->tolerance = tol;
+    out = CrackRun{};
+    out.tolerance = tol;
     const std::uint64_t updates0 = net.updates;
 
     // The intact network's equilibrium at unit growth (free edges make W != 0 from the start).
@@ -76,16 +75,16 @@ Status run_cracking(SpringNetwork& net, float T, float tol, const CrackRunOption
         const std::uint32_t s = tree.top();
         const float ts = tree.time(s);
         if (!(ts <= T)) break;
-        if (ts < t) ++out->cascade_breaks;  // already past its threshold: breaks now
+        if (ts < t) ++out.cascade_breaks;  // already past its threshold: breaks now
         t = std::max(t, ts);
         while (next_snapshot < options.snapshot_count &&
                options.snapshot_times[next_snapshot] < t)
             record_snapshot(net, options.snapshot_times[next_snapshot++],
-                            int(out->breaks.size()), out);
+                            int(out.breaks.size()), &out);
 
         // Break it, re-solve the neighbourhood, update the events of the springs that moved.
         break_spring(net, s, t);
-        out->breaks.push_back({s, t});
+        out.breaks.push_back({s, t});
         tree.set(s, kNever);
         const BarkSpring& sp = net.springs[s];
         std::uint32_t seeds[2] = {sp.i, sp.j};
@@ -112,14 +111,14 @@ Status run_cracking(SpringNetwork& net, float T, float tol, const CrackRunOption
         }
     }
     while (next_snapshot < options.snapshot_count)
-        record_snapshot(net, options.snapshot_times[next_snapshot++], int(out->breaks.size()),
-                        out);
+        record_snapshot(net, options.snapshot_times[next_snapshot++], int(out.breaks.size()),
+                        &out);
     if (options.progress) options.progress(1.0f, options.progress_user);
-    out->node_updates = net.updates - updates0;
+    out.node_updates = net.updates - updates0;
     return Status::success();
 }
 
-Status grow_and_crack(BarkCylinder& bark, const CrackRunOptions& options, CrackRun* out) {
+Status grow_and_crack(BarkCylinder& bark, const CrackRunOptions& options, CrackRun& out) {
     float g_max = 0.0f;
     for (const BarkSpring& s : bark.net.springs) g_max = std::max(g_max, std::fabs(s.growth_rate));
     // Relaxation tolerance (MODEL.md §3.3): tau·L0·max g_s, in cm per unit time of W.

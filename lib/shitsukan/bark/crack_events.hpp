@@ -2,11 +2,11 @@
 //
 // Manual
 //   CylinderParams params;  params.N_R = 16;  params.N_H = 12;  // chosen 128 x 64
-//   BarkCylinder bark;  Status s = build_cylinder(params, &bark);
+//   BarkCylinder bark;  Status s = build_cylinder(params, bark);
 //   CrackRun run;
 //   const float snaps[] = {0.6f * params.T};
 //   CrackRunOptions opt;  opt.snapshot_times = snaps;  opt.snapshot_count = 1;
-//   if (s) s = grow_and_crack(bark, opt, &run);    // run.breaks: (spring, time) in order
+//   if (s) s = grow_and_crack(bark, opt, run);     // run.breaks: (spring, time) in order
 //   return s;
 //
 // The paper grows the inner layer and lets a spring break "when its elongation passes its
@@ -63,10 +63,10 @@ struct CrackRun {
 // Generic driver: a network whose strains grow as t·E_s, from t = 0 to T. tol is the
 // relaxation tolerance on W.
 Status run_cracking(SpringNetwork& net, float T, float tol, const CrackRunOptions& options,
-                    CrackRun* out);
+                    CrackRun& out);
 
 // The two-layer cylinder from t = 0 to params.T, tolerance tau·L0·max g_s.
-Status grow_and_crack(BarkCylinder& bark, const CrackRunOptions& options, CrackRun* out);
+Status grow_and_crack(BarkCylinder& bark, const CrackRunOptions& options, CrackRun& out);
 
 // A 64-bit hash of the break sequence (canonical keys in order): determinism checks.
 std::uint64_t break_sequence_hash(const SpringNetwork& net, const CrackRun& run, int count);

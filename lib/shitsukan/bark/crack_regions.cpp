@@ -186,22 +186,23 @@ void crack_intercepts(const BarkCylinder& bark, float t,
 
 }  // namespace
 
-Status measure_regions(const BarkCylinder& bark, float t, const Vec3* W, RegionReport* out,
+Status measure_regions(const BarkCylinder& bark, float t, const Vec3* W, RegionReport& out,
                        int min_nodes) {
-    if (!out || !W)
-        return Status::error(StatusCode::invalid_argument, "measure_regions: null argument");
+    if (!W)
+        return Status::error(StatusCode::invalid_argument,
+                             "measure_regions: null displacement field W");
     if (!(is_finite(t) && t >= 0.0f))
         return Status::error(StatusCode::invalid_argument,
                              "measure_regions: time must be >= 0 (got %g)", double(t));
-    *out = RegionReport{};
+    out = RegionReport{};
     std::vector<std::uint8_t> strong;
     strong_springs(bark, t, &strong);                       // step 1
     std::vector<std::int32_t> component, size;
     strong_components(bark.net, strong, &component, &size);  // step 2
-    out->components = int(size.size());
-    region_extents(bark, t, W, strong, component, size, min_nodes, out);  // steps 3-4
-    table3_statistics(out);
-    crack_intercepts(bark, t, component, out);
+    out.components = int(size.size());
+    region_extents(bark, t, W, strong, component, size, min_nodes, &out);  // steps 3-4
+    table3_statistics(&out);
+    crack_intercepts(bark, t, component, &out);
     return Status::success();
 }
 

@@ -4,14 +4,14 @@
 //   CylinderParams params;  params.N_R = 16;  params.N_H = 12;  // a small trunk (chosen 128 x 64)
 //   params.species = species_preset(Species::camphor);
 //   BarkCylinder bark;
-//   Status s = build_cylinder(params, &bark);
+//   Status s = build_cylinder(params, bark);
 //   CrackRun run;
-//   if (s) s = grow_and_crack(bark, CrackRunOptions{}, &run);
+//   if (s) s = grow_and_crack(bark, CrackRunOptions{}, run);
 //   if (!s) return s;
 //   float T = params.T;
 //   const Vec3* W = bark.net.W.data();
 //   RegionReport rep;
-//   s = measure_regions(bark, params.T, bark.net.W.data(), &rep);
+//   s = measure_regions(bark, params.T, bark.net.W.data(), rep);
 //   // rep.mean_width, rep.mean_height, rep.max_width, rep.max_height   // cm, as Table 3
 //   // rep.regions[i]: nodes, width, height, wraps, full_height; rep.label[p]: node p's region
 //   return s;
@@ -68,7 +68,7 @@ constexpr int kMinRegionNodes = 3;  // chosen here: single nodes at junctions ar
 
 // Measures at time t with displacement field W (valid at t); a spring counts as broken when
 // its t_break is in [0, t].
-Status measure_regions(const BarkCylinder& bark, float t, const Vec3* W, RegionReport* out,
+Status measure_regions(const BarkCylinder& bark, float t, const Vec3* W, RegionReport& out,
                        int min_nodes = kMinRegionNodes);
 
 // strong[s] = spring s intact at t and in at least one intact triangle.

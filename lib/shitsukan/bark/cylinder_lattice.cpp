@@ -169,11 +169,9 @@ Status set_constants(BarkCylinder& b) {
 
 }  // namespace
 
-Status build_cylinder(const CylinderParams& params, BarkCylinder* out, bool reverse_springs) {
-    if (!out)
-        return Status::error(StatusCode::invalid_argument, "build_cylinder: out is null");
+Status build_cylinder(const CylinderParams& params, BarkCylinder& out, bool reverse_springs) {
     SHITSUKAN_TRY(validate(params));
-    BarkCylinder& b = *out;
+    BarkCylinder& b = out;
     b = BarkCylinder{};
     b.params = params;
     b.R0 = initial_radius(params);  // Table 1

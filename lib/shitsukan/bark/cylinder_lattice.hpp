@@ -3,7 +3,7 @@
 // Manual
 //   CylinderParams p;  p.species = species_preset(Species::pine);
 //   BarkCylinder bark;
-//   Status s = build_cylinder(p, &bark);        // nodes, springs, triangles, constants
+//   Status s = build_cylinder(p, bark);         // nodes, springs, triangles, constants
 //   if (!s) return s;
 //   int i = bark.node(3, 5), sp = bark.spring(3, 5, 0);   // indices (spring: -1 where none)
 //   float t = 0.5f * p.T;
@@ -66,7 +66,7 @@ struct BarkCylinder {
 
 // Builds the lattice, the constants and the thresholds. reverse_springs numbers the springs in
 // reverse (tests: the results must not depend on it).
-Status build_cylinder(const CylinderParams& params, BarkCylinder* out,
+Status build_cylinder(const CylinderParams& params, BarkCylinder& out,
                       bool reverse_springs = false);
 
 // The spring's canonical key and its lattice coordinates.

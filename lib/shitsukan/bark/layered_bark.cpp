@@ -79,7 +79,7 @@ Status LayeredBark::build(const LayeredParams& params) {
     cp.D = params.schedule.D;
     cp.sigma = params.sigma;
     cp.seed = params.seed;
-    SHITSUKAN_TRY(build_cylinder(cp, &lattice_));
+    SHITSUKAN_TRY(build_cylinder(cp, lattice_));
     events_ = EventTree();  // break_until_stable builds it for this lattice
     n_ = lattice_.net.node_count();
     m_ = lattice_.net.spring_count();

@@ -207,9 +207,9 @@ void write_block(BitWriter& bw, const Symbol* sym, std::size_t count, bool last)
 
 }  // namespace
 
-Status zlib_deflate(const std::uint8_t* data, std::size_t size, std::vector<std::uint8_t>* out) {
-    if (out == nullptr || (data == nullptr && size > 0))
-        return Status::error(StatusCode::invalid_argument, "zlib_deflate: null data or out");
+Status zlib_deflate(const std::uint8_t* data, std::size_t size, std::vector<std::uint8_t>& out) {
+    if (data == nullptr && size > 0)
+        return Status::error(StatusCode::invalid_argument, "zlib_deflate: null data");
     if (size > 0x7FFFFFFFu)
         return Status::error(StatusCode::too_large, "zlib_deflate: %zu bytes, more than 2^31",
                              size);
@@ -226,10 +226,10 @@ Status zlib_deflate(const std::uint8_t* data, std::size_t size, std::vector<std:
         prev[i % kWindow] = head[h];
         head[h] = std::int64_t(i);
     };
-    out->clear();
-    out->push_back(0x78);  // CM 8 (deflate), CINFO 7 (32 KiB window)
-    out->push_back(0x9C);  // FLEVEL 2, FCHECK: 0x789C % 31 == 0
-    BitWriter bw(out);
+    out.clear();
+    out.push_back(0x78);  // CM 8 (deflate), CINFO 7 (32 KiB window)
+    out.push_back(0x9C);  // FLEVEL 2, FCHECK: 0x789C % 31 == 0
+    BitWriter bw(&out);
     std::vector<Symbol> block;
     block.reserve(kBlock);
     // The longest match at i (0 if none of 3 or more), from at most kDeflateChain candidates.
@@ -295,7 +295,7 @@ Status zlib_deflate(const std::uint8_t* data, std::size_t size, std::vector<std:
     write_block(bw, block.data(), block.size(), true);
     bw.flush();
     const std::uint32_t adler = detail::adler32(data, size);
-    for (int k = 3; k >= 0; --k) out->push_back(std::uint8_t(adler >> (8 * k)));
+    for (int k = 3; k >= 0; --k) out.push_back(std::uint8_t(adler >> (8 * k)));
     return Status::success();
 }
 

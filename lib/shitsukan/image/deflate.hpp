@@ -4,7 +4,7 @@
 // Manual
 //   const std::uint8_t data[] = "a row, a row, a row of bytes";
 //   std::vector<std::uint8_t> z;
-//   Status s = zlib_deflate(data, sizeof data, &z);  // any zlib inflater reads it back
+//   Status s = zlib_deflate(data, sizeof data, z);   // any zlib inflater reads it back
 //
 // How (RFC 1951 §3.2): LZ77 over a 32 KiB window, candidates from a hash chain of 3-byte
 // prefixes (at most kDeflateChain tried per position, chosen: 32; 128 gains 1.5 % on a
@@ -30,6 +30,6 @@ namespace shitsukan {
 constexpr int kDeflateChain = 32;
 constexpr int kDeflateLazy = 32;  // a match this long is taken without looking one byte on
 
-Status zlib_deflate(const std::uint8_t* data, std::size_t size, std::vector<std::uint8_t>* out);
+Status zlib_deflate(const std::uint8_t* data, std::size_t size, std::vector<std::uint8_t>& out);
 
 }  // namespace shitsukan

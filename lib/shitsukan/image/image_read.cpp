@@ -40,9 +40,9 @@ bool image_reading_available() {
 #endif
 }
 
-Status read_image(const char* path, LoadedImage* out) {
-    if (path == nullptr || !path[0] || out == nullptr)
-        return Status::error(StatusCode::invalid_argument, "read_image: empty path or null out");
+Status read_image(const char* path, LoadedImage& out) {
+    if (path == nullptr || !path[0])
+        return Status::error(StatusCode::invalid_argument, "read_image: empty path");
 #ifdef SHITSUKAN_USE_STB_IMAGE
     int w = 0, h = 0, c = 0;
     LoadedImage img;
@@ -72,7 +72,7 @@ Status read_image(const char* path, LoadedImage* out) {
         img.bits = 8;
     }
     img.width = w, img.height = h, img.channels = c;
-    *out = std::move(img);
+    out = std::move(img);
     return Status::success();
 #else
     return Status::error(StatusCode::not_supported,

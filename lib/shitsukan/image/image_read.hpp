@@ -7,7 +7,7 @@
 //   Status s = write_png("photo.png", photo.view());  // (image_io.hpp) something to read
 //   LoadedImage img;
 //   bool ok = image_reading_available();              // false in a build without stb_image.h
-//   if (s && ok) s = read_image("photo.png", &img);   // img.width, height, channels (1..4), bits
+//   if (s && ok) s = read_image("photo.png", img);    // img.width, height, channels (1..4), bits
 //   if (s && ok) {
 //       std::uint16_t v = img.sample(1, 2, 0);        // 0..255 (bits 8) or 0..65535 (bits 16)
 //   }
@@ -36,7 +36,7 @@ struct LoadedImage {
     }
 };
 
-Status read_image(const char* path, LoadedImage* out);
+Status read_image(const char* path, LoadedImage& out);
 bool image_reading_available();
 
 }  // namespace shitsukan

@@ -48,9 +48,9 @@ Status write_pfm(const char* path, const float* samples, int width, int height, 
     return Status::success();
 }
 
-Status read_pfm(const char* path, PfmImage* out) {
-    if (path == nullptr || !path[0] || out == nullptr)
-        return Status::error(StatusCode::invalid_argument, "read_pfm: empty path or null out");
+Status read_pfm(const char* path, PfmImage& out) {
+    if (path == nullptr || !path[0])
+        return Status::error(StatusCode::invalid_argument, "read_pfm: empty path");
     std::FILE* f = std::fopen(path, "rb");
     if (!f) return Status::error(StatusCode::io_error, "cannot open %s for reading", path);
     char magic[3] = {0, 0, 0};
@@ -90,7 +90,7 @@ Status read_pfm(const char* path, PfmImage* out) {
     std::fclose(f);
     if ((scale < 0) != little_endian())
         for (float& v : img.data) swap_bytes(&v);
-    *out = std::move(img);
+    out = std::move(img);
     return Status::success();
 }
 

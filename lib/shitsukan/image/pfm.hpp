@@ -8,7 +8,7 @@
 //   Status s = write_pfm("height.pfm", height.data(), w, h, 1);   // "Pf": gray
 //   if (s) s = write_pfm("normals.pfm", rgb.data(), w, h, 3);     // "PF": r g b interleaved
 //   PfmImage back;
-//   if (s) s = read_pfm("height.pfm", &back);                     // the same floats, bit for bit
+//   if (s) s = read_pfm("height.pfm", back);                      // the same floats, bit for bit
 //   return s;
 //
 // Format: a text header "PF\n" (3 channels) or "Pf\n" (1), "width height\n", a scale
@@ -31,6 +31,6 @@ struct PfmImage {
 };
 
 Status write_pfm(const char* path, const float* samples, int width, int height, int channels);
-Status read_pfm(const char* path, PfmImage* out);
+Status read_pfm(const char* path, PfmImage& out);
 
 }  // namespace shitsukan

@@ -275,7 +275,7 @@ Status encode_png(const char* path, int width, int height, int channels, int bit
     if (bits == 16 && raw_bytes < 0x7FFF0000ull && fits) {
         std::vector<std::uint8_t> filtered;
         filtered_rows(width, height, channels, bits, sample, &filtered);
-        use_compressed = zlib_deflate(filtered.data(), filtered.size(), &compressed).ok() &&
+        use_compressed = zlib_deflate(filtered.data(), filtered.size(), compressed).ok() &&
                          compressed.size() < idat_bytes;
     }
     std::FILE* f = std::fopen(path, "wb");

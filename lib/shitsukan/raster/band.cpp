@@ -107,13 +107,13 @@ Status validate_mesh(const MeshView& mesh) {
     return Status::success();
 }
 
-Status validate_model(const Mat4& model, Mat4* normal_matrix) {
+Status validate_model(const Mat4& model, Mat4& normal_matrix) {
     bool ok = finite_matrix(model);
     Mat4 inv = ok ? inverse(model, &ok) : Mat4::identity();
     if (!ok)
         return Status::error(StatusCode::invalid_argument,
                              "model matrix is singular or has a NaN/inf entry");
-    *normal_matrix = transpose(inv);  // normals transform by the inverse transpose
+    normal_matrix = transpose(inv);  // normals transform by the inverse transpose
     return Status::success();
 }
 

@@ -110,9 +110,8 @@ Status check_view_inputs(const char* who, Vec3 eye, Vec3 target, Vec3 up, int wi
 }  // namespace
 
 Status make_perspective_camera(Vec3 eye, Vec3 target, Vec3 up, float fov_y_degrees, int width,
-                               int height, float near_plane, float far_plane, Camera* out) {
+                               int height, float near_plane, float far_plane, Camera& out) {
     const char* who = "make_perspective_camera";
-    if (out == nullptr) return Status::error(kBad, "%s: out is null", who);
     SHITSUKAN_TRY(
         check_view_inputs(who, eye, target, up, width, height, near_plane, far_plane));
     if (!(fov_y_degrees > 0.0f && fov_y_degrees < 180.0f))
@@ -121,14 +120,13 @@ Status make_perspective_camera(Vec3 eye, Vec3 target, Vec3 up, float fov_y_degre
     Camera c = perspective_camera(eye, target, up, fov_y_degrees, width, height, near_plane,
                                   far_plane);
     SHITSUKAN_TRY(validate_camera(c));  // e.g. a near/far ratio float cannot hold
-    *out = c;
+    out = c;
     return Status::success();
 }
 
 Status make_orthographic_camera(Vec3 eye, Vec3 target, Vec3 up, float half_height, int width,
-                                int height, float near_plane, float far_plane, Camera* out) {
+                                int height, float near_plane, float far_plane, Camera& out) {
     const char* who = "make_orthographic_camera";
-    if (out == nullptr) return Status::error(kBad, "%s: out is null", who);
     SHITSUKAN_TRY(
         check_view_inputs(who, eye, target, up, width, height, near_plane, far_plane));
     if (!(half_height > 0.0f) || !is_finite(half_height))
@@ -137,7 +135,7 @@ Status make_orthographic_camera(Vec3 eye, Vec3 target, Vec3 up, float half_heigh
     Camera c = orthographic_camera(eye, target, up, half_height, width, height, near_plane,
                                    far_plane);
     SHITSUKAN_TRY(validate_camera(c));
-    *out = c;
+    out = c;
     return Status::success();
 }
 

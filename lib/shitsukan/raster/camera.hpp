@@ -17,7 +17,7 @@
 //   // make_orthographic_camera do (a Status naming the bad value), and draw_mesh() /
 //   // draw_edges() refuse a camera that fails validate_camera().
 //   Camera checked;
-//   Status s = make_perspective_camera(eye, target, up, 35.0f, 512, 512, 0.05f, 100.0f, &checked);
+//   Status s = make_perspective_camera(eye, target, up, 35.0f, 512, 512, 0.05f, 100.0f, checked);
 //   return s;
 #pragma once
 
@@ -40,11 +40,11 @@ Camera perspective_camera(Vec3 eye, Vec3 target, Vec3 up, float fov_y_degrees, i
 Camera orthographic_camera(Vec3 eye, Vec3 target, Vec3 up, float half_height, int width,
                            int height, float near_plane = 0.05f, float far_plane = 100.0f);
 // Checked builders: the very camera perspective_camera / orthographic_camera make (same
-// bits), or invalid_argument naming the offending value (then *out is left unchanged).
+// bits), or invalid_argument naming the offending value (then out is left unchanged).
 Status make_perspective_camera(Vec3 eye, Vec3 target, Vec3 up, float fov_y_degrees, int width,
-                               int height, float near_plane, float far_plane, Camera* out);
+                               int height, float near_plane, float far_plane, Camera& out);
 Status make_orthographic_camera(Vec3 eye, Vec3 target, Vec3 up, float half_height, int width,
-                                int height, float near_plane, float far_plane, Camera* out);
+                                int height, float near_plane, float far_plane, Camera& out);
 
 // Is this a camera the rasterizer can use? A frame of at least 1 x 1 pixels; finite view,
 // projection and eye; a view that is a rotation (rows of its 3x3 part orthonormal within

@@ -10,7 +10,7 @@
 //   Vec3 base_color{0.8f, 0.6f, 0.4f};
 //   Mat4 model = Mat4::identity();
 //   TriangleMesh lit = mesh;
-//   if (s) s = apply_gouraud(&lit, model, material, base_color, camera.eye, lights, light_count);
+//   if (s) s = apply_gouraud(lit, model, material, base_color, camera.eye, lights, light_count);
 //   auto shader = [](const Fragment& f) { return to_rgb8(f.color); };   // colours interpolated
 //   RgbImage color(128, 128); FloatImage depth(128, 128);
 //   FrameBand band = full_frame_band(color.view(), depth.view());
@@ -21,7 +21,7 @@
 //   #include "shitsukan/image/image.hpp"
 //   #include "shitsukan/raster/rasterizer.hpp"
 // Lights every vertex once with Blinn-Phong (shading.hpp) and stores the result in
-// mesh->colors (replacing them). Host side: resizes a std::vector.
+// mesh.colors (replacing them). Host side: resizes a std::vector.
 #pragma once
 
 #include "shitsukan/geom/mesh.hpp"
@@ -29,7 +29,7 @@
 
 namespace shitsukan {
 
-Status apply_gouraud(TriangleMesh* mesh, const Mat4& model, const Material& material,
+Status apply_gouraud(TriangleMesh& mesh, const Mat4& model, const Material& material,
                      Vec3 base_color, Vec3 eye, const Light* lights, int light_count);
 
 }  // namespace shitsukan

@@ -517,7 +517,7 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
     SHITSUKAN_TRY(validate_band(camera, band));
     SHITSUKAN_TRY(validate_mesh(mesh));
     Mat4 normal_matrix;
-    SHITSUKAN_TRY(validate_model(options.model, &normal_matrix));
+    SHITSUKAN_TRY(validate_model(options.model, normal_matrix));
 
     const Mat4 mvp = camera.projection * (camera.view * options.model);
     DrawContext ctx{{&mesh, &options.model, &normal_matrix}, &band, shader, user, 0};

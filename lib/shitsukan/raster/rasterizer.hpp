@@ -112,7 +112,7 @@ void clear_band(const FrameBand& band, Rgb8 background);
 // matrix, the inverse transpose).
 Status validate_band(const Camera& camera, const FrameBand& band);
 Status validate_mesh(const MeshView& mesh);
-Status validate_model(const Mat4& model, Mat4* normal_matrix);
+Status validate_model(const Mat4& model, Mat4& normal_matrix);
 
 // Draws the mesh into the band. Shades only fragments that pass the depth test
 // (early z: a pixel is shaded again only by a fragment nearer than all before it, and its

@@ -105,10 +105,8 @@ float view_distance(const Camera& camera, float depth) {
     return b / (z_ndc + a);                             // z_ndc = -a - b / z_eye
 }
 
-Status collect_edges(const MeshView& mesh, WireEdge* edges, int capacity, int* count) {
-    if (count == nullptr)
-        return Status::error(StatusCode::invalid_argument, "collect_edges: count is null");
-    *count = 0;
+Status collect_edges(const MeshView& mesh, WireEdge* edges, int capacity, int& count) {
+    count = 0;
     // The room is checked first, from the counts alone, in 64 bits (3·triangle_count can
     // exceed INT_MAX): validate_mesh reads every index, so it must not run on a count the
     // arrays cannot back.
@@ -146,7 +144,7 @@ Status collect_edges(const MeshView& mesh, WireEdge* edges, int capacity, int* c
             continue;
         edges[unique++] = edges[i];
     }
-    *count = unique;
+    count = unique;
     return Status::success();
 }
 
@@ -165,7 +163,7 @@ Status draw_edges(const Camera& camera, const FrameBand& band, const MeshView& m
                                  "draw_edges: edge %d (%u, %u) is out of range for %d vertices",
                                  i, unsigned(edges[i].a), unsigned(edges[i].b), mesh.vertex_count);
     Mat4 normal_matrix;
-    SHITSUKAN_TRY(validate_model(options.model, &normal_matrix));
+    SHITSUKAN_TRY(validate_model(options.model, normal_matrix));
     if (!(options.depth_tolerance >= 0.0f))
         return Status::error(StatusCode::invalid_argument,
                              "draw_edges: depth_tolerance must be >= 0 (got %g)",

@@ -9,7 +9,7 @@
 //   clear_band(band, Rgb8{0, 0, 0});
 //   std::vector<WireEdge> edges(3 * std::size_t(mesh.view().triangle_count));  // 3 per triangle
 //   int n = 0;
-//   if (s) s = collect_edges(mesh.view(), edges.data(), int(edges.size()), &n);  // once per mesh
+//   if (s) s = collect_edges(mesh.view(), edges.data(), int(edges.size()), n);   // once per mesh
 //   WireOptions w;  w.color = {255, 255, 255};  w.depth_test = true;    // hidden lines
 //   DrawOptions opt;
 //   auto fill_shader = [](const Fragment&) { return Rgb8{40, 40, 40}; };
@@ -57,8 +57,8 @@ struct WireOptions {
     float depth_tolerance = 0.01f;  // relative, see above
 };
 
-// Unique edges of the mesh into edges[0 .. *count). capacity >= 3·triangle_count.
-Status collect_edges(const MeshView& mesh, WireEdge* edges, int capacity, int* count);
+// Unique edges of the mesh into edges[0 .. count). capacity >= 3·triangle_count.
+Status collect_edges(const MeshView& mesh, WireEdge* edges, int capacity, int& count);
 
 // Draws edges[0 .. count) of `mesh`. *pixels_written (optional) is increased by the number
 // of pixels drawn.

@@ -60,7 +60,7 @@ Status draw_crack_map(Canvas& canvas, const BarkCylinder& bark, float t, const V
         if (raster) raster->set_antialias(antialias);
     }
     std::vector<CrackRibbon> cracks;
-    SHITSUKAN_TRY(crack_ribbons(bark, t, W, &cracks, style.include_weak));
+    SHITSUKAN_TRY(crack_ribbons(bark, t, W, cracks, style.include_weak));
     for (const CrackRibbon& r : cracks) {
         // A weak axial spring is a one-node-wide sliver between two vertical cracks, not a
         // crack across it: drawn as part of the sliver (chosen here).

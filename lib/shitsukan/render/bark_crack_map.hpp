@@ -7,8 +7,8 @@
 //   #include "shitsukan/bark/crack_events.hpp"   // build_cylinder, grow_and_crack
 //   CylinderParams p;  p.N_R = 16;  p.N_H = 12;  p.species = species_preset(Species::camphor);
 //   BarkCylinder bark;  CrackRun run;
-//   Status s = build_cylinder(p, &bark);
-//   if (s) s = grow_and_crack(bark, CrackRunOptions{}, &run);
+//   Status s = build_cylinder(p, bark);
+//   if (s) s = grow_and_crack(bark, CrackRunOptions{}, run);
 //   if (!s) return s;
 //   RgbImage map(200, 120, Rgb8{250, 250, 248});
 //   RasterCanvas canvas(map.view());

@@ -53,16 +53,14 @@ Rgb8 to_display_gamma(Vec3 c) {
     return Rgb8{g(c.x), g(c.y), g(c.z)};
 }
 
-Status compute_texture_tangents(const MeshView& mesh, TextureTangents* out) {
-    if (out == nullptr)
-        return Status::error(StatusCode::invalid_argument, "compute_texture_tangents: null out");
+Status compute_texture_tangents(const MeshView& mesh, TextureTangents& out) {
     const int n = mesh.triangle_count;
     if (n < 0)
         return Status::error(StatusCode::invalid_argument,
                              "compute_texture_tangents: triangle count %d < 0", n);
-    out->dpdu.assign(std::size_t(n), Vec3{});
-    out->dpdv.assign(std::size_t(n), Vec3{});
-    return mesh_texture_tangents(mesh, out->dpdu.data(), out->dpdv.data(), n);
+    out.dpdu.assign(std::size_t(n), Vec3{});
+    out.dpdv.assign(std::size_t(n), Vec3{});
+    return mesh_texture_tangents(mesh, out.dpdu.data(), out.dpdv.data(), n);
 }
 
 Rgb8 shade_leather_fragment(const Fragment& f, Vec3 eye, const Blinn1977Material& front,

@@ -11,7 +11,7 @@
 //   TriangleMesh mesh;
 //   if (s) s = make_uv_sphere(1.0f, 32, 16, &mesh);
 //   TextureTangents tangents;                                  // per triangle dP/du, dP/dv
-//   if (s) s = compute_texture_tangents(mesh.view(), &tangents);
+//   if (s) s = compute_texture_tangents(mesh.view(), tangents);
 //   Camera camera = perspective_camera({0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 35.0f, 96, 96);
 //   RgbImage color(96, 96); FloatImage depth(96, 96);
 //   FrameBand band = full_frame_band(color.view(), depth.view());
@@ -67,7 +67,7 @@ Rgb8 to_display_gamma(Vec3 linear);
 struct TextureTangents {
     std::vector<Vec3> dpdu, dpdv;
 };
-Status compute_texture_tangents(const MeshView& mesh, TextureTangents* out);
+Status compute_texture_tangents(const MeshView& mesh, TextureTangents& out);
 
 struct LeatherShading {
     Blinn1977Material front = tokai1994_leather_material();

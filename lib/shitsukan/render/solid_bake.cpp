@@ -21,9 +21,7 @@ std::uint8_t byte_rounded(float v) {
 Rgb8 to_rgb8(Vec3 c) { return Rgb8{byte_rounded(c.x), byte_rounded(c.y), byte_rounded(c.z)}; }
 
 Status check_common(const LatticeView& lattice, const SolidMaterial& material, int width,
-                    int height, const void* out, const char* who) {
-    if (out == nullptr)
-        return Status::error(StatusCode::invalid_argument, "%s: out must not be null", who);
+                    int height, const char* who) {
     if (lattice.values == nullptr || lattice.side < 2)
         return Status::error(StatusCode::invalid_argument, "%s: the lattice is empty", who);
     if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide)
@@ -39,9 +37,9 @@ float edge(Vec2 a, Vec2 b, Vec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a
 
 Status bake_solid_texture(const MeshView& mesh, const LatticeView& lattice,
                           const SolidMaterial& material, const ObjectToLattice& mapping, int width,
-                          int height, RgbImage* out, Rgb8 background, int dilate,
+                          int height, RgbImage& out, Rgb8 background, int dilate,
                           Progress progress) {
-    SHITSUKAN_TRY(check_common(lattice, material, width, height, out, "bake_solid_texture"));
+    SHITSUKAN_TRY(check_common(lattice, material, width, height, "bake_solid_texture"));
     if (mesh.uvs == nullptr)
         return Status::error(StatusCode::invalid_argument,
                              "bake_solid_texture: the mesh has no uv map (vt) to bake onto");
@@ -55,7 +53,7 @@ Status bake_solid_texture(const MeshView& mesh, const LatticeView& lattice,
             return Status::error(StatusCode::invalid_argument,
                                  "bake_solid_texture: index %u out of range (%d vertices)",
                                  mesh.indices[k], mesh.vertex_count);
-    out->resize(width, height, background);
+    out.resize(width, height, background);
     std::vector<std::uint8_t> covered(std::size_t(width) * std::size_t(height), 0);
     const int report_every = std::max(1, mesh.triangle_count / 100);
     for (int t = 0; t < mesh.triangle_count; ++t) {
@@ -85,7 +83,7 @@ Status bake_solid_texture(const MeshView& mesh, const LatticeView& lattice,
                 if (w0 < 0.0f || w1 < 0.0f || w2 < 0.0f) continue;
                 const Vec3 object = p[0] * w0 + p[1] * w1 + p[2] * w2;
                 const Vec3 colour = solid_color(material, lattice, object_to_lattice(object, mapping));
-                out->at(x, y) = to_rgb8(colour);
+                out.at(x, y) = to_rgb8(colour);
                 covered[std::size_t(y) * std::size_t(width) + std::size_t(x)] = 1;
             }
         if (t % report_every == 0) progress.report(float(t) / float(mesh.triangle_count));
@@ -103,11 +101,11 @@ Status bake_solid_texture(const MeshView& mesh, const LatticeView& lattice,
                     const int nx = x + dx[k], ny = y + dy[k];
                     if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
                     if (covered[std::size_t(ny) * width + nx] != 1) continue;
-                    const Rgb8 c = out->at(nx, ny);
+                    const Rgb8 c = out.at(nx, ny);
                     r += c.r, g += c.g, b += c.b, ++n;
                 }
                 if (n == 0) continue;
-                out->at(x, y) = Rgb8{std::uint8_t(r / n), std::uint8_t(g / n), std::uint8_t(b / n)};
+                out.at(x, y) = Rgb8{std::uint8_t(r / n), std::uint8_t(g / n), std::uint8_t(b / n)};
                 next[std::size_t(y) * width + x] = 2;  // filled this ring: a source next ring
             }
         for (std::uint8_t& c : next) c = c ? 1 : 0;
@@ -118,9 +116,9 @@ Status bake_solid_texture(const MeshView& mesh, const LatticeView& lattice,
 }
 
 Status render_solid_slice(const LatticeView& lattice, const SolidMaterial& material,
-                          const SolidSlice& slice, int width, int height, RgbImage* out,
+                          const SolidSlice& slice, int width, int height, RgbImage& out,
                           FloatImage* density, Progress progress) {
-    SHITSUKAN_TRY(check_common(lattice, material, width, height, out, "render_solid_slice"));
+    SHITSUKAN_TRY(check_common(lattice, material, width, height, "render_solid_slice"));
     const float values[10] = {slice.origin.x, slice.origin.y, slice.origin.z, slice.u.x, slice.u.y,
                               slice.u.z,      slice.v.x,      slice.v.y,      slice.v.z, slice.extent};
     for (float v : values)
@@ -130,7 +128,7 @@ Status render_solid_slice(const LatticeView& lattice, const SolidMaterial& mater
     if (!(slice.extent > 0.0f))
         return Status::error(StatusCode::invalid_argument,
                              "render_solid_slice: extent must be > 0 (got %g)", double(slice.extent));
-    out->resize(width, height);
+    out.resize(width, height);
     if (density) density->resize(width, height);
     const float du = slice.extent / float(width), dv = slice.extent / float(height);
     const int report_every = std::max(1, height / 100);
@@ -148,7 +146,7 @@ Status render_solid_slice(const LatticeView& lattice, const SolidMaterial& mater
         turbulence_points(lattice, points.data(), points.size(), d.data());
         for (int i = 0; i < width; ++i) {
             const float g = solid_density_at(material, points[std::size_t(i)], d[std::size_t(i)]);
-            out->at(i, j) = to_rgb8(solid_density_color(material, g));
+            out.at(i, j) = to_rgb8(solid_density_color(material, g));
             if (density) density->at(i, j) = g;
         }
         if (j % report_every == 0) progress.report(float(j) / float(height));

@@ -10,7 +10,7 @@
 //   if (s) s = lattice.build(okada1987_lattice_params());
 //   RgbImage texture;
 //   if (s) s = bake_solid_texture(mesh.view(), lattice.view(), okada1987_marble(),
-//                                 object_to_lattice_mapping(6), 128, 128, &texture);
+//                                 object_to_lattice_mapping(6), 128, 128, texture);
 //   return s;
 //   #include "shitsukan/geom/mesh_builders.hpp"
 //   #include "shitsukan/geom/mesh_fit.hpp"
@@ -18,7 +18,7 @@
 //   #include "shitsukan/solid/okada1987_presets.hpp"
 //
 //   SolidSlice slice;                          // the plane y = 32 of the lattice, x right, z up
-//   s = render_solid_slice(lattice.view(), okada1987_marble(), slice, 512, 512, &texture);
+//   s = render_solid_slice(lattice.view(), okada1987_marble(), slice, 512, 512, texture);
 //
 // Bake: texel (i, j) is the uv point ((i + 0.5)/W, 1 - (j + 0.5)/H) (row 0 = v near 1, the OBJ
 // convention). Each triangle is scan-converted in uv space; a texel centre inside it (edge
@@ -55,12 +55,12 @@ struct SolidSlice {
 
 Status bake_solid_texture(const MeshView& mesh, const LatticeView& lattice,
                           const SolidMaterial& material, const ObjectToLattice& mapping, int width,
-                          int height, RgbImage* out, Rgb8 background = Rgb8{0, 0, 0},
+                          int height, RgbImage& out, Rgb8 background = Rgb8{0, 0, 0},
                           int dilate = 4, Progress progress = Progress{});
 
-// Colours of the slice into *out (resized); densities G' too when `density` is not null.
+// Colours of the slice into out (resized); densities G' too when `density` is not null.
 Status render_solid_slice(const LatticeView& lattice, const SolidMaterial& material,
-                          const SolidSlice& slice, int width, int height, RgbImage* out,
+                          const SolidSlice& slice, int width, int height, RgbImage& out,
                           FloatImage* density = nullptr, Progress progress = Progress{});
 
 }  // namespace shitsukan

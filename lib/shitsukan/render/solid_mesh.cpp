@@ -49,20 +49,18 @@ Status draw_solid_textured_mesh(const Camera& camera, const FrameBand& band, con
 }
 
 Status render_solid_texture(const Camera& camera, const MeshView& mesh, const LatticeView& lattice,
-                            const SolidMaterial& material, RgbImage* out,
+                            const SolidMaterial& material, RgbImage& out,
                             const SolidShading& shading, Rgb8 background,
                             const DrawOptions& options) {
-    if (out == nullptr)
-        return Status::error(StatusCode::invalid_argument, "render_solid_texture: null output");
     SHITSUKAN_TRY(validate_camera(camera));
     SHITSUKAN_TRY(validate_solid_inputs(lattice, material, shading));
     if (camera.width > kMaxFrameSize || camera.height > kMaxFrameSize)
         return Status::error(StatusCode::too_large,
                              "render_solid_texture: frame %d x %d exceeds %d x %d", camera.width,
                              camera.height, kMaxFrameSize, kMaxFrameSize);
-    out->resize(camera.width, camera.height, background);
+    out.resize(camera.width, camera.height, background);
     FloatImage depth(camera.width, camera.height);
-    const FrameBand band = full_frame_band(out->view(), depth.view());
+    const FrameBand band = full_frame_band(out.view(), depth.view());
     clear_band(band, background);
     return draw_solid_textured_mesh(camera, band, mesh, options, lattice, material, shading);
 }

@@ -10,7 +10,7 @@
 //   if (s) s = fit_mesh_to_cube(&mesh, 0.92f);                     // any mesh into [-1, 1]^3
 //   Camera cam = perspective_camera({1.9f, 2.4f, 4.2f}, {0, 0, 0}, {0, 1, 0}, 30, 128, 128);
 //   RgbImage img;
-//   if (s) s = render_solid_texture(cam, mesh.view(), lattice.view(), okada1987_marble(), &img);
+//   if (s) s = render_solid_texture(cam, mesh.view(), lattice.view(), okada1987_marble(), img);
 //   return s;
 //   #include "shitsukan/geom/mesh_builders.hpp"
 //   #include "shitsukan/geom/mesh_fit.hpp"
@@ -68,9 +68,9 @@ Status draw_solid_textured_mesh(const Camera& camera, const FrameBand& band, con
                                 const SolidShading& shading = SolidShading{},
                                 RasterStats* stats = nullptr);
 
-// One call: resizes *out to the camera's frame, clears it to `background`, draws the mesh.
+// One call: resizes out to the camera's frame, clears it to `background`, draws the mesh.
 Status render_solid_texture(const Camera& camera, const MeshView& mesh, const LatticeView& lattice,
-                            const SolidMaterial& material, RgbImage* out,
+                            const SolidMaterial& material, RgbImage& out,
                             const SolidShading& shading = SolidShading{},
                             Rgb8 background = Rgb8{24, 26, 32},
                             const DrawOptions& options = DrawOptions{});

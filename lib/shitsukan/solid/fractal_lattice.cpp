@@ -65,11 +65,11 @@ void compute_new_nodes(const LevelStep& s, int odd_count) {
 }  // namespace
 
 Status build_fractal_lattice(const FractalParams& params, float* buffer, std::size_t buffer_bytes,
-                             LatticeView* out, int levels) {
+                             LatticeView& out, int levels) {
     SHITSUKAN_TRY(validate_fractal_params(params, kTypeIMaxDepth));
-    if (buffer == nullptr || out == nullptr)
+    if (buffer == nullptr)
         return Status::error(StatusCode::invalid_argument,
-                             "build_fractal_lattice: buffer and out must not be null");
+                             "build_fractal_lattice: buffer must not be null");
     const std::uint64_t needed = lattice_bytes(params.R);
     if (std::uint64_t(buffer_bytes) < needed)
         return Status::error(StatusCode::buffer_too_small,
@@ -103,9 +103,9 @@ Status build_fractal_lattice(const FractalParams& params, float* buffer, std::si
         compute_new_nodes(s, 2);  // step (2), eq. (3): the face centres
         compute_new_nodes(s, 3);  // step (3), eq. (4): the cube centres
     }
-    out->values = buffer;
-    out->R = R;
-    out->side = int(side);
+    out.values = buffer;
+    out.R = R;
+    out.side = int(side);
     return Status::success();
 }
 

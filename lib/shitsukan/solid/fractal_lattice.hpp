@@ -5,12 +5,12 @@
 //   FractalParams p;                                   // R = 6: 65^3 points
 //   static float values[65 * 65 * 65];                 // caller memory (1,098,500 bytes)
 //   LatticeView lattice;
-//   Status s = build_fractal_lattice(p, values, sizeof values, &lattice);
+//   Status s = build_fractal_lattice(p, values, sizeof values, lattice);
 //   if (!s) return s;
 //   float v = lattice.at(32, 32, 32);                  // integer lattice coordinates 0..2^R
 //   // stop after level 3 (okada1987 fig. 2): only nodes on a spacing-8 grid are set,
 //   // the rest hold NaN
-//   s = build_fractal_lattice(p, values, sizeof values, &lattice, 3);
+//   s = build_fractal_lattice(p, values, sizeof values, lattice, 3);
 //   return s;
 //
 // Memory: lattice_bytes(R) = (2^R + 1)^3 · 4 bytes; O(2^{3R}) (okada1989 §2-1). A buffer
@@ -46,6 +46,6 @@ struct LatticeView {
 // Builds levels 1..levels (all R levels when levels < 0) into buffer. Nodes of later levels
 // are set to NaN so that a partial lattice cannot be mistaken for a finished one.
 Status build_fractal_lattice(const FractalParams& params, float* buffer, std::size_t buffer_bytes,
-                             LatticeView* out, int levels = -1);
+                             LatticeView& out, int levels = -1);
 
 }  // namespace shitsukan

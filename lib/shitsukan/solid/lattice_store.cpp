@@ -57,7 +57,7 @@ Status FractalLattice::build(const FractalParams& params, std::uint64_t budget_b
     std::vector<float> values(std::size_t(lattice_bytes(params.R) / sizeof(float)));
     LatticeView view;
     SHITSUKAN_TRY(
-        build_fractal_lattice(params, values.data(), values.size() * sizeof(float), &view));
+        build_fractal_lattice(params, values.data(), values.size() * sizeof(float), view));
     values_.swap(values);
     view_ = view;
     view_.values = values_.data();
@@ -96,9 +96,7 @@ Status save_lattice(const std::string& path, const FractalLattice& lattice) {
     return Status::success();
 }
 
-Status load_lattice(const std::string& path, FractalLattice* out, std::uint64_t budget_bytes) {
-    if (out == nullptr)
-        return Status::error(StatusCode::invalid_argument, "load_lattice: out is null");
+Status load_lattice(const std::string& path, FractalLattice& out, std::uint64_t budget_bytes) {
     std::FILE* f = std::fopen(path.c_str(), "rb");
     if (!f)
         return Status::error(StatusCode::io_error, "load_lattice: cannot open %s", path.c_str());
@@ -156,11 +154,11 @@ Status load_lattice(const std::string& path, FractalLattice* out, std::uint64_t 
                              "load_lattice: %s: value %zu is not finite (%g); D(P) promises a "
                              "number",
                              path.c_str(), bad, double(values[bad]));
-    out->values_.swap(values);
-    out->params_ = p;
-    out->view_.values = out->values_.data();
-    out->view_.R = p.R;
-    out->view_.side = int(side);
+    out.values_.swap(values);
+    out.params_ = p;
+    out.view_.values = out.values_.data();
+    out.view_.R = p.R;
+    out.view_.side = int(side);
     return Status::success();
 }
 

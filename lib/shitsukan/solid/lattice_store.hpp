@@ -12,7 +12,7 @@
 //   float d = turbulence(lattice.view(), p);
 //   s = save_lattice("lattice.shl", lattice);         // raw little-endian float32 + header
 //   FractalLattice back;
-//   if (s) s = load_lattice("lattice.shl", &back);
+//   if (s) s = load_lattice("lattice.shl", back);
 //   return s;
 //   #include "shitsukan/solid/turbulence.hpp"
 //
@@ -51,7 +51,7 @@ public:
     std::size_t bytes() const { return values_.size() * sizeof(float); }
 
 private:
-    friend Status load_lattice(const std::string& path, FractalLattice* out,
+    friend Status load_lattice(const std::string& path, FractalLattice& out,
                                std::uint64_t budget_bytes);
     FractalParams params_;
     std::vector<float> values_;
@@ -59,7 +59,7 @@ private:
 };
 
 Status save_lattice(const std::string& path, const FractalLattice& lattice);
-Status load_lattice(const std::string& path, FractalLattice* out,
+Status load_lattice(const std::string& path, FractalLattice& out,
                     std::uint64_t budget_bytes = kDefaultLatticeBudget);
 
 }  // namespace shitsukan

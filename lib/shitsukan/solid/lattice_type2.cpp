@@ -64,7 +64,7 @@ float TypeIILattice::node_value(std::int32_t x, std::int32_t y, std::int32_t z) 
 }
 
 Status TypeIILattice::node_value_checked(std::int32_t x, std::int32_t y, std::int32_t z,
-                                         float* out) {
+                                         float& out) {
     if (!ready_)
         return Status::error(StatusCode::invalid_argument, "Type II lattice: not initialised");
     const std::int32_t last = std::int32_t(1) << params_.R;
@@ -72,9 +72,8 @@ Status TypeIILattice::node_value_checked(std::int32_t x, std::int32_t y, std::in
         return Status::error(StatusCode::out_of_range,
                              "Type II lattice: node (%d, %d, %d) is outside [0, %d]^3", int(x),
                              int(y), int(z), int(last));
-    if (out == nullptr) return Status::error(StatusCode::invalid_argument, "out must not be null");
     SHITSUKAN_TRY(check_list_growth());
-    *out = compute(x, y, z);
+    out = compute(x, y, z);
     return Status::success();
 }
 

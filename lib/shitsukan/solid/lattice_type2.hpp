@@ -43,7 +43,7 @@ public:
     float node_value(std::int32_t x, std::int32_t y, std::int32_t z);  // asserts the range
     // Also refuses (too_large) when the list after this query could outgrow the memory
     // budget (core/memory_budget.hpp; 32 bytes a node and 16 of buckets counted).
-    Status node_value_checked(std::int32_t x, std::int32_t y, std::int32_t z, float* out);
+    Status node_value_checked(std::int32_t x, std::int32_t y, std::int32_t z, float& out);
     float turbulence(Vec3 p);
 
     std::size_t list_size() const { return list_.size(); }

@@ -134,7 +134,7 @@ float TypeIIILattice::node_value(std::int32_t x, std::int32_t y, std::int32_t z)
 }
 
 Status TypeIIILattice::node_value_checked(std::int32_t x, std::int32_t y, std::int32_t z,
-                                          float* out) {
+                                          float& out) {
     if (!built_)
         return Status::error(StatusCode::invalid_argument, "Type III lattice: not initialised");
     const std::int32_t last = std::int32_t(1) << R_;
@@ -142,8 +142,7 @@ Status TypeIIILattice::node_value_checked(std::int32_t x, std::int32_t y, std::i
         return Status::error(StatusCode::out_of_range,
                              "Type III lattice: node (%d, %d, %d) is outside [0, %d]^3", int(x),
                              int(y), int(z), int(last));
-    if (out == nullptr) return Status::error(StatusCode::invalid_argument, "out must not be null");
-    *out = node_value(x, y, z);
+    out = node_value(x, y, z);
     return Status::success();
 }
 
@@ -158,12 +157,11 @@ float TypeIIILattice::turbulence(Vec3 p) {
     return trilinear_corners(unit_cell_corners(ix, iy, iz), fx, fy, fz);  // eq. (6)
 }
 
-Status TypeIIILattice::turbulence_checked(Vec3 p, float* out) {
+Status TypeIIILattice::turbulence_checked(Vec3 p, float& out) {
     if (!built_)
         return Status::error(StatusCode::invalid_argument, "Type III lattice: not initialised");
-    if (out == nullptr) return Status::error(StatusCode::invalid_argument, "out must not be null");
     SHITSUKAN_TRY(check_lattice_point(p, R_));
-    *out = turbulence(p);
+    out = turbulence(p);
     return Status::success();
 }
 

@@ -55,11 +55,11 @@ public:
 
     // The value of node (x, y, z); coordinates must lie in [0, 2^R] (SHITSUKAN_ASSERT).
     float node_value(std::int32_t x, std::int32_t y, std::int32_t z);
-    Status node_value_checked(std::int32_t x, std::int32_t y, std::int32_t z, float* out);
+    Status node_value_checked(std::int32_t x, std::int32_t y, std::int32_t z, float& out);
 
     // D(P), eq. (6), at P in lattice coordinates; clamped outside [0, 2^R]^3.
     float turbulence(Vec3 p);
-    Status turbulence_checked(Vec3 p, float* out);
+    Status turbulence_checked(Vec3 p, float& out);
 
     // true (default): keep the ancestry blocks and the row cache between queries (this
     // library's Type III). false: okada1989's own Type III (§3-3: the list is cleared for

@@ -10,10 +10,10 @@
 namespace shitsukan {
 
 Status build_quadtree_lattice(const QuadtreeParams& params, float* buffer,
-                              std::size_t buffer_bytes, int* side_out, int levels) {
+                              std::size_t buffer_bytes, int& side_out, int levels) {
     SHITSUKAN_TRY(validate_fractal_levels("quadtree lattice", params.R, kQuadtreeMaxDepth,
                                           params.beta, params.corners, 4));
-    if (buffer == nullptr || side_out == nullptr)
+    if (buffer == nullptr)
         return Status::error(StatusCode::invalid_argument, "quadtree lattice: null buffer");
     const int side = (1 << params.R) + 1;
     const std::size_t need = std::size_t(side) * std::size_t(side) * sizeof(float);
@@ -48,7 +48,7 @@ Status build_quadtree_lattice(const QuadtreeParams& params, float* buffer,
                 at(x, y) = (at(x - h, y - h) + at(x + h, y - h) + at(x - h, y + h) +
                             at(x + h, y + h)) * 0.25f + g(x, y);
     }
-    *side_out = side;
+    side_out = side;
     return Status::success();
 }
 

@@ -5,8 +5,8 @@
 //   QuadtreeParams q;                                 // R = 6: 65 x 65 heights
 //   static float heights[65 * 65];
 //   int side = 0;
-//   Status s = build_quadtree_lattice(q, heights, sizeof heights, &side);        // all levels
-//   if (s) s = build_quadtree_lattice(q, heights, sizeof heights, &side, 2);     // levels 1..2
+//   Status s = build_quadtree_lattice(q, heights, sizeof heights, side);         // all levels
+//   if (s) s = build_quadtree_lattice(q, heights, sizeof heights, side, 2);      // levels 1..2
 //   return s;
 //
 // One level n (h = 2^(R-n)): each square of the previous level is cut into four, and its
@@ -36,6 +36,6 @@ struct QuadtreeParams {
 constexpr int kQuadtreeMaxDepth = 12;
 
 Status build_quadtree_lattice(const QuadtreeParams& params, float* buffer,
-                              std::size_t buffer_bytes, int* side, int levels = -1);
+                              std::size_t buffer_bytes, int& side, int levels = -1);
 
 }  // namespace shitsukan

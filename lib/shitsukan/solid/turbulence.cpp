@@ -20,12 +20,12 @@ Status check_lattice_point(Vec3 p, int R) {
     return Status::success();
 }
 
-Status turbulence_checked(const LatticeView& lattice, Vec3 p, float* out) {
-    if (lattice.values == nullptr || out == nullptr)
+Status turbulence_checked(const LatticeView& lattice, Vec3 p, float& out) {
+    if (lattice.values == nullptr)
         return Status::error(StatusCode::invalid_argument,
-                             "turbulence: lattice and out must not be null");
+                             "turbulence: lattice.values must not be null");
     SHITSUKAN_TRY(check_lattice_point(p, lattice.R));
-    *out = turbulence(lattice, p);
+    out = turbulence(lattice, p);
     return Status::success();
 }
 

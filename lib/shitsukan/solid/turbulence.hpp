@@ -8,7 +8,7 @@
 //   LatticeView lattice = store.view();
 //   Vec3 p{10.3f, 40.0f, 31.7f};
 //   float d = turbulence(lattice, Vec3{10.3f, 40.0f, 31.7f});      // Type I view, clamped
-//   s = turbulence_checked(lattice, p, &d);                        // out_of_range outside
+//   s = turbulence_checked(lattice, p, d);                         // out_of_range outside
 //   const float corner_values[8] = {0, 1, 0, 1, 0, 1, 0, 1};
 //   float fx = 0.5f, fy = 0.25f, fz = 0.75f;
 //   float d8 = trilinear_corners(corner_values, fx, fy, fz);       // eq. (6) on one cell
@@ -128,7 +128,7 @@ SHITSUKAN_TURBULENCE_INLINE float turbulence(const LatticeView& lattice, Vec3 p)
     return detail::cell_trilinear(lattice, ix, iy, iz, p.x - float(ix), p.y - float(iy),
                                   p.z - float(iz));
 }
-Status turbulence_checked(const LatticeView& lattice, Vec3 p, float* out);
+Status turbulence_checked(const LatticeView& lattice, Vec3 p, float& out);
 
 // D(P) along a row in x: out[i] = turbulence(lattice, Vec3{start.x + float(i) * step_x,
 // start.y, start.z}) for i in [0, n), bit for bit (tests/test_solid_texture.cpp). The cell and

@@ -20,21 +20,21 @@ float wood_original(Vec3 p, const WoodParams& params) {
     return det_sin(params.k2 * axis_distance(p, params));  // eq. (10)
 }
 
-Status wood_radial_direction(Vec3 p, const WoodParams& params, Vec3* u) {
+Status wood_radial_direction(Vec3 p, const WoodParams& params, Vec3& u) {
     const float r = axis_distance(p, params);
     if (!(r > 0.0f)) {
-        if (u) *u = Vec3{0.0f, 0.0f, 0.0f};
+        u = Vec3{0.0f, 0.0f, 0.0f};
         return Status::error(StatusCode::degenerate,
                              "wood: (%g, %g, %g) lies on the axis (r = 0): no radial direction",
                              double(p.x), double(p.y), double(p.z));
     }
-    if (u) *u = Vec3{(p.x - params.x0) / r, (p.y - params.y0) / r, 0.0f};  // eq. (11)
+    u = Vec3{(p.x - params.x0) / r, (p.y - params.y0) / r, 0.0f};  // eq. (11)
     return Status::success();
 }
 
 float wood_texture(Vec3 p, float d, const WoodParams& params) {
     Vec3 u;
-    (void)wood_radial_direction(p, params, &u);  // u = 0 on the axis: P is not displaced
+    (void)wood_radial_direction(p, params, u);   // u = 0 on the axis: P is not displaced
     return wood_original(pixel_shift(p, params.k, d, u), params);
 }
 

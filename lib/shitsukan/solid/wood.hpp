@@ -13,7 +13,7 @@
 //   float gp = wood_texture(p, turbulence(lattice, p), w);  // G(P + k·D(P)·u_radial)
 //   float t  = wood_unit_range(gp);                    // [0, 1] for lookup_color (eq. (12))
 //   Vec3 u;
-//   if (s) s = wood_radial_direction(p, w, &u);        // degenerate on the axis (r = 0)
+//   if (s) s = wood_radial_direction(p, w, u);         // degenerate on the axis (r = 0)
 //   return s;
 //   #include "shitsukan/solid/lattice_store.hpp"
 //   #include "shitsukan/solid/turbulence.hpp"
@@ -44,7 +44,7 @@ struct WoodParams {
 // okada1987 eq. (10): G(P) = sin(k2·r), r = sqrt((x - x0)^2 + (y - y0)^2).
 float wood_original(Vec3 p, const WoodParams& params);
 // okada1987 eq. (11): u = ((x - x0)/r, (y - y0)/r, 0); degenerate status and u = 0 at r = 0.
-Status wood_radial_direction(Vec3 p, const WoodParams& params, Vec3* u);
+Status wood_radial_direction(Vec3 p, const WoodParams& params, Vec3& u);
 // The wood texture at P: G(P + k·D(P)·u) (okada1989 eq. (7) with u of eq. (11)).
 float wood_texture(Vec3 p, float d, const WoodParams& params);
 // [-1, 1] -> [0, 1]: (G + 1)/2 (chosen here, see above).

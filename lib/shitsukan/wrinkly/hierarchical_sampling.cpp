@@ -140,7 +140,7 @@ WrAttributes HierarchicalSampling::interpolate(int k, const SampleWeights& su,
 }
 
 Status sample_hierarchy(const WrSurface& surface, const HierarchicalOptions& o,
-                        HierarchicalSampling* out) {
+                        HierarchicalSampling& out) {
     if (o.levels < 0 || o.levels > kMaxWrLevel)
         return Status::error(StatusCode::invalid_argument, "levels K must be in 0..%d (got %d)",
                              kMaxWrLevel, o.levels);
@@ -216,7 +216,7 @@ Status sample_hierarchy(const WrSurface& surface, const HierarchicalOptions& o,
             }
         }
     }
-    *out = std::move(hs);
+    out = std::move(hs);
     return Status::success();
 }
 

@@ -18,12 +18,12 @@
 //       for (int c = 0; c < 8; ++c)
 //           mesh.at(c, r).position = {c / 7.0f, r / 7.0f, 0.0f}, mesh.at(c, r).height = 0.05f;
 //   WrSurface surface;
-//   Status s = make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface);
+//   Status s = make_wr_surface(mesh, SurfaceBasis::bspline, 3, surface);
 //   if (!s) return s;
 //   float u = 0.3f, v = 0.6f, tol = 1e-4f;
 //   HierarchicalOptions o;  o.levels = 3;  o.interpolation = SampleInterpolation::hermite;
 //   HierarchicalSampling hs;
-//   Status st = sample_hierarchy(surface, o, &hs);
+//   Status st = sample_hierarchy(surface, o, hs);
 //   if (!st) return st;
 //   SuperposedSample p = superposed_sampled(surface, hs, u, v);       // eq. (20), k = 0..K
 //   SuperposedSample q = superposed_sampled(surface, hs, u, v, tol);  // stop when the rest of
@@ -111,7 +111,7 @@ public:
 
 private:
     friend Status sample_hierarchy(const WrSurface&, const HierarchicalOptions&,
-                                   HierarchicalSampling*);
+                                   HierarchicalSampling&);
     struct Level {
         std::vector<float> pos_u, pos_v;
         std::vector<float> values;  // (j·|pos_u| + i)·channels
@@ -123,7 +123,7 @@ private:
 };
 
 Status sample_hierarchy(const WrSurface& surface, const HierarchicalOptions& options,
-                        HierarchicalSampling* out);
+                        HierarchicalSampling& out);
 
 // eq. (20) at (u, v), with the weights of the steps used renormalised to sum to 1 (eq. 18).
 // tail_tolerance (world units, >= 0): stop before step k once delta^k·max|h_i| — a bound on

@@ -3,7 +3,7 @@
 //
 // Manual
 //   IstAxis axis;                                   // ist_axis.hpp: kind (unit / fully-
-//   Status s = ist_unit_axis(3, 2, &axis);          // connected / connected + IstShuffle), N, K,
+//   Status s = ist_unit_axis(3, 2, axis);           // connected / connected + IstShuffle), N, K,
 //                                                   // B base intervals, cyclic or translation ends
 //   float v = s ? ist_forward(axis, 0.25f) : 0.0f;  // ist_formula.hpp: eqs. (9), (10), (14)
 //   IstDigits a, b;                                 // ist_digits.hpp: alpha^0 -> alpha^K,

@@ -131,8 +131,7 @@ Status ist_validate(const IstAxis& axis) {
     return Status::error(StatusCode::invalid_argument, "IST: unknown kind %d", int(axis.kind));
 }
 
-Status ist_unit_axis(int n, int iterations, int base_intervals, IstAxis* out) {
-    SHITSUKAN_ASSERT(out != nullptr);
+Status ist_unit_axis(int n, int iterations, int base_intervals, IstAxis& out) {
     IstAxis axis;
     axis.kind = IstKind::unit;
     axis.n = n;
@@ -140,17 +139,16 @@ Status ist_unit_axis(int n, int iterations, int base_intervals, IstAxis* out) {
     axis.base_intervals = base_intervals;
     axis.ends = IstEnds::cyclic;
     SHITSUKAN_TRY(ist_validate(axis));
-    *out = axis;
+    out = axis;
     return Status::success();
 }
 
-Status ist_unit_axis(int n, int iterations, IstAxis* out) {
+Status ist_unit_axis(int n, int iterations, IstAxis& out) {
     return ist_unit_axis(n, iterations, 1, out);
 }
 
 Status ist_fully_connected_axis(int n, int iterations, int base_intervals, IstEnds ends,
-                                IstAxis* out) {
-    SHITSUKAN_ASSERT(out != nullptr);
+                                IstAxis& out) {
     SHITSUKAN_TRY(check_n_k(n, iterations));
     IstAxis axis;
     axis.kind = IstKind::fully_connected;
@@ -158,15 +156,14 @@ Status ist_fully_connected_axis(int n, int iterations, int base_intervals, IstEn
     axis.iterations = iterations;
     axis.base_intervals = base_intervals;
     axis.ends = ends;
-    SHITSUKAN_TRY(ist_shuffle_fully_connected(n, &axis.shuffle));
+    SHITSUKAN_TRY(ist_shuffle_fully_connected(n, axis.shuffle));
     SHITSUKAN_TRY(ist_validate(axis));
-    *out = axis;
+    out = axis;
     return Status::success();
 }
 
 Status ist_connected_axis(const IstShuffle& shuffle, int iterations, int base_intervals,
-                          IstEnds ends, IstAxis* out) {
-    SHITSUKAN_ASSERT(out != nullptr);
+                          IstEnds ends, IstAxis& out) {
     IstAxis axis;
     axis.kind = IstKind::connected;
     axis.n = shuffle.n;
@@ -176,16 +173,15 @@ Status ist_connected_axis(const IstShuffle& shuffle, int iterations, int base_in
     axis.shuffle = shuffle;
     SHITSUKAN_TRY(check_shuffle(shuffle, ends));
     SHITSUKAN_TRY(ist_validate(axis));
-    *out = axis;
+    out = axis;
     return Status::success();
 }
 
-Status ist_with_iterations(const IstAxis& axis, int iterations, IstAxis* out) {
-    SHITSUKAN_ASSERT(out != nullptr);
+Status ist_with_iterations(const IstAxis& axis, int iterations, IstAxis& out) {
     IstAxis copy = axis;
     copy.iterations = iterations;
     SHITSUKAN_TRY(ist_validate(copy));
-    *out = copy;
+    out = copy;
     return Status::success();
 }
 
@@ -196,8 +192,7 @@ std::uint64_t ist_sub_interval_count(const IstAxis& axis) {
 }
 
 // fujimoto2000 eq. (26): alpha_0 <- alpha_0 + alpha_1 - M, alpha_1 <- N - 1 - alpha_1.
-Status ist_shuffle_fully_connected(int n, IstShuffle* out) {
-    SHITSUKAN_ASSERT(out != nullptr);
+Status ist_shuffle_fully_connected(int n, IstShuffle& out) {
     SHITSUKAN_TRY(check_n_k(n, 0));
     SHITSUKAN_TRY(check_odd(n));
     IstShuffle s;
@@ -207,12 +202,11 @@ Status ist_shuffle_fully_connected(int n, IstShuffle* out) {
         s.offset[g] = std::int8_t(g - m);
         s.slot[g] = std::uint8_t(n - 1 - g);
     }
-    *out = s;
+    out = s;
     return Status::success();
 }
 
-Status ist_shuffle_none(int n, IstShuffle* out) {
-    SHITSUKAN_ASSERT(out != nullptr);
+Status ist_shuffle_none(int n, IstShuffle& out) {
     SHITSUKAN_TRY(check_n_k(n, 0));
     SHITSUKAN_TRY(check_odd(n));
     IstShuffle s;
@@ -221,7 +215,7 @@ Status ist_shuffle_none(int n, IstShuffle* out) {
         s.offset[g] = 0;
         s.slot[g] = std::uint8_t(g);
     }
-    *out = s;
+    out = s;
     return Status::success();
 }
 
@@ -250,8 +244,8 @@ IstShuffle ist_shuffle_fig6b() {
     return s;
 }
 
-Status ist_shuffle_from_table(int n, const int* offsets, const int* slots, IstShuffle* out) {
-    SHITSUKAN_ASSERT(out != nullptr && offsets != nullptr && slots != nullptr);
+Status ist_shuffle_from_table(int n, const int* offsets, const int* slots, IstShuffle& out) {
+    SHITSUKAN_ASSERT(offsets != nullptr && slots != nullptr);
     SHITSUKAN_TRY(check_n_k(n, 0));
     SHITSUKAN_TRY(check_odd(n));
     IstShuffle s;
@@ -271,7 +265,7 @@ Status ist_shuffle_from_table(int n, const int* offsets, const int* slots, IstSh
         s.slot[g] = std::uint8_t(slots[g]);
     }
     SHITSUKAN_TRY(check_shuffle(s, IstEnds::cyclic));
-    *out = s;
+    out = s;
     return Status::success();
 }
 
@@ -281,8 +275,7 @@ Status ist_shuffle_from_table(int n, const int* offsets, const int* slots, IstSh
 //   fig7a: only the nearest neighbours are reached: offsets (-1,-1,0,1,1), slots reversed.
 //   fig7c: crossed pairs: 0 <-> left slot 3, 1 <-> right slot 4, 2 stays:
 //          offsets (-1,1,0,1,-1), slots (3,4,2,0,1).
-Status ist_shuffle_named(const char* name, int n, IstShuffle* out) {
-    SHITSUKAN_ASSERT(out != nullptr);
+Status ist_shuffle_named(const char* name, int n, IstShuffle& out) {
     if (name == nullptr) name = "";
     if (std::strcmp(name, "fully") == 0) return ist_shuffle_fully_connected(n, out);
     if (std::strcmp(name, "none") == 0) return ist_shuffle_none(n, out);
@@ -298,7 +291,7 @@ Status ist_shuffle_named(const char* name, int n, IstShuffle* out) {
         return Status::error(StatusCode::invalid_argument,
                              "IST: shuffle '%s' is defined for N = 5 only (got N = %d)", name, n);
     if (is_fig6b) {
-        *out = ist_shuffle_fig6b();
+        out = ist_shuffle_fig6b();
         return Status::success();
     }
     const int a_offsets[5] = {-1, -1, 0, 1, 1}, a_slots[5] = {4, 3, 2, 1, 0};

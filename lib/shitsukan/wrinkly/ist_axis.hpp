@@ -3,7 +3,7 @@
 //
 // Manual
 //   IstAxis axis;
-//   Status s = ist_fully_connected_axis(5, 3, 5, IstEnds::cyclic, &axis);  // N, K, B, ends
+//   Status s = ist_fully_connected_axis(5, 3, 5, IstEnds::cyclic, axis);   // N, K, B, ends
 //   if (!s) { std::puts(s.message()); return s; }
 //   float v = ist_forward(axis, 0.37f);             // ist_formula.hpp: u^0 -> u^K
 //   float w = ist_inverse(axis, v);                 // u^K -> u^0 (w == 0.37 up to rounding)
@@ -69,36 +69,36 @@ struct IstAxis {
     IstShuffle shuffle;      // used by the connected kinds (filled for fully_connected too)
 };
 
-// Constructors (validate, fill *out only on success).
-Status ist_unit_axis(int n, int iterations, IstAxis* out);  // B = 1, cyclic
-Status ist_unit_axis(int n, int iterations, int base_intervals, IstAxis* out);
+// Constructors (validate, fill out only on success).
+Status ist_unit_axis(int n, int iterations, IstAxis& out);  // B = 1, cyclic
+Status ist_unit_axis(int n, int iterations, int base_intervals, IstAxis& out);
 Status ist_fully_connected_axis(int n, int iterations, int base_intervals, IstEnds ends,
-                                IstAxis* out);
+                                IstAxis& out);
 Status ist_connected_axis(const IstShuffle& shuffle, int iterations, int base_intervals,
-                          IstEnds ends, IstAxis* out);
+                          IstEnds ends, IstAxis& out);
 Status ist_validate(const IstAxis& axis);
 
 // The same axis with another K (the superposed surface of §4 needs F^k for k = 0..K).
 // The new K must keep N^K within the limits (checked).
-Status ist_with_iterations(const IstAxis& axis, int iterations, IstAxis* out);
+Status ist_with_iterations(const IstAxis& axis, int iterations, IstAxis& out);
 
 // N^K, the number of sub-intervals in one base interval (valid axis assumed).
 std::uint64_t ist_sub_interval_count(const IstAxis& axis);
 
 // External shuffles.
 // fully-connected (fig 6a, fig 8; eq. 26): offset g - M, slot N - 1 - g. N odd.
-Status ist_shuffle_fully_connected(int n, IstShuffle* out);
+Status ist_shuffle_fully_connected(int n, IstShuffle& out);
 // no external shuffle (fig 7b): offset 0, slot g. N odd.
-Status ist_shuffle_none(int n, IstShuffle* out);
+Status ist_shuffle_none(int n, IstShuffle& out);
 // fig 6b (N = 5), inferred from the number differences of §2.2.2(2) (see ist_axis.cpp):
 // groups 1, 2, 3 stay; group 0 and group 4 are exchanged with the neighbours:
 // group 0 -> left neighbour, slot 4; group 4 -> right neighbour, slot 0.
 IstShuffle ist_shuffle_fig6b();
 // Any table: offsets[g], slots[g] for g = 0..n-1 (n odd). Checks that slots is a permutation.
-Status ist_shuffle_from_table(int n, const int* offsets, const int* slots, IstShuffle* out);
+Status ist_shuffle_from_table(int n, const int* offsets, const int* slots, IstShuffle& out);
 // By name: "fully", "none", "fig6b" (N must be 5), "fig7a", "fig7c" (N = 5; chosen here,
 // see ist_axis.cpp). Unknown names give invalid_argument listing the known ones.
-Status ist_shuffle_named(const char* name, int n, IstShuffle* out);
+Status ist_shuffle_named(const char* name, int n, IstShuffle& out);
 // True when every move is paired with the reverse move (group g -> (d, s) and group s ->
 // (-d, g)): the external shuffle is then an exchange between base intervals, as the paper
 // describes it (交換), and the skipped moves at the ends of a translation axis keep a

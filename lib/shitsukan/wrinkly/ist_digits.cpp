@@ -171,17 +171,15 @@ Status ist_digits_check(const IstAxis& axis, const IstDigits& alpha) {
     return Status::success();
 }
 
-Status ist_digits_forward_checked(const IstAxis& axis, const IstDigits& in, IstDigits* out) {
-    SHITSUKAN_ASSERT(out != nullptr);
+Status ist_digits_forward_checked(const IstAxis& axis, const IstDigits& in, IstDigits& out) {
     SHITSUKAN_TRY(ist_digits_check(axis, in));
-    ist_digits_forward(axis, in, out);
+    ist_digits_forward(axis, in, &out);
     return Status::success();
 }
 
-Status ist_digits_inverse_checked(const IstAxis& axis, const IstDigits& in, IstDigits* out) {
-    SHITSUKAN_ASSERT(out != nullptr);
+Status ist_digits_inverse_checked(const IstAxis& axis, const IstDigits& in, IstDigits& out) {
     SHITSUKAN_TRY(ist_digits_check(axis, in));
-    ist_digits_inverse(axis, in, out);
+    ist_digits_inverse(axis, in, &out);
     return Status::success();
 }
 

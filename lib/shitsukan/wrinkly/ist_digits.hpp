@@ -3,7 +3,7 @@
 //
 // Manual
 //   IstAxis axis;
-//   Status s = ist_unit_axis(5, 3, 3, &axis);       // N = 5, K = 3, B = 3 (ist_axis.hpp)
+//   Status s = ist_unit_axis(5, 3, 3, axis);        // N = 5, K = 3, B = 3 (ist_axis.hpp)
 //   if (!s) return s;
 //   IstDigits a;                                    // alpha^0 = alpha_0 . alpha_1 .. alpha_K
 //   ist_digits_from_index(axis, /*base*/ 2, /*index*/ 38, &a);   // 38 = 123 in base 5
@@ -70,8 +70,8 @@ void ist_digits_inverse(const IstAxis& axis, const IstDigits& in, IstDigits* out
 
 // Validating versions for user input (ist_table, tools).
 Status ist_digits_check(const IstAxis& axis, const IstDigits& alpha);
-Status ist_digits_forward_checked(const IstAxis& axis, const IstDigits& in, IstDigits* out);
-Status ist_digits_inverse_checked(const IstAxis& axis, const IstDigits& in, IstDigits* out);
+Status ist_digits_forward_checked(const IstAxis& axis, const IstDigits& in, IstDigits& out);
+Status ist_digits_inverse_checked(const IstAxis& axis, const IstDigits& in, IstDigits& out);
 
 // "b.a1a2..aK" (digits 0-9 then a-v for N > 10) into buf of size bytes, base_label added to
 // alpha_0 (the paper's figures start at 4 or 6). Returns buf; truncates safely, and prints

@@ -178,19 +178,17 @@ double ist_inverse_double(const IstAxis& axis, double u) {
     return transform<double>(axis, u, true);
 }
 
-Status ist_forward_checked(const IstAxis& axis, float u, float* out) {
-    SHITSUKAN_ASSERT(out != nullptr);
+Status ist_forward_checked(const IstAxis& axis, float u, float& out) {
     SHITSUKAN_TRY(ist_validate(axis));
     SHITSUKAN_TRY(check_u(u));
-    *out = ist_forward(axis, u);
+    out = ist_forward(axis, u);
     return Status::success();
 }
 
-Status ist_inverse_checked(const IstAxis& axis, float u, float* out) {
-    SHITSUKAN_ASSERT(out != nullptr);
+Status ist_inverse_checked(const IstAxis& axis, float u, float& out) {
     SHITSUKAN_TRY(ist_validate(axis));
     SHITSUKAN_TRY(check_u(u));
-    *out = ist_inverse(axis, u);
+    out = ist_inverse(axis, u);
     return Status::success();
 }
 

@@ -4,7 +4,7 @@
 //
 // Manual
 //   IstAxis axis;
-//   Status s = ist_unit_axis(3, 2, &axis);       // N = 3, K = 2
+//   Status s = ist_unit_axis(3, 2, axis);        // N = 3, K = 2
 //   if (!s) return s;
 //   float v = ist_forward(axis, 0.25f);          // u^K = F(u^0)
 //   float u = ist_inverse(axis, v);              // u^0 = F^-1(u^K), as eq. (15) needs
@@ -39,8 +39,8 @@ float ist_inverse(const IstAxis& axis, float u);
 double ist_forward_double(const IstAxis& axis, double u);
 double ist_inverse_double(const IstAxis& axis, double u);
 
-Status ist_forward_checked(const IstAxis& axis, float u, float* out);
-Status ist_inverse_checked(const IstAxis& axis, float u, float* out);
+Status ist_forward_checked(const IstAxis& axis, float u, float& out);
+Status ist_inverse_checked(const IstAxis& axis, float u, float& out);
 
 // Eq. (9) split: u -> sub-interval alpha (base and K digits) and the offset Δ inside it,
 // given as a fraction of the sub-interval: offset = Δ N^K in [0, 1] (1 only for u = 1).

@@ -414,26 +414,24 @@ double ist_original_inverse(const IstOriginal& ist, double q) {
 }
 
 namespace {
-Status check_original_input(const IstOriginal& ist, double u, const double* out) {
+Status check_original_input(const IstOriginal& ist, double u) {
     SHITSUKAN_TRY(ist_original_check(ist));
     if (!(u >= 0.0 && u <= 1.0))
         return Status::error(StatusCode::out_of_range,
                              "original IST: u must be in [0, 1] (got %g)", u);
-    if (out == nullptr)
-        return Status::error(StatusCode::invalid_argument, "original IST: out must not be null");
     return Status::success();
 }
 }  // namespace
 
-Status ist_original_forward_checked(const IstOriginal& ist, double u, double* out) {
-    SHITSUKAN_TRY(check_original_input(ist, u, out));
-    *out = ist_original_forward(ist, u);
+Status ist_original_forward_checked(const IstOriginal& ist, double u, double& out) {
+    SHITSUKAN_TRY(check_original_input(ist, u));
+    out = ist_original_forward(ist, u);
     return Status::success();
 }
 
-Status ist_original_inverse_checked(const IstOriginal& ist, double u, double* out) {
-    SHITSUKAN_TRY(check_original_input(ist, u, out));
-    *out = ist_original_inverse(ist, u);
+Status ist_original_inverse_checked(const IstOriginal& ist, double u, double& out) {
+    SHITSUKAN_TRY(check_original_input(ist, u));
+    out = ist_original_inverse(ist, u);
     return Status::success();
 }
 

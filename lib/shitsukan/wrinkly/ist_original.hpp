@@ -10,7 +10,7 @@
 //   double v = ist_original_forward(ist, 0.37);     // u^0 -> u^K, eq. (1)
 //   double u = ist_original_inverse(ist, v);
 //   double user_u = 0.5;
-//   Status s = ist_original_forward_checked(ist, user_u, &v);   // checks ist and u too
+//   Status s = ist_original_forward_checked(ist, user_u, v);    // checks ist and u too
 //   return s;
 //
 // One iteration (§2.1(1)), on the sub-interval [start, end) that holds u in base interval i:
@@ -76,7 +76,7 @@ double ist_original_inverse(const IstOriginal& ist, double u);
 
 // For user input: check the description (ist_original_check) and u in [0, 1] first, and
 // return the status instead of clamping u or asserting on a bad M_i.
-Status ist_original_forward_checked(const IstOriginal& ist, double u, double* out);
-Status ist_original_inverse_checked(const IstOriginal& ist, double u, double* out);
+Status ist_original_forward_checked(const IstOriginal& ist, double u, double& out);
+Status ist_original_inverse_checked(const IstOriginal& ist, double u, double& out);
 
 }  // namespace shitsukan

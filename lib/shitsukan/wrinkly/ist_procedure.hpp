@@ -4,7 +4,7 @@
 //
 // Manual
 //   IstAxis axis;
-//   Status s = ist_fully_connected_axis(5, 3, 5, IstEnds::cyclic, &axis);   // ist_axis.hpp
+//   Status s = ist_fully_connected_axis(5, 3, 5, IstEnds::cyclic, axis);    // ist_axis.hpp
 //   if (!s) return s;
 //   double v = ist_procedure_forward(axis, 0.37);          // equals ist_forward_double
 //   double u = ist_procedure_inverse(axis, v);

@@ -6,7 +6,7 @@
 //   #include <cstdio>
 //
 //   IstAxis axis;
-//   Status s = ist_unit_axis(3, 2, &axis);   // fig. 3: N = 3, K = 2
+//   Status s = ist_unit_axis(3, 2, axis);    // fig. 3: N = 3, K = 2
 //   if (!s) return s;
 //   IstTableOptions o;                       // name "unit", first base 0, forward
 //   auto print = [](const char* line, void*) { std::puts(line); };

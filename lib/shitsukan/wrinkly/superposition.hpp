@@ -17,7 +17,7 @@
 //       for (int c = 0; c < 8; ++c)
 //           mesh.at(c, r).position = {c / 7.0f, r / 7.0f, 0.0f}, mesh.at(c, r).height = 0.05f;
 //   WrSurface surface;
-//   Status s = make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface);
+//   Status s = make_wr_surface(mesh, SurfaceBasis::bspline, 3, surface);
 //   if (!s) return s;
 //   float u = 0.3f, v = 0.6f;
 //   float w = superposition_weight(0.5f, 2);            // (1 - 0.5)·0.5^2 = 0.125

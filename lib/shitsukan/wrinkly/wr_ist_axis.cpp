@@ -5,16 +5,16 @@
 
 namespace shitsukan {
 
-Status make_wr_ist_axis(const IstAxis& ist, int max_level, WrIstAxis* out) {
+Status make_wr_ist_axis(const IstAxis& ist, int max_level, WrIstAxis& out) {
     if (max_level < 0 || max_level > kMaxWrLevel)
         return Status::error(StatusCode::invalid_argument, "max level K must be in 0..%d (got %d)",
                              kMaxWrLevel, max_level);
     SHITSUKAN_TRY(ist_validate(ist));
-    out->steps_.clear();
+    out.steps_.clear();
     for (int k = 0; k <= max_level; ++k) {
         IstAxis a;
-        SHITSUKAN_TRY(ist_with_iterations(ist, k, &a));
-        out->steps_.push_back(a);
+        SHITSUKAN_TRY(ist_with_iterations(ist, k, a));
+        out.steps_.push_back(a);
     }
     return Status::success();
 }

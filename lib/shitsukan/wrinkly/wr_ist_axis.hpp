@@ -8,19 +8,19 @@
 //       for (int c = 0; c < 8; ++c)
 //           mesh.at(c, r).position = {c / 7.0f, r / 7.0f, 0.0f}, mesh.at(c, r).height = 0.05f;
 //   WrSurface surface;
-//   Status s = make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface);
+//   Status s = make_wr_surface(mesh, SurfaceBasis::bspline, 3, surface);
 //   if (!s) return s;
 //   IstAxis ist;
-//   s = ist_fully_connected_axis(3, 4, surface.spans_u(), IstEnds::translation, &ist);  // K unused
+//   s = ist_fully_connected_axis(3, 4, surface.spans_u(), IstEnds::translation, ist);   // K unused
 //   WrIstAxis au, av;
-//   if (s) s = make_wr_ist_axis(ist, 6, &au);   // F^0 .. F^6
-//   if (s) s = make_wr_ist_axis(ist, 6, &av);
+//   if (s) s = make_wr_ist_axis(ist, 6, au);    // F^0 .. F^6
+//   if (s) s = make_wr_ist_axis(ist, 6, av);
 //   if (s) s = surface.set_axes(au.axis(), av.axis());
 //   return s;
 //   #include "shitsukan/wrinkly/wr_surface.hpp"
 // The WrAxis returned by axis() points at this object: keep the WrIstAxis alive and in place
 // (do not move or copy it) while the surface uses it.
-// IST-Bezier (§3.2): ist_unit_axis(N, K, &ist) (one base interval). IST-B-spline: a connected
+// IST-Bezier (§3.2): ist_unit_axis(N, K, ist) (one base interval). IST-B-spline: a connected
 // or fully-connected IST with one base interval per knot span, translation ends (the surface
 // is open, fig. 9).
 #pragma once
@@ -44,11 +44,11 @@ public:
     const IstAxis& step(int k) const { return steps_[std::size_t(k)]; }
 
 private:
-    friend Status make_wr_ist_axis(const IstAxis& ist, int max_level, WrIstAxis* out);
+    friend Status make_wr_ist_axis(const IstAxis& ist, int max_level, WrIstAxis& out);
     static float inverse(const void* self, float s, int k);
     std::vector<IstAxis> steps_;  // steps_[k] = the IST with K = k
 };
 
-Status make_wr_ist_axis(const IstAxis& ist, int max_level, WrIstAxis* out);
+Status make_wr_ist_axis(const IstAxis& ist, int max_level, WrIstAxis& out);
 
 }  // namespace shitsukan

@@ -22,7 +22,7 @@ WrAttributes attributes_from_channels(const float* a) {
     return r;
 }
 
-Status make_wr_surface(const WrControlMesh& mesh, SurfaceBasis basis, int degree, WrSurface* out) {
+Status make_wr_surface(const WrControlMesh& mesh, SurfaceBasis basis, int degree, WrSurface& out) {
     SHITSUKAN_TRY(validate_control_mesh(mesh, basis, degree));
     WrSurface s;
     s.basis_ = basis;
@@ -53,7 +53,7 @@ Status make_wr_surface(const WrControlMesh& mesh, SurfaceBasis basis, int degree
         if (a > s.max_abs_height_) s.max_abs_height_ = a;
     }
     s.mode_ = any_direction ? DisplacementMode::direction : DisplacementMode::normal;
-    *out = std::move(s);
+    out = std::move(s);
     return Status::success();
 }
 

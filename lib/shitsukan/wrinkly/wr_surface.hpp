@@ -15,7 +15,7 @@
 //       for (int c = 0; c < 8; ++c)
 //           mesh.at(c, r).position = {c / 7.0f, r / 7.0f, 0.0f}, mesh.at(c, r).height = 0.05f;
 //   WrSurface s;
-//   Status st = make_wr_surface(mesh, SurfaceBasis::bspline, 3, &s);
+//   Status st = make_wr_surface(mesh, SurfaceBasis::bspline, 3, s);
 //   WrAxis axis_u = identity_axis(s.spans_u()), axis_v = identity_axis(s.spans_v());
 //   if (st) st = s.set_axes(axis_u, axis_v);  // WrAxis (wr_axis.hpp); default: identity
 //   if (!st) return st;
@@ -109,7 +109,7 @@ public:
     Vec3 wr_point(float u, float v, int k) const;  // eq. (15) with K = k
 
 private:
-    friend Status make_wr_surface(const WrControlMesh&, SurfaceBasis, int, WrSurface*);
+    friend Status make_wr_surface(const WrControlMesh&, SurfaceBasis, int, WrSurface&);
     SurfaceBasis basis_ = SurfaceBasis::bspline;
     int degree_ = 3;
     int cols_ = 0, rows_ = 0, spans_u_ = 1, spans_v_ = 1;
@@ -120,6 +120,6 @@ private:
     std::vector<float> attributes_;  // kWrAttributeChannels per control point
 };
 
-Status make_wr_surface(const WrControlMesh& mesh, SurfaceBasis basis, int degree, WrSurface* out);
+Status make_wr_surface(const WrControlMesh& mesh, SurfaceBasis basis, int degree, WrSurface& out);
 
 }  // namespace shitsukan

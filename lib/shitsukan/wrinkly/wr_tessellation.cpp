@@ -109,7 +109,7 @@ WrAxisBases locate_axis_bases(const WrSurface& surface, const HierarchicalSampli
 }  // namespace
 
 Status evaluate_wr_grid(const WrSurface& surface, const HierarchicalSampling* sampling,
-                        const WrTessellationOptions& o, WrMesh* out) {
+                        const WrTessellationOptions& o, WrMesh& out) {
     SHITSUKAN_TRY(check_wr_grid_options(surface, sampling, o));
     const std::vector<float> gu =
         wr_grid_positions(surface.axis_u(), o.grid_level, o.subdivisions, o.u0, o.u1);
@@ -173,7 +173,7 @@ Status evaluate_wr_grid(const WrSurface& surface, const HierarchicalSampling* sa
     }
     o.progress.report(1.0f);
     m.mean_levels_used = double(levels_sum) / double(t.positions.size());
-    *out = std::move(m);
+    out = std::move(m);
     return Status::success();
 }
 
@@ -210,9 +210,9 @@ void polygonise_wr_grid(const WrSurface& surface, WrMesh* m) {
 }
 
 Status tessellate_wr_surface(const WrSurface& surface, const HierarchicalSampling* sampling,
-                             const WrTessellationOptions& options, WrMesh* out) {
+                             const WrTessellationOptions& options, WrMesh& out) {
     SHITSUKAN_TRY(evaluate_wr_grid(surface, sampling, options, out));
-    polygonise_wr_grid(surface, out);
+    polygonise_wr_grid(surface, &out);
     return Status::success();
 }
 

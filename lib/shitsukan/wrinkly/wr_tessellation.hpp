@@ -7,17 +7,17 @@
 //       for (int c = 0; c < 8; ++c)
 //           mesh.at(c, r).position = {c / 7.0f, r / 7.0f, 0.0f}, mesh.at(c, r).height = 0.05f;
 //   WrSurface surface;
-//   Status s = make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface);
+//   Status s = make_wr_surface(mesh, SurfaceBasis::bspline, 3, surface);
 //   if (!s) return s;
 //   HierarchicalOptions ho;  ho.levels = 3;
 //   HierarchicalSampling sampling;                   // hierarchical_sampling.hpp
-//   s = sample_hierarchy(surface, ho, &sampling);
+//   s = sample_hierarchy(surface, ho, sampling);
 //   WrTessellationOptions o;
 //   o.form = WrSurfaceForm::superposed;    // base | plain | wr | superposed_direct | superposed
 //   o.levels = 3;                          // K of eq. (15) / (16)
 //   o.grid_level = 3;  o.subdivisions = 1; // vertices at the step-3 sample positions
 //   WrMesh m;
-//   if (s) s = tessellate_wr_surface(surface, &sampling, o, &m);  // sampling: for `superposed`
+//   if (s) s = tessellate_wr_surface(surface, &sampling, o, m);   // sampling: for `superposed`
 //   // m.mesh (positions, normals, uv = (u, v), colours), m.transparency (one per vertex)
 //   float pixels_per_unit = 200.0f;
 //   AdaptiveLevels a = choose_adaptive_levels(surface, mesh, pixels_per_unit, 1.5f, 0.5f, 5);
@@ -75,10 +75,10 @@ struct WrMesh {
 
 // Both steps below: sample the surface at the grid points, then build the polygons.
 Status tessellate_wr_surface(const WrSurface& surface, const HierarchicalSampling* sampling,
-                             const WrTessellationOptions& options, WrMesh* out);
+                             const WrTessellationOptions& options, WrMesh& out);
 // Step 1 (the paper's "sampling" stage of Tables 2-4): points, colours, uv, transparency.
 Status evaluate_wr_grid(const WrSurface& surface, const HierarchicalSampling* sampling,
-                        const WrTessellationOptions& options, WrMesh* out);
+                        const WrTessellationOptions& options, WrMesh& out);
 // Step 2 ("polygonisation"): vertex normals of the displaced grid and two triangles per cell.
 void polygonise_wr_grid(const WrSurface& surface, WrMesh* mesh);
 

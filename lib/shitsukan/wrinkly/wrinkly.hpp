@@ -18,11 +18,11 @@
 //       for (int c = 0; c < 8; ++c)
 //           mesh.at(c, r).position = {c / 7.0f, r / 7.0f, 0.0f}, mesh.at(c, r).height = 0.05f;
 //   WrSurface surface;
-//   Status s = make_wr_surface(mesh, SurfaceBasis::bspline, 3, &surface);
+//   Status s = make_wr_surface(mesh, SurfaceBasis::bspline, 3, surface);
 //   if (!s) return s;
 //   HierarchicalOptions o;  o.levels = 2;              // then mountains (superposition.hpp):
 //   HierarchicalSampling hs;
-//   s = sample_hierarchy(surface, o, &hs);
+//   s = sample_hierarchy(surface, o, hs);
 //   SuperposedSample p = s ? superposed_sampled(surface, hs, 0.5f, 0.5f) : SuperposedSample{};
 //   // More in wr_surface.hpp (a WR surface) and superposition.hpp (mountains).
 //   return s;
