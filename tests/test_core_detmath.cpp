@@ -124,6 +124,27 @@ TEST_CASE("det_expf_fast: float arithmetic only, within 2 ulp over its domain") 
     CHECK(det_expf_fast(-100.0f) > 0.0f);  // subnormal results are not flushed
 }
 
+TEST_CASE("det_logf_fast: float arithmetic only, within 1 ulp over all positive floats") {
+    auto f = [](float x) { return det_logf_fast(x); };
+    auto ref = [](long double x) { return logl(x); };
+    Worst all = scan(f, ref, from_bits(1), 3.4e38f, 1021);  // every exponent
+    Worst near1 = scan(f, ref, 0.5f, 2.0f, 7);              // k = 0, +-1: f = m - 1
+    Worst tails = scan(f, ref, 0x1p-55f, 0.0243f, 509);     // the Gaussian tails' t
+    MESSAGE("log (float arithmetic) worst " << all.err << " ulp at " << all.x << ", " << near1.err
+                                            << " near 1, " << tails.err
+                                            << " on the Gaussian tails' range");
+    CHECK(all.err < 1.0);
+    CHECK(near1.err < 1.0);
+    CHECK(tails.err < 1.0);
+    CHECK(det_logf_fast(1.0f) == 0.0f);
+    CHECK(det_logf_fast(0.0f) == -HUGE_VALF);
+    CHECK(det_logf_fast(-0.0f) == -HUGE_VALF);
+    CHECK(std::isnan(det_logf_fast(-1.0f)));
+    CHECK(std::isnan(det_logf_fast(NAN)));
+    CHECK(det_logf_fast(HUGE_VALF) == HUGE_VALF);
+    CHECK(ulp_error(det_logf_fast(from_bits(1)), logl((long double)from_bits(1))) < 1.0);
+}
+
 TEST_CASE("det_powf: within 1 ulp, exact powers exact, C99 special values") {
     Pcg32 rng(12, 7);
     Worst w;
@@ -222,4 +243,19 @@ TEST_CASE("detmath digest: fixed bits at every optimisation level and on every t
         add(det_atan2f(x, u - 0.5f));
     }
     CHECK(h == 0x6baa0d5c02c1a86dull);  // ports/cortex-m transcript line "detmath"
+}
+
+TEST_CASE("detmath float-arithmetic digest: fixed bits at every optimisation level and target") {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    auto add = [&](float v) {
+        const std::uint32_t u = float_bits(v);
+        for (int i = 0; i < 4; ++i) h = (h ^ ((u >> (8 * i)) & 0xffu)) * 0x100000001b3ull;
+    };
+    for (int i = 0; i < 4096; ++i) {
+        const float x = float(i - 2048) * 0.0123f, u = float(i) / 4096.0f;
+        add(det_expf_fast(x * 0.5f));
+        add(det_logf_fast(u + 0.001f));
+        add(det_logf_fast(float(i + 1) * 1.0e-9f));
+    }
+    CHECK(h == 0x21bc52a3c7c76588ull);  // ports/cortex-m transcript line "detmath fast"
 }

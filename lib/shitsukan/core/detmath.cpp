@@ -430,4 +430,41 @@ float det_expf_fast(float x) {
     return p * scale;
 }
 
+// log x in float arithmetic alone. x = 2^k·m with m in [sqrt(1/2), sqrt(2)), f = m - 1 (exact,
+// Sterbenz), log m = log(1 + f) = 2·atanh(s) with s = f / (2 + f), |s| <= 0.1716. Written as
+// log(1 + f) = f - (f^2/2 - s·(f^2/2 + R)), R = 2s^2/3 + 2s^4/5 + 2s^6/7 + 2s^8/9 (the next
+// term is below 7e-10, 0.02 ulp of log m): s, whose division rounds, only multiplies the small
+// correction f^2/2 + R, and f itself enters exactly. k·ln2 = k·hi + k·lo with hi of 15
+// significant bits, so k·hi is exact for |k| <= 152; hi is added last.
+float det_logf_fast(float x) {
+    if (x != x) return x;
+    if (x < 0.0f) return NAN;
+    if (x == 0.0f) return -HUGE_VALF;
+    if (x == HUGE_VALF) return x;
+    constexpr float kLn2HiF = 0x1.62e4p-1f;     // ln 2 to 15 significant bits
+    constexpr float kLn2LoF = 0x1.7f7d1cp-20f;  // ln 2 - hi, rounded to float
+    std::uint32_t u;
+    __builtin_memcpy(&u, &x, sizeof u);
+    int k = 0;
+    if (u < 0x00800000u) {  // subnormal: scale by 2^25 (exact) first
+        const float y = x * 0x1p25f;
+        __builtin_memcpy(&u, &y, sizeof u);
+        k = -25;
+    }
+    k += int(u >> 23) - 127;
+    std::uint32_t mb = (u & 0x007fffffu) | 0x3f800000u;  // m in [1, 2)
+    if (mb >= 0x3fb504f3u) {  // m >= sqrt(2) rounded to float (just below it): m / 2
+        mb -= 0x00800000u;
+        k += 1;
+    }
+    float m;
+    __builtin_memcpy(&m, &mb, sizeof m);
+    const float f = m - 1.0f;
+    const float s = f / (2.0f + f), z = s * s;
+    const float r = z * (2.0f / 3.0f + z * (2.0f / 5.0f + z * (2.0f / 7.0f + z * (2.0f / 9.0f))));
+    const float hfsq = 0.5f * f * f;
+    const float kf = float(k);
+    return kf * kLn2HiF - ((hfsq - (s * (hfsq + r) + kf * kLn2LoF)) - f);
+}
+
 }  // namespace shitsukan

@@ -64,6 +64,11 @@ float det_atan2f(float y, float x);
 // result (measured; det_expf is within 1). For per-pixel hot paths (marble's skirts).
 float det_expf_fast(float x);
 
+// log x in float arithmetic alone (no double), deterministic like the rest, within 1 ulp of
+// the correctly rounded result over all positive floats (measured); det_logf is the double-
+// evaluated one. For per-node hot paths (the Gaussian tails of the fractal lattice).
+float det_logf_fast(float x);
+
 // Float overloads under the std:: names, so det_sin(x) picks the float or the double function
 // exactly as std::sin(x) does.
 inline float det_sin(float x) { return det_sinf(x); }
