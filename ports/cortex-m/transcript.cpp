@@ -122,6 +122,7 @@ void section_detmath() {
         fast.f(det_expf_fast(x * 0.5f));
         fast.f(det_logf_fast(u + 0.001f));
         fast.f(det_logf_fast(float(i + 1) * 1.0e-9f));
+        fast.f(det_sinf_fast(x * 37.0f));
     }
     put("detmath fast fnv ");
     put_hash(fast);
