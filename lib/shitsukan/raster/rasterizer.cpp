@@ -432,8 +432,8 @@ bool to_screen(const Camera& camera, const ClipSpaceVertex& v, ScreenVertex* r) 
     return true;
 }
 
-// a·b = hi + lo exactly (Dekker's product with Veltkamp's split, float only: the FPU has no
-// fused multiply-add we may rely on), for |a|, |b| in {0} U [2^-50, 2^60] (no overflow in the
+// a·b = hi + lo exactly (Dekker's product with Veltkamp's split, float only: not every FPU
+// has a fused multiply-add), for |a|, |b| in {0} U [2^-50, 2^60] (no overflow in the
 // split, no underflow in lo).
 inline float two_product(float a, float b, float* lo) {
     auto split = [](float v, float* high) {
