@@ -345,17 +345,11 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
     // Is the middle vertex right of the long edge v0 -> v2? Then the long edge is the left.
     bool middle_right = (v1->x - v0->x) * (v2->y - v0->y) - (v2->x - v0->x) * (v1->y - v0->y) > 0;
 
-    // Screen-space barycentrics as plane equations around corner a (in 1/256 pixel units):
-    // lambda_b = (p - a) x (c - a) / area, lambda_c = (b - a) x (p - a) / area. In float, one
-    // division each (the FPU's): the differences are below 2^29 (coordinates below kMaxFixed)
-    // and convert through int32; area2 (< 2^60) rounds once to float. The span and coverage
-    // stay exact integers; these only weight the attributes. (Was an int64-to-double, a double
-    // division and four double products per piece and band: software on a Cortex-M4F.)
-    const float area_f = to_float_via_int32(area2);
-    float lb_dx = float(std::int32_t(c.y - a.y)) / area_f;
-    float lb_dy = float(std::int32_t(a.x - c.x)) / area_f;
-    float lc_dx = float(std::int32_t(a.y - b.y)) / area_f;
-    float lc_dy = float(std::int32_t(b.x - a.x)) / area_f;
+    // Barycentrics around corner a (1/256 pixel units): lambda_b = (p - a) x (c - a) / area,
+    // lambda_c = (b - a) x (p - a) / area; float division (differences < 2^29, via int32).
+    auto per_area = [f = to_float_via_int32(area2)](i64 d) { return float(std::int32_t(d)) / f; };
+    float lb_dx = per_area(c.y - a.y), lb_dy = per_area(a.x - c.x);
+    float lc_dx = per_area(a.y - b.y), lc_dy = per_area(b.x - a.x);
     float dz_b = b.z - a.z, dz_c = c.z - a.z;
     const bool unclipped =
         a.bary == Vec3{1, 0, 0} && b.bary == Vec3{0, 1, 0} && c.bary == Vec3{0, 0, 1};
