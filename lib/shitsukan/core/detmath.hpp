@@ -73,7 +73,7 @@ float det_logf_fast(float x);
 
 // sin x in float arithmetic alone for |x| <= 4096 (larger |x|, NaN and inf: det_sinf),
 // deterministic like the rest, within 1 ulp of the correctly rounded result there (every
-// float of [0, 4096] measured: 0.781). For per-pixel hot paths (wood's rings, okada1987
+// float of [-4096, 4096] measured: 0.781). For per-pixel hot paths (wood's rings, okada1987
 // eq. (10)).
 float det_sinf_fast(float x);
 
