@@ -124,6 +124,47 @@ TEST_CASE("det_expf_fast: float arithmetic only, within 2 ulp over its domain") 
     CHECK(det_expf_fast(-100.0f) > 0.0f);  // subnormal results are not flushed
 }
 
+TEST_CASE("det_logf_fast: float arithmetic only, within 1 ulp over all positive floats") {
+    auto f = [](float x) { return det_logf_fast(x); };
+    auto ref = [](long double x) { return logl(x); };
+    Worst all = scan(f, ref, from_bits(1), 3.4e38f, 1021);  // every exponent
+    Worst near1 = scan(f, ref, 0.5f, 2.0f, 7);              // k = 0, +-1: f = m - 1
+    Worst tails = scan(f, ref, 0x1p-55f, 0.0243f, 509);     // the Gaussian tails' t
+    MESSAGE("log (float arithmetic) worst " << all.err << " ulp at " << all.x << ", " << near1.err
+                                            << " near 1, " << tails.err
+                                            << " on the Gaussian tails' range");
+    CHECK(all.err < 1.0);
+    CHECK(near1.err < 1.0);
+    CHECK(tails.err < 1.0);
+    CHECK(det_logf_fast(1.0f) == 0.0f);
+    CHECK(det_logf_fast(0.0f) == -HUGE_VALF);
+    CHECK(det_logf_fast(-0.0f) == -HUGE_VALF);
+    CHECK(std::isnan(det_logf_fast(-1.0f)));
+    CHECK(std::isnan(det_logf_fast(NAN)));
+    CHECK(det_logf_fast(HUGE_VALF) == HUGE_VALF);
+    CHECK(ulp_error(det_logf_fast(from_bits(1)), logl((long double)from_bits(1))) < 1.0);
+}
+
+TEST_CASE("det_sinf_fast: float arithmetic only, within 1 ulp for |x| <= 4096") {
+    auto f = [](float x) { return det_sinf_fast(x); };
+    auto ref = [](long double x) { return sinl(x); };
+    Worst all = scan(f, ref, 0.0f, 4096.0f, 331);
+    Worst small = scan(f, ref, 0.0f, 8.0f, 13);  // the first quadrants, densely
+    MESSAGE("sin (float arithmetic) worst " << all.err << " ulp at " << all.x << ", "
+                                            << small.err << " on [0, 8]");
+    CHECK(all.err < 1.0);
+    CHECK(small.err < 1.0);
+    // Floats nearest to multiples of pi/2 (the reduction's hard cases) and the edge.
+    for (float x : {3.14159274f, 1.57079637f, 6.28318548f, 1608.49536f, 4095.99976f, 4096.0f})
+        CHECK(ulp_error(det_sinf_fast(x), sinl((long double)x)) < 1.0);
+    for (float x : {4096.5f, 1.0e6f, 3.4e38f, -5000.0f})  // beyond: det_sinf's bits
+        CHECK(float_bits(det_sinf_fast(x)) == float_bits(det_sinf(x)));
+    CHECK(std::isnan(det_sinf_fast(INFINITY)));
+    CHECK(std::isnan(det_sinf_fast(NAN)));
+    CHECK(std::signbit(det_sinf_fast(-0.0f)));
+    CHECK(det_sinf_fast(0.0f) == 0.0f);
+}
+
 TEST_CASE("det_powf: within 1 ulp, exact powers exact, C99 special values") {
     Pcg32 rng(12, 7);
     Worst w;
@@ -222,4 +263,20 @@ TEST_CASE("detmath digest: fixed bits at every optimisation level and on every t
         add(det_atan2f(x, u - 0.5f));
     }
     CHECK(h == 0x6baa0d5c02c1a86dull);  // ports/cortex-m transcript line "detmath"
+}
+
+TEST_CASE("detmath float-arithmetic digest: fixed bits at every optimisation level and target") {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    auto add = [&](float v) {
+        const std::uint32_t u = float_bits(v);
+        for (int i = 0; i < 4; ++i) h = (h ^ ((u >> (8 * i)) & 0xffu)) * 0x100000001b3ull;
+    };
+    for (int i = 0; i < 4096; ++i) {
+        const float x = float(i - 2048) * 0.0123f, u = float(i) / 4096.0f;
+        add(det_expf_fast(x * 0.5f));
+        add(det_logf_fast(u + 0.001f));
+        add(det_logf_fast(float(i + 1) * 1.0e-9f));
+        add(det_sinf_fast(x * 37.0f));
+    }
+    CHECK(h == 0x2c5acc37dd3d0b04ull);  // ports/cortex-m transcript line "detmath fast"
 }

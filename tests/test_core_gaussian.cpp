@@ -1,7 +1,11 @@
-// core/gaussian: gaussian_from_bits_float's integer tail test and p - 0.5 give the same
-// floats as the double expressions they replace, at the tail edges and everywhere else.
+// core/gaussian: gaussian_from_bits_float, all in float arithmetic (issue 12), stays within 8
+// float ulps of gaussian_from_bits (the double definition) at the region edges, deep in both
+// tails and everywhere else; its integer tail test is the double one's.
 #include <doctest/doctest.h>
 
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <initializer_list>
 
@@ -11,40 +15,82 @@
 using namespace shitsukan;
 
 namespace {
-// The definition in double (before issue 12 moved it to integers).
-float reference(std::uint64_t bits) {
-    const double p = open_unit_from_bits(bits);
-    if (p < 0.02425 || p > 1.0 - 0.02425) return float(inverse_normal_cdf(p));
-    static const float a[6] = {-3.969683028665376e+01f, 2.209460984245205e+02f,
-                               -2.759285104469687e+02f, 1.383577518672690e+02f,
-                               -3.066479806614716e+01f, 2.506628277459239e+00f};
-    static const float b[5] = {-5.447609879822406e+01f, 1.615858368580409e+02f,
-                               -1.556989798598866e+02f, 6.680131188771972e+01f,
-                               -1.328068155288572e+01f};
-    const float q = float(p - 0.5), r = q * q;
-    return (((((a[0] * r + a[1]) * r + a[2]) * r + a[3]) * r + a[4]) * r + a[5]) * q /
-           (((((b[0] * r + b[1]) * r + b[2]) * r + b[3]) * r + b[4]) * r + 1.0f);
+constexpr std::uint64_t kLowTail = 218424581927469ull, kHighTail = 8788774672813522ull;
+constexpr std::uint64_t kTop = std::uint64_t(1) << 53;  // m = bits >> 11 is below it
+
+// Distance in float ulps (the floats between them, across zero too); NaN is far from all.
+long ulps_apart(float a, float b) {
+    if (std::isnan(a) || std::isnan(b)) return 1L << 40;
+    std::int32_t x, y;
+    std::memcpy(&x, &a, sizeof x);
+    std::memcpy(&y, &b, sizeof y);
+    const long lx = x < 0 ? -long(x & 0x7fffffff) : long(x);
+    const long ly = y < 0 ? -long(y & 0x7fffffff) : long(y);
+    return std::labs(lx - ly);
 }
-bool same(float x, float y) { return std::memcmp(&x, &y, sizeof x) == 0; }
+
+struct Worst {
+    long ulps = 0;
+    std::uint64_t m = 0;
+    long draws = 0;
+    void add(std::uint64_t mm, std::uint64_t low_bits = 0) {
+        const std::uint64_t bits = (mm << 11) | low_bits;
+        const long u = ulps_apart(gaussian_from_bits_float(bits), gaussian_from_bits(bits));
+        draws += 1;
+        if (u > ulps) {
+            ulps = u;
+            m = mm;
+        }
+    }
+};
 }  // namespace
 
-TEST_CASE("gaussian_from_bits_float equals its double definition bit for bit") {
-    int wrong = 0;
-    const std::uint64_t edges[] = {0, 218424581927469ull, 8788774672813522ull,
-                                   std::uint64_t(1) << 52, (std::uint64_t(1) << 53) - 1};
-    for (std::uint64_t e : edges)
+TEST_CASE("gaussian_from_bits_float: its integer tail bounds are the double definition's") {
+    // p = open_unit_from_bits(m << 11); the float path's tails are m < kLowTail, m > kHighTail.
+    for (std::int64_t d = -3; d <= 3; ++d) {
+        const std::uint64_t lo = kLowTail + std::uint64_t(d), hi = kHighTail + std::uint64_t(d);
+        CHECK((open_unit_from_bits(lo << 11) < 0.02425) == (lo < kLowTail));
+        CHECK((open_unit_from_bits(hi << 11) > 1.0 - 0.02425) == (hi > kHighTail));
+    }
+    // The largest m: (2^53 - 1) + 0.5 rounds to 2^53 in double; p stays below 1.
+    CHECK(open_unit_from_bits(~std::uint64_t(0)) < 1.0);
+    CHECK(open_unit_from_bits(0) > 0.0);
+}
+
+TEST_CASE("gaussian_from_bits_float: within 8 float ulps of gaussian_from_bits everywhere") {
+    Worst edges, deep, tails, uniform;
+    for (std::uint64_t e :
+         {std::uint64_t(0), kLowTail, kTop / 2, std::uint64_t(1) << 52, kHighTail, kTop - 1})
         for (std::int64_t d = -3; d <= 3; ++d) {
             const std::uint64_t m = e + std::uint64_t(d);
-            if (m >= (std::uint64_t(1) << 53)) continue;
-            for (std::uint64_t low : {0ull, 1ull, 2047ull}) {
-                const std::uint64_t bits = (m << 11) | low;
-                wrong += !same(gaussian_from_bits_float(bits), reference(bits));
-            }
+            if (m >= kTop) continue;
+            for (std::uint64_t low : {0ull, 1ull, 2047ull}) edges.add(m, low);
         }
-    Pcg32 rng(99);
-    for (int i = 0; i < 1000000; ++i) {
-        const std::uint64_t bits = (std::uint64_t(rng.next_u32()) << 32) | rng.next_u32();
-        wrong += !same(gaussian_from_bits_float(bits), reference(bits));
+    for (std::uint64_t m = 0; m < 100000; ++m) {  // the extreme tails, every m: |z| > 8
+        deep.add(m);
+        deep.add(kTop - 1 - m);
     }
-    CHECK(wrong == 0);
+    Pcg32 rng(99);
+    for (int i = 0; i < 500000; ++i) {  // the tails, log-uniformly in m (p from 2^-54 up)
+        const double u = double(rng.next_u32()) * 0x1p-32;
+        std::uint64_t m = std::uint64_t(std::exp(u * std::log(double(kLowTail))));
+        if (m >= kLowTail) m = kLowTail - 1;
+        tails.add(m);
+        tails.add(kTop - 1 - m);
+    }
+    for (int i = 0; i < 1000000; ++i) {  // uniform draws (95 % central)
+        const std::uint64_t bits = (std::uint64_t(rng.next_u32()) << 32) | rng.next_u32();
+        uniform.add(bits >> 11, bits & 2047u);
+    }
+    MESSAGE("float vs double Gaussian, worst ulps: edges "
+            << edges.ulps << ", deep tails " << deep.ulps << " (m " << deep.m << "), tails "
+            << tails.ulps << " (m " << tails.m << "), uniform " << uniform.ulps << " (m "
+            << uniform.m << ")");
+    CHECK(edges.ulps <= 8);
+    CHECK(deep.ulps <= 8);
+    CHECK(tails.ulps <= 8);
+    CHECK(uniform.ulps <= 8);
+    CHECK(std::isfinite(gaussian_from_bits_float(~std::uint64_t(0))));
+    CHECK(gaussian_from_bits_float(~std::uint64_t(0)) > 8.0f);
+    CHECK(gaussian_from_bits_float(0) < -8.0f);
 }

@@ -43,6 +43,27 @@ bool mentions(const Status& s, const char* text) {
 
 }  // namespace
 
+TEST_CASE("degeneracy is decided on exact products: a float-cancelling sliver is kept") {
+    // Edges (1 + 2^-12, 1 + 2^-11, 0) and (1, 1 + 2^-12, 0): x·y' = 1 + 2^-11 + 2^-24 and
+    // y·x' = 1 + 2^-11 round to the same float, so a float cross product is 0; the exact one is
+    // 2^-24 (a sliver, not a degenerate triangle). Collinear corners, scaled far outside the
+    // float products' range (1e-30, 1e25), stay degenerate.
+    const float a = 1.0f + 0x1p-12f, b = 1.0f + 0x1p-11f;
+    TriangleMesh m;
+    m.positions = {{0, 0, 0},           {a, b, 0},           {1, a, 0},
+                   {1e-30f, 1e-30f, 0}, {2e-30f, 2e-30f, 0}, {3e-30f, 3e-30f, 0},
+                   {1e25f, 1e25f, 0},   {2e25f, 2e25f, 0},   {4e25f, 4e25f, 0}};
+    m.indices = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+    CHECK(a * a - b * 1.0f == 0.0f);  // the float cross product's z cancels
+    Frame f;
+    RasterStats stats;
+    DrawOptions opt;
+    opt.cull = CullMode::none;
+    CHECK(draw_mesh(camera32(), f.band, m.view(), opt, white, nullptr, &stats).ok());
+    CHECK(stats.triangles_in == 3);
+    CHECK(stats.triangles_rejected == 2);
+}
+
 TEST_CASE("zero-area, NaN and inf triangles are skipped and counted, the rest is drawn") {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();

@@ -172,6 +172,12 @@ TEST_CASE("unit-IST eq. (7): N = 5, K = 3, 124 -> 421 and back (the paper's exam
     CHECK(b.digit[3] == 1);
     char text[32];
     CHECK(std::string(ist_digits_format(b, 0, text, sizeof text)) == "0.421");
+    // The label through format_integer (no snprintf): signs, large sums, cut at the buffer.
+    CHECK(std::string(ist_digits_format(b, -7, text, sizeof text)) == "-7.421");
+    CHECK(std::string(ist_digits_format(b, 2147483647, text, sizeof text)) == "2147483647.421");
+    CHECK(std::string(ist_digits_format(b, 12, text, 3)) == "12");
+    CHECK(std::string(ist_digits_format(b, 12, text, 4)) == "12.");
+    CHECK(std::string(ist_digits_format(b, 12, text, 5)) == "12.4");
     // eq. (22): one internal shuffle carries alpha_k to the front.
     IstDigits c = a;
     ist_internal_shuffle(axis, 3, &c);

@@ -76,6 +76,14 @@ float g_depth[kW * kRows];
 Vec3 g_pos[kBoxVertexCount], g_nrm[kBoxVertexCount];
 Vec2 g_uv[kBoxVertexCount];
 std::uint32_t g_idx[3 * kBoxTriangleCount];
+// A UV sphere of 48 x 24 (2,304 triangles, most a few pixels at 128 x 128): the per-triangle
+// set-up (plane normal, barycentric gradients) dominates there.
+constexpr int kSlices = 48, kStacks = 24;
+constexpr int kSphereVertices = (kStacks + 1) * (kSlices + 1);
+constexpr int kSphereIndices = kStacks * kSlices * 6;
+Vec3 g_sphere_pos[kSphereVertices], g_sphere_nrm[kSphereVertices];
+Vec2 g_sphere_uv[kSphereVertices];
+std::uint32_t g_sphere_idx[kSphereIndices];
 volatile float g_sink;
 
 }  // namespace
@@ -136,6 +144,25 @@ int main() {
     }
     bench_line("rasterized cube 128x128 in 16-row bands, flat shader (M4F)",
                instructions_since_start(), std::uint64_t(flat_stats.fragments_shaded),
+               "rasterized pixel");
+    MeshView sphere;
+    if (!make_uv_sphere_arrays(1.2f, kSlices, kStacks, g_sphere_pos, g_sphere_nrm, g_sphere_uv,
+                               kSphereVertices, g_sphere_idx, kSphereIndices, &sphere))
+        return 1;
+    RasterStats sphere_stats;
+    timer_start();
+    for (int y0 = 0; y0 < kW; y0 += kRows) {
+        const FrameBand band = make_band(RgbView{g_color, kW, kRows, kW},
+                                         FloatView{g_depth, kW, kRows, kW}, y0, kW, kW);
+        clear_band(band, Rgb8{0, 0, 0});
+        if (!draw_mesh(cam, band, sphere, opt, flat, nullptr, &sphere_stats)) return 1;
+    }
+    const std::uint64_t sphere_instructions = instructions_since_start();
+    bench_line("rasterized UV sphere 48x24 128x128 in 16-row bands, flat shader (M4F)",
+               sphere_instructions, std::uint64_t(sphere_stats.triangles_in) / (kW / kRows),
+               "triangle");  // every band walks every triangle: per triangle of the frame
+    bench_line("rasterized UV sphere 48x24 128x128 in 16-row bands, flat shader (M4F)",
+               sphere_instructions, std::uint64_t(sphere_stats.fragments_shaded),
                "rasterized pixel");
     RasterStats stats;
     timer_start();

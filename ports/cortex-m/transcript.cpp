@@ -116,6 +116,17 @@ void section_detmath() {
         put_float(v);
     }
     put("\n");
+    Fnv fast;  // the float-arithmetic-only functions of the hot paths
+    for (int i = 0; i < 4096; ++i) {
+        const float x = float(i - 2048) * 0.0123f, u = float(i) / 4096.0f;
+        fast.f(det_expf_fast(x * 0.5f));
+        fast.f(det_logf_fast(u + 0.001f));
+        fast.f(det_logf_fast(float(i + 1) * 1.0e-9f));
+        fast.f(det_sinf_fast(x * 37.0f));
+    }
+    put("detmath fast fnv ");
+    put_hash(fast);
+    put("\n");
 }
 
 // ---- lattice ----

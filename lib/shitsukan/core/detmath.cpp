@@ -430,4 +430,85 @@ float det_expf_fast(float x) {
     return p * scale;
 }
 
+// log x in float arithmetic alone. x = 2^k·m with m in [sqrt(1/2), sqrt(2)), f = m - 1 (exact,
+// Sterbenz), log m = log(1 + f) = 2·atanh(s) with s = f / (2 + f), |s| <= 0.1716. Written as
+// log(1 + f) = f - (f^2/2 - s·(f^2/2 + R)), R = 2s^2/3 + 2s^4/5 + 2s^6/7 + 2s^8/9 (the next
+// term is below 7e-10, 0.02 ulp of log m): s, whose division rounds, only multiplies the small
+// correction f^2/2 + R, and f itself enters exactly. k·ln2 = k·hi + k·lo with hi of 15
+// significant bits, so k·hi is exact for |k| <= 152; hi is added last.
+float det_logf_fast(float x) {
+    if (x != x) return x;
+    if (x < 0.0f) return NAN;
+    if (x == 0.0f) return -HUGE_VALF;
+    if (x == HUGE_VALF) return x;
+    constexpr float kLn2HiF = 0x1.62e4p-1f;     // ln 2 to 15 significant bits
+    constexpr float kLn2LoF = 0x1.7f7d1cp-20f;  // ln 2 - hi, rounded to float
+    std::uint32_t u;
+    __builtin_memcpy(&u, &x, sizeof u);
+    int k = 0;
+    if (u < 0x00800000u) {  // subnormal: scale by 2^25 (exact) first
+        const float y = x * 0x1p25f;
+        __builtin_memcpy(&u, &y, sizeof u);
+        k = -25;
+    }
+    k += int(u >> 23) - 127;
+    std::uint32_t mb = (u & 0x007fffffu) | 0x3f800000u;  // m in [1, 2)
+    if (mb >= 0x3fb504f3u) {  // m >= sqrt(2) rounded to float (just below it): m / 2
+        mb -= 0x00800000u;
+        k += 1;
+    }
+    float m;
+    __builtin_memcpy(&m, &mb, sizeof m);
+    const float f = m - 1.0f;
+    const float s = f / (2.0f + f), z = s * s;
+    const float r = z * (2.0f / 3.0f + z * (2.0f / 5.0f + z * (2.0f / 7.0f + z * (2.0f / 9.0f))));
+    const float hfsq = 0.5f * f * f;
+    const float kf = float(k);
+    return kf * kLn2HiF - ((hfsq - (s * (hfsq + r) + kf * kLn2LoF)) - f);
+}
+
+// sin x in float arithmetic alone for |x| <= 4096 (beyond: det_sinf). Cody & Waite in float:
+// x = k·pi/2 + r with pi/2 = P1 + P2 + P3 + P4 (P1, P2, P3 of 12 significant bits, so their
+// products with k <= 2^12 are exact and x - k·P1 is exact; the split is good to 2^-68). r is
+// kept as r + lo (exact two-sums collect the subtractions' rounding errors; k·P4 < 2^-32 is the
+// only rounded product), then sin(r + lo) = sin r + lo·cos r and cos(r + lo) = cos r - lo·sin r
+// to first order, by the Taylor kernels on |r| <= pi/4 (first omitted terms below 0.03 ulp);
+// cos's 1 - r^2/2 carries its rounding error too (as fdlibm's kernel does).
+float det_sinf_fast(float x) {
+    if (!(std::fabs(x) <= 4096.0f)) return det_sinf(x);  // NaN, inf and large |x| too
+    if (x == 0.0f) return x;                                // keeps the sign of zero
+    constexpr float kP1 = 0x1.922p+0f, kP2 = -0x1.2aep-18f, kP3 = -0x1.deap-31f,
+                    kP4 = 0x1.184698p-44f;
+    const float k = std::floor(x * 0x1.45f306p-1f + 0.5f);  // x·2/pi, rounded
+    // Knuth's two-sum: s + e = a + b exactly, in float.
+    auto two_sum = [](float a, float b, float* e) {
+        const float s = a + b, bv = s - a;
+        *e = (a - (s - bv)) + (b - bv);
+        return s;
+    };
+    float e0, e1;
+    const float r0 = two_sum(x - k * kP1, -(k * kP2), &e0);
+    const float r1 = two_sum(r0, -(k * kP3), &e1);
+    const float lo0 = (e0 + e1) - k * kP4;
+    const float r = r1 + lo0, lo = lo0 - (r - r1);  // renormalized: |lo| <= ulp(r)/2
+    const float r2 = r * r;
+    const int q = int(k) & 3;
+    float v;
+    if (q & 1) {  // cos r = 1 - r^2/2 + r^4/4! - ... + r^10/10!
+        float c = -1.0f / 3628800.0f;
+        c = c * r2 + 1.0f / 40320.0f;
+        c = c * r2 - 1.0f / 720.0f;
+        c = c * r2 + 1.0f / 24.0f;
+        const float hz = 0.5f * r2, w = 1.0f - hz;
+        v = w + (((1.0f - w) - hz) + (r2 * r2 * c - r * lo));
+    } else {  // sin r = r - r^3/3! + ... + r^9/9!
+        float s = 1.0f / 362880.0f;
+        s = s * r2 - 1.0f / 5040.0f;
+        s = s * r2 + 1.0f / 120.0f;
+        s = s * r2 - 1.0f / 6.0f;
+        v = r + (r * (r2 * s) + lo * (1.0f - 0.5f * r2));
+    }
+    return q & 2 ? -v : v;
+}
+
 }  // namespace shitsukan

@@ -8,19 +8,24 @@
 
 namespace shitsukan {
 
+namespace {
+// P. J. Acklam's coefficients, highest power first: the central rational function A(r)/B(r)
+// in r = (p - 0.5)^2 and the tail one C(q)/D(q) in q = sqrt(-2 log p).
+struct Poly {
+    double v[6];
+};
+constexpr Poly kA = {{-3.969683028665376e+01, 2.209460984245205e+02, -2.759285104469687e+02,
+                      1.383577518672690e+02, -3.066479806614716e+01, 2.506628277459239e+00}};
+constexpr Poly kB = {{-5.447609879822406e+01, 1.615858368580409e+02, -1.556989798598866e+02,
+                      6.680131188771972e+01, -1.328068155288572e+01, 1.0}};
+constexpr Poly kC = {{-7.784894002430293e-03, -3.223964580411365e-01, -2.400758277161838e+00,
+                      -2.549732539343734e+00, 4.374664141464968e+00, 2.938163982698783e+00}};
+constexpr Poly kD = {{0.0, 7.784695709041462e-03, 3.224671290700398e-01, 2.445134137142996e+00,
+                      3.754408661907416e+00, 1.0}};  // degree 4: v[0] unused
+}  // namespace
+
 double inverse_normal_cdf(double p) {
-    // Acklam's coefficients: central rational function and tail rational function.
-    static const double a[6] = {-3.969683028665376e+01, 2.209460984245205e+02,
-                                -2.759285104469687e+02, 1.383577518672690e+02,
-                                -3.066479806614716e+01, 2.506628277459239e+00};
-    static const double b[5] = {-5.447609879822406e+01, 1.615858368580409e+02,
-                                -1.556989798598866e+02, 6.680131188771972e+01,
-                                -1.328068155288572e+01};
-    static const double c[6] = {-7.784894002430293e-03, -3.223964580411365e-01,
-                                -2.400758277161838e+00, -2.549732539343734e+00,
-                                4.374664141464968e+00,  2.938163982698783e+00};
-    static const double d[4] = {7.784695709041462e-03, 3.224671290700398e-01, 2.445134137142996e+00,
-                                3.754408661907416e+00};
+    const double *a = kA.v, *b = kB.v, *c = kC.v, *d = kD.v + 1;
     const double p_low = 0.02425, p_high = 1.0 - p_low;
     if (!(p > 0.0 && p < 1.0)) return NAN;
     if (p < p_low) {  // lower tail
@@ -70,35 +75,75 @@ float int53_to_float(std::int64_t n) {
     }
     return negative ? -f : f;
 }
+
+// A polynomial p(r) rewritten in powers of t = r - r0: p(r0 + t) (Taylor shift by repeated
+// synthetic division, in double by the compiler), rounded to float.
+struct PolyF {
+    float v[6];
+};
+constexpr PolyF shifted_to_float(Poly p, double r0) {
+    PolyF out{};
+    for (int k = 5; k >= 0; --k) {  // p(r0) is the remainder of p / (r - r0); the quotient
+        double acc = 0.0;           // stays in p.v[0 .. k-1] for the next coefficient
+        for (int i = 0; i <= k; ++i) p.v[i] = acc = acc * r0 + p.v[i];
+        out.v[k] = float(acc);
+    }
+    return out;
+}
+
+// The central function in float, in powers of t = r - 29/128: A and B both nearly vanish at the
+// region's edge r = 0.47575^2 = 0.22634 (A = 0.0108 from terms up to 2.5, B = 0.0026), so in
+// powers of r their float evaluation cancelled up to 11 bits there (3316 ulps off the double
+// one, measured); about r0 = 29/128, just beyond the edge, every term of A(r0 + t) and of
+// B(r0 + t) has the sign of the sum for t in [-r0, 0] (condition number 1.0), so the float
+// Horner sums are good to a few ulps (chosen here: r0 = 29/128 is exact in float).
+constexpr float kCentreR0 = 0.2265625f;
+constexpr PolyF kAShifted = shifted_to_float(kA, double(kCentreR0));
+constexpr PolyF kBShifted = shifted_to_float(kB, double(kCentreR0));
+constexpr PolyF kCf = shifted_to_float(kC, 0.0), kDf = shifted_to_float(kD, 0.0);
+
+float horner(const PolyF& p, float x) {
+    return ((((p.v[0] * x + p.v[1]) * x + p.v[2]) * x + p.v[3]) * x + p.v[4]) * x + p.v[5];
+}
+
+// Acklam's tail function in float for t = min(p, 1 - p) < 0.02425: the value of the lower tail
+// (negative). t arrives as float(t) (one rounding, relative 2^-24: log t moves by 2^-24 against
+// |log t| >= 3.7); det_logf_fast is within 1 ulp and uses float arithmetic only, sqrt is the
+// FPU's (IEEE, correctly rounded), -2·log t is exact. C and D are well conditioned on q in
+// [2.72, 8.7] (condition numbers 1.0 and at most 1.43: C's two lowest terms have the other sign).
+float lower_tail_float(float t) {
+    const float q = std::sqrt(-2.0f * det_logf_fast(t));
+    return horner(kCf, q) / horner(kDf, q);
+}
 }  // namespace
 
 float gaussian_from_bits_float(std::uint64_t bits) {
     // p = open_unit_from_bits(bits) = (double(m) + 0.5)·2^-53 with m = bits >> 11, a
     // non-decreasing function of m; the tails p < 0.02425 and p > 1 - 0.02425 are exactly
     // m < kLowTail and m > kHighTail (found by bisection on that double expression, checked
-    // at both edges by tests/test_core_gaussian.cpp). No double arithmetic in the centre:
-    // on a Cortex-M4F the int64 -> double conversion, the compares and p - 0.5 were
-    // software double per lattice node.
+    // at both edges by tests/test_core_gaussian.cpp). No double arithmetic anywhere: on a
+    // Cortex-M4F the int64 -> double conversion, the compares, p - 0.5 and the tails' det_log
+    // were software double per lattice node. p, 1 - p and p - 0.5 are formed exactly from m in
+    // integers and rounded once to float, as float(p), float(1 - p), float(p - 0.5) would be.
     constexpr std::uint64_t kLowTail = 218424581927469ull, kHighTail = 8788774672813522ull;
     const std::uint64_t m = bits >> 11;
-    if (m < kLowTail || m > kHighTail)  // the tails (4.85 %): det_log and sqrt in double
-        return float(inverse_normal_cdf(open_unit_from_bits(bits)));
+    const std::int64_t two53 = std::int64_t(1) << 53;
+    if (m < kLowTail)  // lower tail (2.4 %): p = (m + 0.5)·2^-53 = (2m + 1)·2^-54, m < 2^48
+        return lower_tail_float(int53_to_float(std::int64_t(2 * m + 1)) * 0x1p-54f);
+    if (m > kHighTail) {  // upper tail (2.4 %), by symmetry: m > 2^52, so double(m) + 0.5 is
+        // the even one of m and m + 1 (a tie) and 1 - p = (2^53 - that)·2^-53, exact; m = 2^53 - 1
+        // would give p = 1, which open_unit_from_bits turns into 1 - 2^-53 (1 - p = 2^-53).
+        const std::int64_t n = two53 - std::int64_t(m + (m & 1u));
+        return -lower_tail_float(int53_to_float(n > 0 ? n : 1) * 0x1p-53f);
+    }
     // p - 0.5 = n·2^-54 exactly: below 2^52, m + 0.5 is exact (n = 2m + 1 - 2^53); from
     // 2^52 on, double(m) + 0.5 ties to the even one of m and m + 1 (n = 2·that - 2^53).
-    const std::int64_t two53 = std::int64_t(1) << 53;
     const std::int64_t n = m < (std::uint64_t(1) << 52)
                                ? std::int64_t(2 * m + 1) - two53
                                : std::int64_t(2 * (m + (m & 1u))) - two53;
-    const float q = int53_to_float(n) * 0x1p-54f, r = q * q;  // one rounding, as float(p - 0.5)
-    // The central region (95.15 % of draws): Acklam's same rational function, in float.
-    static const float a[6] = {-3.969683028665376e+01f, 2.209460984245205e+02f,
-                               -2.759285104469687e+02f, 1.383577518672690e+02f,
-                               -3.066479806614716e+01f, 2.506628277459239e+00f};
-    static const float b[5] = {-5.447609879822406e+01f, 1.615858368580409e+02f,
-                               -1.556989798598866e+02f, 6.680131188771972e+01f,
-                               -1.328068155288572e+01f};
-    return (((((a[0] * r + a[1]) * r + a[2]) * r + a[3]) * r + a[4]) * r + a[5]) * q /
-           (((((b[0] * r + b[1]) * r + b[2]) * r + b[3]) * r + b[4]) * r + 1.0f);
+    const float q = int53_to_float(n) * 0x1p-54f;  // one rounding, as float(p - 0.5)
+    const float t = q * q - kCentreR0;             // r - r0, the central region's variable
+    return q * horner(kAShifted, t) / horner(kBShifted, t);
 }
 
 }  // namespace shitsukan

@@ -4,11 +4,11 @@
 //   double z = inverse_normal_cdf(0.975);   // p in (0, 1) -> z with Phi(z) = p: 1.95996...
 //   std::uint64_t bits = 0x123456789abcdULL;  // 53 random bits (a PRNG's or a hash's)
 //   float g = gaussian_from_bits(bits);       // -> one N(0, 1) draw
-//   float h = gaussian_from_bits_float(bits); // the same draw with the central region
-//                                             // (|p - 0.5| <= 0.47575, 95 % of draws) evaluated
-//                                             // in float arithmetic: within a few float ulps of
-//                                             // gaussian_from_bits, about 10x fewer instructions
-//                                             // on a single-precision FPU (the fractal lattice's
+//   float h = gaussian_from_bits_float(bits); // the same draw in float arithmetic alone
+//                                             // (det_logf_fast and sqrtf in the tails): within
+//                                             // 8 float ulps of gaussian_from_bits (worst
+//                                             // measured 7), about 10x fewer instructions on a
+//                                             // single-precision FPU (the fractal lattice's
 //                                             // noise, solid/fractal_node.hpp; issue 12)
 // Why not the C++ library's normal distribution: its algorithm is implementation-defined, so
 // the same seed gives different numbers under libstdc++, libc++ and MSVC. Why not Box-Muller: it
@@ -27,9 +27,12 @@ double inverse_normal_cdf(double p);
 float gaussian_from_bits(std::uint64_t bits);
 float gaussian_from_bits_float(std::uint64_t bits);
 
-// 53 random bits -> a double strictly inside (0, 1): (k + 0.5) / 2^53.
+// 53 random bits -> a double strictly inside (0, 1): (k + 0.5) / 2^53, rounded to double
+// (above 2^52, k + 0.5 rounds to the even one of k and k + 1), except that k = 2^53 - 1, whose
+// k + 0.5 rounds to 2^53, gives the largest double below 1 instead of 1.
 inline double open_unit_from_bits(std::uint64_t bits) {
-    return (double(bits >> 11) + 0.5) * (1.0 / 9007199254740992.0);
+    const double p = (double(bits >> 11) + 0.5) * (1.0 / 9007199254740992.0);
+    return p < 1.0 ? p : 1.0 - 1.0 / 9007199254740992.0;
 }
 
 }  // namespace shitsukan

@@ -16,6 +16,7 @@
 // gives the same bits as the full frame.
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include "shitsukan/raster/clip.hpp"
@@ -44,7 +45,7 @@ struct SourceTriangle {
     VertexData v[3];
     VertexData dq, dr;  // v[1] - v[0] and v[2] - v[0], attribute by attribute
     const std::uint32_t* corner_index = nullptr;  // the three mesh indices
-    Vec3d object_cross;                           // (p1 - p0) x (p2 - p0), nonzero
+    Vec3 plane_direction;  // (p1 - p0) x (p2 - p0) rounded to float, or a power-of-two multiple
     int index = 0;
     bool flat = false;  // the mesh has no normals
     bool ready = false;
@@ -210,8 +211,10 @@ inline Vec3 model_vector(const Mat4& m, Vec3 v) {
 // normals (the plane's when the mesh has none), uv and colour.
 void prepare(const MeshContext& mc, SourceTriangle* t) {
     const MeshView& mesh = *mc.mesh;
-    double cross_length = std::sqrt(length_squared(t->object_cross));
-    Vec3 object_n = to_float(t->object_cross / cross_length);
+    // The plane's unit normal, normalized in float (fetch_corners made the direction nonzero
+    // and finite). Was the double length and three double divisions: software on a
+    // single-precision FPU; the direction moves by float ulps.
+    const Vec3 object_n = normalize_or(t->plane_direction, Vec3{0.0f, 0.0f, 1.0f});
     Vec3 world_n = normalize_or(model_vector(*mc.normal_matrix, object_n), object_n);
     for (int k = 0; k < 3; ++k) {
         std::uint32_t i = t->corner_index[k];
@@ -263,6 +266,23 @@ void interpolate(const SourceTriangle& t, Vec3 b, Fragment* f) {
     f->color = p.color + dq.color * b.y + dr.color * b.z;
 }
 
+// float(n) for |n| < 2^62, rounded as the conversion rounds, through the FPU's int32
+// conversion only (libgcc's __aeabi_l2f would cost 576 bytes of flash on a Cortex-M4F): the top
+// 30 bits with a sticky bit for the rest round to 24 bits as n does (core/gaussian.cpp's way).
+inline float to_float_via_int32(i64 n) {
+    const bool negative = n < 0;
+    std::uint64_t u = negative ? 0u - std::uint64_t(n) : std::uint64_t(n);
+    int shift = 0;
+    while ((u >> shift) >= (std::uint64_t(1) << 30)) ++shift;  // once per piece and band
+    std::uint32_t top = std::uint32_t(u >> shift);
+    if (shift > 0 && (u & ((std::uint64_t(1) << shift) - 1u)) != 0) top |= 1u;
+    const std::uint32_t scale_bits = std::uint32_t(127 + shift) << 23;  // 2^shift, exact
+    float scale;
+    std::memcpy(&scale, &scale_bits, sizeof scale);
+    const float f = float(std::int32_t(top)) * scale;
+    return negative ? -f : f;
+}
+
 // Twice the signed area of a snapped triangle, in (1/256 pixel)^2. Screen y points down, so
 // a counter-clockwise (front) triangle of the world has a negative area here.
 inline i64 snapped_area2(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
@@ -270,7 +290,9 @@ inline i64 snapped_area2(const ScreenVertex& a, const ScreenVertex& b, const Scr
 }
 
 // The orientation of the original triangle in homogeneous clip space: det of the rows
-// (x, y, w) of its three corners, in double. A piece of the clipped polygon has corners
+// (x, y, w) of its three corners, in double (only clipped triangles get here; double keeps the
+// two-float products exact, so the sign holds for slivers whose float determinant would round
+// to zero or flip). A piece of the clipped polygon has corners
 // B·C (B: their barycentrics, det B > 0 since clipping keeps the order), so its own
 // determinant is det B · det C, and with all its w > 0 its screen orientation is the sign of
 // det C: one answer for every piece, whatever snapping does to a sliver. Positive = counter-
@@ -323,11 +345,11 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
     // Is the middle vertex right of the long edge v0 -> v2? Then the long edge is the left.
     bool middle_right = (v1->x - v0->x) * (v2->y - v0->y) - (v2->x - v0->x) * (v1->y - v0->y) > 0;
 
-    // Screen-space barycentrics as plane equations around corner a (in 1/256 pixel units):
-    // lambda_b = (p - a) x (c - a) / area, lambda_c = (b - a) x (p - a) / area.
-    double inv_area = 1.0 / double(area2);
-    float lb_dx = float(double(c.y - a.y) * inv_area), lb_dy = float(-double(c.x - a.x) * inv_area);
-    float lc_dx = float(-double(b.y - a.y) * inv_area), lc_dy = float(double(b.x - a.x) * inv_area);
+    // Barycentrics around corner a (1/256 pixel units): lambda_b = (p - a) x (c - a) / area,
+    // lambda_c = (b - a) x (p - a) / area; float division (differences < 2^29, via int32).
+    auto per_area = [f = to_float_via_int32(area2)](i64 d) { return float(std::int32_t(d)) / f; };
+    float lb_dx = per_area(c.y - a.y), lb_dy = per_area(a.x - c.x);
+    float lc_dx = per_area(a.y - b.y), lc_dy = per_area(b.x - a.x);
     float dz_b = b.z - a.z, dz_c = c.z - a.z;
     const bool unclipped =
         a.bary == Vec3{1, 0, 0} && b.bary == Vec3{0, 1, 0} && c.bary == Vec3{0, 0, 1};
@@ -404,9 +426,43 @@ bool to_screen(const Camera& camera, const ClipSpaceVertex& v, ScreenVertex* r) 
     return true;
 }
 
+// a·b = hi + lo exactly (Dekker's product with Veltkamp's split, float only: not every FPU
+// has a fused multiply-add), for |a|, |b| in {0} U [2^-50, 2^60] (no overflow in the
+// split, no underflow in lo).
+inline float two_product(float a, float b, float* lo) {
+    auto split = [](float v, float* high) {
+        const float c = 4097.0f * v;  // 2^12 + 1
+        *high = c - (c - v);
+        return v - *high;  // the low half
+    };
+    float ah, bh;
+    const float al = split(a, &ah), bl = split(b, &bh);
+    const float hi = a * b;
+    *lo = ((ah * bh - hi) + ah * bl + al * bh) + al * bl;
+    return hi;
+}
+
+// u·v - w·z, exactly zero when it is zero, else its float to within about an ulp: both
+// products exact as hi + lo, their difference summed from the exact two-sum of the his.
+inline float cross_component(float u, float v, float w, float z, bool* zero) {
+    float lo1, lo2;
+    const float hi1 = two_product(u, v, &lo1), hi2 = two_product(w, z, &lo2);
+    *zero = hi1 == hi2 && lo1 == lo2;  // the rounded products agree iff the exact ones do
+    const float d = hi1 - hi2, bv = d - hi1;
+    const float e = (hi1 - (d - bv)) + (-hi2 - bv);  // d + e = hi1 - hi2 exactly
+    return d + (e + (lo1 - lo2));
+}
+
+inline bool in_exact_product_range(float v) {
+    const float a = std::fabs(v);
+    return a == 0.0f || (a >= 0x1p-50f && a <= 0x1p60f);
+}
+
 // ---- 1. Fetch the three corners, into clip space ----
-// false for a degenerate triangle (zero area, NaN/inf corner). The plane normal is computed
-// in double so that huge but finite coordinates do not overflow.
+// false for a degenerate triangle (zero area, NaN/inf corner). The plane normal stays in
+// double (once per triangle): products of two floats are exact there, so the cross product of
+// a sliver is rounded once instead of cancelling, no finite mesh overflows or underflows it,
+// and cross2 > 0 is a reliable degeneracy test.
 bool fetch_corners(const MeshView& mesh, const Mat4& model, const Mat4& mvp, int t,
                    SourceTriangle* src, ClipSpaceVertex corners[3]) {
     src->index = t;
@@ -419,10 +475,34 @@ bool fetch_corners(const MeshView& mesh, const Mat4& model, const Mat4& mvp, int
         corners[k].clip = transform_homogeneous(mvp, p);
         corners[k].bary = Vec3{k == 0 ? 1.0f : 0.0f, k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f};
     }
-    Vec3d e1 = to_double(src->v[1].object_position - src->v[0].object_position);
-    Vec3d e2 = to_double(src->v[2].object_position - src->v[0].object_position);
-    src->object_cross = cross(e1, e2);
-    double cross2 = length_squared(src->object_cross);
+    // The plane's direction (p1 - p0) x (p2 - p0), and whether it is zero (degenerate), with
+    // every product exact: in float as hi + lo pairs when the edges' components allow it (the
+    // common case), else in double, where products of two floats are exact (a huge or tiny
+    // mesh; scaled by a power of two into float range there). Exact products keep a sliver's
+    // normal from cancelling and make "nonzero" a reliable test. (Was always double: about
+    // 1,000 instructions per triangle and band in software on a Cortex-M4F.)
+    const Vec3 e1 = src->v[1].object_position - src->v[0].object_position;
+    const Vec3 e2 = src->v[2].object_position - src->v[0].object_position;
+    bool has_plane = false;
+    if (in_exact_product_range(e1.x) && in_exact_product_range(e1.y) &&
+        in_exact_product_range(e1.z) && in_exact_product_range(e2.x) &&
+        in_exact_product_range(e2.y) && in_exact_product_range(e2.z)) {
+        bool zx, zy, zz;
+        src->plane_direction = Vec3{cross_component(e1.y, e2.z, e1.z, e2.y, &zx),
+                                    cross_component(e1.z, e2.x, e1.x, e2.z, &zy),
+                                    cross_component(e1.x, e2.y, e1.y, e2.x, &zz)};
+        has_plane = !(zx && zy && zz);
+    } else {
+        const Vec3d c = cross(to_double(e1), to_double(e2));
+        const double ax = std::fabs(c.x), ay = std::fabs(c.y), az = std::fabs(c.z);
+        const double m = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
+        has_plane = m > 0.0 && is_finite(m);
+        if (has_plane) {
+            int e = 0;
+            (void)std::frexp(m, &e);
+            src->plane_direction = to_float(c * std::ldexp(1.0, -e));  // largest in [0.5, 1)
+        }
+    }
     // A projective model can send a corner to w ~ 0: world positions (and the differences the
     // fragments interpolate) overflow to inf and NaN (fuzz_raster finding). Such a triangle
     // has no place in the world: rejected like a degenerate one.
@@ -432,7 +512,7 @@ bool fetch_corners(const MeshView& mesh, const Mat4& model, const Mat4& mvp, int
     const Vec3 w0 = src->v[0].world_position;
     finite = finite && is_finite(w0) && is_finite(src->v[1].world_position - w0) &&
              is_finite(src->v[2].world_position - w0);
-    return finite && cross2 > 0.0 && is_finite(cross2);
+    return finite && has_plane;
 }
 
 enum class Projected { drawable, outside, rejected };

@@ -2,9 +2,8 @@
 // fujimoto2000 §2.3, appendix A: the IST on digit strings.
 #include "shitsukan/wrinkly/ist_digits.hpp"
 
-#include <cstdio>
-
 #include "shitsukan/core/assert.hpp"
+#include "shitsukan/core/format_number.hpp"
 
 namespace shitsukan {
 
@@ -188,9 +187,15 @@ const char* ist_digits_format(const IstDigits& alpha, int base_label, char* buf,
     static const char kDigitChars[] = "0123456789abcdefghijklmnopqrstuv";  // N <= kIstMaxN
     // The string may come from a user (not checked): a label sum that would overflow an int,
     // a digit that is not base-32 ('?') or more digits than the array holds are all printable.
-    int used = std::snprintf(buf, std::size_t(size), "%lld.",
-                             static_cast<long long>(alpha.base) + base_label);
-    if (used < 0) used = 0;
+    // The label in decimal (core/format_number: no stdio in a firmware), then the point.
+    const long long label = static_cast<long long>(alpha.base) + base_label;
+    const std::uint64_t magnitude =
+        label < 0 ? 0ull - static_cast<std::uint64_t>(label) : static_cast<std::uint64_t>(label);
+    NumberFormat decimal;
+    decimal.conversion = 'd';
+    int used = format_integer(buf, size, magnitude, label < 0, decimal);
+    if (used > size - 1) used = size - 1;
+    if (used < size - 1) buf[used++] = '.';
     const int count = alpha.count < kIstMaxIterations ? alpha.count : kIstMaxIterations;
     for (int i = 1; i <= count && used < size - 1; ++i)
         buf[used++] = alpha.digit[i] < kIstMaxN ? kDigitChars[alpha.digit[i]] : '?';
