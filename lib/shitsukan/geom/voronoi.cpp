@@ -238,64 +238,155 @@ void dual_walk(const DelaunayTriangulation& dt, const std::vector<int>& root,
     if (poly->size() > 1 && last_group == first_group) poly->pop_back();
 }
 
-// Cells in Hilbert order, compact (a ClipVertex carries its edge's support: 64 bytes).
-struct HilbertCells {
+// Step 6a, the vertices that need no clipping: a group's centre is INSIDE when it lies
+// strictly inside every region edge's line and farther than the snap distance from it, the
+// same exact test (orient2d, polygon.hpp) that clip_to_convex_region makes for each vertex;
+// a cell whose vertices are all inside comes out of the clipping unchanged. Decided once per
+// Voronoi vertex, not once per cell (a vertex is shared by three cells or more).
+std::vector<unsigned char> centres_inside(const DelaunayTriangulation& dt,
+                                          const std::vector<int>& root,
+                                          const std::vector<Vec2d>& centre, const Vec2d* region,
+                                          int region_count, double snap) {
+    std::vector<double> reach(static_cast<std::size_t>(region_count));
+    for (int k = 0; k < region_count; ++k)
+        reach[std::size_t(k)] = snap * length(region[(k + 1) % region_count] - region[k]);
+    const int tcount = int(dt.triangles.size());
+    std::vector<unsigned char> inside(static_cast<std::size_t>(tcount), 0);
+    for (int t = 0; t < tcount; ++t) {
+        if (root[std::size_t(t)] != t) continue;
+        const Vec2d c = centre[std::size_t(t)];
+        bool in = true;
+        for (int k = 0; k < region_count && in; ++k) {
+            const double s = orient2d(region[k], region[(k + 1) % region_count], c);
+            in = s > 0.0 && !(std::fabs(s) <= reach[std::size_t(k)]);
+        }
+        inside[std::size_t(t)] = in ? 1 : 0;
+    }
+    return inside;
+}
+
+// The groups around site s counter-clockwise, each once (the vertices of its unclipped cell),
+// as the dual walk visits them. False when one of them is not inside (the cell needs the
+// clipping); groups is then incomplete.
+bool inside_cell(const DelaunayTriangulation& dt, const std::vector<int>& root,
+                 const std::vector<unsigned char>& inside, int s, std::vector<int>* groups) {
+    const std::vector<DelaunayTriangle>& tris = dt.triangles;
+    groups->clear();
+    const int t0 = dt.point_triangle[std::size_t(s)];
+    int t = t0;
+    do {
+        const DelaunayTriangle& tri = tris[std::size_t(t)];
+        const int i = tri.v[0] == s ? 0 : (tri.v[1] == s ? 1 : 2);
+        const int g = root[std::size_t(t)];
+        if (!inside[std::size_t(g)]) return false;
+        if (groups->empty() || groups->back() != g) groups->push_back(g);
+        t = tri.n[(i + 1) % 3];  // next triangle counter-clockwise, as in dual_walk
+    } while (t != t0);
+    if (groups->size() > 1 && groups->back() == groups->front()) groups->pop_back();
+    return true;
+}
+
+// An unclipped cell as clip_to_convex_region leaves it: repeated points dropped (two groups
+// whose centres round to the same bits), fewer than 3 vertices empty, then started at the
+// lexicographically smallest vertex. Written to *cell (the vertices) and returned: the count.
+int finish_inside_cell(const std::vector<int>& groups, const std::vector<Vec2d>& centre,
+                       Vec2d* cell) {
+    int w = 0;
+    for (int g : groups) {
+        const Vec2d p = centre[std::size_t(g)];
+        if (w > 0 && cell[w - 1] == p) continue;
+        cell[w++] = p;
+    }
+    while (w > 1 && cell[0] == cell[w - 1]) --w;
+    if (w < 3) return 0;
+    int m = 0;
+    for (int k = 1; k < w; ++k)
+        if (lex_less(cell[k], cell[m])) m = k;
+    std::rotate(cell, cell + m, cell + w);
+    return w;
+}
+
+// The cells that reach the region's boundary (few: O(sqrt n) on spread-out sites), clipped,
+// in Hilbert order of their sites.
+struct ClippedCells {
+    std::vector<int> site;  // Hilbert number of the site
+    std::vector<int> start;
     std::vector<Vec2d> points;
-    std::vector<int> labels;
-    std::vector<int> start, size;  // per input site
+    std::vector<int> labels;  // 2 per point
 };
 
-// Step 6, clipping: each site's polygon clipped to the region (polygon.hpp), started at its
-// lexicographically smallest vertex. Sites are visited in Hilbert order (memory stays local).
+// Step 6b, clipping: a cell with a vertex not inside is clipped to the region (polygon.hpp)
+// and started at its lexicographically smallest vertex; the others are only counted. Sites
+// are visited in Hilbert order (memory stays local). out->offsets[i + 1] gets the size of
+// input site i's cell.
 void clip_cells(const DelaunayTriangulation& dt, const std::vector<int>& root,
-                const std::vector<Vec2d>& centre, const Vec2d* region, int region_count,
-                HilbertCells* cells) {
+                const std::vector<Vec2d>& centre, const std::vector<unsigned char>& inside,
+                const Vec2d* region, int region_count, double snap, ClippedCells* clipped,
+                VoronoiCells* out) {
     const int count = dt.input_count;
     std::vector<ClipVertex> poly, scratch;
-    const double snap = clip_snap_distance(region, region_count);
-    cells->points.reserve(std::size_t(count) * 6);
-    cells->labels.reserve(std::size_t(count) * 12);
-    cells->start.assign(static_cast<std::size_t>(count), 0);
-    cells->size.assign(static_cast<std::size_t>(count), 0);
+    std::vector<int> groups;
+    std::vector<Vec2d> cell;
+    out->offsets.assign(std::size_t(count) + 1, 0);
     for (int s = 0; s < count; ++s) {  // s: Hilbert number of the site
-        dual_walk(dt, root, centre, s, &poly);
-        if (!poly.empty()) {
-            clip_to_convex_region(&poly, region, region_count, snap, &scratch);
-            std::size_t m = 0;
-            for (std::size_t k = 1; k < poly.size(); ++k)
-                if (lex_less(poly[k].p, poly[m].p)) m = k;
-            std::rotate(poly.begin(), poly.begin() + std::ptrdiff_t(m), poly.end());
-        }
         const std::size_t site = std::size_t(dt.insertion_order[std::size_t(s)]);
-        cells->start[site] = int(cells->points.size());
-        cells->size[site] = int(poly.size());
-        for (const ClipVertex& v : poly) {
-            cells->points.push_back(v.p);
-            cells->labels.push_back(v.on[0]);
-            cells->labels.push_back(v.on[1]);
+        if (dt.point_triangle[std::size_t(s)] < 0) continue;  // a duplicate site: empty
+        if (inside_cell(dt, root, inside, s, &groups)) {
+            cell.resize(groups.size());
+            out->offsets[site + 1] = finish_inside_cell(groups, centre, cell.data());
+            continue;
         }
+        dual_walk(dt, root, centre, s, &poly);
+        clip_to_convex_region(&poly, region, region_count, snap, &scratch);
+        std::size_t m = 0;
+        for (std::size_t k = 1; k < poly.size(); ++k)
+            if (lex_less(poly[k].p, poly[m].p)) m = k;
+        std::rotate(poly.begin(), poly.begin() + std::ptrdiff_t(m), poly.end());
+        clipped->site.push_back(s);
+        clipped->start.push_back(int(clipped->points.size()));
+        for (const ClipVertex& v : poly) {
+            clipped->points.push_back(v.p);
+            clipped->labels.push_back(v.on[0]);
+            clipped->labels.push_back(v.on[1]);
+        }
+        out->offsets[site + 1] = int(poly.size());
     }
 }
 
-// Step 7: the cells in input order (cell i belongs to sites[i]).
-void cells_in_input_order(const HilbertCells& cells, const DelaunayTriangulation& dt,
+// Step 7: the cells in input order (cell i belongs to sites[i]), written straight into the
+// result: offsets from the sizes, then the inside cells walked again and the clipped ones
+// copied.
+void cells_in_input_order(const DelaunayTriangulation& dt, const std::vector<int>& root,
+                          const std::vector<Vec2d>& centre,
+                          const std::vector<unsigned char>& inside, const ClippedCells& clipped,
                           VoronoiCells* out) {
     const int count = dt.input_count;
-    out->vertices.resize(cells.points.size());
-    out->on_region_edge.resize(cells.labels.size());
-    out->offsets.resize(std::size_t(count) + 1);
+    for (int i = 0; i < count; ++i)
+        out->offsets[std::size_t(i) + 1] += out->offsets[std::size_t(i)];
+    const std::size_t total = std::size_t(out->offsets[std::size_t(count)]);
+    out->vertices.resize(total);
+    out->on_region_edge.assign(2 * total, -1);
     out->duplicate_of = dt.duplicate_of;
-    std::size_t w = 0;
+    std::vector<int> groups;
+    std::size_t next = 0;  // the next clipped cell (they are in Hilbert order)
     for (int s = 0; s < count; ++s) {
-        out->offsets[std::size_t(s)] = int(w);
-        const std::size_t first = std::size_t(cells.start[std::size_t(s)]);
-        for (int k = 0; k < cells.size[std::size_t(s)]; ++k, ++w) {
-            out->vertices[w] = cells.points[first + std::size_t(k)];
-            out->on_region_edge[2 * w] = cells.labels[2 * (first + std::size_t(k))];
-            out->on_region_edge[2 * w + 1] = cells.labels[2 * (first + std::size_t(k)) + 1];
+        const std::size_t site = std::size_t(dt.insertion_order[std::size_t(s)]);
+        const std::size_t first = std::size_t(out->offsets[site]);
+        const int size = out->offsets[site + 1] - out->offsets[site];
+        if (next < clipped.site.size() && clipped.site[next] == s) {
+            const std::size_t from = std::size_t(clipped.start[next++]);
+            for (int k = 0; k < size; ++k) {
+                out->vertices[first + std::size_t(k)] = clipped.points[from + std::size_t(k)];
+                out->on_region_edge[2 * (first + std::size_t(k))] =
+                    clipped.labels[2 * (from + std::size_t(k))];
+                out->on_region_edge[2 * (first + std::size_t(k)) + 1] =
+                    clipped.labels[2 * (from + std::size_t(k)) + 1];
+            }
+        } else if (size > 0) {
+            inside_cell(dt, root, inside, s, &groups);
+            finish_inside_cell(groups, centre, out->vertices.data() + first);
         }
     }
-    out->offsets[std::size_t(count)] = int(w);
 }
 
 }  // namespace
@@ -308,9 +399,12 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
     const std::vector<int> root = merge_cocircular_triangles(dt);
     std::vector<Vec2d> centre;
     SHITSUKAN_TRY(voronoi_vertices(dt, root, &centre));
-    HilbertCells cells;
-    clip_cells(dt, root, centre, region, region_count, &cells);
-    cells_in_input_order(cells, dt, out);
+    const double snap = clip_snap_distance(region, region_count);
+    const std::vector<unsigned char> inside =
+        centres_inside(dt, root, centre, region, region_count, snap);
+    ClippedCells clipped;
+    clip_cells(dt, root, centre, inside, region, region_count, snap, &clipped, out);
+    cells_in_input_order(dt, root, centre, inside, clipped, out);
     return Status::success();
 }
 
