@@ -140,7 +140,7 @@ Status triangulate_sites(const Vec2d* sites, int count, const Vec2d* region, int
 // Step 3, union of cocircular triangles: triangles that share a circumcircle (exact incircle
 // == 0 across their edge) are one Voronoi vertex. root[t]: the group of triangle t (its
 // smallest triangle).
-std::vector<int> merge_cocircular_triangles(const DelaunayTriangulation& dt) {
+std::vector<int> merge_cocircular_triangles(const DelaunayTriangulation& dt, bool* any_merged) {
     const std::vector<DelaunayTriangle>& tris = dt.triangles;
     const std::vector<Vec2d>& pts = dt.points;
     const int tcount = int(tris.size());
@@ -159,6 +159,7 @@ std::vector<int> merge_cocircular_triangles(const DelaunayTriangulation& dt) {
                          pts[std::size_t(tri.v[2])], pts[std::size_t(d)]) == 0.0) {
                 int ra = find_root(parent, t), rb = find_root(parent, nb);
                 if (ra != rb) parent[std::size_t(std::max(ra, rb))] = std::min(ra, rb);
+                *any_merged = true;
             }
         }
     }
@@ -166,16 +167,22 @@ std::vector<int> merge_cocircular_triangles(const DelaunayTriangulation& dt) {
     return parent;
 }
 
-// Step 4, the Voronoi vertices: one canonical circumcentre per group of cocircular triangles,
-// from the group's 3 lexicographically smallest sites (the same bits whatever the order).
-Status voronoi_vertices(const DelaunayTriangulation& dt, const std::vector<int>& root,
-                        std::vector<Vec2d>* centre) {
+// The 3 lexicographically smallest sites of every group of more than one triangle, in
+// best[3 * root .. 3 * root + 2] (sorted); untouched (-1) for the other triangles.
+std::vector<int> smallest_sites_of_groups(const DelaunayTriangulation& dt,
+                                          const std::vector<int>& root) {
     const std::vector<DelaunayTriangle>& tris = dt.triangles;
     const std::vector<Vec2d>& pts = dt.points;
     const int tcount = int(tris.size());
     std::vector<int> best(std::size_t(tcount) * 3, -1);
     for (int t = 0; t < tcount; ++t) {
+        if (root[std::size_t(t)] == t) continue;
+        best[std::size_t(root[std::size_t(t)]) * 3] = -2;  // a merged group (seen below)
+    }
+    for (int t = 0; t < tcount; ++t) {
         int* b = &best[std::size_t(root[std::size_t(t)]) * 3];
+        if (b[0] == -1) continue;  // a single triangle: sorted directly by the caller
+        if (b[0] == -2) b[0] = -1;
         for (int v : tris[std::size_t(t)].v) {
             if (v == b[0] || v == b[1] || v == b[2]) continue;
             // insert v into the sorted top-3
@@ -188,12 +195,32 @@ Status voronoi_vertices(const DelaunayTriangulation& dt, const std::vector<int>&
             b[k] = v;
         }
     }
+    return best;
+}
+
+// Step 4, the Voronoi vertices: one canonical circumcentre per group of cocircular triangles,
+// from the group's 3 lexicographically smallest sites (the same bits whatever the order). A
+// group of one triangle (all of them on sites in general position) just sorts its 3 sites.
+Status voronoi_vertices(const DelaunayTriangulation& dt, const std::vector<int>& root,
+                        bool any_merged, std::vector<Vec2d>* centre) {
+    const std::vector<DelaunayTriangle>& tris = dt.triangles;
+    const std::vector<Vec2d>& pts = dt.points;
+    const int tcount = int(tris.size());
+    const std::vector<int> best = any_merged ? smallest_sites_of_groups(dt, root)
+                                             : std::vector<int>();
     centre->resize(static_cast<std::size_t>(tcount));
     for (int t = 0; t < tcount; ++t) {
         if (root[std::size_t(t)] != t) continue;
-        const int* b = &best[std::size_t(t) * 3];
-        const Vec2d p0 = pts[std::size_t(b[0])], p1 = pts[std::size_t(b[1])],
-                    p2 = pts[std::size_t(b[2])];
+        const int* v = tris[std::size_t(t)].v;
+        Vec2d p0 = pts[std::size_t(v[0])], p1 = pts[std::size_t(v[1])], p2 = pts[std::size_t(v[2])];
+        if (any_merged && best[std::size_t(t) * 3] >= 0) {
+            const int* b = &best[std::size_t(t) * 3];
+            p0 = pts[std::size_t(b[0])], p1 = pts[std::size_t(b[1])], p2 = pts[std::size_t(b[2])];
+        } else {  // sort the 3 (distinct) sites
+            if (lex_less(p1, p0)) std::swap(p0, p1);
+            if (lex_less(p2, p1)) std::swap(p1, p2);
+            if (lex_less(p1, p0)) std::swap(p0, p1);
+        }
         (*centre)[std::size_t(t)] = circumcentre(p0, p1, p2);
         if (!is_finite((*centre)[std::size_t(t)]))
             return Status::error(StatusCode::degenerate,
@@ -396,9 +423,10 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
     SHITSUKAN_TRY(check_voronoi_arguments(sites, count, region, region_count, out));
     DelaunayTriangulation dt;
     SHITSUKAN_TRY(triangulate_sites(sites, count, region, region_count, &dt));
-    const std::vector<int> root = merge_cocircular_triangles(dt);
+    bool any_merged = false;
+    const std::vector<int> root = merge_cocircular_triangles(dt, &any_merged);
     std::vector<Vec2d> centre;
-    SHITSUKAN_TRY(voronoi_vertices(dt, root, &centre));
+    SHITSUKAN_TRY(voronoi_vertices(dt, root, any_merged, &centre));
     const double snap = clip_snap_distance(region, region_count);
     const std::vector<unsigned char> inside =
         centres_inside(dt, root, centre, region, region_count, snap);
