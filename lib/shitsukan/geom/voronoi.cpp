@@ -293,34 +293,37 @@ std::vector<unsigned char> centres_inside(const DelaunayTriangulation& dt,
 }
 
 // The groups around site s counter-clockwise, each once (the vertices of its unclipped cell),
-// as the dual walk visits them. False when one of them is not inside (the cell needs the
-// clipping); groups is then incomplete.
+// as the dual walk visits them, appended to *ring. False when one of them is not inside (the
+// cell needs the clipping); nothing is appended then.
 bool inside_cell(const DelaunayTriangulation& dt, const std::vector<int>& root,
-                 const std::vector<unsigned char>& inside, int s, std::vector<int>* groups) {
+                 const std::vector<unsigned char>& inside, int s, std::vector<int>* ring) {
     const std::vector<DelaunayTriangle>& tris = dt.triangles;
-    groups->clear();
+    const std::size_t first = ring->size();
     const int t0 = dt.point_triangle[std::size_t(s)];
     int t = t0;
     do {
         const DelaunayTriangle& tri = tris[std::size_t(t)];
         const int i = tri.v[0] == s ? 0 : (tri.v[1] == s ? 1 : 2);
         const int g = root[std::size_t(t)];
-        if (!inside[std::size_t(g)]) return false;
-        if (groups->empty() || groups->back() != g) groups->push_back(g);
+        if (!inside[std::size_t(g)]) {
+            ring->resize(first);
+            return false;
+        }
+        if (ring->size() == first || ring->back() != g) ring->push_back(g);
         t = tri.n[(i + 1) % 3];  // next triangle counter-clockwise, as in dual_walk
     } while (t != t0);
-    if (groups->size() > 1 && groups->back() == groups->front()) groups->pop_back();
+    if (ring->size() - first > 1 && ring->back() == (*ring)[first]) ring->pop_back();
     return true;
 }
 
 // An unclipped cell as clip_to_convex_region leaves it: repeated points dropped (two groups
 // whose centres round to the same bits), fewer than 3 vertices empty, then started at the
-// lexicographically smallest vertex. Written to *cell (the vertices) and returned: the count.
-int finish_inside_cell(const std::vector<int>& groups, const std::vector<Vec2d>& centre,
-                       Vec2d* cell) {
+// lexicographically smallest vertex. Written to cell[0 ..) (room for n) and returned: the
+// count.
+int finish_inside_cell(const int* groups, int n, const std::vector<Vec2d>& centre, Vec2d* cell) {
     int w = 0;
-    for (int g : groups) {
-        const Vec2d p = centre[std::size_t(g)];
+    for (int k = 0; k < n; ++k) {
+        const Vec2d p = centre[std::size_t(groups[k])];
         if (w > 0 && cell[w - 1] == p) continue;
         cell[w++] = p;
     }
@@ -336,7 +339,8 @@ int finish_inside_cell(const std::vector<int>& groups, const std::vector<Vec2d>&
 // The cells that reach the region's boundary (few: O(sqrt n) on spread-out sites), clipped,
 // in Hilbert order of their sites.
 struct ClippedCells {
-    std::vector<int> site;  // Hilbert number of the site
+    std::vector<int> ring, ring_start;  // per Hilbert number: the inside cells' groups
+    std::vector<int> site;              // Hilbert number of the site
     std::vector<int> start;
     std::vector<Vec2d> points;
     std::vector<int> labels;  // 2 per point
@@ -352,15 +356,20 @@ void clip_cells(const DelaunayTriangulation& dt, const std::vector<int>& root,
                 VoronoiCells* out) {
     const int count = dt.input_count;
     std::vector<ClipVertex> poly, scratch;
-    std::vector<int> groups;
     std::vector<Vec2d> cell;
     out->offsets.assign(std::size_t(count) + 1, 0);
+    clipped->ring.reserve(std::size_t(count) * 6 + 64);
+    clipped->ring_start.resize(std::size_t(count) + 1);
     for (int s = 0; s < count; ++s) {  // s: Hilbert number of the site
         const std::size_t site = std::size_t(dt.insertion_order[std::size_t(s)]);
+        const std::size_t first = clipped->ring.size();
+        clipped->ring_start[std::size_t(s)] = int(first);
         if (dt.point_triangle[std::size_t(s)] < 0) continue;  // a duplicate site: empty
-        if (inside_cell(dt, root, inside, s, &groups)) {
-            cell.resize(groups.size());
-            out->offsets[site + 1] = finish_inside_cell(groups, centre, cell.data());
+        if (inside_cell(dt, root, inside, s, &clipped->ring)) {
+            const int n = int(clipped->ring.size() - first);
+            cell.resize(std::size_t(n));
+            out->offsets[site + 1] =
+                finish_inside_cell(clipped->ring.data() + first, n, centre, cell.data());
             continue;
         }
         dual_walk(dt, root, centre, s, &poly);
@@ -378,15 +387,14 @@ void clip_cells(const DelaunayTriangulation& dt, const std::vector<int>& root,
         }
         out->offsets[site + 1] = int(poly.size());
     }
+    clipped->ring_start[std::size_t(count)] = int(clipped->ring.size());
 }
 
 // Step 7: the cells in input order (cell i belongs to sites[i]), written straight into the
-// result: offsets from the sizes, then the inside cells walked again and the clipped ones
-// copied.
-void cells_in_input_order(const DelaunayTriangulation& dt, const std::vector<int>& root,
-                          const std::vector<Vec2d>& centre,
-                          const std::vector<unsigned char>& inside, const ClippedCells& clipped,
-                          VoronoiCells* out) {
+// result: offsets from the sizes, then the inside cells made from their groups and the
+// clipped ones copied.
+void cells_in_input_order(const DelaunayTriangulation& dt, const std::vector<Vec2d>& centre,
+                          const ClippedCells& clipped, VoronoiCells* out) {
     const int count = dt.input_count;
     for (int i = 0; i < count; ++i)
         out->offsets[std::size_t(i) + 1] += out->offsets[std::size_t(i)];
@@ -394,7 +402,6 @@ void cells_in_input_order(const DelaunayTriangulation& dt, const std::vector<int
     out->vertices.resize(total);
     out->on_region_edge.assign(2 * total, -1);
     out->duplicate_of = dt.duplicate_of;
-    std::vector<int> groups;
     std::size_t next = 0;  // the next clipped cell (they are in Hilbert order)
     for (int s = 0; s < count; ++s) {
         const std::size_t site = std::size_t(dt.insertion_order[std::size_t(s)]);
@@ -410,8 +417,9 @@ void cells_in_input_order(const DelaunayTriangulation& dt, const std::vector<int
                     clipped.labels[2 * (from + std::size_t(k)) + 1];
             }
         } else if (size > 0) {
-            inside_cell(dt, root, inside, s, &groups);
-            finish_inside_cell(groups, centre, out->vertices.data() + first);
+            const int from = clipped.ring_start[std::size_t(s)];
+            finish_inside_cell(clipped.ring.data() + from, clipped.ring_start[std::size_t(s) + 1] - from,
+                               centre, out->vertices.data() + first);
         }
     }
 }
@@ -432,7 +440,7 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
         centres_inside(dt, root, centre, region, region_count, snap);
     ClippedCells clipped;
     clip_cells(dt, root, centre, inside, region, region_count, snap, &clipped, out);
-    cells_in_input_order(dt, root, centre, inside, clipped, out);
+    cells_in_input_order(dt, centre, clipped, out);
     return Status::success();
 }
 
