@@ -316,24 +316,30 @@ bool inside_cell(const DelaunayTriangulation& dt, const std::vector<int>& root,
     return true;
 }
 
-// An unclipped cell as clip_to_convex_region leaves it: repeated points dropped (two groups
-// whose centres round to the same bits), fewer than 3 vertices empty, then started at the
-// lexicographically smallest vertex. Written to cell[0 ..) (room for n) and returned: the
-// count.
-int finish_inside_cell(const int* groups, int n, const std::vector<Vec2d>& centre, Vec2d* cell) {
+// An unclipped cell as clip_to_convex_region leaves it, first half: repeated points dropped
+// (two groups whose centres round to the same bits) and fewer than 3 vertices made empty, in
+// place on groups[0 .. n). Returns the count left.
+int drop_repeated_centres(int* groups, int n, const std::vector<Vec2d>& centre) {
     int w = 0;
     for (int k = 0; k < n; ++k) {
-        const Vec2d p = centre[std::size_t(groups[k])];
-        if (w > 0 && cell[w - 1] == p) continue;
-        cell[w++] = p;
+        if (w > 0 && centre[std::size_t(groups[w - 1])] == centre[std::size_t(groups[k])])
+            continue;
+        groups[w++] = groups[k];
     }
-    while (w > 1 && cell[0] == cell[w - 1]) --w;
-    if (w < 3) return 0;
+    while (w > 1 && centre[std::size_t(groups[0])] == centre[std::size_t(groups[w - 1])]) --w;
+    return w < 3 ? 0 : w;
+}
+
+// The second half: the cell's vertices written to cell[0 .. n), started at the
+// lexicographically smallest.
+void write_inside_cell(const int* groups, int n, const std::vector<Vec2d>& centre, Vec2d* cell) {
     int m = 0;
-    for (int k = 1; k < w; ++k)
-        if (lex_less(cell[k], cell[m])) m = k;
-    std::rotate(cell, cell + m, cell + w);
-    return w;
+    Vec2d smallest = centre[std::size_t(groups[0])];
+    for (int k = 1; k < n; ++k) {
+        const Vec2d p = centre[std::size_t(groups[k])];
+        if (lex_less(p, smallest)) m = k, smallest = p;
+    }
+    for (int k = 0; k < n; ++k) cell[k] = centre[std::size_t(groups[(m + k) % n])];
 }
 
 // The cells that reach the region's boundary (few: O(sqrt n) on spread-out sites), clipped,
@@ -356,7 +362,6 @@ void clip_cells(const DelaunayTriangulation& dt, const std::vector<int>& root,
                 VoronoiCells* out) {
     const int count = dt.input_count;
     std::vector<ClipVertex> poly, scratch;
-    std::vector<Vec2d> cell;
     out->offsets.assign(std::size_t(count) + 1, 0);
     clipped->ring.reserve(std::size_t(count) * 6 + 64);
     clipped->ring_start.resize(std::size_t(count) + 1);
@@ -366,10 +371,10 @@ void clip_cells(const DelaunayTriangulation& dt, const std::vector<int>& root,
         clipped->ring_start[std::size_t(s)] = int(first);
         if (dt.point_triangle[std::size_t(s)] < 0) continue;  // a duplicate site: empty
         if (inside_cell(dt, root, inside, s, &clipped->ring)) {
-            const int n = int(clipped->ring.size() - first);
-            cell.resize(std::size_t(n));
-            out->offsets[site + 1] =
-                finish_inside_cell(clipped->ring.data() + first, n, centre, cell.data());
+            const int n = drop_repeated_centres(clipped->ring.data() + first,
+                                                int(clipped->ring.size() - first), centre);
+            clipped->ring.resize(first + std::size_t(n));
+            out->offsets[site + 1] = n;
             continue;
         }
         dual_walk(dt, root, centre, s, &poly);
@@ -416,10 +421,10 @@ void cells_in_input_order(const DelaunayTriangulation& dt, const std::vector<Vec
                 out->on_region_edge[2 * (first + std::size_t(k)) + 1] =
                     clipped.labels[2 * (from + std::size_t(k)) + 1];
             }
-        } else if (size > 0) {
+        } else if (size > 0) {  // its groups, after the repeated ones were dropped
             const int from = clipped.ring_start[std::size_t(s)];
-            finish_inside_cell(clipped.ring.data() + from, clipped.ring_start[std::size_t(s) + 1] - from,
-                               centre, out->vertices.data() + first);
+            write_inside_cell(clipped.ring.data() + from, size, centre,
+                              out->vertices.data() + first);
         }
     }
 }
