@@ -260,12 +260,28 @@ Status add_frame(Box data, Vec2d cover_lo, Vec2d cover_hi, DelaunayTriangulation
 }
 
 struct HilbertKey {
-    std::uint64_t h;
+    std::uint32_t h;  // hilbert_index on the 2^16 x 2^16 grid: below 2^32
     int i;
 };
 
+// The keys sorted by h, stably (equal h keep their order): LSD radix sort, 4 passes of 8 bits
+// (a pass whose digit is the same for every key is skipped).
+void radix_sort_by_h(std::vector<HilbertKey>* keys) {
+    std::vector<HilbertKey> tmp(keys->size());
+    for (int shift = 0; shift < 32; shift += 8) {
+        std::size_t start[257] = {};
+        for (const HilbertKey& k : *keys) ++start[((k.h >> shift) & 255u) + 1];
+        if (start[((keys->front().h >> shift) & 255u) + 1] == keys->size()) continue;
+        for (int d = 0; d < 256; ++d) start[d + 1] += start[d];
+        for (const HilbertKey& k : *keys) tmp[start[(k.h >> shift) & 255u]++] = k;
+        keys->swap(tmp);
+    }
+}
+
 // Step 3, the insertion order: Hilbert index on a 2^16 grid over the points' box, then
-// coordinates, then index (duplicates end adjacent, the smallest index first).
+// coordinates, then index (duplicates end adjacent, the smallest index first). A radix sort
+// by Hilbert index, then each run of equal Hilbert index by coordinates and index: the same
+// order as one comparison sort by all three (a strict total order), in a fraction of the time.
 std::vector<HilbertKey> hilbert_order(const Vec2d* points, int count, Box data) {
     std::vector<HilbertKey> order(static_cast<std::size_t>(count));
     const double lo_x = data.lo_x, lo_y = data.lo_y;
@@ -274,16 +290,25 @@ std::vector<HilbertKey> hilbert_order(const Vec2d* points, int count, Box data) 
     for (int i = 0; i < count; ++i) {
         auto gx = std::uint32_t((points[i].x - lo_x) * sx);
         auto gy = std::uint32_t((points[i].y - lo_y) * sy);
-        order[std::size_t(i)] = {hilbert_index(std::min(gx, 65535u), std::min(gy, 65535u)), i};
+        order[std::size_t(i)] = {
+            std::uint32_t(hilbert_index(std::min(gx, 65535u), std::min(gy, 65535u))), i};
     }
-    std::sort(order.begin(), order.end(), [&](const HilbertKey& a, const HilbertKey& b) {
-        if (a.h != b.h) return a.h < b.h;
+    radix_sort_by_h(&order);
+    const auto by_point = [&](const HilbertKey& a, const HilbertKey& b) {
         const Vec2d& pa = points[a.i];
         const Vec2d& pb = points[b.i];
         if (pa.x != pb.x) return pa.x < pb.x;
         if (pa.y != pb.y) return pa.y < pb.y;
         return a.i < b.i;
-    });
+    };
+    for (std::size_t k = 0; k < order.size();) {
+        std::size_t end = k + 1;
+        while (end < order.size() && order[end].h == order[k].h) ++end;
+        if (end - k > 1)
+            std::sort(order.begin() + std::ptrdiff_t(k), order.begin() + std::ptrdiff_t(end),
+                      by_point);
+        k = end;
+    }
     return order;
 }
 
