@@ -154,17 +154,6 @@ double orient2d_exact(Vec2d a, Vec2d b, Vec2d c) {
     return expansion_sign_value(dlen, det);
 }
 
-double orient2d(Vec2d a, Vec2d b, Vec2d c) {
-    double detleft = (a.x - c.x) * (b.y - c.y);
-    double detright = (a.y - c.y) * (b.x - c.x);
-    double det = detleft - detright;
-    double detsum = std::fabs(detleft) + std::fabs(detright);
-    const double errbound = (3.0 + 16.0 * kEpsilon) * kEpsilon;  // Shewchuk's ccwerrboundA
-    if (std::fabs(det) >= errbound * detsum && det != 0.0) return det;
-    if (detsum == 0.0) return 0.0;  // both products exactly 0 in floating point -> collinear
-    return orient2d_exact(a, b, c);
-}
-
 namespace {
 
 // The exact in-circle determinant as a sum of products of four doubles, accumulated in a
@@ -423,21 +412,7 @@ inline bool axis_parallel_rectangle(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
 
 }  // namespace
 
-double incircle(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
-    double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
-    double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
-    double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-    double alift = adx * adx + ady * ady;
-    double cdxady = cdx * ady, adxcdy = adx * cdy;
-    double blift = bdx * bdx + bdy * bdy;
-    double adxbdy = adx * bdy, bdxady = bdx * ady;
-    double clift = cdx * cdx + cdy * cdy;
-    double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
-    double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
-                       (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
-                       (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
-    const double errbound = (10.0 + 96.0 * kEpsilon) * kEpsilon;  // Shewchuk's iccerrboundA
-    if (std::fabs(det) > errbound * permanent) return det;
+double incircle_unfiltered(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
     if (axis_parallel_rectangle(a, b, c, d)) return 0.0;
     return incircle_exact_differences(a, b, c, d);
 }
