@@ -373,14 +373,14 @@ bool inside_cell(const DelaunayTriangulation& dt, const std::vector<int>& root,
     int t = t0;
     do {
         const DelaunayTriangle& tri = tris[std::size_t(t)];
-        const int i = tri.v[0] == s ? 0 : (tri.v[1] == s ? 1 : 2);
+        const int i = int(tri.v[1] == s) + 2 * int(tri.v[2] == s);  // no branch to mispredict
         const int g = root[std::size_t(t)];
         if (!inside[std::size_t(g)]) {
             ring->resize(first);
             return false;
         }
         if (ring->size() == first || ring->back() != g) ring->push_back(g);
-        t = tri.n[(i + 1) % 3];  // next triangle counter-clockwise, as in dual_walk
+        t = tri.n[i == 2 ? 0 : i + 1];  // next triangle counter-clockwise, as in dual_walk
     } while (t != t0);
     if (ring->size() - first > 1 && ring->back() == (*ring)[first]) ring->pop_back();
     return true;
