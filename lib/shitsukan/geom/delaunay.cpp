@@ -58,7 +58,13 @@ public:
 
     void start_frame() {
         const int n = dt_.input_count;
+        // n + 4 points whose hull is the 4 frame points: 2 (n + 4) - 6 triangles at most
+        // (fewer with duplicates), reserved once: no doubling, no copies, no slack
+        const std::size_t most = 2 * dt_.points.size() - 6;
         dt_.triangles.clear();
+        dt_.triangles.reserve(most);
+        mark_.reserve(most);
+        out_mark_.reserve(most);
         // frame points n..n+3 counter-clockwise: (-,-) (+,-) (+,+) (-,+)
         dt_.triangles.push_back({{n, n + 1, n + 2}, {-1, 1, -1}});
         dt_.triangles.push_back({{n, n + 2, n + 3}, {-1, -1, 0}});

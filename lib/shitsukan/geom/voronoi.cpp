@@ -507,14 +507,20 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
     DelaunayTriangulation dt;
     SHITSUKAN_TRY(triangulate_sites(sites, count, region, region_count, &dt));
     bool any_merged = false;
-    const std::vector<int> root = merge_cocircular_triangles(dt, &any_merged);
+    std::vector<int> root = merge_cocircular_triangles(dt, &any_merged);
     std::vector<Vec2d> centre;
     SHITSUKAN_TRY(voronoi_vertices(dt, root, any_merged, &centre));
     const double snap = clip_snap_distance(region, region_count);
-    const std::vector<unsigned char> inside =
-        centres_inside(dt, root, centre, region, region_count, snap);
+    std::vector<unsigned char> inside = centres_inside(dt, root, centre, region, region_count, snap);
     ClippedCells clipped;
     clip_cells(dt, root, centre, inside, region, region_count, snap, &clipped, out);
+    // the triangulation is walked no more: freed before the result is allocated (the peak
+    // working set is the larger of the two halves, not their sum)
+    std::vector<DelaunayTriangle>().swap(dt.triangles);
+    std::vector<Vec2d>().swap(dt.points);
+    std::vector<int>().swap(dt.point_triangle);
+    std::vector<int>().swap(root);
+    std::vector<unsigned char>().swap(inside);
     cells_in_input_order(dt, centre, clipped, out);
     return Status::success();
 }
