@@ -88,6 +88,31 @@ TEST_CASE("predicates: exact signs where the floating-point value is wrong") {
     }
 }
 
+TEST_CASE("predicates: in-circle on a rounded lattice, every stage against the exact sum") {
+    // Sites (i + 0.5) / side rounded to doubles: four of them on one lattice circle are off
+    // it by ~1e-16 of the determinant's size (the double-double stage decides those), some are
+    // exactly on it (the expansions decide), axis-parallel rectangles are 0 by comparisons.
+    // The sign must be the exact one for every quadruple (issue 18's double-double stage).
+    const int side = 100;
+    auto p = [&](int i, int j) { return Vec2d{(i + 0.5) / side, (j + 0.5) / side}; };
+    Pcg32 rng(18, 4);
+    int zero = 0, near_zero = 0;
+    for (int k = 0; k < 20000; ++k) {
+        const int i = int(rng.uniform_int(90)), j = int(rng.uniform_int(90));
+        Vec2d v[4];
+        for (Vec2d& q : v) q = p(i + int(rng.uniform_int(6)), j + int(rng.uniform_int(6)));
+        if (orient2d(v[0], v[1], v[2]) <= 0.0) continue;  // a counter-clockwise triangle
+        const double f = incircle(v[0], v[1], v[2], v[3]);
+        const double e = incircle_exact(v[0], v[1], v[2], v[3]);
+        REQUIRE((f > 0) == (e > 0));
+        REQUIRE((f < 0) == (e < 0));
+        zero += e == 0.0;
+        near_zero += e != 0.0 && std::fabs(e) < 1e-20;
+    }
+    CHECK(zero > 100);  // the cases exist: exactly cocircular ...
+    CHECK(near_zero > 100);  // ... and cocircular on the lattice but not in doubles
+}
+
 TEST_CASE("delaunay: empty circumcircles on random points") {
     auto sites = random_sites(300, 1);
     DelaunayTriangulation dt;

@@ -19,6 +19,7 @@
 
 #include "bench.hpp"
 #include "bench_voronoi_sites.hpp"
+#include "bench_voronoi_timing.hpp"
 #include "shitsukan/geom/voronoi.hpp"
 
 using namespace shitsukan;
@@ -43,19 +44,6 @@ std::vector<BoostPoint> boost_sites(SiteDistribution d, const std::vector<Vec2d>
     return out;
 }
 
-template <class F> double time_call(int n, F&& fn) {  // as in bench_voronoi_cgal.cpp
-    if (n < 100000) return bench::ns_per_op(fn);
-    double best = 1e300;
-    for (int r = 0; r < 3; ++r) {
-        const auto t0 = std::chrono::steady_clock::now();
-        fn();
-        best = std::min(best, std::chrono::duration<double, std::nano>(
-                                  std::chrono::steady_clock::now() - t0)
-                                  .count());
-    }
-    return best;
-}
-
 }  // namespace
 
 SHITSUKAN_BENCH(voronoi_vs_boost_polygon) {
@@ -72,13 +60,13 @@ SHITSUKAN_BENCH(voronoi_vs_boost_polygon) {
                                      site_distribution_name(d) + " sites";
             VoronoiCells cells;
             bool ok = true;
-            const double ours = time_call(n, [&] {
+            const double ours = voronoi_time_call(n, [&] {
                 Status s = voronoi_cells(sites.data(), count, square, 4, &cells);
                 ok = ok && s.ok();
                 bench::sink(s.ok() ? cells.vertices.size() : 0);
             });
             std::size_t boost_bytes = 0;
-            const double peer = time_call(n, [&] {
+            const double peer = voronoi_time_call(n, [&] {
                 BoostDiagram vd;
                 boost::polygon::construct_voronoi(isites.begin(), isites.end(), &vd);
                 boost_bytes = vd.num_cells() * sizeof(BoostDiagram::cell_type) +

@@ -21,6 +21,7 @@
 
 #include "bench.hpp"
 #include "bench_voronoi_sites.hpp"
+#include "bench_voronoi_timing.hpp"
 #include "shitsukan/geom/delaunay.hpp"
 #include "shitsukan/geom/voronoi.hpp"
 
@@ -57,21 +58,6 @@ void clip_unit_square(std::vector<Point>* poly, std::vector<Point>* tmp) {
         }
         poly->swap(*tmp);
     }
-}
-
-// ns per call: bench::ns_per_op for small inputs; the best of 3 single calls from 1e5 sites
-// up (7 rounds of 1e6 sites for four timings would take minutes).
-template <class F> double time_call(int n, F&& fn) {
-    if (n < 100000) return bench::ns_per_op(fn);
-    double best = 1e300;
-    for (int r = 0; r < 3; ++r) {
-        const auto t0 = std::chrono::steady_clock::now();
-        fn();
-        best = std::min(best, std::chrono::duration<double, std::nano>(
-                                  std::chrono::steady_clock::now() - t0)
-                                  .count());
-    }
-    return best;
 }
 
 struct CgalCells {
@@ -134,12 +120,12 @@ SHITSUKAN_BENCH(voronoi_vs_cgal) {
             for (const Vec2d& p : sites) pts.emplace_back(p.x, p.y);
             DelaunayTriangulation dt;
             bool ok = true;
-            const double ours_dt = time_call(n, [&] {
+            const double ours_dt = voronoi_time_call(n, [&] {
                 Status s = build_delaunay(sites.data(), count, &dt);
                 ok = ok && s.ok();
                 bench::sink(s.ok() ? dt.triangles.size() : 0);
             });
-            const double cgal_dt = time_call(n, [&] {
+            const double cgal_dt = voronoi_time_call(n, [&] {
                 Triangulation t;
                 t.insert(pts.begin(), pts.end());
                 bench::sink(t.number_of_faces());
@@ -148,13 +134,13 @@ SHITSUKAN_BENCH(voronoi_vs_cgal) {
             bench::report("Delaunay, " + what, ours_dt, "CGAL Delaunay_triangulation_2 (Epick)",
                           cgal_dt);
             VoronoiCells cells;
-            const double ours_vc = time_call(n, [&] {
+            const double ours_vc = voronoi_time_call(n, [&] {
                 Status s = voronoi_cells(sites.data(), count, square, 4, &cells);
                 ok = ok && s.ok();
                 bench::sink(s.ok() ? cells.vertices.size() : 0);
             });
             CgalCells cgal_cells;
-            const double cgal_vc = time_call(n, [&] {
+            const double cgal_vc = voronoi_time_call(n, [&] {
                 cgal_clipped_cells(pts, &cgal_cells, nullptr);
                 bench::sink(cgal_cells.out.size());
             });

@@ -10,23 +10,20 @@
 namespace shitsukan {
 namespace {
 
-// Index of (x, y) on a Hilbert curve over a 2^16 x 2^16 grid (the classic xy -> d loop).
-std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y) {
-    const std::uint32_t n = 1u << 16;
-    std::uint64_t d = 0;
-    for (std::uint32_t s = n / 2; s > 0; s /= 2) {
-        std::uint32_t rx = (x & s) ? 1u : 0u;
-        std::uint32_t ry = (y & s) ? 1u : 0u;
-        d += std::uint64_t(s) * s * ((3u * rx) ^ ry);
-        if (ry == 0) {  // rotate the quadrant
-            if (rx == 1) {
-                x = n - 1 - x;
-                y = n - 1 - y;
-            }
-            std::uint32_t t = x;
-            x = y;
-            y = t;
-        }
+// Index of (x, y) on a Hilbert curve over a 2^16 x 2^16 grid: the classic xy -> d loop, its
+// quadrant rotations (swap x and y; complement both, which commutes with the swap) kept as
+// two state bits applied to the original coordinates, so the loop has no branch to
+// mispredict (the branching loop was 16 % of the triangulation's time). The same index.
+std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
+    std::uint32_t d = 0, swapped = 0, flipped = 0;
+    for (int b = 15; b >= 0; --b) {
+        const std::uint32_t xb = (x >> b) & 1u, yb = (y >> b) & 1u;
+        const std::uint32_t rx = ((xb & ~swapped) | (yb & swapped)) ^ flipped;
+        const std::uint32_t ry = ((yb & ~swapped) | (xb & swapped)) ^ flipped;
+        d |= ((3u * rx) ^ ry) << (2 * b);
+        const std::uint32_t turn = ry ^ 1u;  // ry == 0: rotate the quadrant
+        flipped ^= turn & rx;                // rx == 1 too: complement
+        swapped ^= turn;
     }
     return d;
 }
@@ -58,7 +55,13 @@ public:
 
     void start_frame() {
         const int n = dt_.input_count;
+        // n + 4 points whose hull is the 4 frame points: 2 (n + 4) - 6 triangles at most
+        // (fewer with duplicates), reserved once: no doubling, no copies, no slack
+        const std::size_t most = 2 * dt_.points.size() - 6;
         dt_.triangles.clear();
+        dt_.triangles.reserve(most);
+        mark_.reserve(most);
+        out_mark_.reserve(most);
         // frame points n..n+3 counter-clockwise: (-,-) (+,-) (+,+) (-,+)
         dt_.triangles.push_back({{n, n + 1, n + 2}, {-1, 1, -1}});
         dt_.triangles.push_back({{n, n + 2, n + 3}, {-1, -1, 0}});
@@ -260,12 +263,28 @@ Status add_frame(Box data, Vec2d cover_lo, Vec2d cover_hi, DelaunayTriangulation
 }
 
 struct HilbertKey {
-    std::uint64_t h;
+    std::uint32_t h;  // hilbert_index on the 2^16 x 2^16 grid: below 2^32
     int i;
 };
 
+// The keys sorted by h, stably (equal h keep their order): LSD radix sort, 4 passes of 8 bits
+// (a pass whose digit is the same for every key is skipped).
+void radix_sort_by_h(std::vector<HilbertKey>* keys) {
+    std::vector<HilbertKey> tmp(keys->size());
+    for (int shift = 0; shift < 32; shift += 8) {
+        std::size_t start[257] = {};
+        for (const HilbertKey& k : *keys) ++start[((k.h >> shift) & 255u) + 1];
+        if (start[((keys->front().h >> shift) & 255u) + 1] == keys->size()) continue;
+        for (int d = 0; d < 256; ++d) start[d + 1] += start[d];
+        for (const HilbertKey& k : *keys) tmp[start[(k.h >> shift) & 255u]++] = k;
+        keys->swap(tmp);
+    }
+}
+
 // Step 3, the insertion order: Hilbert index on a 2^16 grid over the points' box, then
-// coordinates, then index (duplicates end adjacent, the smallest index first).
+// coordinates, then index (duplicates end adjacent, the smallest index first). A radix sort
+// by Hilbert index, then each run of equal Hilbert index by coordinates and index: the same
+// order as one comparison sort by all three (a strict total order), in a fraction of the time.
 std::vector<HilbertKey> hilbert_order(const Vec2d* points, int count, Box data) {
     std::vector<HilbertKey> order(static_cast<std::size_t>(count));
     const double lo_x = data.lo_x, lo_y = data.lo_y;
@@ -276,14 +295,22 @@ std::vector<HilbertKey> hilbert_order(const Vec2d* points, int count, Box data) 
         auto gy = std::uint32_t((points[i].y - lo_y) * sy);
         order[std::size_t(i)] = {hilbert_index(std::min(gx, 65535u), std::min(gy, 65535u)), i};
     }
-    std::sort(order.begin(), order.end(), [&](const HilbertKey& a, const HilbertKey& b) {
-        if (a.h != b.h) return a.h < b.h;
+    radix_sort_by_h(&order);
+    const auto by_point = [&](const HilbertKey& a, const HilbertKey& b) {
         const Vec2d& pa = points[a.i];
         const Vec2d& pb = points[b.i];
         if (pa.x != pb.x) return pa.x < pb.x;
         if (pa.y != pb.y) return pa.y < pb.y;
         return a.i < b.i;
-    });
+    };
+    for (std::size_t k = 0; k < order.size();) {
+        std::size_t end = k + 1;
+        while (end < order.size() && order[end].h == order[k].h) ++end;
+        if (end - k > 1)
+            std::sort(order.begin() + std::ptrdiff_t(k), order.begin() + std::ptrdiff_t(end),
+                      by_point);
+        k = end;
+    }
     return order;
 }
 

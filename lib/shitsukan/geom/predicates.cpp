@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <cstring>
 
+#include "shitsukan/geom/double_double.hpp"
+
 namespace shitsukan {
 namespace detail {
 
@@ -152,17 +154,6 @@ double orient2d_exact(Vec2d a, Vec2d b, Vec2d c) {
     for (int i = 0; i < rlen; ++i) right[i] = -right[i];
     int dlen = fast_expansion_sum(llen, left, rlen, right, det);
     return expansion_sign_value(dlen, det);
-}
-
-double orient2d(Vec2d a, Vec2d b, Vec2d c) {
-    double detleft = (a.x - c.x) * (b.y - c.y);
-    double detright = (a.y - c.y) * (b.x - c.x);
-    double det = detleft - detright;
-    double detsum = std::fabs(detleft) + std::fabs(detright);
-    const double errbound = (3.0 + 16.0 * kEpsilon) * kEpsilon;  // Shewchuk's ccwerrboundA
-    if (std::fabs(det) >= errbound * detsum && det != 0.0) return det;
-    if (detsum == 0.0) return 0.0;  // both products exactly 0 in floating point -> collinear
-    return orient2d_exact(a, b, c);
 }
 
 namespace {
@@ -382,6 +373,36 @@ int lifted_term(double x, double y, const double* cross_e, int cl, double* out) 
 // (two_diff leaves no tail: nearby points, Sterbenz), Shewchuk's stage B alone is exact and
 // ~10x cheaper than the general expansion (what lattices, whose determinants are exactly 0,
 // spend their time on). Only the sign and zero-ness of the result are specified.
+// The stage between the filter and the expansions: the in-circle determinant from the exact
+// coordinate differences in double-double (double_double.hpp). Its error is at most ~20 u^2
+// times the permanent (u = 2^-53: exact products, then 3 u^2 per accurate addition and 7 u^2
+// per product, Joldes, Muller & Popescu 2017); 32 u^2 is required (chosen here with margin).
+// It decides the near-cocircular sets of a rounded lattice (whose determinant is ~1e-16 of the
+// permanent, far below the filter's 1e-15) at a fraction of the expansions' cost; an exact
+// zero still goes on to the expansions. The value returned has the exact sign.
+bool incircle_double_double(double adx, double ady, double bdx, double bdy, double cdx,
+                            double cdy, double* det) {
+    const double permanent =
+        (std::fabs(bdx * cdy) + std::fabs(cdx * bdy)) * (adx * adx + ady * ady) +
+        (std::fabs(cdx * ady) + std::fabs(adx * cdy)) * (bdx * bdx + bdy * bdy) +
+        (std::fabs(adx * bdy) + std::fabs(bdx * ady)) * (cdx * cdx + cdy * cdy);
+    // inside this range no partial result or error term leaves the normal doubles
+    if (!(permanent >= 1e-240 && permanent <= 1e240)) return false;
+    using dd_detail::two_product;
+    const DoubleDouble bc = dd_sub(two_product(bdx, cdy), two_product(cdx, bdy));
+    const DoubleDouble ca = dd_sub(two_product(cdx, ady), two_product(adx, cdy));
+    const DoubleDouble ab = dd_sub(two_product(adx, bdy), two_product(bdx, ady));
+    const DoubleDouble alift = dd_add(two_product(adx, adx), two_product(ady, ady));
+    const DoubleDouble blift = dd_add(two_product(bdx, bdx), two_product(bdy, bdy));
+    const DoubleDouble clift = dd_add(two_product(cdx, cdx), two_product(cdy, cdy));
+    const DoubleDouble sum =
+        dd_add(dd_add(dd_mul(alift, bc), dd_mul(blift, ca)), dd_mul(clift, ab));
+    const double bound = 32.0 * kEpsilon * kEpsilon * permanent * 1.01;  // 1.01: its rounding
+    if (!(std::fabs(sum.hi) - std::fabs(sum.lo) > bound)) return false;
+    *det = sum.hi;
+    return true;
+}
+
 double incircle_exact_differences(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
     double adx, bdx, cdx, ady, bdy, cdy, t[6];
     two_diff(a.x, d.x, adx, t[0]);
@@ -392,6 +413,8 @@ double incircle_exact_differences(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
     two_diff(c.y, d.y, cdy, t[5]);
     if (t[0] != 0.0 || t[1] != 0.0 || t[2] != 0.0 || t[3] != 0.0 || t[4] != 0.0 || t[5] != 0.0)
         return incircle_exact(a, b, c, d);
+    double estimate;
+    if (incircle_double_double(adx, ady, bdx, bdy, cdx, cdy, &estimate)) return estimate;
     double bc[4], ca[4], ab[4], adet[32], bdet[32], cdet[32], abdet[64], fin[96];
     int bcl = two_products_diff(bdx, cdy, cdx, bdy, bc);
     int cal = two_products_diff(cdx, ady, adx, cdy, ca);
@@ -423,21 +446,7 @@ inline bool axis_parallel_rectangle(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
 
 }  // namespace
 
-double incircle(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
-    double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
-    double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
-    double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-    double alift = adx * adx + ady * ady;
-    double cdxady = cdx * ady, adxcdy = adx * cdy;
-    double blift = bdx * bdx + bdy * bdy;
-    double adxbdy = adx * bdy, bdxady = bdx * ady;
-    double clift = cdx * cdx + cdy * cdy;
-    double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
-    double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
-                       (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
-                       (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
-    const double errbound = (10.0 + 96.0 * kEpsilon) * kEpsilon;  // Shewchuk's iccerrboundA
-    if (std::fabs(det) > errbound * permanent) return det;
+double incircle_unfiltered(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
     if (axis_parallel_rectangle(a, b, c, d)) return 0.0;
     return incircle_exact_differences(a, b, c, d);
 }

@@ -22,17 +22,53 @@
 // for a microcontroller: issue 12; ~2x slower, on the rare calls with inexact differences).
 // The square lattice's cocircular case (an axis-parallel rectangle) is decided by
 // comparisons before any exact stage. Every stack frame here stays under 2.4 KB.
+// The filters are inline (the triangulation and the Voronoi cells call them millions of times;
+// a call per test cost more than the test), the exact stages are not.
 #pragma once
+
+#include <cmath>
 
 #include "shitsukan/core/vec.hpp"
 
 namespace shitsukan {
 
-double orient2d(Vec2d a, Vec2d b, Vec2d c);
-double incircle(Vec2d a, Vec2d b, Vec2d c, Vec2d d);
-
 // The exact evaluations behind the filters (for tests and for callers who want them).
 double orient2d_exact(Vec2d a, Vec2d b, Vec2d c);
 double incircle_exact(Vec2d a, Vec2d b, Vec2d c, Vec2d d);
+// What incircle does when its filter cannot decide: the lattice rectangle test, then the
+// exact determinant from exact coordinate differences.
+double incircle_unfiltered(Vec2d a, Vec2d b, Vec2d c, Vec2d d);
+
+inline double orient2d(Vec2d a, Vec2d b, Vec2d c) {
+    const double detleft = (a.x - c.x) * (b.y - c.y);
+    const double detright = (a.y - c.y) * (b.x - c.x);
+    const double det = detleft - detright;
+    const double detsum = std::fabs(detleft) + std::fabs(detright);
+    constexpr double eps = 1.1102230246251565e-16;            // 2^-53
+    constexpr double errbound = (3.0 + 16.0 * eps) * eps;     // Shewchuk's ccwerrboundA
+    if (std::fabs(det) >= errbound * detsum && det != 0.0) return det;
+    if (detsum == 0.0) return 0.0;  // both products exactly 0 in floating point -> collinear
+    return orient2d_exact(a, b, c);
+}
+
+inline double incircle(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
+    const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
+    const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
+    const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+    const double alift = adx * adx + ady * ady;
+    const double cdxady = cdx * ady, adxcdy = adx * cdy;
+    const double blift = bdx * bdx + bdy * bdy;
+    const double adxbdy = adx * bdy, bdxady = bdx * ady;
+    const double clift = cdx * cdx + cdy * cdy;
+    const double det =
+        alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+    const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
+                             (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
+                             (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
+    constexpr double eps = 1.1102230246251565e-16;               // 2^-53
+    constexpr double errbound = (10.0 + 96.0 * eps) * eps;       // Shewchuk's iccerrboundA
+    if (std::fabs(det) > errbound * permanent) return det;
+    return incircle_unfiltered(a, b, c, d);
+}
 
 }  // namespace shitsukan

@@ -35,10 +35,13 @@
 // Sites on the region boundary are ordinary sites. Cells are counter-clockwise and start at
 // their lexicographically smallest vertex.
 //
-// Algorithm: Delaunay triangulation (delaunay.hpp), union of cocircular triangles, the dual
-// walk around each site, then Sutherland-Hodgman clipping of each cell (polygon.hpp) with
-// canonical intersections (shared cell edges stay bit-identical). Expected O(n log n) time,
-// O(n) memory, on spread-out sites.
+// Algorithm: Delaunay triangulation (delaunay.hpp), union of cocircular triangles, one
+// centre per group (filtered in doubles or x87 extended precision, double-double where the
+// filters cannot prove the rounding: the same bits), the exact test of each centre against
+// the region, the dual walk around each site, then Sutherland-Hodgman clipping (polygon.hpp)
+// with canonical intersections (shared cell edges stay bit-identical) of the cells that have
+// a vertex outside or near the boundary; the others come out of the clipping unchanged and
+// skip it. Expected O(n log n) time, O(n) memory, on spread-out sites.
 #pragma once
 
 #include <cstdint>
@@ -50,11 +53,14 @@
 namespace shitsukan {
 
 // Working set per site, checked against the memory budget (core/memory_budget.hpp) before
-// anything is allocated: the triangulation (kDelaunayBytesPerPoint), the cocircular groups
-// and their centres (~72 B), the cells in Hilbert order (~150 B) and in input order (~150 B);
-// measured peak 461 B per site at 1e6 uniform sites. Chosen here: 480 B per site, so 1e7
-// sites (4.8 GB) are refused at once under the default 4 GiB budget.
-constexpr std::uint64_t kVoronoiBytesPerSite = 480;
+// anything is allocated. The larger of two halves: while the cells are walked, the
+// triangulation (~80 B), the cocircular groups, their centres and inside flags (~42 B) and
+// the inside cells' vertex lists (~28 B); after the triangulation is freed, the centres, the
+// lists and the result (~152 B: vertices 96 B, region-edge labels 48 B, offsets, duplicates).
+// Measured peak 221 B per site at 1e6 uniform sites (172 B on the square lattice; 461 B
+// before issue 18's rework). Chosen here: 256 B per site, so 2e7 sites (5.1 GB) are refused
+// at once under the default 4 GiB budget.
+constexpr std::uint64_t kVoronoiBytesPerSite = 256;
 
 struct VoronoiCells {
     std::vector<Vec2d> vertices;      // all cells' vertices, concatenated
