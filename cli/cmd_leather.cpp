@@ -79,17 +79,17 @@ Status make_pattern(const ScaleParams& prm, int layout, bool tileable, ScalePatt
         *note = buf;
         return Status::success();
     }
-    if (layout == 0) return generate_scale_pattern(prm, pattern, nullptr, progress);
+    if (layout == 0) return generate_scale_pattern(prm, *pattern, nullptr, progress);
     SeedLayout seeds;
     if (layout == 1)
-        SHITSUKAN_TRY(square_lattice_seeds(prm.width, prm.height, prm.D, prm.a, prm.seed, &seeds));
+        SHITSUKAN_TRY(square_lattice_seeds(prm.width, prm.height, prm.D, prm.a, prm.seed, seeds));
     else
         SHITSUKAN_TRY(
-            triangular_lattice_seeds(prm.width, prm.height, prm.D, prm.a, prm.seed, &seeds));
+            triangular_lattice_seeds(prm.width, prm.height, prm.D, prm.a, prm.seed, seeds));
     PlanarSubdivision sub;
     SHITSUKAN_TRY(divide_single_stage(seeds.moved.data(), int(seeds.moved.size()), prm.width,
-                                      prm.height, &sub));
-    return perturb_subdivision(sub, prm.perturbation, prm.seed, prm.width, prm.height, pattern);
+                                      prm.height, sub));
+    return perturb_subdivision(sub, prm.perturbation, prm.seed, prm.width, prm.height, *pattern);
 }
 
 }  // namespace
@@ -166,7 +166,7 @@ int run_leather(int argc, char** argv) {
     const int w = size, h = std::max(1, int(float(size) * prm.height / prm.width + 0.5f));
     LeatherMaps maps;
     PartProgress maps_part{progress, 0.2f, 0.8f};
-    if (!(s = make_leather_maps(pattern, w, h, chain, relief, &maps, maps_part.part())))
+    if (!(s = make_leather_maps(pattern, w, h, chain, relief, maps, maps_part.part())))
         return f.fail_status(s);
     Gray16Image height(w, h);
     encode_height16(maps, height.data());
@@ -201,7 +201,7 @@ int run_leather(int argc, char** argv) {
     }
     if (mesh_step > 0) {
         TriangleMesh mesh;
-        if (!(s = make_relief_mesh(maps, mesh_step, 1.0f, &mesh))) return f.fail_status(s);
+        if (!(s = make_relief_mesh(maps, mesh_step, 1.0f, mesh))) return f.fail_status(s);
         if (!(s = write_obj((out + "_relief.obj").c_str(), mesh))) return f.fail_status(s);
     }
     progress.report(1.0f);

@@ -167,8 +167,8 @@ int run_solid(int argc, char** argv, bool wood) {
 
     if (!obj.empty()) {
         TriangleMesh mesh;
-        if (!(s = read_obj(obj.c_str(), &mesh))) return f.fail_status(s);
-        if (!(s = fit_mesh_to_cube(&mesh, 0.92f))) return f.fail_status(s);
+        if (!(s = read_obj(obj.c_str(), mesh))) return f.fail_status(s);
+        if (!(s = fit_mesh_to_cube(mesh, 0.92f))) return f.fail_status(s);
         const ObjectToLattice mapping = object_to_lattice_mapping(R);
         if (!mesh.uvs.empty()) {
             RgbImage texture;

@@ -19,7 +19,7 @@ using namespace shitsukan;
 int main() {
     // 1. A unit cube from the mesh builders: 6 faces, each with its own outward normal.
     TriangleMesh cube;
-    Status s = make_box({-1, -1, -1}, {1, 1, 1}, &cube);
+    Status s = make_box({-1, -1, -1}, {1, 1, 1}, cube);
     if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
 
     // 2. Camera above and to the right, looking at the centre.

@@ -22,7 +22,7 @@ int main() {
     const int W = 512, H = 512, kBandRows = 16;
 
     TriangleMesh torus, sphere;
-    if (!make_torus(1.0f, 0.35f, 96, 48, &torus) || !make_uv_sphere(0.55f, 64, 32, &sphere)) {
+    if (!make_torus(1.0f, 0.35f, 96, 48, torus) || !make_uv_sphere(0.55f, 64, 32, sphere)) {
         std::fprintf(stderr, "mesh builders failed\n");
         return 1;
     }

@@ -16,8 +16,8 @@ int main() {
     if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
 
     TriangleMesh mesh;
-    s = make_torus(0.64f, 0.28f, 96, 48, &mesh);
-    if (s) s = fit_mesh_to_cube(&mesh, 0.92f);
+    s = make_torus(0.64f, 0.28f, 96, 48, mesh);
+    if (s) s = fit_mesh_to_cube(mesh, 0.92f);
     if (!s) return std::fprintf(stderr, "%s\n", s.message()), 1;
 
     const Camera camera =

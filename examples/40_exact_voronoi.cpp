@@ -45,16 +45,16 @@ int main() {
 
     // 1. Seeds on a square lattice, D = 1/8, not moved (a = 0) and moved (a = 0.3).
     SeedLayout lattice, moved;
-    if (!square_lattice_seeds(1, 1, 0.125f, 0.0f, 1, &lattice) ||
-        !square_lattice_seeds(1, 1, 0.125f, 0.3f, 1, &moved)) {
+    if (!square_lattice_seeds(1, 1, 0.125f, 0.0f, 1, lattice) ||
+        !square_lattice_seeds(1, 1, 0.125f, 0.3f, 1, moved)) {
         std::fprintf(stderr, "seed layout failed\n");
         return 1;
     }
 
     // 2. The Voronoi cells, clipped to the square. Count the corners of the inner cells.
     VoronoiCells exact, irregular;
-    Status s = voronoi_cells(lattice.moved.data(), int(lattice.moved.size()), square, 4, &exact);
-    if (s) s = voronoi_cells(moved.moved.data(), int(moved.moved.size()), square, 4, &irregular);
+    Status s = voronoi_cells(lattice.moved.data(), int(lattice.moved.size()), square, 4, exact);
+    if (s) s = voronoi_cells(moved.moved.data(), int(moved.moved.size()), square, 4, irregular);
     if (!s) {
         std::fprintf(stderr, "%s\n", s.message());
         return 1;

@@ -23,7 +23,7 @@ int main() {
     ScaleParams prm;
     ScalePattern pattern;
     ScaleDivision steps;
-    Status s = generate_scale_pattern(prm, &pattern, &steps);
+    Status s = generate_scale_pattern(prm, pattern, &steps);
     if (!s) {
         std::fprintf(stderr, "%s\n", s.message());
         return 1;

@@ -25,7 +25,7 @@ static int fail(const Status& s) { return std::fprintf(stderr, "%s\n", s.message
 int main() {
     // 1. The crocodile-belly pattern of tokai1994 fig. 7 (two-stage Voronoi division).
     ScalePattern pattern;
-    Status s = generate_scale_pattern(ScaleParams{}, &pattern);
+    Status s = generate_scale_pattern(ScaleParams{}, pattern);
     if (!s) return fail(s);
 
     // 2. Which polygon holds each pixel: the pattern module's label image.
@@ -36,7 +36,7 @@ int main() {
     // 3. The relief with the convex section of Table 1 (fig. 13a).
     LeatherMaps maps;
     s = make_leather_maps(pattern, labels.data(), w, h, table1_section(Table1Section::convex),
-                          ReliefOptions{}, &maps);
+                          ReliefOptions{}, maps);
     if (!s) return fail(s);
 
     // 4. Height map: 16 bits, 0 = groove floor, 65535 = the highest point.
@@ -54,7 +54,7 @@ int main() {
 
     // 6. The relief as a mesh: every 4th pixel a vertex, heights x 1 (the true relief).
     TriangleMesh mesh;
-    if (!(s = make_relief_mesh(maps, 4, 1.0f, &mesh))) return fail(s);
+    if (!(s = make_relief_mesh(maps, 4, 1.0f, mesh))) return fail(s);
     if (!(s = write_obj("leather_relief.obj", mesh))) return fail(s);
 
     std::printf("%d scales; height map unit = %.3g pattern units; relief mesh %d triangles\n",

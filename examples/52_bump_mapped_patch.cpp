@@ -61,13 +61,13 @@ struct Shader {
 int main() {
     // 1. The leather: fig. 7 pattern, fig. 13 section, 512 x 512 maps.
     ScalePattern pattern;
-    Status s = generate_scale_pattern(ScaleParams{}, &pattern);
+    Status s = generate_scale_pattern(ScaleParams{}, pattern);
     if (!s) return fail(s);
     std::vector<std::int32_t> labels(512 * 512);
     if (!(s = rasterize_scale_labels(pattern, 512, 512, labels.data()))) return fail(s);
     LeatherMaps maps;
     s = make_leather_maps(pattern, labels.data(), 512, 512, table1_section(Table1Section::convex),
-                          ReliefOptions{}, &maps);
+                          ReliefOptions{}, maps);
     if (!s) return fail(s);
 
     // 2. A curved patch whose plain (u, v) are strongly sheared, mapped with plain (u, v) so
@@ -84,7 +84,7 @@ int main() {
     opt.arc_length = false;
     opt.texture_scale = 0.6f;  // the pattern square covers the patch about once
     TriangleMesh mesh;
-    if (!(s = tessellate_patch_strip(&patch, 1, opt, &mesh))) return fail(s);
+    if (!(s = tessellate_patch_strip(&patch, 1, opt, mesh))) return fail(s);
     // dP/dx, dP/dy of the texture, once per triangle (raster/bump_mapping.hpp).
     std::vector<Vec3> dpdx(std::size_t(mesh.triangle_count())), dpdy(dpdx.size());
     if (!(s = mesh_texture_tangents(mesh.view(), dpdx.data(), dpdy.data(), int(dpdx.size()))))

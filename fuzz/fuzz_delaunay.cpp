@@ -18,8 +18,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     while (in.left() >= 2 && pts.size() < 64) pts.push_back({in.coordinate(), in.coordinate()});
     if (pts.empty()) return 0;
     DelaunayTriangulation dt;
-    Status s = cover ? build_delaunay(pts.data(), int(pts.size()), &dt, lo, hi)
-                     : build_delaunay(pts.data(), int(pts.size()), &dt);
+    Status s = cover ? build_delaunay(pts.data(), int(pts.size()), dt, lo, hi)
+                     : build_delaunay(pts.data(), int(pts.size()), dt);
     if (!s) return 0;
     const int n = int(pts.size());
     const int tc = int(dt.triangles.size());

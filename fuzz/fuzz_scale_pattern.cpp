@@ -1,4 +1,4 @@
-// fuzz/fuzz_scale_pattern.cpp — generate_scale_pattern (both Voronoi stages, T junctions,
+// fuzz/fuzz_scale_pattern.cpp — generate_scale_pattern (both Voronoi stages, *(T junctions),
 // the two-stage perturbation) on any parameters. Contract: a non-ok Status, or polygons that
 // tile [0, W] x [0, H] (areas sum to W H within 1e-6 relative), straight cells that share
 // every inner edge (no one-sided edge inside the rectangle: finding 7's cause) and a label
@@ -40,7 +40,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0;
     ScalePattern pat;
     ScaleDivision steps;
-    if (!generate_scale_pattern(prm, &pat, &steps)) return 0;
+    if (!generate_scale_pattern(prm, pat, &steps)) return 0;
     double area = 0.0;
     for (int f = 0; f < pat.polygon_count(); ++f) {
         int n;

@@ -39,7 +39,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     while (in.left() >= 2 && sites.size() < 256) sites.push_back({in.coordinate(), in.coordinate()});
     if (sites.empty()) sites.push_back({0, 0});
     VoronoiCells cells;
-    if (!voronoi_cells(sites.data(), int(sites.size()), region.data(), int(region.size()), &cells))
+    if (!voronoi_cells(sites.data(), int(sites.size()), region.data(), int(region.size()), cells))
         return 0;
     const int rm = int(region.size());
     FUZZ_REQUIRE(cells.cell_count() == int(sites.size()));

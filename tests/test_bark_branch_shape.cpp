@@ -95,7 +95,7 @@ TEST_CASE("branch mesh: manifold pair of pants with near-uniform edges (MODEL.md
     INFO(status.message());
     REQUIRE(status);
     MeshTopology topo;
-    REQUIRE(mesh_topology(m, &topo));
+    REQUIRE(mesh_topology(m, topo));
     CHECK(topo.manifold);
     CHECK(topo.boundary_loops == 3);
     CHECK(topo.euler_characteristic == -1);
@@ -116,7 +116,7 @@ TEST_CASE("branch mesh: manifold pair of pants with near-uniform edges (MODEL.md
         CHECK(p.z <= 16.0f);
     }
     std::vector<int> opp;
-    REQUIRE(halfedge_opposites(m.indices.data(), m.triangle_count(), m.vertex_count(), &opp));
+    REQUIRE(halfedge_opposites(m.indices.data(), m.triangle_count(), m.vertex_count(), opp));
     for (std::size_t h = 0; h < opp.size(); ++h)
         if (opp[h] < 0) {
             float z = m.positions[m.indices[h]].z;
@@ -147,7 +147,7 @@ TEST_CASE("growth: s(t), d(t) and the anchor (§5.2, Fig. 10)") {
 TEST_CASE("growth: on a regular cylinder, hoop edges grow at r_h + r_n/R, axial edges at r_h") {
     // make_cylinder's axis is y; c on the axis; its normals are exactly radial.
     TriangleMesh m;
-    REQUIRE(make_cylinder(kR, 0.0f, 16.0f, 48, false, &m));
+    REQUIRE(make_cylinder(kR, 0.0f, 16.0f, 48, false, m));
     AnisotropicGrowth g = fig11_growth();
     const double hoop = double(g.r_h + g.r_n / kR), axial = double(g.r_h);
     int n_hoop = 0, n_axial = 0;
@@ -179,11 +179,11 @@ TEST_CASE("growth: on a remeshed cylinder the field equals the cylinder model's 
     mt.spacing = 0.25f;
     mt.cut_z_min = mt.cut_z_max = true;
     TriangleMesh m;
-    REQUIRE(marching_tetrahedra(&trunk_only, nullptr, mt, &m));
+    REQUIRE(marching_tetrahedra(&trunk_only, nullptr, mt, m));
     IsotropicRemeshOptions ro;
     ro.target_edge_length = 0.5f;
     ro.surface = &trunk_only;
-    REQUIRE(isotropic_remesh(ro, &m));
+    REQUIRE(isotropic_remesh(ro, m));
     AnisotropicGrowth g = fig11_growth();
     // ε̂T = r_h + (r_n/R) c², c the edge's circumferential direction cosine: fit a line in c²
     // over all edges; its ends are the axial (c = 0) and hoop (c = 1) rates.

@@ -89,19 +89,19 @@ TEST_CASE("bezier patch: collapsed edges and NaN control points get a clear stat
     CHECK(validate_patch(point).code() == StatusCode::degenerate);
     TriangleMesh m;
     BezierPatch pair[2] = {p, collapsed};
-    Status st = tessellate_patch_strip(pair, 2, PatchStripOptions{}, &m);
+    Status st = tessellate_patch_strip(pair, 2, PatchStripOptions{}, m);
     CHECK(!st.ok());
     CHECK(std::strstr(st.message(), "patch 1") != nullptr);
     BezierPatch apart[2] = {wavy_patch(0.0f, 1.0f), wavy_patch(1.5f, 1.0f)};
-    st = tessellate_patch_strip(apart, 2, PatchStripOptions{}, &m);
+    st = tessellate_patch_strip(apart, 2, PatchStripOptions{}, m);
     CHECK(!st.ok());
     CHECK(std::strstr(st.message(), "share") != nullptr);
     PatchStripOptions bad;
     bad.texture_scale = NAN;
-    CHECK(!tessellate_patch_strip(&p, 1, bad, &m).ok());
+    CHECK(!tessellate_patch_strip(&p, 1, bad, m).ok());
     bad = PatchStripOptions{};
     bad.texture_origin.y = NAN;  // the message names the origin, not the (valid) scale
-    Status so = tessellate_patch_strip(&p, 1, bad, &m);
+    Status so = tessellate_patch_strip(&p, 1, bad, m);
     CHECK(so.code() == StatusCode::invalid_argument);
     CHECK(std::strstr(so.message(), "texture_origin") != nullptr);
     // A long, finely divided strip whose vertex count would not fit the indices is refused
@@ -115,7 +115,7 @@ TEST_CASE("bezier patch: collapsed edges and NaN control points get a clear stat
     }
     PatchStripOptions fine;
     fine.segments_u = fine.segments_v = 1024;
-    Status sv = tessellate_patch_strip(chain.data(), 70, fine, &m);
+    Status sv = tessellate_patch_strip(chain.data(), 70, fine, m);
     CHECK(sv.code() == StatusCode::invalid_argument);
     CHECK(std::strstr(sv.message(), "vertices") != nullptr);
 }
@@ -129,9 +129,9 @@ TEST_CASE("patch strip: the arc-length mapping gives near-uniform texel density 
     opt.segments_u = opt.segments_v = 24;
     opt.texture_scale = 2.0f;
     TriangleMesh corrected, plain;
-    REQUIRE(tessellate_patch_strip(strip, 2, opt, &corrected).ok());
+    REQUIRE(tessellate_patch_strip(strip, 2, opt, corrected).ok());
     opt.arc_length = false;
-    REQUIRE(tessellate_patch_strip(strip, 2, opt, &plain).ok());
+    REQUIRE(tessellate_patch_strip(strip, 2, opt, plain).ok());
     std::vector<float> dc = densities(corrected, 2.0f), dp = densities(plain, 2.0f);
     std::sort(dc.begin(), dc.end());
     std::sort(dp.begin(), dp.end());
@@ -166,11 +166,11 @@ TEST_CASE("patch strip: anchor measures each row from a chosen column") {
     opt.anchor = 1.5f;  // the middle of the second patch: column 12
     opt.texture_origin = {0.25f, 0.0f};
     TriangleMesh m;
-    REQUIRE(tessellate_patch_strip(strip, 2, opt, &m).ok());
+    REQUIRE(tessellate_patch_strip(strip, 2, opt, m).ok());
     for (int j = 0; j <= 8; ++j) CHECK(m.uvs[std::size_t(j * 17 + 12)].x == doctest::Approx(0.25f));
     CHECK(m.uvs[0].x < 0.0f);
     opt.anchor = 2.5f;
-    CHECK(!tessellate_patch_strip(strip, 2, opt, &m).ok());
+    CHECK(!tessellate_patch_strip(strip, 2, opt, m).ok());
 }
 
 TEST_CASE("patch strip: reference_row maps a bent strap without shear; bad values refused") {
@@ -187,9 +187,9 @@ TEST_CASE("patch strip: reference_row maps a bent strap without shear; bad value
     PatchStripOptions o;
     o.segments_u = o.segments_v = 8;
     TriangleMesh own, bent;
-    REQUIRE(tessellate_patch_strip(&p, 1, o, &own).ok());
+    REQUIRE(tessellate_patch_strip(&p, 1, o, own).ok());
     o.reference_row = 0.5f;
-    REQUIRE(tessellate_patch_strip(&p, 1, o, &bent).ok());
+    REQUIRE(tessellate_patch_strip(&p, 1, o, bent).ok());
     const int columns = 9;
     float drift_own = 0, drift_bent = 0;
     for (int c = 0; c < columns; ++c) {
@@ -204,5 +204,5 @@ TEST_CASE("patch strip: reference_row maps a bent strap without shear; bad value
     CHECK(drift_own > 0.1f);    // the raised middle row runs further out than the side rows
     CHECK(drift_bent == 0.0f);  // one x per column
     o.reference_row = 1.5f;
-    CHECK(!tessellate_patch_strip(&p, 1, o, &bent).ok());
+    CHECK(!tessellate_patch_strip(&p, 1, o, bent).ok());
 }

@@ -24,7 +24,7 @@ TriangleMesh marched(ImplicitFunction f, Vec3 lo, Vec3 hi, float h, bool cut) {
     o.spacing = h;
     o.cut_z_min = o.cut_z_max = cut;
     TriangleMesh m;
-    Status s = marching_tetrahedra(f, nullptr, o, &m);
+    Status s = marching_tetrahedra(f, nullptr, o, m);
     REQUIRE(s);
     return m;
 }
@@ -43,7 +43,7 @@ TEST_CASE("isotropic remesh: a marched sphere becomes near-uniform and stays a s
         marched(&unit_sphere, {-1.2f, -1.2f, -1.2f}, {1.2f, 1.2f, 1.2f}, 0.075f, false);
     const float L = 0.15f;
     IsotropicRemeshStats st;
-    Status s = isotropic_remesh(options(&unit_sphere, L), &m, &st);
+    Status s = isotropic_remesh(options(&unit_sphere, L), m, &st);
     INFO(s.message());
     REQUIRE(s);
     // The marched input is far from uniform (slivers): the remesher does the work.
@@ -57,7 +57,7 @@ TEST_CASE("isotropic remesh: a marched sphere becomes near-uniform and stays a s
     CHECK(std::fabs(st.after.edge_length_mean / double(L) - 1.0) < 0.1);
     CHECK(st.after.vertices == m.vertex_count());
     MeshTopology topo;
-    REQUIRE(mesh_topology(m, &topo));
+    REQUIRE(mesh_topology(m, topo));
     CHECK(topo.euler_characteristic == 2);
     CHECK(topo.boundary_loops == 0);
     for (Vec3 p : m.positions) CHECK(std::fabs(length(p) - 1.0f) < 1e-4f);  // projected
@@ -65,7 +65,7 @@ TEST_CASE("isotropic remesh: a marched sphere becomes near-uniform and stays a s
         CHECK(dot(m.normals[std::size_t(v)], normalize(m.positions[std::size_t(v)])) > 0.999f);
     // mesh_quality measures the same numbers.
     MeshQuality q;
-    REQUIRE(mesh_quality(m, &q));
+    REQUIRE(mesh_quality(m, q));
     CHECK(q.triangles == st.after.triangles);
     CHECK(q.edge_length_cv == doctest::Approx(st.after.edge_length_cv));
     CHECK(std::fabs(q.area / (4.0 * 3.14159265358979) - 1.0) < 0.01);
@@ -77,15 +77,15 @@ TEST_CASE("isotropic remesh: an open cylinder keeps two rims on their planes; de
     TriangleMesh m = input;
     const float L = 0.25f;
     IsotropicRemeshStats st;
-    REQUIRE(isotropic_remesh(options(&tube, L), &m, &st));
+    REQUIRE(isotropic_remesh(options(&tube, L), m, &st));
     CHECK(st.after.edge_length_cv < 0.15);
     CHECK(st.after.fraction_angle_above_25 >= 0.99);
     MeshTopology topo;
-    REQUIRE(mesh_topology(m, &topo));
+    REQUIRE(mesh_topology(m, topo));
     CHECK(topo.boundary_loops == 2);
     CHECK(topo.euler_characteristic == 0);
     std::vector<int> opp;
-    REQUIRE(halfedge_opposites(m.indices.data(), m.triangle_count(), m.vertex_count(), &opp));
+    REQUIRE(halfedge_opposites(m.indices.data(), m.triangle_count(), m.vertex_count(), opp));
     int rim = 0;
     for (std::size_t h = 0; h < opp.size(); ++h)
         if (opp[h] < 0) {
@@ -98,7 +98,7 @@ TEST_CASE("isotropic remesh: an open cylinder keeps two rims on their planes; de
     CHECK(rim >= 2 * 20);
     CHECK(rim <= 2 * 32);
     TriangleMesh again = input;
-    REQUIRE(isotropic_remesh(options(&tube, L), &again));
+    REQUIRE(isotropic_remesh(options(&tube, L), again));
     REQUIRE(again.positions.size() == m.positions.size());
     CHECK(again.indices == m.indices);
     CHECK(std::memcmp(again.positions.data(), m.positions.data(),
@@ -114,43 +114,43 @@ TEST_CASE("isotropic remesh: bad input gives a Status naming the problem") {
     good.add_triangle(0, 3, 1);
     good.add_triangle(1, 3, 2);
     TriangleMesh m = good;
-    REQUIRE(isotropic_remesh(options(&unit_sphere, 0.5f), &m));
+    REQUIRE(isotropic_remesh(options(&unit_sphere, 0.5f), m));
 
     m = good;
     m.positions[2].y = std::nanf("");
-    Status s = isotropic_remesh(options(&unit_sphere, 0.5f), &m);
+    Status s = isotropic_remesh(options(&unit_sphere, 0.5f), m);
     CHECK(s.code() == StatusCode::invalid_argument);
     CHECK(std::strstr(s.message(), "not finite") != nullptr);
 
     m = good;
     m.positions[3] = (m.positions[1] + m.positions[2]) * 0.5f;  // triangle 3 collinear
-    s = isotropic_remesh(options(&unit_sphere, 0.5f), &m);
+    s = isotropic_remesh(options(&unit_sphere, 0.5f), m);
     CHECK(s.code() == StatusCode::degenerate);
     CHECK(std::strstr(s.message(), "degenerate") != nullptr);
 
     m = good;
     m.indices[5] = m.indices[4];  // a repeated vertex
-    CHECK(isotropic_remesh(options(&unit_sphere, 0.5f), &m).code() == StatusCode::degenerate);
+    CHECK(isotropic_remesh(options(&unit_sphere, 0.5f), m).code() == StatusCode::degenerate);
 
     m = good;
     m.add_vertex({0.5f, 0.5f, 0.5f});
     m.add_triangle(0, 1, 4);  // a third triangle on edge (0, 1)
-    s = isotropic_remesh(options(&unit_sphere, 0.5f), &m);
+    s = isotropic_remesh(options(&unit_sphere, 0.5f), m);
     CHECK(s.code() == StatusCode::invalid_argument);
     CHECK(std::strstr(s.message(), "not manifold") != nullptr);
 
     m = good;
     for (float L : {0.0f, -1.0f, std::nanf("")})
-        CHECK(isotropic_remesh(options(&unit_sphere, L), &m).code() ==
+        CHECK(isotropic_remesh(options(&unit_sphere, L), m).code() ==
               StatusCode::invalid_argument);
-    CHECK(isotropic_remesh(options(nullptr, 0.5f), &m).code() == StatusCode::invalid_argument);
+    CHECK(isotropic_remesh(options(nullptr, 0.5f), m).code() == StatusCode::invalid_argument);
     IsotropicRemeshOptions o = options(&unit_sphere, 0.5f);
     o.passes = 0;
-    CHECK(isotropic_remesh(o, &m).code() == StatusCode::invalid_argument);
+    CHECK(isotropic_remesh(o, m).code() == StatusCode::invalid_argument);
     o = options(&unit_sphere, 0.5f);
     o.smoothing = 1.5f;
-    CHECK(isotropic_remesh(o, &m).code() == StatusCode::invalid_argument);
-    s = isotropic_remesh(options(&unit_sphere, 1e-5f), &m);
+    CHECK(isotropic_remesh(o, m).code() == StatusCode::invalid_argument);
+    s = isotropic_remesh(options(&unit_sphere, 1e-5f), m);
     CHECK(s.code() == StatusCode::too_large);
     CHECK(std::strstr(s.message(), "bytes") != nullptr);
     // Nothing was changed by the refused calls.

@@ -50,9 +50,9 @@ MarchingTetrahedraOptions sphere_box(float h) {
 TEST_CASE("marching tetrahedra: a sphere is closed, manifold, genus 0 and outward") {
     TriangleMesh m;
     MarchingTetrahedraStats st;
-    REQUIRE(marching_tetrahedra(&unit_sphere, nullptr, sphere_box(0.08f), &m, &st));
+    REQUIRE(marching_tetrahedra(&unit_sphere, nullptr, sphere_box(0.08f), m, &st));
     MeshTopology topo;
-    Status s = mesh_topology(m, &topo);
+    Status s = mesh_topology(m, topo);
     INFO(s.message());
     REQUIRE(s);
     CHECK(topo.manifold);
@@ -79,7 +79,7 @@ TEST_CASE("marching tetrahedra: a sphere is closed, manifold, genus 0 and outwar
     CHECK(st.cell.z <= 0.08f);
     // Deterministic: the same call gives the same bits.
     TriangleMesh again;
-    REQUIRE(marching_tetrahedra(&unit_sphere, nullptr, sphere_box(0.08f), &again));
+    REQUIRE(marching_tetrahedra(&unit_sphere, nullptr, sphere_box(0.08f), again));
     REQUIRE(again.positions.size() == m.positions.size());
     CHECK(again.indices == m.indices);
     CHECK(std::memcmp(again.positions.data(), m.positions.data(),
@@ -93,15 +93,15 @@ TEST_CASE("marching tetrahedra: a cylinder cut by both z faces has two rims on t
     o.spacing = 0.07f;
     o.cut_z_min = o.cut_z_max = true;
     TriangleMesh m;
-    REQUIRE(marching_tetrahedra(&cylinder_half, nullptr, o, &m));
+    REQUIRE(marching_tetrahedra(&cylinder_half, nullptr, o, m));
     MeshTopology topo;
-    REQUIRE(mesh_topology(m, &topo));
+    REQUIRE(mesh_topology(m, topo));
     CHECK(topo.boundary_loops == 2);
     CHECK(topo.euler_characteristic == 0);  // an open tube (annulus)
     // Boundary vertices lie exactly on z = 0 or z = 1, and every vertex on those planes is on
     // the boundary (cut, not capped).
     std::vector<int> opp;
-    REQUIRE(halfedge_opposites(m.indices.data(), m.triangle_count(), m.vertex_count(), &opp));
+    REQUIRE(halfedge_opposites(m.indices.data(), m.triangle_count(), m.vertex_count(), opp));
     int rim = 0;
     std::vector<char> on_rim(m.positions.size(), 0);
     for (std::size_t h = 0; h < opp.size(); ++h)
@@ -121,13 +121,13 @@ TEST_CASE("marching tetrahedra: a cylinder cut by both z faces has two rims on t
 
     // One face cut: one rim and a cap (a disc, Euler characteristic 1); none cut: closed.
     o.cut_z_max = false;
-    REQUIRE(marching_tetrahedra(&cylinder_half, nullptr, o, &m));
-    REQUIRE(mesh_topology(m, &topo));
+    REQUIRE(marching_tetrahedra(&cylinder_half, nullptr, o, m));
+    REQUIRE(mesh_topology(m, topo));
     CHECK(topo.boundary_loops == 1);
     CHECK(topo.euler_characteristic == 1);
     o.cut_z_min = false;
-    REQUIRE(marching_tetrahedra(&cylinder_half, nullptr, o, &m));
-    REQUIRE(mesh_topology(m, &topo));
+    REQUIRE(marching_tetrahedra(&cylinder_half, nullptr, o, m));
+    REQUIRE(mesh_topology(m, topo));
     CHECK(topo.boundary_loops == 0);
     CHECK(topo.euler_characteristic == 2);
     CHECK(signed_volume(m) > 0.0);
@@ -138,28 +138,28 @@ TEST_CASE("marching tetrahedra: lambdas, empty results and bad input") {
     TriangleMesh m;
     const float r = 0.8f;
     auto ball = [r](Vec3 p) { return length(p) - r; };
-    REQUIRE(marching_tetrahedra(ball, o, &m));
+    REQUIRE(marching_tetrahedra(ball, o, m));
     CHECK(m.triangle_count() > 0);
     auto nothing = [](Vec3) { return 1.0f; };
-    REQUIRE(marching_tetrahedra(nothing, o, &m));
+    REQUIRE(marching_tetrahedra(nothing, o, m));
     CHECK(m.triangle_count() == 0);
 
     MarchingTetrahedraOptions bad = o;
     bad.box_min.x = std::nanf("");
-    Status s = marching_tetrahedra(ball, bad, &m);
+    Status s = marching_tetrahedra(ball, bad, m);
     CHECK(s.code() == StatusCode::invalid_argument);
     CHECK(std::strstr(s.message(), "not finite") != nullptr);
     bad = o;
     bad.box_max.y = bad.box_min.y;
-    CHECK(marching_tetrahedra(ball, bad, &m).code() == StatusCode::invalid_argument);
+    CHECK(marching_tetrahedra(ball, bad, m).code() == StatusCode::invalid_argument);
     for (float h : {0.0f, -1.0f, std::nanf(""), INFINITY}) {
         bad = o;
         bad.spacing = h;
-        CHECK(marching_tetrahedra(ball, bad, &m).code() == StatusCode::invalid_argument);
+        CHECK(marching_tetrahedra(ball, bad, m).code() == StatusCode::invalid_argument);
     }
     bad = o;
     bad.spacing = 1e-4f;
-    s = marching_tetrahedra(ball, bad, &m);
+    s = marching_tetrahedra(ball, bad, m);
     CHECK(s.code() == StatusCode::too_large);
     CHECK(std::strstr(s.message(), "bytes") != nullptr);
 }
@@ -174,13 +174,13 @@ TEST_CASE("mesh topology: non-manifold meshes are refused, counts of simple mesh
     m.add_triangle(1, 2, 3);
     m.add_triangle(2, 0, 3);
     MeshTopology topo;
-    REQUIRE(mesh_topology(m, &topo));
+    REQUIRE(mesh_topology(m, topo));
     CHECK(topo.euler_characteristic == 2);
     CHECK(topo.edges == 6);
     CHECK(topo.unreferenced == 1);
     // A third triangle on edge (0, 1).
     m.add_triangle(0, 1, 4);
-    Status s = mesh_topology(m, &topo);
+    Status s = mesh_topology(m, topo);
     CHECK(!s);
     CHECK(!topo.manifold);
     CHECK(std::strstr(s.message(), "not manifold") != nullptr);
@@ -190,7 +190,7 @@ TEST_CASE("mesh topology: non-manifold meshes are refused, counts of simple mesh
         bow.add_vertex(p);
     bow.add_triangle(0, 1, 2);
     bow.add_triangle(0, 3, 4);
-    s = mesh_topology(bow, &topo);
+    s = mesh_topology(bow, topo);
     CHECK(!s);
     CHECK(std::strstr(s.message(), "bow-tie") != nullptr);
     // Two triangles of opposite orientation on one edge.
@@ -199,13 +199,13 @@ TEST_CASE("mesh topology: non-manifold meshes are refused, counts of simple mesh
         flipped.add_vertex(p);
     flipped.add_triangle(0, 1, 2);
     flipped.add_triangle(1, 2, 3);
-    CHECK(!mesh_topology(flipped, &topo));
+    CHECK(!mesh_topology(flipped, topo));
     // A repeated vertex and an index out of range.
     TriangleMesh bad;
     bad.add_vertex({0, 0, 0});
     bad.add_vertex({1, 0, 0});
     bad.add_triangle(0, 1, 1);
-    CHECK(mesh_topology(bad, &topo).code() == StatusCode::degenerate);
+    CHECK(mesh_topology(bad, topo).code() == StatusCode::degenerate);
     bad.indices = {0, 1, 7};
-    CHECK(mesh_topology(bad, &topo).code() == StatusCode::invalid_argument);
+    CHECK(mesh_topology(bad, topo).code() == StatusCode::invalid_argument);
 }

@@ -33,7 +33,7 @@ TEST_CASE("memory budget: voronoi_cells and build_delaunay refuse at once with t
     BudgetScope scope(std::uint64_t(1) << 20);  // 1 MiB: far below 1e5 sites' need
     const auto t0 = std::chrono::steady_clock::now();
     VoronoiCells cells;
-    Status s = voronoi_cells(sites.data(), n, square, 4, &cells);
+    Status s = voronoi_cells(sites.data(), n, square, 4, cells);
     REQUIRE_FALSE(s.ok());
     CHECK(s.code() == StatusCode::too_large);
     CHECK(std::strstr(s.message(), "voronoi_cells") != nullptr);
@@ -42,7 +42,7 @@ TEST_CASE("memory budget: voronoi_cells and build_delaunay refuse at once with t
     CHECK(std::strstr(s.message(), "1048576") != nullptr);     // the budget
     CHECK(cells.vertices.empty());
     DelaunayTriangulation dt;
-    Status d = build_delaunay(sites.data(), n, &dt);
+    Status d = build_delaunay(sites.data(), n, dt);
     CHECK(d.code() == StatusCode::too_large);
     CHECK(std::strstr(d.message(),
                       std::to_string(std::uint64_t(n) * kDelaunayBytesPerPoint).c_str()) !=
@@ -53,7 +53,7 @@ TEST_CASE("memory budget: voronoi_cells and build_delaunay refuse at once with t
     CHECK(ms < 50.0);  // at once: nothing is built before the refusal
     // within the budget the same calls work
     set_memory_budget(std::uint64_t(n) * kVoronoiBytesPerSite);
-    CHECK(voronoi_cells(sites.data(), n, square, 4, &cells).ok());
+    CHECK(voronoi_cells(sites.data(), n, square, 4, cells).ok());
 }
 
 TEST_CASE("memory budget: 2e7 Voronoi sites are over the default 4 GiB budget, 1e7 fit") {
@@ -74,19 +74,19 @@ TEST_CASE("memory budget: triangulate_polygon and build_planar_subdivision refus
     std::vector<std::uint32_t> tris;
     {
         BudgetScope scope(4 * kTriangulateBytesPerVertex - 1);
-        Status s = triangulate_polygon(rings, &points, &tris);
+        Status s = triangulate_polygon(rings, points, tris);
         CHECK(s.code() == StatusCode::too_large);
         CHECK(std::strstr(s.message(), "triangulate_polygon") != nullptr);
     }
-    CHECK(triangulate_polygon(rings, &points, &tris).ok());
+    CHECK(triangulate_polygon(rings, points, tris).ok());
     const Vec2d v[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     const int offsets[2] = {0, 4};
     PlanarSubdivision sub;
     {
         BudgetScope scope(4 * kPlanarSubdivisionBytesPerVertex - 1);
-        Status s = build_planar_subdivision(v, offsets, 1, &sub);
+        Status s = build_planar_subdivision(v, offsets, 1, sub);
         CHECK(s.code() == StatusCode::too_large);
         CHECK(std::strstr(s.message(), "512 bytes") != nullptr);
     }
-    CHECK(build_planar_subdivision(v, offsets, 1, &sub).ok());
+    CHECK(build_planar_subdivision(v, offsets, 1, sub).ok());
 }

@@ -30,7 +30,7 @@ std::string temp_path(const char* name) {
 }
 TriangleMesh read_text(const char* text) {
     TriangleMesh m;
-    Status s = read_obj_text(text, std::strlen(text), "inline", &m);
+    Status s = read_obj_text(text, std::strlen(text), "inline", m);
     REQUIRE_MESSAGE(s.ok(), s.message());
     return m;
 }
@@ -38,7 +38,7 @@ TriangleMesh read_text(const char* text) {
 
 TEST_CASE("read_obj: write_obj output reads back bit for bit (positions, normals, uv, colours)") {
     TriangleMesh m;
-    REQUIRE(make_torus(1.0f, 0.3f, 24, 12, &m).ok());
+    REQUIRE(make_torus(1.0f, 0.3f, 24, 12, m).ok());
     Pcg32 rng(5, 0);
     for (Vec2& t : m.uvs) t = {rng.uniform(), rng.uniform()};
     for (int with_colours = 0; with_colours < 2; ++with_colours) {
@@ -49,7 +49,7 @@ TEST_CASE("read_obj: write_obj output reads back bit for bit (positions, normals
         const std::string path = temp_path("torus.obj");
         REQUIRE(write_obj(path.c_str(), m).ok());
         TriangleMesh back;
-        Status s = read_obj(path.c_str(), &back);
+        Status s = read_obj(path.c_str(), back);
         REQUIRE_MESSAGE(s.ok(), s.message());
         std::remove(path.c_str());
         REQUIRE(back.vertex_count() == m.vertex_count());
@@ -106,7 +106,7 @@ TEST_CASE("read_obj: every malformed file of the corpus is refused with its line
         const std::string path = dir + "/" + name;
         ++files;
         TriangleMesh m;
-        Status s = read_obj(path.c_str(), &m);
+        Status s = read_obj(path.c_str(), m);
         CAPTURE(path);
         CAPTURE(s.message());
         CHECK(!s.ok());
@@ -145,7 +145,7 @@ TEST_CASE("read_obj: random bytes and mutated OBJ text never crash") {
             else text.insert(at, 1, c);
         }
         TriangleMesh m;
-        Status s = read_obj_text(text.data(), text.size(), "fuzz", &m);
+        Status s = read_obj_text(text.data(), text.size(), "fuzz", m);
         if (s.ok()) {
             ++ok;
             for (std::uint32_t i : m.indices) REQUIRE(i < std::uint32_t(m.vertex_count()));
@@ -156,6 +156,6 @@ TEST_CASE("read_obj: random bytes and mutated OBJ text never crash") {
     CHECK(ok > 0);
     CHECK(refused > 0);
     TriangleMesh m;
-    CHECK(read_obj("/nonexistent/dir/x.obj", &m).code() == StatusCode::io_error);
-    CHECK(read_obj_text(nullptr, 0, "empty", &m).code() == StatusCode::degenerate);
+    CHECK(read_obj("/nonexistent/dir/x.obj", m).code() == StatusCode::io_error);
+    CHECK(read_obj_text(nullptr, 0, "empty", m).code() == StatusCode::degenerate);
 }

@@ -116,7 +116,7 @@ TEST_CASE("predicates: in-circle on a rounded lattice, every stage against the e
 TEST_CASE("delaunay: empty circumcircles on random points") {
     auto sites = random_sites(300, 1);
     DelaunayTriangulation dt;
-    REQUIRE(build_delaunay(sites.data(), int(sites.size()), &dt).ok());
+    REQUIRE(build_delaunay(sites.data(), int(sites.size()), dt).ok());
     for (const auto& t : dt.triangles) {
         CHECK(orient2d(dt.points[std::size_t(t.v[0])], dt.points[std::size_t(t.v[1])],
                        dt.points[std::size_t(t.v[2])]) > 0);
@@ -131,7 +131,7 @@ TEST_CASE("voronoi: every sample is nearest to its own site, cells tile the regi
     for (int n : {1, 2, 10, 200}) {
         auto sites = random_sites(n, std::uint64_t(n));
         VoronoiCells cells;
-        REQUIRE(voronoi_cells(sites.data(), n, kSquare, 4, &cells).ok());
+        REQUIRE(voronoi_cells(sites.data(), n, kSquare, 4, cells).ok());
         CHECK(total_area(cells) == doctest::Approx(1.0).epsilon(1e-12));
         check_nearest_site(sites, cells, 40);
     }
@@ -143,7 +143,7 @@ TEST_CASE("voronoi: a = 0 square lattice -> equal squares with exactly 4 vertice
     for (int j = -1; j <= 7; ++j)
         for (int i = -1; i <= 7; ++i) sites.push_back({(i + 0.5) * D, (j + 0.5) * D});
     VoronoiCells cells;
-    REQUIRE(voronoi_cells(sites.data(), int(sites.size()), kSquare, 4, &cells).ok());
+    REQUIRE(voronoi_cells(sites.data(), int(sites.size()), kSquare, 4, cells).ok());
     int interior = 0;
     for (int c = 0; c < cells.cell_count(); ++c) {
         int k;
@@ -168,7 +168,7 @@ TEST_CASE("voronoi: a = 0 triangular lattice -> equal regular hexagons with exac
     for (int j = -2; j <= 14; ++j)
         for (int i = -2; i <= 12; ++i) sites.push_back({(i + 0.5 * (j & 1)) * D, j * h});
     VoronoiCells cells;
-    REQUIRE(voronoi_cells(sites.data(), int(sites.size()), kSquare, 4, &cells).ok());
+    REQUIRE(voronoi_cells(sites.data(), int(sites.size()), kSquare, 4, cells).ok());
     int hexagons = 0;
     const double side = D / std::sqrt(3.0);
     for (int c = 0; c < cells.cell_count(); ++c) {
@@ -192,7 +192,7 @@ TEST_CASE("voronoi: stated degenerate cases") {
     VoronoiCells cells;
     SUBCASE("single site owns the region") {
         Vec2d s{0.3, 0.9};
-        REQUIRE(voronoi_cells(&s, 1, kSquare, 4, &cells).ok());
+        REQUIRE(voronoi_cells(&s, 1, kSquare, 4, cells).ok());
         int k;
         const Vec2d* v = cells.cell(0, &k);
         CHECK(k == 4);
@@ -200,7 +200,7 @@ TEST_CASE("voronoi: stated degenerate cases") {
     }
     SUBCASE("duplicates: the first occurrence owns the cell, the copy is empty") {
         std::vector<Vec2d> s = {{0.2, 0.2}, {0.7, 0.6}, {0.2, 0.2}, {0.4, 0.9}};
-        REQUIRE(voronoi_cells(s.data(), 4, kSquare, 4, &cells).ok());
+        REQUIRE(voronoi_cells(s.data(), 4, kSquare, 4, cells).ok());
         int k;
         cells.cell(2, &k);
         CHECK(k == 0);
@@ -212,7 +212,7 @@ TEST_CASE("voronoi: stated degenerate cases") {
     SUBCASE("collinear sites: parallel strips") {
         std::vector<Vec2d> s;
         for (int i = 0; i < 5; ++i) s.push_back({0.1 + 0.2 * i, 0.5});
-        REQUIRE(voronoi_cells(s.data(), 5, kSquare, 4, &cells).ok());
+        REQUIRE(voronoi_cells(s.data(), 5, kSquare, 4, cells).ok());
         for (int i = 0; i < 5; ++i) {
             int k;
             const Vec2d* v = cells.cell(i, &k);
@@ -222,7 +222,7 @@ TEST_CASE("voronoi: stated degenerate cases") {
     }
     SUBCASE("sites on the region boundary and corners") {
         std::vector<Vec2d> s = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0}, {0.5, 0.5}};
-        REQUIRE(voronoi_cells(s.data(), int(s.size()), kSquare, 4, &cells).ok());
+        REQUIRE(voronoi_cells(s.data(), int(s.size()), kSquare, 4, cells).ok());
         CHECK(total_area(cells) == doctest::Approx(1.0).epsilon(1e-12));
         check_nearest_site(s, cells, 50);
     }
@@ -235,12 +235,12 @@ TEST_CASE("voronoi: the same cells, bit for bit, whatever the input order") {
     auto extra = random_sites(30, 4);
     sites.insert(sites.end(), extra.begin(), extra.end());
     VoronoiCells a, b;
-    REQUIRE(voronoi_cells(sites.data(), int(sites.size()), kSquare, 4, &a).ok());
+    REQUIRE(voronoi_cells(sites.data(), int(sites.size()), kSquare, 4, a).ok());
     std::vector<int> perm(sites.size());
     for (std::size_t i = 0; i < perm.size(); ++i) perm[i] = int((i * 37 + 11) % perm.size());
     std::vector<Vec2d> shuffled(sites.size());
     for (std::size_t i = 0; i < perm.size(); ++i) shuffled[i] = sites[std::size_t(perm[i])];
-    REQUIRE(voronoi_cells(shuffled.data(), int(shuffled.size()), kSquare, 4, &b).ok());
+    REQUIRE(voronoi_cells(shuffled.data(), int(shuffled.size()), kSquare, 4, b).ok());
     for (std::size_t i = 0; i < perm.size(); ++i) {
         int ka, kb;
         const Vec2d* va = a.cell(perm[i], &ka);
@@ -253,14 +253,14 @@ TEST_CASE("voronoi: the same cells, bit for bit, whatever the input order") {
 TEST_CASE("voronoi: bad input gives a status, not a crash") {
     VoronoiCells cells;
     Vec2d s{0.5, 0.5};
-    CHECK(voronoi_cells(&s, 0, kSquare, 4, &cells).code() == StatusCode::invalid_argument);
+    CHECK(voronoi_cells(&s, 0, kSquare, 4, cells).code() == StatusCode::invalid_argument);
     Vec2d nan_site{std::nan(""), 0.5};
-    CHECK(!voronoi_cells(&nan_site, 1, kSquare, 4, &cells).ok());
+    CHECK(!voronoi_cells(&nan_site, 1, kSquare, 4, cells).ok());
     const Vec2d flat[4] = {{0, 0}, {1, 0}, {2, 0}, {3, 0}};
-    CHECK(!voronoi_cells(&s, 1, flat, 4, &cells).ok());
+    CHECK(!voronoi_cells(&s, 1, flat, 4, cells).ok());
     const Vec2d clockwise[4] = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};
-    CHECK(!voronoi_cells(&s, 1, clockwise, 4, &cells).ok());
-    CHECK(!voronoi_cells(&s, 1, kSquare, 2, &cells).ok());
+    CHECK(!voronoi_cells(&s, 1, clockwise, 4, cells).ok());
+    CHECK(!voronoi_cells(&s, 1, kSquare, 2, cells).ok());
 }
 
 TEST_CASE(
@@ -273,7 +273,7 @@ TEST_CASE(
     auto extra = random_sites(100, 8);
     sites.insert(sites.end(), extra.begin(), extra.end());
     VoronoiCells cells;
-    REQUIRE(voronoi_cells(sites.data(), int(sites.size()), kSquare, 4, &cells).ok());
+    REQUIRE(voronoi_cells(sites.data(), int(sites.size()), kSquare, 4, cells).ok());
     CHECK(total_area(cells) == doctest::Approx(1.0).epsilon(1e-12));
     check_nearest_site(sites, cells, 5);
     // the cells share their edges vertex for vertex: they form one planar subdivision
@@ -288,7 +288,7 @@ TEST_CASE(
     }
     PlanarSubdivision sub;
     REQUIRE(
-        build_planar_subdivision(verts.data(), offsets.data(), int(offsets.size()) - 1, &sub).ok());
+        build_planar_subdivision(verts.data(), offsets.data(), int(offsets.size()) - 1, sub).ok());
     CHECK(outer_edges_on_box(sub, {0, 0}, {1, 1}));
     int interior = 0;
     for (const auto& e : sub.edges) interior += e.right >= 0;
@@ -302,12 +302,12 @@ TEST_CASE("planar subdivision: overlaps and T junctions are reported") {
     std::vector<Vec2d> v = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}, {1, 0}, {1, 1}, {0, 1}};
     std::vector<int> off = {0, 4, 8};
     PlanarSubdivision sub;
-    CHECK(!build_planar_subdivision(v.data(), off.data(), 2, &sub).ok());
+    CHECK(!build_planar_subdivision(v.data(), off.data(), 2, sub).ok());
     // a T junction: the left square's edge holds the right squares' shared corner
     std::vector<Vec2d> t = {{0, 0}, {1, 0}, {1, 2}, {0, 2}, {1, 0}, {2, 0},
                             {2, 1}, {1, 1}, {1, 1}, {2, 1}, {2, 2}, {1, 2}};
     std::vector<int> toff = {0, 4, 8, 12};
-    REQUIRE(build_planar_subdivision(t.data(), toff.data(), 3, &sub).ok());
+    REQUIRE(build_planar_subdivision(t.data(), toff.data(), 3, sub).ok());
     CHECK(!outer_edges_on_box(sub, {0, 0}, {2, 2}));  // edge (1,0)-(1,2) has one side only
 }
 

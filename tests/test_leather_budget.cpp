@@ -25,7 +25,7 @@ TEST_CASE("leather budget: the estimate follows the scale count, a small budget 
     prm.D = 0.02f;
     prm.d = prm.D;
     ScalePattern pattern;
-    REQUIRE(generate_scale_pattern(prm, &pattern).ok());
+    REQUIRE(generate_scale_pattern(prm, pattern).ok());
     const double per_scale = 1024.0 + 128.0 * double(1 << prm.perturbation.levels);
     const double estimated_scales = double(scale_pattern_bytes(prm)) / per_scale;
     CHECK(estimated_scales >= pattern.polygon_count());
@@ -39,21 +39,21 @@ TEST_CASE("leather budget: the estimate follows the scale count, a small budget 
 
     BudgetGuard guard(1u << 20);  // 1 MiB
     ScalePattern p;
-    Status s = generate_scale_pattern(prm, &p);
+    Status s = generate_scale_pattern(prm, p);
     CHECK(s.code() == StatusCode::too_large);
     CHECK(std::string(s.message()).find("bytes") != std::string::npos);
     ScaleDivision steps;
-    CHECK(divide_scales(prm, &steps).code() == StatusCode::too_large);
+    CHECK(divide_scales(prm, steps).code() == StatusCode::too_large);
     TileParams tp;
     CHECK(generate_tileable_pattern(tp, p).code() == StatusCode::too_large);
     LeatherMaps maps;
     s = make_leather_maps(pattern, 1024, 1024, table1_section(Table1Section::convex),
-                          ReliefOptions{}, &maps);
+                          ReliefOptions{}, maps);
     CHECK(s.code() == StatusCode::too_large);
     CHECK(std::string(s.message()).find("leather maps") != std::string::npos);
     CHECK(maps.heights.empty());  // refused before allocating
     // small work still fits
     CHECK(make_leather_maps(pattern, 64, 64, table1_section(Table1Section::convex),
-                            ReliefOptions{}, &maps)
+                            ReliefOptions{}, maps)
               .ok());
 }

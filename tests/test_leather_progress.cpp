@@ -30,7 +30,7 @@ TEST_CASE("leather progress: pattern, tileable pattern and maps report 0 .. 1, n
     std::vector<float> seen;
     const Progress progress{record, &seen};
     ScalePattern pattern;
-    REQUIRE(generate_scale_pattern(ScaleParams{}, &pattern, nullptr, progress).ok());
+    REQUIRE(generate_scale_pattern(ScaleParams{}, pattern, nullptr, progress).ok());
     check_monotone_to_one(seen, 4, 4);
 
     seen.clear();
@@ -42,7 +42,7 @@ TEST_CASE("leather progress: pattern, tileable pattern and maps report 0 .. 1, n
     seen.clear();
     LeatherMaps maps;
     REQUIRE(make_leather_maps(pattern, 300, 300, table1_section(Table1Section::convex),
-                              ReliefOptions{}, &maps, progress)
+                              ReliefOptions{}, maps, progress)
                 .ok());
     check_monotone_to_one(seen, 100, 160);  // the labels, then ~100 row blocks
     CHECK(seen.front() == 0.1f);
@@ -50,7 +50,7 @@ TEST_CASE("leather progress: pattern, tileable pattern and maps report 0 .. 1, n
     // Without a callback nothing is called and the result is the same.
     LeatherMaps quiet;
     REQUIRE(make_leather_maps(pattern, 300, 300, table1_section(Table1Section::convex),
-                              ReliefOptions{}, &quiet)
+                              ReliefOptions{}, quiet)
                 .ok());
     CHECK(quiet.heights == maps.heights);
 }

@@ -180,7 +180,7 @@ TEST_CASE("relief maps: the normal map is the gradient of the height map") {
             opt.normal_rule = rule;
             LeatherMaps maps;
             REQUIRE(make_leather_maps(p, labels.data(), size, size,
-                                      table1_section(Table1Section::convex), opt, &maps)
+                                      table1_section(Table1Section::convex), opt, maps)
                         .ok());
             CHECK(maps.max_height > 0.0f);
             const float texel = 1.0f / float(size);
@@ -226,7 +226,7 @@ TEST_CASE("relief maps: exports (16-bit height, RGB normal map, relief mesh)") {
     std::vector<int> labels = brute_force_labels(p, w, h);
     LeatherMaps maps;
     REQUIRE(make_leather_maps(p, labels.data(), w, h, table1_section(Table1Section::convex),
-                              ReliefOptions{}, &maps)
+                              ReliefOptions{}, maps)
                 .ok());
     std::vector<std::uint16_t> h16(std::size_t(w * h));
     encode_height16(maps, h16.data());
@@ -254,7 +254,7 @@ TEST_CASE("relief maps: exports (16-bit height, RGB normal map, relief mesh)") {
         std::vector<int> one_labels = brute_force_labels(one, n, n);
         LeatherMaps m1;
         REQUIRE(make_leather_maps(one, one_labels.data(), n, n,
-                                  table1_section(Table1Section::convex), ReliefOptions{}, &m1)
+                                  table1_section(Table1Section::convex), ReliefOptions{}, m1)
                     .ok());
         std::vector<std::uint8_t> px(std::size_t(3 * n * n));
         encode_normal_rgb(m1, px.data());
@@ -271,12 +271,12 @@ TEST_CASE("relief maps: exports (16-bit height, RGB normal map, relief mesh)") {
         for (std::size_t k = 2; k < px.size(); k += 3) CHECK(px[k] >= 128);
     }
     TriangleMesh mesh;
-    REQUIRE(make_relief_mesh(maps, 2, 1.0f, &mesh).ok());
+    REQUIRE(make_relief_mesh(maps, 2, 1.0f, mesh).ok());
     CHECK(mesh.vertex_count() == 16 * 8);
     CHECK(mesh.triangle_count() == 2 * 15 * 7);
     CHECK(mesh.positions[0].z == maps.at_height(0, 0));
-    CHECK(!make_relief_mesh(maps, 0, 1.0f, &mesh).ok());
-    CHECK(!make_relief_mesh(maps, 100, 1.0f, &mesh).ok());
+    CHECK(!make_relief_mesh(maps, 0, 1.0f, mesh).ok());
+    CHECK(!make_relief_mesh(maps, 100, 1.0f, mesh).ok());
 }
 
 TEST_CASE("relief maps: bad input gets a clear status") {
@@ -284,50 +284,50 @@ TEST_CASE("relief maps: bad input gets a clear status") {
     std::vector<int> labels = brute_force_labels(p, 8, 8);
     LeatherMaps maps;
     BezierChain s = table1_section(Table1Section::convex);
-    CHECK(!make_leather_maps(p, labels.data(), 0, 8, s, ReliefOptions{}, &maps).ok());
-    CHECK(!make_leather_maps(p, nullptr, 8, 8, s, ReliefOptions{}, &maps).ok());
+    CHECK(!make_leather_maps(p, labels.data(), 0, 8, s, ReliefOptions{}, maps).ok());
+    CHECK(!make_leather_maps(p, nullptr, 8, 8, s, ReliefOptions{}, maps).ok());
     labels[9] = 4;  // only ids 0..3 exist
-    Status st = make_leather_maps(p, labels.data(), 8, 8, s, ReliefOptions{}, &maps);
+    Status st = make_leather_maps(p, labels.data(), 8, 8, s, ReliefOptions{}, maps);
     CHECK(!st.ok());
     CHECK(std::strstr(st.message(), "(1, 1)") != nullptr);
     labels[9] = 0;
     ReliefOptions bad;
     bad.edge_r = NAN;
-    CHECK(!make_leather_maps(p, labels.data(), 8, 8, s, bad, &maps).ok());
+    CHECK(!make_leather_maps(p, labels.data(), 8, 8, s, bad, maps).ok());
     bad = ReliefOptions{};
     bad.height_scale = -1.0f;
-    CHECK(!make_leather_maps(p, labels.data(), 8, 8, s, bad, &maps).ok());
+    CHECK(!make_leather_maps(p, labels.data(), 8, 8, s, bad, maps).ok());
     BezierChain backwards = s;
     backwards.segments[0].p[3].x = 0.3f;
-    Status sb = make_leather_maps(p, labels.data(), 8, 8, backwards, ReliefOptions{}, &maps);
+    Status sb = make_leather_maps(p, labels.data(), 8, 8, backwards, ReliefOptions{}, maps);
     CHECK(!sb.ok());
     CHECK(std::strstr(sb.message(), "decreases") != nullptr);
     BezierChain nan_section = s;
     nan_section.segments[0].p[2].y = NAN;
-    CHECK(!make_leather_maps(p, labels.data(), 8, 8, nan_section, ReliefOptions{}, &maps).ok());
+    CHECK(!make_leather_maps(p, labels.data(), 8, 8, nan_section, ReliefOptions{}, maps).ok());
     // A hand-filled pattern: offsets past the vertices, going backwards, or NaN coordinates
     // are refused before anything reads through them (the sanitizer build would catch a read).
     ScalePattern torn = p;
     torn.polygon_offsets.back() += 8;
-    Status so = make_leather_maps(torn, labels.data(), 8, 8, s, ReliefOptions{}, &maps);
+    Status so = make_leather_maps(torn, labels.data(), 8, 8, s, ReliefOptions{}, maps);
     CHECK(so.code() == StatusCode::invalid_argument);
     CHECK(std::strstr(so.message(), "polygon_offsets") != nullptr);
     ScalePattern backwards_offsets = p;
     std::swap(backwards_offsets.polygon_offsets[1], backwards_offsets.polygon_offsets[2]);
     Status sw =
-        make_leather_maps(backwards_offsets, labels.data(), 8, 8, s, ReliefOptions{}, &maps);
+        make_leather_maps(backwards_offsets, labels.data(), 8, 8, s, ReliefOptions{}, maps);
     CHECK(!sw.ok());
     CHECK(std::strstr(sw.message(), "vertices") != nullptr);
     ScalePattern nan_vertex = p;
     nan_vertex.vertices[5].x = NAN;
-    Status sv = make_leather_maps(nan_vertex, labels.data(), 8, 8, s, ReliefOptions{}, &maps);
+    Status sv = make_leather_maps(nan_vertex, labels.data(), 8, 8, s, ReliefOptions{}, maps);
     CHECK(std::strstr(sv.message(), "vertex 5") != nullptr);
     ScalePattern nan_centroid = p;
     nan_centroid.centroids[2].y = NAN;
-    Status sc = make_leather_maps(nan_centroid, labels.data(), 8, 8, s, ReliefOptions{}, &maps);
+    Status sc = make_leather_maps(nan_centroid, labels.data(), 8, 8, s, ReliefOptions{}, maps);
     CHECK(std::strstr(sc.message(), "centroid of polygon 2") != nullptr);
     // An infinite height (finite options can still overflow) encodes as 0, not as UB.
-    REQUIRE(make_leather_maps(p, labels.data(), 8, 8, s, ReliefOptions{}, &maps).ok());
+    REQUIRE(make_leather_maps(p, labels.data(), 8, 8, s, ReliefOptions{}, maps).ok());
     maps.heights[3] = INFINITY;
     maps.max_height = INFINITY;
     std::vector<std::uint16_t> h16(64, 7);
@@ -337,7 +337,7 @@ TEST_CASE("relief maps: bad input gets a clear status") {
 
 TEST_CASE("relief: the angular index finds the same edge point as the full scan") {
     ScalePattern p;
-    REQUIRE(generate_scale_pattern(ScaleParams{}, &p).ok());  // perturbed, ~86 vertices each
+    REQUIRE(generate_scale_pattern(ScaleParams{}, p).ok());  // perturbed, ~86 vertices each
     std::vector<float> angles(p.vertices.size());
     Pcg32 rng(5);
     int indexed = 0, compared = 0;

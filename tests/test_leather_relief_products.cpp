@@ -82,14 +82,14 @@ TEST_CASE("handbag: 7 valid patches; the body tube and the handle join G1; norma
     PatchStripOptions opt;
     opt.segments_u = opt.segments_v = 8;
     TriangleMesh body, handle, bottom_mesh, knob;
-    REQUIRE(tessellate_patch_strip(bag.patches, 4, opt, &body).ok());
-    REQUIRE(tessellate_patch_strip(bag.patches + 5, 2, opt, &handle).ok());
-    REQUIRE(tessellate_patch_strip(&bag.patches[4], 1, opt, &bottom_mesh).ok());
+    REQUIRE(tessellate_patch_strip(bag.patches, 4, opt, body).ok());
+    REQUIRE(tessellate_patch_strip(bag.patches + 5, 2, opt, handle).ok());
+    REQUIRE(tessellate_patch_strip(&bag.patches[4], 1, opt, bottom_mesh).ok());
     check_winding(body);
     check_winding(handle);
     check_winding(bottom_mesh);
     for (const SphericalSegment& s : bag.clasp) {
-        REQUIRE(make_spherical_segment(s, 16, 8, &knob).ok());
+        REQUIRE(make_spherical_segment(s, 16, 8, knob).ok());
         check_winding(knob);
         for (int i = 0; i < knob.vertex_count(); ++i) {
             CHECK(length(knob.positions[std::size_t(i)] - s.center) == doctest::Approx(s.radius));
@@ -101,7 +101,7 @@ TEST_CASE("handbag: 7 valid patches; the body tube and the handle join G1; norma
 TEST_CASE("belt: a G1 chain of quarter turns; bad designs are refused") {
     std::vector<BezierPatch> belt;
     BeltDesign d;
-    REQUIRE(make_belt(d, &belt).ok());
+    REQUIRE(make_belt(d, belt).ok());
     CHECK(belt.size() == 6);  // 1.5 turns
     for (std::size_t k = 0; k + 1 < belt.size(); ++k)
         for (int s = 0; s <= 4; ++s) {
@@ -112,19 +112,19 @@ TEST_CASE("belt: a G1 chain of quarter turns; bad designs are refused") {
             CHECK(dot(a.normal, Vec3{a.position.x, 0, a.position.z}) > 0.0f);  // faces out
         }
     TriangleMesh m;
-    REQUIRE(tessellate_patch_strip(belt.data(), int(belt.size()), PatchStripOptions{}, &m).ok());
+    REQUIRE(tessellate_patch_strip(belt.data(), int(belt.size()), PatchStripOptions{}, m).ok());
     check_winding(m);
     BeltDesign bad = d;
     bad.r1 = 0.1f;
-    CHECK(!make_belt(bad, &belt).ok());
+    CHECK(!make_belt(bad, belt).ok());
     bad = d;
     bad.turns = NAN;
-    CHECK(!make_belt(bad, &belt).ok());
+    CHECK(!make_belt(bad, belt).ok());
     SphericalSegment s;
     s.cut_below = 1.0f;
-    CHECK(!make_spherical_segment(s, 8, 8, &m).ok());
+    CHECK(!make_spherical_segment(s, 8, 8, m).ok());
     s.cut_below = 0.0f;
-    CHECK(!make_spherical_segment(s, 2, 8, &m).ok());
+    CHECK(!make_spherical_segment(s, 2, 8, m).ok());
 }
 
 TEST_CASE("handbag: the arc-length mapping keeps the texel density near 1 on the body") {
@@ -148,9 +148,9 @@ TEST_CASE("handbag: the arc-length mapping keeps the texel density near 1 on the
     opt.segments_u = opt.segments_v = 32;
     opt.texture_scale = 0.8f;
     TriangleMesh arc, plain;
-    REQUIRE(tessellate_patch_strip(bag.patches, 4, opt, &arc).ok());
+    REQUIRE(tessellate_patch_strip(bag.patches, 4, opt, arc).ok());
     opt.arc_length = false;
-    REQUIRE(tessellate_patch_strip(bag.patches, 4, opt, &plain).ok());
+    REQUIRE(tessellate_patch_strip(bag.patches, 4, opt, plain).ok());
     float a1, a99, p1, p99;
     percentiles(arc, 0.8f, &a1, &a99);
     percentiles(plain, 0.8f, &p1, &p99);

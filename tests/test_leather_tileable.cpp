@@ -54,7 +54,7 @@ double quantile(std::vector<double> v, double q) {
 LeatherMaps tile_maps(const ScalePattern& pattern, int size) {
     LeatherMaps maps;
     REQUIRE(make_leather_maps(pattern, size, size, table1_section(Table1Section::convex),
-                              ReliefOptions{}, &maps)
+                              ReliefOptions{}, maps)
                 .ok());
     return maps;
 }
@@ -195,7 +195,7 @@ TEST_CASE("tileable: the lattice closes the tile; the same pattern twice; the pl
     // end along the border: half scales meet half scales of other rows when tiled).
     ScaleParams plain;
     ScalePattern p;
-    REQUIRE(generate_scale_pattern(plain, &p).ok());
+    REQUIRE(generate_scale_pattern(plain, p).ok());
     CHECK(edges_along_border(p, false, true) > 10);
     // Bad parameters are refused as for the plain pattern.
     tp.scales.D = 0.0f;

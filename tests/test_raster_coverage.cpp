@@ -194,10 +194,10 @@ TEST_CASE("a closed mesh seen from many directions: no cracks, front layer writt
 
 TEST_CASE("the mesh builders' closed solids have no cracks from any direction") {
     TriangleMesh meshes[4];
-    REQUIRE(make_uv_sphere(1.0f, 24, 12, &meshes[0]).ok());
-    REQUIRE(make_torus(0.9f, 0.35f, 24, 12, &meshes[1]).ok());
-    REQUIRE(make_cylinder(0.6f, -0.8f, 0.9f, 20, true, &meshes[2]).ok());
-    REQUIRE(make_sphere_without_octant(1.0f, 8, &meshes[3]).ok());
+    REQUIRE(make_uv_sphere(1.0f, 24, 12, meshes[0]).ok());
+    REQUIRE(make_torus(0.9f, 0.35f, 24, 12, meshes[1]).ok());
+    REQUIRE(make_cylinder(0.6f, -0.8f, 0.9f, 20, true, meshes[2]).ok());
+    REQUIRE(make_sphere_without_octant(1.0f, 8, meshes[3]).ok());
     const int kDirections = 8;
     for (int m = 0; m < 4; ++m) {
         int mismatched = 0;

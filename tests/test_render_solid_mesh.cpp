@@ -21,8 +21,8 @@ const FractalLattice& okada_lattice() {
 
 TriangleMesh unit_torus() {
     TriangleMesh mesh;
-    REQUIRE(make_torus(0.64f, 0.28f, 24, 12, &mesh).ok());
-    REQUIRE(fit_mesh_to_cube(&mesh, 0.92f).ok());
+    REQUIRE(make_torus(0.64f, 0.28f, 24, 12, mesh).ok());
+    REQUIRE(fit_mesh_to_cube(mesh, 0.92f).ok());
     return mesh;
 }
 
@@ -45,8 +45,8 @@ TEST_CASE("object_to_lattice: [-1, 1]^3 (y up) fills [2, 62]^3 of the R = 6 latt
 
 TEST_CASE("fit_mesh_to_cube: centred, longest side 2·extent, proportions kept, errors") {
     TriangleMesh box;
-    REQUIRE(make_box({1, 2, 3}, {5, 4, 4}, &box).ok());  // 4 x 2 x 1
-    REQUIRE(fit_mesh_to_cube(&box, 0.5f).ok());
+    REQUIRE(make_box({1, 2, 3}, {5, 4, 4}, box).ok());  // 4 x 2 x 1
+    REQUIRE(fit_mesh_to_cube(box, 0.5f).ok());
     Vec3 lo{1e9f, 1e9f, 1e9f}, hi{-1e9f, -1e9f, -1e9f};
     for (const Vec3& p : box.positions) lo = vmin(lo, p), hi = vmax(hi, p);
     CHECK(lo.x == doctest::Approx(-0.5f));
@@ -55,9 +55,9 @@ TEST_CASE("fit_mesh_to_cube: centred, longest side 2·extent, proportions kept, 
     CHECK(hi.z - lo.z == doctest::Approx(0.25f));
     CHECK(lo.y + hi.y == doctest::Approx(0.0f));
     TriangleMesh empty;
-    CHECK(fit_mesh_to_cube(&empty).code() == StatusCode::degenerate);
-    CHECK(fit_mesh_to_cube(&box, 0.0f).code() == StatusCode::invalid_argument);
-    CHECK(fit_mesh_to_cube(&box, NAN).code() == StatusCode::invalid_argument);
+    CHECK(fit_mesh_to_cube(empty).code() == StatusCode::degenerate);
+    CHECK(fit_mesh_to_cube(box, 0.0f).code() == StatusCode::invalid_argument);
+    CHECK(fit_mesh_to_cube(box, NAN).code() == StatusCode::invalid_argument);
 }
 
 TEST_CASE("okada1987 presets: the figures' values, and valid materials") {
@@ -158,17 +158,17 @@ TEST_CASE("render_solid_texture refuses an unbuilt lattice and a bad material wi
 TEST_CASE("leather maps in one call; mirrored tiling is continuous and 2W-periodic") {
     ScaleParams prm;  // the fig. 7 crocodile pattern
     ScalePattern pattern;
-    REQUIRE(generate_scale_pattern(prm, &pattern).ok());
+    REQUIRE(generate_scale_pattern(prm, pattern).ok());
     LeatherMaps maps;
     REQUIRE(make_leather_maps(pattern, 96, 96, table1_section(Table1Section::convex),
-                              ReliefOptions{}, &maps)
+                              ReliefOptions{}, maps)
                 .ok());
     CHECK(maps.max_height > 0.0f);
     CHECK(make_leather_maps(pattern, 0, 96, table1_section(Table1Section::convex), ReliefOptions{},
-                            &maps)
+                            maps)
               .code() == StatusCode::invalid_argument);
     REQUIRE(make_leather_maps(pattern, 96, 96, table1_section(Table1Section::convex),
-                              ReliefOptions{}, &maps)
+                              ReliefOptions{}, maps)
                 .ok());
     const float W = maps.pattern_width, H = maps.pattern_height;
     int bad = 0;
@@ -196,13 +196,13 @@ TEST_CASE("render/leather_mesh: bumps change the shading, gamma, tangents must m
     CHECK(int(to_display_gamma(Vec3{0.5f, 0.5f, 0.5f}).r) == 186);  // 255·0.5^(1/2.2)
 
     ScalePattern pattern;
-    REQUIRE(generate_scale_pattern(ScaleParams{}, &pattern).ok());
+    REQUIRE(generate_scale_pattern(ScaleParams{}, pattern).ok());
     LeatherMaps maps;
     REQUIRE(make_leather_maps(pattern, 128, 128, table1_section(Table1Section::convex),
-                              ReliefOptions{}, &maps)
+                              ReliefOptions{}, maps)
                 .ok());
     TriangleMesh box;
-    REQUIRE(make_box({-0.8f, -0.8f, -0.8f}, {0.8f, 0.8f, 0.8f}, &box).ok());
+    REQUIRE(make_box({-0.8f, -0.8f, -0.8f}, {0.8f, 0.8f, 0.8f}, box).ok());
     TextureTangents tangents;
     REQUIRE(compute_texture_tangents(box.view(), tangents).ok());
     const Camera cam = perspective_camera({2.5f, 2.0f, 3.0f}, {0, 0, 0}, {0, 1, 0}, 35.0f, 64, 64);
@@ -233,7 +233,7 @@ TEST_CASE("render/leather_mesh: bumps change the shading, gamma, tangents must m
     CHECK(differ > covered / 3);  // the scales' slopes show on most pixels
 
     TriangleMesh other;
-    REQUIRE(make_torus(0.6f, 0.2f, 8, 6, &other).ok());
+    REQUIRE(make_torus(0.6f, 0.2f, 8, 6, other).ok());
     RgbImage img(64, 64);
     FloatImage depth(64, 64);
     const FrameBand band = full_frame_band(img.view(), depth.view());

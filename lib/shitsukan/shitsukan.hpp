@@ -7,7 +7,7 @@
 //   FractalLattice lattice;
 //   Status s = lattice.build(okada1987_lattice_params());
 //   TriangleMesh mesh;
-//   if (s) s = make_torus(0.64f, 0.28f, 48, 24, &mesh);
+//   if (s) s = make_torus(0.64f, 0.28f, 48, 24, mesh);
 //   Camera camera = perspective_camera({1.9f, 2.4f, 4.2f}, {0, 0, 0}, {0, 1, 0}, 30, 128, 128);
 //   RgbImage image;
 //   if (s) s = render_solid_texture(camera, mesh.view(), lattice.view(), okada1987_marble(),

@@ -56,7 +56,7 @@ SHITSUKAN_FIGURE(foundation_lit_sphere, "foundation", "lit_sphere",
                  "A UV sphere, per-pixel Blinn-Phong shading (interpolated normals)") {
     const int size = frame_size(ctx), slices = 64, stacks = 32;
     TriangleMesh sphere;
-    SHITSUKAN_TRY(make_uv_sphere(1.0f, slices, stacks, &sphere));
+    SHITSUKAN_TRY(make_uv_sphere(1.0f, slices, stacks, sphere));
     Camera cam = perspective_camera({0.6f, 1.2f, 3.6f}, {0, 0, 0}, {0, 1, 0}, 38.0f, size, size);
     Studio studio;
     studio.record(ctx, "per pixel (Blinn-Phong with the interpolated, renormalised normal)");
@@ -80,7 +80,7 @@ SHITSUKAN_FIGURE(foundation_lit_cube, "foundation", "lit_cube",
                  "A cube, flat shading (each triangle lit with its plane normal)") {
     const int size = frame_size(ctx);
     TriangleMesh cube;
-    SHITSUKAN_TRY(make_box({-1, -1, -1}, {1, 1, 1}, &cube));
+    SHITSUKAN_TRY(make_box({-1, -1, -1}, {1, 1, 1}, cube));
     Camera cam = perspective_camera({3.2f, 2.6f, 4.4f}, {0, 0, 0}, {0, 1, 0}, 38.0f, size, size);
     Studio studio;
     studio.record(ctx, "flat (flat_normal of the triangle; the same colour over a face)");
@@ -104,7 +104,7 @@ SHITSUKAN_FIGURE(foundation_lit_torus, "foundation", "lit_torus",
                  "A torus, Gouraud shading (vertices lit once, colours interpolated)") {
     const int size = frame_size(ctx), major = 64, minor = 32;
     TriangleMesh torus;
-    SHITSUKAN_TRY(make_torus(1.0f, 0.38f, major, minor, &torus));
+    SHITSUKAN_TRY(make_torus(1.0f, 0.38f, major, minor, torus));
     Camera cam =
         perspective_camera({0.0f, 2.3f, 3.4f}, {0, -0.1f, 0}, {0, 1, 0}, 40.0f, size, size);
     Studio studio;

@@ -16,8 +16,8 @@ SHITSUKAN_FIGURE(foundation_wireframe, "foundation", "wireframe",
                  "Hidden-line wireframe of a torus around a sphere (each edge drawn once)") {
     const int size = ctx.quick() ? 128 : 512;
     TriangleMesh torus, sphere;
-    SHITSUKAN_TRY(make_torus(1.0f, 0.35f, 40, 16, &torus));
-    SHITSUKAN_TRY(make_uv_sphere(0.5f, 24, 12, &sphere));
+    SHITSUKAN_TRY(make_torus(1.0f, 0.35f, 40, 16, torus));
+    SHITSUKAN_TRY(make_uv_sphere(0.5f, 24, 12, sphere));
     Camera cam =
         perspective_camera({0.3f, 2.0f, 3.4f}, {0, -0.1f, 0}, {0, 1, 0}, 40.0f, size, size);
     ctx.chosen("torus", "R 1, r 0.35, 40 x 16 segments, tilted 0.35 rad",

@@ -85,7 +85,7 @@ struct EdgeRates {
 Status edge_rates(const TriangleMesh& mesh, const AnisotropicGrowth& g, EdgeRates* out) {
     std::vector<int> opp;
     SHITSUKAN_TRY(
-        halfedge_opposites(mesh.indices.data(), mesh.triangle_count(), mesh.vertex_count(), &opp));
+        halfedge_opposites(mesh.indices.data(), mesh.triangle_count(), mesh.vertex_count(), opp));
     for (int h = 0; h < int(opp.size()); ++h) {
         if (opp[std::size_t(h)] >= 0 && opp[std::size_t(h)] < h) continue;
         std::uint32_t i = mesh.indices[std::size_t(h)];

@@ -162,7 +162,7 @@ struct SolidShader {
 // A Catmull-Rom profile (r, y) through the control points, in double (okada1987 §4.4: the
 // spline is the one computation in 8-byte reals).
 Status spline_profile(const Vec2d* control, int count, int samples, std::vector<Vec2d>* out) {
-    return sample_spline(control, count, samples, out);
+    return sample_spline(control, count, samples, *out);
 }
 
 }  // namespace
@@ -197,7 +197,7 @@ Status build_scene(const std::string& name, bool quick, Scene* out) {
     const int seg = quick ? 32 : 96;  // revolution / sphere resolution
     TriangleMesh mesh;
     if (name == "cube") {
-        SHITSUKAN_TRY(make_box({-0.9f, -0.9f, -0.9f}, {0.9f, 0.9f, 0.9f}, &mesh));
+        SHITSUKAN_TRY(make_box({-0.9f, -0.9f, -0.9f}, {0.9f, 0.9f, 0.9f}, mesh));
         add_piece(out, mesh);
         out->eye = {3.6f, 3.0f, 4.6f};
     } else if (name == "slices") {
@@ -206,12 +206,12 @@ Status build_scene(const std::string& name, bool quick, Scene* out) {
         const float x0 = -0.9f, thickness = 0.3f, pitch = 0.375f, spread = 0.32f;
         for (int i = 0; i < 5; ++i) {
             float a = x0 + pitch * float(i);
-            SHITSUKAN_TRY(make_box({a, -0.9f, -0.9f}, {a + thickness, 0.9f, 0.9f}, &mesh));
+            SHITSUKAN_TRY(make_box({a, -0.9f, -0.9f}, {a + thickness, 0.9f, 0.9f}, mesh));
             add_piece(out, mesh, Mat4::translate({spread * (float(i) - 2.0f), 0.0f, 0.0f}));
         }
         out->eye = {5.2f, 3.2f, 5.2f};
     } else if (name == "cut_sphere") {
-        SHITSUKAN_TRY(make_sphere_without_octant(0.9f, quick ? 12 : 40, &mesh));
+        SHITSUKAN_TRY(make_sphere_without_octant(0.9f, quick ? 12 : 40, mesh));
         add_piece(out, mesh);
         out->eye = {2.7f, 2.3f, 3.1f};
     } else if (name == "pot") {
@@ -224,8 +224,8 @@ Status build_scene(const std::string& name, bool quick, Scene* out) {
         profile.push_back({0.32, 0.80});
         profile.push_back({0.40, 0.55});
         profile.push_back({0.0, 0.45});
-        SHITSUKAN_TRY(make_revolution(profile.data(), int(profile.size()), seg, &mesh));
-        SHITSUKAN_TRY(fit_mesh_to_cube(&mesh, 0.92f));
+        SHITSUKAN_TRY(make_revolution(profile.data(), int(profile.size()), seg, mesh));
+        SHITSUKAN_TRY(fit_mesh_to_cube(mesh, 0.92f));
         add_piece(out, mesh);
         out->eye = {2.5f, 2.5f, 3.4f};
     } else if (name == "nagoya") {
@@ -234,11 +234,11 @@ Status build_scene(const std::string& name, bool quick, Scene* out) {
         // about one marble layer or two wood rings, so neither material read; in two rows each
         // letter is 20 units tall (two to three layers, four rings) and the word fills the
         // frame. The texture stays one continuous solid (one object -> lattice map).
-        SHITSUKAN_TRY(make_block_text("NAG", 1.0f, 0.45f, &mesh));
+        SHITSUKAN_TRY(make_block_text("NAG", 1.0f, 0.45f, mesh));
         TriangleMesh second;
-        SHITSUKAN_TRY(make_block_text("OYA", 1.0f, 0.45f, &second));
-        SHITSUKAN_TRY(append(&mesh, second, Mat4::translate({0.0f, -1.25f, 0.0f})));
-        SHITSUKAN_TRY(fit_mesh_to_cube(&mesh, 0.92f));
+        SHITSUKAN_TRY(make_block_text("OYA", 1.0f, 0.45f, second));
+        SHITSUKAN_TRY(append(mesh, second, Mat4::translate({0.0f, -1.25f, 0.0f})));
+        SHITSUKAN_TRY(fit_mesh_to_cube(mesh, 0.92f));
         add_piece(out, mesh);
         out->eye = {0.9f, 1.5f, 5.2f};
         out->target = {0.0f, -0.02f, 0.0f};
@@ -247,26 +247,26 @@ Status build_scene(const std::string& name, bool quick, Scene* out) {
         const Vec2d profile[] = {{0.0, -0.9},  {0.52, -0.9}, {0.58, -0.84}, {0.62, 0.2},
                                  {0.66, 0.88}, {0.66, 0.92}, {0.60, 0.92},  {0.56, 0.2},
                                  {0.50, -0.78}, {0.0, -0.78}};
-        SHITSUKAN_TRY(make_revolution(profile, 10, seg, &mesh));
+        SHITSUKAN_TRY(make_revolution(profile, 10, seg, mesh));
         TriangleMesh handle;
-        SHITSUKAN_TRY(make_torus(0.3f, 0.07f, seg / 2, quick ? 8 : 24, &handle));
+        SHITSUKAN_TRY(make_torus(0.3f, 0.07f, seg / 2, quick ? 8 : 24, handle));
         // The handle: a ring in the xy plane, its inner half hidden in the wall.
-        SHITSUKAN_TRY(append(&mesh, handle,
+        SHITSUKAN_TRY(append(mesh, handle,
                              Mat4::translate({0.66f, 0.05f, 0.0f}) * Mat4::rotate_x(1.5707963f)));
-        SHITSUKAN_TRY(fit_mesh_to_cube(&mesh, 0.92f));
+        SHITSUKAN_TRY(fit_mesh_to_cube(mesh, 0.92f));
         add_piece(out, mesh);
         out->eye = {1.9f, 2.4f, 4.2f};
     } else if (name == "ashtray") {
         const Vec2d profile[] = {{0.0, -0.3},  {0.90, -0.3}, {0.98, -0.22}, {1.0, 0.05},
                                  {0.96, 0.12}, {0.74, 0.12}, {0.66, 0.02},  {0.58, -0.14},
                                  {0.0, -0.14}};
-        SHITSUKAN_TRY(make_revolution(profile, 9, seg, &mesh));
-        SHITSUKAN_TRY(fit_mesh_to_cube(&mesh, 0.92f));
+        SHITSUKAN_TRY(make_revolution(profile, 9, seg, mesh));
+        SHITSUKAN_TRY(fit_mesh_to_cube(mesh, 0.92f));
         add_piece(out, mesh);
         out->eye = {1.5f, 2.5f, 2.7f};
     } else if (name == "torus") {
-        SHITSUKAN_TRY(make_torus(0.64f, 0.28f, seg, quick ? 16 : 48, &mesh));
-        SHITSUKAN_TRY(fit_mesh_to_cube(&mesh, 0.92f));
+        SHITSUKAN_TRY(make_torus(0.64f, 0.28f, seg, quick ? 16 : 48, mesh));
+        SHITSUKAN_TRY(fit_mesh_to_cube(mesh, 0.92f));
         add_piece(out, mesh);
         out->eye = {1.6f, 2.5f, 2.8f};
     } else {

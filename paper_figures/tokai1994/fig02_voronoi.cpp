@@ -19,7 +19,7 @@ SHITSUKAN_FIGURE(tokai_fig02, "tokai1994", "fig02",
     std::vector<Vec2d> seeds;
     for (int i = 0; i < seeds_n; ++i) seeds.push_back({rng.uniform_double(), rng.uniform_double()});
     PlanarSubdivision sub;
-    SHITSUKAN_TRY(divide_single_stage(seeds.data(), seeds_n, 1.0f, 1.0f, &sub));
+    SHITSUKAN_TRY(divide_single_stage(seeds.data(), seeds_n, 1.0f, 1.0f, sub));
     const int size = ctx.quick() ? 256 : 512, margin = size / 32;
     const Frame f{float(margin), float(margin), float(size - 2 * margin)};
     ctx.note(fmt("%d seeds, %d Voronoi polygons, %zu edges (each stored once).", seeds_n,

@@ -28,13 +28,13 @@ Status lattice_figure(FigureContext& ctx, bool triangular, int panel) {
     ctx.chosen("random seed", fmt("%u", seed), "any");
     SeedLayout layout;
     if (triangular)
-        SHITSUKAN_TRY(triangular_lattice_seeds(1, 1, kLatticeD, a, seed, &layout));
+        SHITSUKAN_TRY(triangular_lattice_seeds(1, 1, kLatticeD, a, seed, layout));
     else
-        SHITSUKAN_TRY(square_lattice_seeds(1, 1, kLatticeD, a, seed, &layout));
+        SHITSUKAN_TRY(square_lattice_seeds(1, 1, kLatticeD, a, seed, layout));
     PlanarSubdivision sub;
-    SHITSUKAN_TRY(divide_single_stage(layout.moved.data(), int(layout.moved.size()), 1, 1, &sub));
+    SHITSUKAN_TRY(divide_single_stage(layout.moved.data(), int(layout.moved.size()), 1, 1, sub));
     ScalePattern pattern;
-    SHITSUKAN_TRY(perturb_subdivision(sub, prm, seed, 1, 1, &pattern));
+    SHITSUKAN_TRY(perturb_subdivision(sub, prm, seed, 1, 1, pattern));
     // interior cell vertex counts: the exactness shows at a = 0 (4 or 6 everywhere)
     int interior = 0, vertex_sum = 0;
     for (int fc = 0; fc < sub.face_count(); ++fc) {

@@ -52,7 +52,7 @@ SHITSUKAN_FIGURE(
     ScaleParams prm;
     record_scale_params(ctx, prm);
     ScaleDivision steps;
-    SHITSUKAN_TRY(divide_scales(prm, &steps));
+    SHITSUKAN_TRY(divide_scales(prm, steps));
     const int size = ctx.quick() ? 300 : 600, margin = size / 12;
     const Frame f{float(margin), float(margin), float(size - 2 * margin)};
     const float marker = size / 60.0f;
@@ -88,7 +88,7 @@ SHITSUKAN_FIGURE(tokai_fig05, "tokai1994", "fig05",
     record_scale_params(ctx, prm);
     ScaleDivision steps;
     ScalePattern final_pattern;
-    SHITSUKAN_TRY(generate_scale_pattern(prm, &final_pattern, &steps));
+    SHITSUKAN_TRY(generate_scale_pattern(prm, final_pattern, &steps));
     const ScalePattern& stage1 = steps.stage1_pattern;
     int interior = 0;
     for (const PlanarSubdivision::Edge& e : steps.stage1.edges) interior += e.right >= 0;
@@ -113,7 +113,7 @@ SHITSUKAN_FIGURE(
     ScaleParams prm;
     record_scale_params(ctx, prm);
     ScaleDivision steps;
-    SHITSUKAN_TRY(divide_scales(prm, &steps));
+    SHITSUKAN_TRY(divide_scales(prm, steps));
     const int size = ctx.quick() ? 300 : 600, margin = size / 12;
     const Frame f{float(margin), float(margin), float(size - 2 * margin)};
     const float marker = size / 75.0f;

@@ -32,7 +32,7 @@ Status panels_figure(FigureContext& ctx, const std::vector<Panel>& panels, const
     std::string note = std::string("Varied: ") + varied + ".";
     for (std::size_t i = 0; i < panels.size(); ++i) {
         ScaleDivision steps;
-        SHITSUKAN_TRY(generate_scale_pattern(panels[i].prm, &patterns[i], &steps));
+        SHITSUKAN_TRY(generate_scale_pattern(panels[i].prm, patterns[i], &steps));
         const PerturbationReport& r = steps.perturbation;
         note += fmt(" %s: %d scales, RMS edge offset %.5f of %.5f requested (%.0f %%; %d of %d "
                     "edges scaled down), largest offset %.4f.",
@@ -60,9 +60,9 @@ SHITSUKAN_FIGURE(tokai_fig07, "tokai1994", "fig07",
     record_scale_params(ctx, prm);
     ScaleDivision steps;
     ScalePattern pattern;
-    SHITSUKAN_TRY(generate_scale_pattern(prm, &pattern, &steps));
+    SHITSUKAN_TRY(generate_scale_pattern(prm, pattern, &steps));
     ScaleStatistics st;
-    SHITSUKAN_TRY(measure_scale_statistics(steps.cells, prm.width, prm.height, &st));
+    SHITSUKAN_TRY(measure_scale_statistics(steps.cells, prm.width, prm.height, st));
     ctx.note(
         fmt("Measured before perturbation: mean corner count of the %d inner scales %.2f "
             "(feature (1): near-quadrilateral); mean width %.4f at 0.3-0.45 W from the "

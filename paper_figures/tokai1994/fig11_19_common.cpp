@@ -57,7 +57,7 @@ Status crocodile_pattern(FigureContext& ctx, ScalePattern* out) {
         "tokai1994 §3.1 (the parameters used for the rest of the paper)");
     ctx.chosen("pattern D, seed", fmt("D = %.3f, seed %u", double(prm.D), unsigned(prm.seed)),
                "scale-pattern module defaults (the paper prints no D)");
-    return generate_scale_pattern(prm, out);
+    return generate_scale_pattern(prm, *out);
 }
 
 Status snake_pattern(FigureContext& ctx, float width, float height, ScalePattern* out) {
@@ -71,18 +71,18 @@ Status snake_pattern(FigureContext& ctx, float width, float height, ScalePattern
                fmt("D = %.3f, a = %.2f, seed %u", double(D), double(a), unsigned(seed)),
                "about 6 scales across the belt; a and seed as the fig. 3(b) figure");
     SeedLayout seeds;
-    SHITSUKAN_TRY(triangular_lattice_seeds(width, height, D, a, seed, &seeds));
+    SHITSUKAN_TRY(triangular_lattice_seeds(width, height, D, a, seed, seeds));
     PlanarSubdivision sub;
     SHITSUKAN_TRY(
-        divide_single_stage(seeds.moved.data(), int(seeds.moved.size()), width, height, &sub));
+        divide_single_stage(seeds.moved.data(), int(seeds.moved.size()), width, height, sub));
     PerturbationParams prm;
     prm.p = 0.015f * D / 0.125f;  // fig. 3(b)'s perturbation relative to its spacing
-    return perturb_subdivision(sub, prm, seed, width, height, out);
+    return perturb_subdivision(sub, prm, seed, width, height, *out);
 }
 
 Status leather_maps(const ScalePattern& pattern, int w, int h, const BezierChain& section,
                     const ReliefOptions& options, LeatherMaps* out) {
-    return make_leather_maps(pattern, w, h, section, options, out);  // the library's one call
+    return make_leather_maps(pattern, w, h, section, options, *out);  // the library's one call
 }
 
 void shade_flat_texture(const LeatherMaps& maps, Vec2 lo, Vec2 hi, const RgbView& out,

@@ -39,7 +39,7 @@ SHITSUKAN_FIGURE(tokai1994_fig16, "tokai1994", "fig16",
     PatchStripOptions opt;
     opt.segments_u = opt.segments_v = 32;
     tokai_relief::BumpSurface surface;
-    SHITSUKAN_TRY(tessellate_patch_strip(&patch, 1, opt, &surface.mesh));
+    SHITSUKAN_TRY(tessellate_patch_strip(&patch, 1, opt, surface.mesh));
     Camera cam =
         perspective_camera({2.6f, 2.7f, 3.6f}, {0.0f, 0.2f, 0.0f}, {0, 1, 0}, 36.0f, size, size);
     RgbImage img(size, size);

@@ -45,23 +45,23 @@ Status build_handbag(int segments, HandbagScene* scene) {
     const BezierPatch tube[4] = {bag.patches[3], bag.patches[0], bag.patches[1], bag.patches[2]};
     opt.anchor = 1.5f;
     opt.texture_origin = {0.5f, 0.12f};
-    SHITSUKAN_TRY(tessellate_patch_strip(tube, 4, opt, &scene->body.mesh));
+    SHITSUKAN_TRY(tessellate_patch_strip(tube, 4, opt, scene->body.mesh));
     opt.anchor = 0.0f;
     opt.texture_origin = {0.1f, 0.1f};
-    SHITSUKAN_TRY(tessellate_patch_strip(bag.patches + bag.bottom, 1, opt, &scene->bottom.mesh));
+    SHITSUKAN_TRY(tessellate_patch_strip(bag.patches + bag.bottom, 1, opt, scene->bottom.mesh));
     opt.texture_origin = {0.05f, 0.86f};  // the handle: along the top rows of the pattern
     opt.segments_v = segments / 2 > 4 ? segments / 2 : 4;
     // The strap bends around a tight arch: every row takes its x from the strap's middle row,
     // so the leather is bent, not sheared (bezier_patch_mesh.hpp, reference_row).
     opt.reference_row = 0.5f;
     SHITSUKAN_TRY(tessellate_patch_strip(bag.patches + bag.handle_first, bag.handle_count, opt,
-                                         &scene->handle.mesh));
+                                         scene->handle.mesh));
     SHITSUKAN_TRY(tokai_relief::compute_texture_tangents(&scene->body));
     SHITSUKAN_TRY(tokai_relief::compute_texture_tangents(&scene->bottom));
     SHITSUKAN_TRY(tokai_relief::compute_texture_tangents(&scene->handle));
     for (int k = 0; k < 2; ++k)
         SHITSUKAN_TRY(
-            make_spherical_segment(bag.clasp[k], segments, segments / 2, &scene->knobs[k]));
+            make_spherical_segment(bag.clasp[k], segments, segments / 2, scene->knobs[k]));
     return Status::success();
 }
 
@@ -239,7 +239,7 @@ SHITSUKAN_FIGURE(tokai1994_fig18, "tokai1994", "fig18",
             o.reference_row = reference_row;
             TriangleMesh m;
             SHITSUKAN_TRY(tessellate_patch_strip(scene.bag.patches + scene.bag.handle_first,
-                                                 scene.bag.handle_count, o, &m));
+                                                 scene.bag.handle_count, o, m));
             const int columns = 2 * 32 + 1;
             double worst = 0;
             for (int c = 0; c < columns; ++c)

@@ -33,12 +33,12 @@ SHITSUKAN_FIGURE(
 
     // The belt's strip, texture = arc length (one texture unit per world unit).
     std::vector<BezierPatch> patches;
-    SHITSUKAN_TRY(make_belt(design, &patches));
+    SHITSUKAN_TRY(make_belt(design, patches));
     tokai_relief::BumpSurface belt;
     PatchStripOptions opt;
     opt.segments_u = 24;
     opt.segments_v = 4;
-    SHITSUKAN_TRY(tessellate_patch_strip(patches.data(), int(patches.size()), opt, &belt.mesh));
+    SHITSUKAN_TRY(tessellate_patch_strip(patches.data(), int(patches.size()), opt, belt.mesh));
     SHITSUKAN_TRY(tokai_relief::compute_texture_tangents(&belt));
     float length = 0.0f, width = 0.0f;
     for (Vec2 t : belt.mesh.uvs) {

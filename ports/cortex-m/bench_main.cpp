@@ -126,7 +126,7 @@ int main() {
 
     MeshView cube;
     if (!make_box_arrays({-0.9f, -0.9f, -0.9f}, {0.9f, 0.9f, 0.9f}, g_pos, g_nrm, g_uv,
-                         kBoxVertexCount, g_idx, 3 * kBoxTriangleCount, &cube))
+                         kBoxVertexCount, g_idx, 3 * kBoxTriangleCount, cube))
         return 1;
     const Camera cam = perspective_camera({3.6f, 3.0f, 4.6f}, {0, 0, 0}, {0, 1, 0}, 30.0f, kW, kW);
     DrawOptions opt;
@@ -147,7 +147,7 @@ int main() {
                "rasterized pixel");
     MeshView sphere;
     if (!make_uv_sphere_arrays(1.2f, kSlices, kStacks, g_sphere_pos, g_sphere_nrm, g_sphere_uv,
-                               kSphereVertices, g_sphere_idx, kSphereIndices, &sphere))
+                               kSphereVertices, g_sphere_idx, kSphereIndices, sphere))
         return 1;
     RasterStats sphere_stats;
     timer_start();

@@ -115,7 +115,7 @@ int main() {
 #else
     MeshView cube;
     if (!make_box_arrays({-0.9f, -0.9f, -0.9f}, {0.9f, 0.9f, 0.9f}, g_pos, g_nrm, g_uv,
-                         kBoxVertexCount, g_idx, 3 * kBoxTriangleCount, &cube))
+                         kBoxVertexCount, g_idx, 3 * kBoxTriangleCount, cube))
         return 1;
     const Camera cam =
         perspective_camera({3.6f, 3.0f, 4.6f}, {0, 0, 0}, {0, 1, 0}, 30.0f, kSize, kSize);

@@ -297,7 +297,7 @@ void section_lit() {
     MeshView box;
     if (!check(make_box_arrays({-0.8f, -0.6f, -0.7f}, {0.8f, 0.6f, 0.7f}, g_box_positions,
                                g_box_normals, g_box_uvs, kBoxVertexCount, g_box_indices,
-                               3 * kBoxTriangleCount, &box),
+                               3 * kBoxTriangleCount, box),
                "box"))
         return;
     const Camera cam = perspective_camera({2.2f, 1.7f, 3.1f}, {0, 0, 0}, {0, 1, 0}, 38.0f, 160, 120);
@@ -325,7 +325,7 @@ void section_fig10a() {
     MeshView cube;  // okada_common.cpp's "cube" scene: make_box(-0.9, 0.9), same vertices
     if (!check(make_box_arrays({-0.9f, -0.9f, -0.9f}, {0.9f, 0.9f, 0.9f}, g_box_positions,
                                g_box_normals, g_box_uvs, kBoxVertexCount, g_box_indices,
-                               3 * kBoxTriangleCount, &cube),
+                               3 * kBoxTriangleCount, cube),
                "cube"))
         return;
     const Camera cam = perspective_camera({3.6f, 3.0f, 4.6f}, {0, 0, 0}, {0, 1, 0}, 30.0f, 512, 512);

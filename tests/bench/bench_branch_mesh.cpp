@@ -84,13 +84,13 @@ SHITSUKAN_BENCH(branch_mesh_vs_cgal) {
     mt.compute_normals = false;
     TriangleMesh input;
     MarchingTetrahedraStats ms;
-    if (Status s = marching_tetrahedra(&shape_f, nullptr, mt, &input, &ms); !s) {
+    if (Status s = marching_tetrahedra(&shape_f, nullptr, mt, input, &ms); !s) {
         bench::info("branch mesh", std::string("set-up failed: ") + s.message());
         return;
     }
     double march = bench::ns_per_op([&] {
         TriangleMesh m;
-        Status s = marching_tetrahedra(&shape_f, nullptr, mt, &m);
+        Status s = marching_tetrahedra(&shape_f, nullptr, mt, m);
         bench::sink(s.ok() ? m.triangle_count() : -1);
     });
     // The grid alone: the same nodes sampled in the same order.
@@ -119,7 +119,7 @@ SHITSUKAN_BENCH(branch_mesh_vs_cgal) {
     TriangleMesh out;
     double ours = bench::ns_per_op([&] {
         out = input;
-        Status s = isotropic_remesh(ro, &out, &rs);
+        Status s = isotropic_remesh(ro, out, &rs);
         bench::sink(s.ok() ? out.triangle_count() : -1);
     });
     CgalMesh cg;
@@ -151,7 +151,7 @@ SHITSUKAN_BENCH(branch_mesh_vs_cgal) {
         }
     }
     MeshQuality cq;
-    Status cs = mesh_quality(back, &cq);
+    Status cs = mesh_quality(back, cq);
     const double tri = double(input.triangle_count());
     bench::info("remesher triangles per second",
                 "shitsukan " + std::to_string(long(tri / (ours * 1e-9))) + ", CGAL " +

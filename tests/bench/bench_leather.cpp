@@ -59,7 +59,7 @@ SHITSUKAN_BENCH(leather_tileable_pattern) {
     bool ok = true;
     ScalePattern plain, torus;
     const double plain_ns = bench::ns_per_op([&] {
-        ok &= generate_scale_pattern(ScaleParams{}, &plain).ok();
+        ok &= generate_scale_pattern(ScaleParams{}, plain).ok();
         bench::sink(plain.polygon_count());
     });
     TileParams tp;
@@ -74,7 +74,7 @@ SHITSUKAN_BENCH(leather_tileable_pattern) {
 
 SHITSUKAN_BENCH(leather_maps) {
     ScalePattern pattern;
-    if (!bench::set_up(generate_scale_pattern(ScaleParams{}, &pattern), "leather maps")) return;
+    if (!bench::set_up(generate_scale_pattern(ScaleParams{}, pattern), "leather maps")) return;
     const int size = 512;
     std::vector<std::int32_t> labels(std::size_t(size) * size);
     LeatherMaps maps;
@@ -85,7 +85,7 @@ SHITSUKAN_BENCH(leather_maps) {
         bench::sink(labels[12345]);
     });
     double relief = bench::ns_per_op([&] {
-        ok &= make_leather_maps(pattern, labels.data(), size, size, section, ReliefOptions{}, &maps)
+        ok &= make_leather_maps(pattern, labels.data(), size, size, section, ReliefOptions{}, maps)
                   .ok();
         bench::sink(maps.max_height);
     });
@@ -99,7 +99,7 @@ SHITSUKAN_BENCH(leather_maps) {
     // The fig. 18 frame.
     std::vector<std::int32_t> big(std::size_t(1536) * 1536);
     Status s = rasterize_scale_labels(pattern, 1536, 1536, big.data());
-    if (s) s = make_leather_maps(pattern, big.data(), 1536, 1536, section, ReliefOptions{}, &maps);
+    if (s) s = make_leather_maps(pattern, big.data(), 1536, 1536, section, ReliefOptions{}, maps);
     Handbag bag = make_handbag();
     Part parts[3];
     PatchStripOptions opt;
@@ -108,10 +108,10 @@ SHITSUKAN_BENCH(leather_maps) {
     opt.anchor = 1.5f;  // left, front, right, back: the front's middle
     opt.texture_origin = {0.5f, 0.12f};
     const BezierPatch tube[4] = {bag.patches[3], bag.patches[0], bag.patches[1], bag.patches[2]};
-    if (s) s = tessellate_patch_strip(tube, 4, opt, &parts[0].mesh);
+    if (s) s = tessellate_patch_strip(tube, 4, opt, parts[0].mesh);
     opt.anchor = 0.0f;
-    if (s) s = tessellate_patch_strip(bag.patches + 4, 1, opt, &parts[1].mesh);
-    if (s) s = tessellate_patch_strip(bag.patches + 5, 2, opt, &parts[2].mesh);
+    if (s) s = tessellate_patch_strip(bag.patches + 4, 1, opt, parts[1].mesh);
+    if (s) s = tessellate_patch_strip(bag.patches + 5, 2, opt, parts[2].mesh);
     for (Part& p : parts) {
         const int n = p.mesh.triangle_count();
         p.dpdx.resize(std::size_t(n));
@@ -120,7 +120,7 @@ SHITSUKAN_BENCH(leather_maps) {
     }
     TriangleMesh knobs[2];
     for (int k = 0; k < 2; ++k)
-        if (s) s = make_spherical_segment(bag.clasp[k], 32, 16, &knobs[k]);
+        if (s) s = make_spherical_segment(bag.clasp[k], 32, 16, knobs[k]);
     if (!bench::set_up(s, "fig. 18 handbag frame")) return;
     Camera cam =
         perspective_camera({2.25f, 1.50f, 2.55f}, {0.04f, 0.64f, 0.0f}, {0, 1, 0}, 30.0f, 512, 512);

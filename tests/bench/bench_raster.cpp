@@ -66,8 +66,8 @@ SHITSUKAN_BENCH(raster_frame_overhead) {
     const int W = 512, H = 512;
     TriangleMesh sphere, torus;
     // Tessellation as in the foundation figures (64 x 32 each): ~45 pixels per drawn triangle.
-    Status s = make_uv_sphere(0.75f, 64, 32, &sphere);
-    if (s) s = make_torus(1.25f, 0.3f, 64, 32, &torus);
+    Status s = make_uv_sphere(0.75f, 64, 32, sphere);
+    if (s) s = make_torus(1.25f, 0.3f, 64, 32, torus);
     if (!bench::set_up(s, "rasterizer overhead")) return;
     Camera cam = perspective_camera({0, 1.6f, 3.6f}, {0, 0, 0}, {0, 1, 0}, 45.0f, W, H);
     ShaderData data;

@@ -61,7 +61,7 @@ SHITSUKAN_BENCH(voronoi_vs_boost_polygon) {
             VoronoiCells cells;
             bool ok = true;
             const double ours = voronoi_time_call(n, [&] {
-                Status s = voronoi_cells(sites.data(), count, square, 4, &cells);
+                Status s = voronoi_cells(sites.data(), count, square, 4, cells);
                 ok = ok && s.ok();
                 bench::sink(s.ok() ? cells.vertices.size() : 0);
             });
@@ -90,7 +90,7 @@ SHITSUKAN_BENCH(voronoi_vs_boost_polygon) {
     // Exactness on a lattice: every interior cell of a 100 x 100 square lattice.
     const std::vector<Vec2d> lattice = bench_voronoi_sites(SiteDistribution::lattice, 10000);
     VoronoiCells cells;
-    Status s = voronoi_cells(lattice.data(), int(lattice.size()), square, 4, &cells);
+    Status s = voronoi_cells(lattice.data(), int(lattice.size()), square, 4, cells);
     int four = 0;
     for (int c = 0; c < cells.cell_count(); ++c) {
         int k;

@@ -121,7 +121,7 @@ SHITSUKAN_BENCH(voronoi_vs_cgal) {
             DelaunayTriangulation dt;
             bool ok = true;
             const double ours_dt = voronoi_time_call(n, [&] {
-                Status s = build_delaunay(sites.data(), count, &dt);
+                Status s = build_delaunay(sites.data(), count, dt);
                 ok = ok && s.ok();
                 bench::sink(s.ok() ? dt.triangles.size() : 0);
             });
@@ -135,7 +135,7 @@ SHITSUKAN_BENCH(voronoi_vs_cgal) {
                           cgal_dt);
             VoronoiCells cells;
             const double ours_vc = voronoi_time_call(n, [&] {
-                Status s = voronoi_cells(sites.data(), count, square, 4, &cells);
+                Status s = voronoi_cells(sites.data(), count, square, 4, cells);
                 ok = ok && s.ok();
                 bench::sink(s.ok() ? cells.vertices.size() : 0);
             });

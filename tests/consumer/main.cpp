@@ -25,8 +25,8 @@ int main(int argc, char** argv) {
     FractalLattice lattice;
     Status s = lattice.build(okada1987_lattice_params());
     TriangleMesh mesh;
-    if (s) s = make_torus(0.64f, 0.28f, 48, 24, &mesh);
-    if (s) s = fit_mesh_to_cube(&mesh, 0.92f);
+    if (s) s = make_torus(0.64f, 0.28f, 48, 24, mesh);
+    if (s) s = fit_mesh_to_cube(mesh, 0.92f);
     const Camera camera =
         perspective_camera({1.6f, 2.5f, 2.8f}, {0, 0, 0}, {0, 1, 0}, 30.0f, 128, 128);
     RgbImage image;

@@ -145,18 +145,18 @@ Status make_branch_mesh(const BranchShapeParams& params, float target_edge_lengt
     mt.compute_normals = false;
     TriangleMesh mesh;
     const PreparedShape prepared{&params, branch_axis_direction(params)};
-    SHITSUKAN_TRY(marching_tetrahedra(&shape_function, &prepared, mt, &mesh));
+    SHITSUKAN_TRY(marching_tetrahedra(&shape_function, &prepared, mt, mesh));
     s->marching_vertices = mesh.vertex_count();
     s->marching_triangles = mesh.triangle_count();
     IsotropicRemeshOptions ro;
     ro.target_edge_length = L0;
     ro.surface = &shape_function;
     ro.user = &prepared;
-    SHITSUKAN_TRY(isotropic_remesh(ro, &mesh, &s->remesh));
+    SHITSUKAN_TRY(isotropic_remesh(ro, mesh, &s->remesh));
     for (std::size_t v = 0; v < mesh.positions.size(); ++v)
         mesh.normals[v] = branch_shape_normal(params, mesh.positions[v]);
     MeshTopology topo;
-    SHITSUKAN_TRY(mesh_topology(mesh, &topo));
+    SHITSUKAN_TRY(mesh_topology(mesh, topo));
     s->boundary_loops = topo.boundary_loops;
     s->euler_characteristic = topo.euler_characteristic;
     out = std::move(mesh);

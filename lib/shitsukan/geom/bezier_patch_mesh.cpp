@@ -190,7 +190,7 @@ void emit_strip_mesh(const StripGrid& g, const PatchStripOptions& options,
 }  // namespace
 
 Status tessellate_patch_strip(const BezierPatch* patches, int count,
-                              const PatchStripOptions& options, TriangleMesh* out) {
+                              const PatchStripOptions& options, TriangleMesh& out) {
     if (patches == nullptr || count < 1)
         return Status::error(StatusCode::invalid_argument,
                              "patch strip: need at least one patch (got %d)", count);
@@ -198,14 +198,14 @@ Status tessellate_patch_strip(const BezierPatch* patches, int count,
     SHITSUKAN_TRY(check_strip_patches(patches, count));
     const int nu = options.segments_u, nv = options.segments_v;
     const StripGrid grid{patches, count, nu, nv, count * nu + 1, nv + 1};
-    *out = TriangleMesh{};
-    out->positions.reserve(std::size_t(grid.columns) * std::size_t(grid.rows));
+    out = TriangleMesh{};
+    out.positions.reserve(std::size_t(grid.columns) * std::size_t(grid.rows));
     std::vector<Vec2> texture(std::size_t(grid.columns) * std::size_t(grid.rows));
     if (options.arc_length)
         arc_length_texture(grid, options, texture);
     else
         mean_size_texture(grid, texture);
-    emit_strip_mesh(grid, options, texture, out);
+    emit_strip_mesh(grid, options, texture, &out);
     return Status::success();
 }
 

@@ -9,7 +9,7 @@
 //   PatchStripOptions opt;                     // defaults below
 //   opt.texture_scale = 0.8f;                  // texture units per world unit
 //   TriangleMesh mesh;
-//   Status s = tessellate_patch_strip(strip, 3, opt, &mesh);
+//   Status s = tessellate_patch_strip(strip, 3, opt, mesh);
 //   // mesh.uvs[i] = (x, y): the texture point shown at vertex i (texture units, not [0, 1])
 //   return s;
 //
@@ -66,7 +66,7 @@ constexpr long long kMaxStripVertices = 1LL << 26;  // keeps int / uint32 indice
 // a non-finite or non-positive scale, patches that fail validate_patch (the message names the
 // patch), or neighbours that do not share their edge (max gap > 1e-4 of the strip's size).
 Status tessellate_patch_strip(const BezierPatch* patches, int count,
-                              const PatchStripOptions& options, TriangleMesh* out);
+                              const PatchStripOptions& options, TriangleMesh& out);
 
 // The control net of a patch as line segments (for fig. 16 and wireframes): 24 segments,
 // 48 points written to out (out must hold 48).

@@ -139,45 +139,43 @@ Rings letter_Y() {
 
 }  // namespace
 
-Status block_letter_outline(char letter, std::vector<std::vector<Vec2>>* rings) {
-    if (!rings)
-        return Status::error(StatusCode::invalid_argument, "block_letter_outline: null output");
+Status block_letter_outline(char letter, std::vector<std::vector<Vec2>>& rings) {
     switch (letter) {
         case 'A':
-            *rings = letter_A();
+            rings = letter_A();
             return Status::success();
         case 'E':
-            *rings = letter_E();
+            rings = letter_E();
             return Status::success();
         case 'F':
-            *rings = letter_F();
+            rings = letter_F();
             return Status::success();
         case 'G':
-            *rings = letter_G();
+            rings = letter_G();
             return Status::success();
         case 'H':
-            *rings = letter_H();
+            rings = letter_H();
             return Status::success();
         case 'I':
-            *rings = letter_I();
+            rings = letter_I();
             return Status::success();
         case 'L':
-            *rings = letter_L();
+            rings = letter_L();
             return Status::success();
         case 'N':
-            *rings = letter_N();
+            rings = letter_N();
             return Status::success();
         case 'O':
-            *rings = letter_O();
+            rings = letter_O();
             return Status::success();
         case 'T':
-            *rings = letter_T();
+            rings = letter_T();
             return Status::success();
         case 'Y':
-            *rings = letter_Y();
+            rings = letter_Y();
             return Status::success();
         default:
-            rings->clear();
+            rings.clear();
             return Status::error(
                 StatusCode::not_supported,
                 "block letter '%c' is not drawn (supported: A E F G H I L N O T Y)",

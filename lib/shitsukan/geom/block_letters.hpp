@@ -3,7 +3,7 @@
 //
 // Manual
 //   std::vector<std::vector<Vec2>> rings;
-//   Status s = block_letter_outline('A', &rings);   // rings[0] outer, rings[1..] holes
+//   Status s = block_letter_outline('A', rings);   // rings[0] outer, rings[1..] holes
 //   return s;
 // Letters sit in the box [0, 0.8] x [0, 1] (baseline y = 0, cap height 1); advance
 // kBlockLetterAdvance per letter. Supported: A E F G H I L N O T Y (the NAGOYA letters and a
@@ -19,6 +19,6 @@ namespace shitsukan {
 
 constexpr float kBlockLetterAdvance = 1.0f;
 
-Status block_letter_outline(char letter, std::vector<std::vector<Vec2>>* rings);
+Status block_letter_outline(char letter, std::vector<std::vector<Vec2>>& rings);
 
 }  // namespace shitsukan

@@ -183,11 +183,11 @@ private:
 
 }  // namespace
 
-Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out) {
+Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation& out) {
     return build_delaunay(points, count, out, Vec2d{0, 0}, Vec2d{-1, -1});
 }
 
-Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out, Vec2d cover_lo,
+Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation& out, Vec2d cover_lo,
                       Vec2d cover_hi) {
     return build_delaunay(points, count, out, cover_lo, cover_hi, false);
 }
@@ -360,18 +360,16 @@ void finish_numbering(const Vec2d* points, int count, const std::vector<HilbertK
 
 }  // namespace
 
-Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out, Vec2d cover_lo,
+Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation& out, Vec2d cover_lo,
                       Vec2d cover_hi, bool keep_hilbert_numbering) {
-    if (out == nullptr)
-        return Status::error(StatusCode::invalid_argument, "build_delaunay: out is null");
     Box data{};
     SHITSUKAN_TRY(check_points(points, count, &data));
-    out->input_count = count;
-    out->points.assign(points, points + count);
-    SHITSUKAN_TRY(add_frame(data, cover_lo, cover_hi, out));
+    out.input_count = count;
+    out.points.assign(points, points + count);
+    SHITSUKAN_TRY(add_frame(data, cover_lo, cover_hi, &out));
     const std::vector<HilbertKey> order = hilbert_order(points, count, data);
-    SHITSUKAN_TRY(insert_in_order(points, count, order, out));
-    finish_numbering(points, count, order, keep_hilbert_numbering, out);
+    SHITSUKAN_TRY(insert_in_order(points, count, order, &out));
+    finish_numbering(points, count, order, keep_hilbert_numbering, &out);
     return Status::success();
 }
 

@@ -4,7 +4,7 @@
 //   const Vec2d points[5] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.4, 0.6}};
 //   int n = 5;
 //   DelaunayTriangulation dt;
-//   Status s = build_delaunay(points, n, &dt);   // points: n finite Vec2d, n >= 1
+//   Status s = build_delaunay(points, n, dt);   // points: n finite Vec2d, n >= 1
 //   if (!s) return s;
 //   const DelaunayTriangle& t = dt.triangles[0];
 //   // t.v[0..2]  counter-clockwise point indices (indices >= n are the 4 frame points added
@@ -68,15 +68,15 @@ struct DelaunayTriangulation {
     std::vector<int> insertion_order;  // input indices in Hilbert order (spatially coherent)
 };
 
-Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out);
+Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation& out);
 // The same, with the frame also enclosing the box [cover_lo, cover_hi] (e.g. a clip region):
 // every point of that box is then nearer to some input point than to any frame point.
-Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out, Vec2d cover_lo,
+Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation& out, Vec2d cover_lo,
                       Vec2d cover_hi);
 // keep_hilbert_numbering = true: `points`, `triangles` and `point_triangle` use the Hilbert
 // numbering k (point k is input point insertion_order[k]; frame points stay n .. n + 3), which
 // keeps later walks over the triangulation cache-friendly; duplicate_of keeps input indices.
-Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation* out, Vec2d cover_lo,
+Status build_delaunay(const Vec2d* points, int count, DelaunayTriangulation& out, Vec2d cover_lo,
                       Vec2d cover_hi, bool keep_hilbert_numbering);
 
 }  // namespace shitsukan

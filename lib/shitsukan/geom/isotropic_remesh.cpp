@@ -27,7 +27,7 @@ Status check_input(const TriangleMesh& mesh, std::vector<int>* opposite) {
             return Status::error(StatusCode::invalid_argument,
                                  "mesh: vertex %zu is not finite (NaN or inf)", v);
     SHITSUKAN_TRY(halfedge_opposites(mesh.indices.data(), mesh.triangle_count(),
-                                     mesh.vertex_count(), opposite));
+                                     mesh.vertex_count(), *opposite));
     for (int t = 0; t < mesh.triangle_count(); ++t) {
         Vec3 a = mesh.positions[mesh.indices[3 * t]], b = mesh.positions[mesh.indices[3 * t + 1]],
              c = mesh.positions[mesh.indices[3 * t + 2]];
@@ -515,13 +515,13 @@ private:
 
 }  // namespace
 
-Status mesh_quality(const TriangleMesh& mesh, MeshQuality* out) {
+Status mesh_quality(const TriangleMesh& mesh, MeshQuality& out) {
     std::vector<int> opp;
     SHITSUKAN_TRY(check_input(mesh, &opp));
-    return measure(mesh, opp, out);
+    return measure(mesh, opp, &out);
 }
 
-Status isotropic_remesh(const IsotropicRemeshOptions& options, TriangleMesh* mesh,
+Status isotropic_remesh(const IsotropicRemeshOptions& options, TriangleMesh& mesh,
                         IsotropicRemeshStats* stats) {
     const float L = options.target_edge_length;
     if (!is_finite(L) || !(L > 0.0f))
@@ -544,13 +544,12 @@ Status isotropic_remesh(const IsotropicRemeshOptions& options, TriangleMesh* mes
     if (options.surface == nullptr)
         return Status::error(StatusCode::invalid_argument,
                              "remesh: no surface function to project onto");
-    if (mesh == nullptr) return Status::error(StatusCode::invalid_argument, "remesh: no mesh");
     std::vector<int> opp;
-    SHITSUKAN_TRY(check_input(*mesh, &opp));
+    SHITSUKAN_TRY(check_input(mesh, &opp));
     IsotropicRemeshStats local;
     IsotropicRemeshStats* s = stats ? stats : &local;
     *s = IsotropicRemeshStats{};
-    SHITSUKAN_TRY(measure(*mesh, opp, &s->before));
+    SHITSUKAN_TRY(measure(mesh, opp, &s->before));
     // An equilateral triangle of side L has area (√3/4) L²; a mesh has about twice as many
     // triangles as vertices.
     const double expected = s->before.area / (0.4330127 * double(L) * double(L)) * 0.5;
@@ -560,11 +559,11 @@ Status isotropic_remesh(const IsotropicRemeshOptions& options, TriangleMesh* mes
                              "(~%.0f bytes of work arrays)",
                              expected, s->before.area, double(L), kMaxRemeshVertices,
                              expected * 100.0);
-    Remesher remesher(options, mesh);
+    Remesher remesher(options, &mesh);
     SHITSUKAN_TRY(remesher.run(s));
-    remesher.write(mesh);
-    SHITSUKAN_TRY(check_input(*mesh, &opp));
-    return measure(*mesh, opp, &s->after);
+    remesher.write(&mesh);
+    SHITSUKAN_TRY(check_input(mesh, &opp));
+    return measure(mesh, opp, &s->after);
 }
 
 }  // namespace shitsukan

@@ -6,15 +6,15 @@
 //   MarchingTetrahedraOptions mt;
 //   mt.box_min = {-1.2f, -1.2f, -1.2f};  mt.box_max = {1.2f, 1.2f, 1.2f};  mt.spacing = 0.2f;
 //   TriangleMesh mesh;
-//   Status s = marching_tetrahedra(sphere, nullptr, mt, &mesh);  // or any closed mesh on f = 0
+//   Status s = marching_tetrahedra(sphere, nullptr, mt, mesh);  // or any closed mesh on f = 0
 //   IsotropicRemeshOptions opt;
 //   opt.target_edge_length = 0.1f;                         // L
 //   opt.surface = sphere;  opt.user = nullptr;             // f = 0 is the surface
 //   IsotropicRemeshStats stats;
-//   if (s) s = isotropic_remesh(opt, &mesh, &stats);       // mesh replaced in place
+//   if (s) s = isotropic_remesh(opt, mesh, &stats);       // mesh replaced in place
 //   // stats.after.edge_length_cv, stats.after.fraction_angle_above_25, ...
 //   MeshQuality q;
-//   if (s) s = mesh_quality(mesh, &q);                     // the same numbers for any mesh
+//   if (s) s = mesh_quality(mesh, q);                     // the same numbers for any mesh
 //   return s;
 //
 // hirota1998 §5.1 re-meshes a digitised branch with Shimada's bubble mesh so that the node
@@ -88,11 +88,11 @@ struct IsotropicRemeshStats {
     long splits = 0, collapses = 0, flips = 0;
 };
 
-Status isotropic_remesh(const IsotropicRemeshOptions& options, TriangleMesh* mesh,
+Status isotropic_remesh(const IsotropicRemeshOptions& options, TriangleMesh& mesh,
                         IsotropicRemeshStats* stats = nullptr);
 
 // Edge lengths, angles and counts of any manifold mesh (the same checks as the remesher's
 // input: a Status for NaN, degenerate or non-manifold triangles).
-Status mesh_quality(const TriangleMesh& mesh, MeshQuality* out);
+Status mesh_quality(const TriangleMesh& mesh, MeshQuality& out);
 
 }  // namespace shitsukan

@@ -207,7 +207,7 @@ struct CubePolygoniser {
 }  // namespace
 
 Status marching_tetrahedra(ImplicitFunction f, const void* user,
-                           const MarchingTetrahedraOptions& options, TriangleMesh* out,
+                           const MarchingTetrahedraOptions& options, TriangleMesh& out,
                            MarchingTetrahedraStats* stats) {
     if (f == nullptr) return Status::error(StatusCode::invalid_argument, "marching: no function");
     MarchingGrid g;
@@ -267,7 +267,7 @@ Status marching_tetrahedra(ImplicitFunction f, const void* user,
         stats->cell = Vec3{float(g.cell[0]), float(g.cell[1]), float(g.cell[2])};
         stats->evaluations = evaluations;
     }
-    *out = std::move(mesh);
+    out = std::move(mesh);
     return Status::success();
 }
 

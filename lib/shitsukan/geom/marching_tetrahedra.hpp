@@ -6,10 +6,10 @@
 //   opt.box_min = {-1.2f, -1.2f, -1.2f};  opt.box_max = {1.2f, 1.2f, 1.2f};
 //   opt.spacing = 0.05f;
 //   TriangleMesh mesh;
-//   Status s = marching_tetrahedra(sphere, opt, &mesh);            // closed, outward, manifold
+//   Status s = marching_tetrahedra(sphere, opt, mesh);            // closed, outward, manifold
 //   // A trunk: opt.cut_z_min = opt.cut_z_max = true leaves it open at z = box_min.z and
 //   // z = box_max.z (cut, not capped); its rims lie exactly on those planes.
-//   // A plain function pointer works too: marching_tetrahedra(&f, user_pointer, opt, &mesh).
+//   // A plain function pointer works too: marching_tetrahedra(&f, user_pointer, opt, mesh).
 //   return s;
 //
 // Algorithm
@@ -69,12 +69,12 @@ struct MarchingTetrahedraStats {
 };
 
 Status marching_tetrahedra(ImplicitFunction f, const void* user,
-                           const MarchingTetrahedraOptions& options, TriangleMesh* out,
+                           const MarchingTetrahedraOptions& options, TriangleMesh& out,
                            MarchingTetrahedraStats* stats = nullptr);
 
 // Convenience for lambdas and functors taking (Vec3) and returning float.
 template <class F, class = decltype(float(std::declval<const F&>()(Vec3{})))>
-Status marching_tetrahedra(const F& f, const MarchingTetrahedraOptions& options, TriangleMesh* out,
+Status marching_tetrahedra(const F& f, const MarchingTetrahedraOptions& options, TriangleMesh& out,
                            MarchingTetrahedraStats* stats = nullptr) {
     return marching_tetrahedra(
         [](Vec3 p, const void* u) -> float { return float((*static_cast<const F*>(u))(p)); }, &f,

@@ -8,7 +8,7 @@
 //   mesh.add_triangle(a, b, c);                  // counter-clockwise = front
 //   // mesh.colors is optional: empty, or one colour per vertex.
 //   MeshView view = mesh.view();                 // what the rasterizer reads (mesh_view.hpp)
-//   // append(&dst, src, transform) merges meshes (mesh_builders.hpp)
+//   // append(dst, src, transform) merges meshes (mesh_builders.hpp)
 // Builders (box, sphere, torus, revolution, extrusion, cut faces) are in
 // geom/mesh_builders.hpp; OBJ export in geom/obj.hpp.
 #pragma once

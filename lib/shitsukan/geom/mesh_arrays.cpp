@@ -10,10 +10,10 @@ namespace shitsukan {
 
 Status make_box_arrays(Vec3 lo, Vec3 hi, Vec3* positions, Vec3* normals, Vec2* uvs,
                        int vertex_capacity, std::uint32_t* indices, int index_capacity,
-                       MeshView* out) {
-    if (!out || !positions || !normals || !indices)
+                       MeshView& out) {
+    if (!positions || !normals || !indices)
         return Status::error(StatusCode::invalid_argument,
-                             "make_box_arrays: null positions, normals, indices or output");
+                             "make_box_arrays: null positions, normals or indices");
     if (!is_finite(lo) || !is_finite(hi) || !(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
         return Status::error(StatusCode::invalid_argument,
                              "make_box: need finite corners with min < max on every axis "
@@ -68,7 +68,7 @@ Status make_box_arrays(Vec3 lo, Vec3 hi, Vec3* positions, Vec3* normals, Vec2* u
     v.vertex_count = nv;
     v.indices = indices;
     v.triangle_count = ni / 3;
-    *out = v;
+    out = v;
     return Status::success();
 }
 
@@ -121,10 +121,10 @@ struct ArrayMesh {
 };
 
 Status check_arrays(const char* what, const Vec3* positions, const Vec3* normals,
-                    const std::uint32_t* indices, const MeshView* out) {
-    if (!out || !positions || !normals || !indices)
+                    const std::uint32_t* indices) {
+    if (!positions || !normals || !indices)
         return Status::error(StatusCode::invalid_argument,
-                             "%s: null positions, normals, indices or output", what);
+                             "%s: null positions, normals or indices", what);
     return Status::success();
 }
 
@@ -271,7 +271,7 @@ void revolve(const Profile& p, int segments, double total, ArrayMesh& m) {
 Status revolution_arrays(const char* what, const Profile& p, int segments, Vec3* positions,
                          Vec3* normals, Vec2* uvs, int vertex_capacity, std::uint32_t* indices,
                          int index_capacity, MeshView* out) {
-    SHITSUKAN_TRY(check_arrays(what, positions, normals, indices, out));
+    SHITSUKAN_TRY(check_arrays(what, positions, normals, indices));
     double total = 0.0;
     SHITSUKAN_TRY(check_profile(p, segments, &total));
     SHITSUKAN_TRY(
@@ -294,14 +294,14 @@ MeshSizes revolution_sizes(const Vec2d* profile, int count, int segments) {
 
 Status make_revolution_arrays(const Vec2d* profile, int count, int segments, Vec3* positions,
                               Vec3* normals, Vec2* uvs, int vertex_capacity, std::uint32_t* indices,
-                              int index_capacity, MeshView* out) {
+                              int index_capacity, MeshView& out) {
     if (!profile)
         return Status::error(StatusCode::invalid_argument, "make_revolution_arrays: null profile");
     Profile p;
     p.points = profile;
     p.count = count;
     return revolution_arrays("make_revolution_arrays", p, segments, positions, normals, uvs,
-                             vertex_capacity, indices, index_capacity, out);
+                             vertex_capacity, indices, index_capacity, &out);
 }
 
 MeshSizes torus_sizes(int major_segments, int minor_segments) {
@@ -318,7 +318,7 @@ MeshSizes torus_sizes(int major_segments, int minor_segments) {
 Status make_torus_arrays(float major_radius, float minor_radius, int major_segments,
                          int minor_segments, Vec3* positions, Vec3* normals, Vec2* uvs,
                          int vertex_capacity, std::uint32_t* indices, int index_capacity,
-                         MeshView* out) {
+                         MeshView& out) {
     if (!(major_radius > 0.0f) || !is_finite(major_radius) || !(minor_radius > 0.0f) ||
         !is_finite(minor_radius) || !(minor_radius < major_radius))
         return Status::error(StatusCode::invalid_argument,
@@ -334,7 +334,7 @@ Status make_torus_arrays(float major_radius, float minor_radius, int major_segme
     p.minor = minor_radius;
     p.count = minor_segments + 1;
     return revolution_arrays("make_torus_arrays", p, major_segments, positions, normals, uvs,
-                             vertex_capacity, indices, index_capacity, out);
+                             vertex_capacity, indices, index_capacity, &out);
 }
 
 MeshSizes cylinder_sizes(int slices, bool caps) {
@@ -344,7 +344,7 @@ MeshSizes cylinder_sizes(int slices, bool caps) {
 
 Status make_cylinder_arrays(float radius, float y0, float y1, int slices, bool caps,
                             Vec3* positions, Vec3* normals, Vec2* uvs, int vertex_capacity,
-                            std::uint32_t* indices, int index_capacity, MeshView* out) {
+                            std::uint32_t* indices, int index_capacity, MeshView& out) {
     if (!(radius > 0.0f) || !is_finite(radius) || !is_finite(y0) || !is_finite(y1) || !(y0 < y1))
         return Status::error(StatusCode::invalid_argument,
                              "make_cylinder: need a finite radius > 0 and finite y0 < y1 (got "
@@ -355,7 +355,7 @@ Status make_cylinder_arrays(float radius, float y0, float y1, int slices, bool c
     p.points = caps ? profile : profile + 1;
     p.count = caps ? 4 : 2;
     return revolution_arrays("make_cylinder_arrays", p, slices, positions, normals, uvs,
-                             vertex_capacity, indices, index_capacity, out);
+                             vertex_capacity, indices, index_capacity, &out);
 }
 
 MeshSizes uv_sphere_sizes(int slices, int stacks) {
@@ -366,8 +366,8 @@ MeshSizes uv_sphere_sizes(int slices, int stacks) {
 
 Status make_uv_sphere_arrays(float radius, int slices, int stacks, Vec3* positions, Vec3* normals,
                              Vec2* uvs, int vertex_capacity, std::uint32_t* indices,
-                             int index_capacity, MeshView* out) {
-    SHITSUKAN_TRY(check_arrays("make_uv_sphere_arrays", positions, normals, indices, out));
+                             int index_capacity, MeshView& out) {
+    SHITSUKAN_TRY(check_arrays("make_uv_sphere_arrays", positions, normals, indices));
     if (!(radius > 0.0f) || !is_finite(radius))
         return Status::error(StatusCode::invalid_argument,
                              "make_uv_sphere: radius must be finite and > 0 (got %g)",
@@ -401,7 +401,7 @@ Status make_uv_sphere_arrays(float radius, int slices, int stacks, Vec3* positio
             m.add_oriented(a, c, d, mid);
             m.add_oriented(a, d, b, mid);
         }
-    m.view(out);
+    m.view(&out);
     return Status::success();
 }
 

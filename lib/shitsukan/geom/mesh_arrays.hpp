@@ -6,7 +6,7 @@
 //   std::uint32_t idx[3 * kBoxTriangleCount];
 //   MeshView box;
 //   Status s = make_box_arrays({-1, -1, -1}, {1, 1, 1}, pos, nrm, uv, kBoxVertexCount, idx,
-//                              3 * kBoxTriangleCount, &box);
+//                              3 * kBoxTriangleCount, box);
 //   // box now points into pos/nrm/uv/idx: draw it with draw_mesh (raster/rasterizer.hpp)
 //   return s;
 //
@@ -18,7 +18,7 @@
 // arrays or output (invalid_argument). uvs may be null (then out->uvs is null).
 //
 //   MeshSizes need = uv_sphere_sizes(32, 16);        // vertices, and indices at most
-//   make_uv_sphere_arrays(1.0f, 32, 16, pos, nrm, uv, vcap, idx, icap, &view);
+//   make_uv_sphere_arrays(1.0f, 32, 16, pos, nrm, uv, vcap, idx, icap, view);
 //   make_cylinder_arrays(0.5f, 0.0f, 2.0f, 48, true, ...);   cylinder_sizes(48, true)
 //   make_torus_arrays(1.0f, 0.35f, 64, 32, ...);               torus_sizes(64, 32)
 //   make_revolution_arrays(profile, n, 96, ...);               revolution_sizes(profile, n, 96)
@@ -52,27 +52,27 @@ struct MeshSizes {
 
 Status make_box_arrays(Vec3 min_corner, Vec3 max_corner, Vec3* positions, Vec3* normals, Vec2* uvs,
                        int vertex_capacity, std::uint32_t* indices, int index_capacity,
-                       MeshView* out);
+                       MeshView& out);
 
 MeshSizes uv_sphere_sizes(int slices, int stacks);
 Status make_uv_sphere_arrays(float radius, int slices, int stacks, Vec3* positions, Vec3* normals,
                              Vec2* uvs, int vertex_capacity, std::uint32_t* indices,
-                             int index_capacity, MeshView* out);
+                             int index_capacity, MeshView& out);
 
 MeshSizes cylinder_sizes(int slices, bool caps);
 Status make_cylinder_arrays(float radius, float y0, float y1, int slices, bool caps,
                             Vec3* positions, Vec3* normals, Vec2* uvs, int vertex_capacity,
-                            std::uint32_t* indices, int index_capacity, MeshView* out);
+                            std::uint32_t* indices, int index_capacity, MeshView& out);
 
 MeshSizes torus_sizes(int major_segments, int minor_segments);
 Status make_torus_arrays(float major_radius, float minor_radius, int major_segments,
                          int minor_segments, Vec3* positions, Vec3* normals, Vec2* uvs,
                          int vertex_capacity, std::uint32_t* indices, int index_capacity,
-                         MeshView* out);
+                         MeshView& out);
 
 MeshSizes revolution_sizes(const Vec2d* profile, int count, int segments);
 Status make_revolution_arrays(const Vec2d* profile, int count, int segments, Vec3* positions,
                               Vec3* normals, Vec2* uvs, int vertex_capacity,
-                              std::uint32_t* indices, int index_capacity, MeshView* out);
+                              std::uint32_t* indices, int index_capacity, MeshView& out);
 
 }  // namespace shitsukan

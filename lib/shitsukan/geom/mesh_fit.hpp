@@ -2,8 +2,8 @@
 // textures (solid/object_mapping.hpp) and cameras can assume [-extent, extent]^3.
 //
 // Manual
-//   TriangleMesh mesh;  Status s = make_torus(0.64f, 0.28f, 96, 48, &mesh);  // or your own
-//   if (s) s = fit_mesh_to_cube(&mesh, 0.92f);   // longest side 2·0.92, centred at the origin
+//   TriangleMesh mesh;  Status s = make_torus(0.64f, 0.28f, 96, 48, mesh);  // or your own
+//   if (s) s = fit_mesh_to_cube(mesh, 0.92f);   // longest side 2·0.92, centred at the origin
 //   return s;
 //   #include "shitsukan/geom/mesh_builders.hpp"
 //
@@ -19,6 +19,6 @@
 
 namespace shitsukan {
 
-Status fit_mesh_to_cube(TriangleMesh* mesh, float extent = 1.0f);
+Status fit_mesh_to_cube(TriangleMesh& mesh, float extent = 1.0f);
 
 }  // namespace shitsukan

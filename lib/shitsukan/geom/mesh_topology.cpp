@@ -11,7 +11,7 @@ inline int prev_halfedge(int h) { return h % 3 == 0 ? h + 2 : h - 1; }
 }  // namespace
 
 Status halfedge_opposites(const std::uint32_t* indices, int triangles, int vertex_count,
-                          std::vector<int>* opposite) {
+                          std::vector<int>& opposite) {
     if (triangles < 0 || vertex_count < 0 || (triangles > 0 && indices == nullptr))
         return Status::error(StatusCode::invalid_argument,
                              "mesh: %d triangles, %d vertices, indices %s", triangles, vertex_count,
@@ -38,8 +38,8 @@ Status halfedge_opposites(const std::uint32_t* indices, int triangles, int verte
     for (int h = 0; h < halfedges; ++h) out[std::size_t(fill[indices[h]]++)] = h;
 
     auto target = [&](int h) { return indices[next_halfedge(h)]; };
-    opposite->assign(std::size_t(halfedges), -1);
-    std::vector<int>& opp = *opposite;
+    opposite.assign(std::size_t(halfedges), -1);
+    std::vector<int>& opp = opposite;
     for (int h = 0; h < halfedges; ++h) {
         const std::uint32_t a = indices[h], b = target(h);
         int twin = -1;
@@ -95,34 +95,34 @@ Status halfedge_opposites(const std::uint32_t* indices, int triangles, int verte
     return Status::success();
 }
 
-Status mesh_topology(const TriangleMesh& mesh, MeshTopology* out) {
-    *out = MeshTopology{};
+Status mesh_topology(const TriangleMesh& mesh, MeshTopology& out) {
+    out = MeshTopology{};
     const int triangles = mesh.triangle_count(), n = mesh.vertex_count();
-    out->triangles = triangles;
+    out.triangles = triangles;
     if (mesh.indices.size() % 3 != 0)
         return Status::error(StatusCode::invalid_argument,
                              "mesh: %zu indices is not a multiple of 3", mesh.indices.size());
     std::vector<char> used(std::size_t(n), 0);
     for (std::uint32_t i : mesh.indices)
         if (i < std::uint32_t(n)) used[i] = 1;
-    for (char u : used) out->vertices += u;
-    out->unreferenced = n - out->vertices;
+    for (char u : used) out.vertices += u;
+    out.unreferenced = n - out.vertices;
     std::vector<int> opp;
-    SHITSUKAN_TRY(halfedge_opposites(mesh.indices.data(), triangles, n, &opp));
+    SHITSUKAN_TRY(halfedge_opposites(mesh.indices.data(), triangles, n, opp));
     int interior_halfedges = 0;
     for (int o : opp) {
         if (o < 0)
-            ++out->boundary_edges;
+            ++out.boundary_edges;
         else
             ++interior_halfedges;
     }
-    out->edges = out->boundary_edges + interior_halfedges / 2;
+    out.edges = out.boundary_edges + interior_halfedges / 2;
     // Boundary loops: follow boundary half-edges a -> b, then the boundary half-edge leaving b
     // (unique on a manifold: the rotation around b ends there).
     std::vector<char> seen(opp.size(), 0);
     for (std::size_t h0 = 0; h0 < opp.size(); ++h0) {
         if (opp[h0] >= 0 || seen[h0]) continue;
-        ++out->boundary_loops;
+        ++out.boundary_loops;
         int h = int(h0);
         while (!seen[std::size_t(h)]) {
             seen[std::size_t(h)] = 1;
@@ -132,8 +132,8 @@ Status mesh_topology(const TriangleMesh& mesh, MeshTopology* out) {
             h = g;
         }
     }
-    out->euler_characteristic = out->vertices - out->edges + out->triangles;
-    out->manifold = true;
+    out.euler_characteristic = out.vertices - out.edges + out.triangles;
+    out.manifold = true;
     return Status::success();
 }
 

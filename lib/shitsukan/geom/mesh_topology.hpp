@@ -2,16 +2,16 @@
 //
 // Manual
 //   TriangleMesh mesh;
-//   Status s = make_cylinder(0.5f, 0.0f, 1.0f, 16, false, &mesh);  // an open tube
+//   Status s = make_cylinder(0.5f, 0.0f, 1.0f, 16, false, mesh);  // an open tube
 //   MeshTopology topo;
-//   if (s) s = mesh_topology(mesh, &topo);       // counts; s explains the first problem found
+//   if (s) s = mesh_topology(mesh, topo);       // counts; s explains the first problem found
 //   bool tube = s && topo.boundary_loops == 2 && topo.euler_characteristic == 0;
 //   return s;
 //   #include "shitsukan/geom/mesh_builders.hpp"
 //
 //   std::vector<int> opposite;                   // the half-edge twins of a manifold mesh
 //   Status s = halfedge_opposites(mesh.indices.data(), mesh.triangle_count(),
-//                                 mesh.vertex_count(), &opposite);
+//                                 mesh.vertex_count(), opposite);
 //   // half-edge h = 3·t + k runs from indices[h] to indices[3·t + (k + 1) % 3];
 //   // opposite[h] is the half-edge running the other way, or -1 on a boundary.
 //
@@ -50,10 +50,10 @@ struct MeshTopology {
 
 // Twins of every half-edge (see the manual). On success opposite->size() == 3·triangles.
 Status halfedge_opposites(const std::uint32_t* indices, int triangles, int vertex_count,
-                          std::vector<int>* opposite);
+                          std::vector<int>& opposite);
 
 // Fills *out (manifold = true) or returns the first problem (out->manifold = false and the
 // plain counts V, F are still filled in).
-Status mesh_topology(const TriangleMesh& mesh, MeshTopology* out);
+Status mesh_topology(const TriangleMesh& mesh, MeshTopology& out);
 
 }  // namespace shitsukan

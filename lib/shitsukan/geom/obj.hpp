@@ -2,7 +2,7 @@
 //
 // Manual
 //   TriangleMesh mesh;
-//   Status s = make_uv_sphere(1.0f, 16, 8, &mesh);
+//   Status s = make_uv_sphere(1.0f, 16, 8, mesh);
 //   if (s) s = write_obj("pot.obj", mesh);   // v (with "r g b" when the mesh has colours,
 //                                            // the common vertex-colour extension), vt, vn, f
 //   return s;

@@ -223,7 +223,7 @@ Status assemble(Reader& r, TriangleMesh* out) {
     }
     if (!r.any_t) m.uvs.clear();
     if (!r.any_n) {
-        Status s = compute_vertex_normals(&m);
+        Status s = compute_vertex_normals(m);
         if (!s)
             return Status::error(s.code(), "%s: computing normals: %s", r.name, s.message());
     }
@@ -233,9 +233,7 @@ Status assemble(Reader& r, TriangleMesh* out) {
 
 }  // namespace
 
-Status read_obj_text(const char* text, std::size_t length, const char* name, TriangleMesh* out) {
-    if (out == nullptr)
-        return Status::error(StatusCode::invalid_argument, "read_obj: out must not be null");
+Status read_obj_text(const char* text, std::size_t length, const char* name, TriangleMesh& out) {
     if (text == nullptr && length > 0)
         return Status::error(StatusCode::invalid_argument, "read_obj: null text");
     Reader r;
@@ -266,10 +264,10 @@ Status read_obj_text(const char* text, std::size_t length, const char* name, Tri
         SHITSUKAN_TRY(parse_line(r, &line[0]));
         i = j + 1;
     }
-    return assemble(r, out);
+    return assemble(r, &out);
 }
 
-Status read_obj(const char* path, TriangleMesh* out) {
+Status read_obj(const char* path, TriangleMesh& out) {
     if (path == nullptr || !path[0])
         return Status::error(StatusCode::invalid_argument, "read_obj: empty path");
     std::FILE* f = std::fopen(path, "rb");

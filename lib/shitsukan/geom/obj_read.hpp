@@ -4,9 +4,9 @@
 // Manual
 //   const char text[] = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 //   TriangleMesh mesh;
-//   Status s = read_obj_text(text, sizeof text - 1, "inline", &mesh);  // from memory
+//   Status s = read_obj_text(text, sizeof text - 1, "inline", mesh);  // from memory
 //   if (s) s = write_obj("teapot.obj", mesh);                          // (obj.hpp)
-//   if (s) s = read_obj("teapot.obj", &mesh);     // error: "teapot.obj:12: ..." (line number)
+//   if (s) s = read_obj("teapot.obj", mesh);     // error: "teapot.obj:12: ..." (line number)
 //   return s;
 //   #include "shitsukan/geom/obj.hpp"
 //
@@ -38,8 +38,8 @@ namespace shitsukan {
 constexpr std::size_t kObjMaxLine = 1u << 16;      // 64 KiB per line
 constexpr std::size_t kObjMaxElements = 1u << 26;  // 67 M vertices / corners
 
-Status read_obj(const char* path, TriangleMesh* out);
+Status read_obj(const char* path, TriangleMesh& out);
 // `name` is used in the messages in place of a path.
-Status read_obj_text(const char* text, std::size_t length, const char* name, TriangleMesh* out);
+Status read_obj_text(const char* text, std::size_t length, const char* name, TriangleMesh& out);
 
 }  // namespace shitsukan

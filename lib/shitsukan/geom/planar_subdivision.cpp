@@ -32,8 +32,8 @@ PointKey key_of(Vec2d p) {
 }  // namespace
 
 Status build_planar_subdivision(const Vec2d* vertices, const int* offsets, int polygon_count,
-                                PlanarSubdivision* out) {
-    if (out == nullptr || offsets == nullptr || polygon_count < 0)
+                                PlanarSubdivision& out) {
+    if (offsets == nullptr || polygon_count < 0)
         return Status::error(StatusCode::invalid_argument,
                              "build_planar_subdivision: bad arguments");
     if (polygon_count > 0 && vertices == nullptr)
@@ -47,10 +47,10 @@ Status build_planar_subdivision(const Vec2d* vertices, const int* offsets, int p
         polygon_count > 0 ? std::uint64_t(std::int64_t(offsets[polygon_count]) - offsets[0]) : 0;
     SHITSUKAN_TRY(check_memory_budget(budget_mul(vertex_refs, kPlanarSubdivisionBytesPerVertex),
                                       "build_planar_subdivision: the vertex and edge tables"));
-    out->vertices.clear();
-    out->edges.clear();
-    out->face_offsets.assign(1, 0);
-    out->face_edges.clear();
+    out.vertices.clear();
+    out.edges.clear();
+    out.face_offsets.assign(1, 0);
+    out.face_edges.clear();
     std::unordered_map<PointKey, int, PointKeyHash> vertex_id;
     std::unordered_map<std::uint64_t, int> edge_id;  // (min vertex, max vertex) -> edge
     for (int f = 0; f < polygon_count; ++f) {
@@ -68,8 +68,8 @@ Status build_planar_subdivision(const Vec2d* vertices, const int* offsets, int p
                         StatusCode::invalid_argument,
                         "build_planar_subdivision: polygon %d vertex %d is not finite", f,
                         i - begin);
-                auto ins = vertex_id.emplace(key_of(vertices[i]), int(out->vertices.size()));
-                if (ins.second) out->vertices.push_back(vertices[i]);
+                auto ins = vertex_id.emplace(key_of(vertices[i]), int(out.vertices.size()));
+                if (ins.second) out.vertices.push_back(vertices[i]);
                 id = ins.first->second;
             } else {
                 id = first;
@@ -82,24 +82,24 @@ Status build_planar_subdivision(const Vec2d* vertices, const int* offsets, int p
                                          f);
                 int lo = prev < id ? prev : id, hi = prev < id ? id : prev;
                 std::uint64_t key = (std::uint64_t(std::uint32_t(lo)) << 32) | std::uint32_t(hi);
-                auto ins = edge_id.emplace(key, int(out->edges.size()));
+                auto ins = edge_id.emplace(key, int(out.edges.size()));
                 if (ins.second) {
-                    out->edges.push_back({prev, id, f, -1});
-                    out->face_edges.push_back(ins.first->second);
+                    out.edges.push_back({prev, id, f, -1});
+                    out.face_edges.push_back(ins.first->second);
                 } else {
-                    PlanarSubdivision::Edge& e = out->edges[std::size_t(ins.first->second)];
+                    PlanarSubdivision::Edge& e = out.edges[std::size_t(ins.first->second)];
                     if (e.v0 == prev || e.right >= 0)
                         return Status::error(
                             StatusCode::invalid_argument,
                             "build_planar_subdivision: polygons %d and %d overlap along an edge",
                             e.left, f);
                     e.right = f;
-                    out->face_edges.push_back(~ins.first->second);
+                    out.face_edges.push_back(~ins.first->second);
                 }
             }
             prev = id;
         }
-        out->face_offsets.push_back(int(out->face_edges.size()));
+        out.face_offsets.push_back(int(out.face_edges.size()));
     }
     return Status::success();
 }

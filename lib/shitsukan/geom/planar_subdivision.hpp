@@ -7,7 +7,7 @@
 //   const int offsets[3] = {0, 4, 8};   // polygon f = vertices[offsets[f] .. offsets[f + 1])
 //   int polygon_count = 2;
 //   PlanarSubdivision sub;
-//   Status s = build_planar_subdivision(vertices, offsets, polygon_count, &sub);
+//   Status s = build_planar_subdivision(vertices, offsets, polygon_count, sub);
 //   if (!s) return s;
 //   for (const auto& e : sub.edges) {      // e.v0 -> e.v1 runs counter-clockwise around e.left;
 //       int beyond = e.right;              // e.right is the polygon beyond it, -1 outside
@@ -61,7 +61,7 @@ struct PlanarSubdivision {
 
 // Polygons: offsets has polygon_count + 1 entries; each polygon >= 3 distinct vertices, CCW.
 Status build_planar_subdivision(const Vec2d* vertices, const int* offsets, int polygon_count,
-                                PlanarSubdivision* out);
+                                PlanarSubdivision& out);
 
 // The outer boundary edges of a subdivision that tiles the axis-parallel box [lo, hi] all lie
 // on the box: a check used by the tests and the leather pipeline.

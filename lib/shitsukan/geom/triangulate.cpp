@@ -264,19 +264,17 @@ Status clip_ears(Loop v, Vertices pt, std::vector<std::uint32_t>* triangles) {
 
 }  // namespace
 
-Status triangulate_polygon(const std::vector<std::vector<Vec2>>& rings, std::vector<Vec2>* points,
-                           std::vector<std::uint32_t>* triangles) {
-    if (!points || !triangles)
-        return Status::error(StatusCode::invalid_argument, "triangulate_polygon: null output");
-    points->clear();
-    triangles->clear();
+Status triangulate_polygon(const std::vector<std::vector<Vec2>>& rings, std::vector<Vec2>& points,
+                           std::vector<std::uint32_t>& triangles) {
+    points.clear();
+    triangles.clear();
     SHITSUKAN_TRY(check_rings(rings));
     SHITSUKAN_TRY(check_holes(rings));
-    const std::vector<Loop> loops = vertex_table(rings, points);
-    const Vertices pt{*points};
+    const std::vector<Loop> loops = vertex_table(rings, &points);
+    const Vertices pt{points};
     Loop poly;
     SHITSUKAN_TRY(bridge_holes(loops, pt, &poly));
-    return clip_ears(std::move(poly), pt, triangles);
+    return clip_ears(std::move(poly), pt, &triangles);
 }
 
 }  // namespace shitsukan

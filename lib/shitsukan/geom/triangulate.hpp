@@ -5,7 +5,7 @@
 //   std::vector<Vec2> hole1 = {{1, 1}, {1, 2}, {2, 2}, {2, 1}};
 //   std::vector<std::vector<Vec2>> rings = {outer, hole1};   // any orientation
 //   std::vector<Vec2> points; std::vector<uint32_t> tris;
-//   Status s = triangulate_polygon(rings, &points, &tris);
+//   Status s = triangulate_polygon(rings, points, tris);
 //   // points: every ring vertex once (outer first, then holes in the given order)
 //   // tris: counter-clockwise triangles (3 indices each) covering outer minus holes
 //   return s;
@@ -30,8 +30,8 @@ namespace shitsukan {
 // copies while holes are bridged 16 B, hole order 8 B, triangles 12 B = 44 B, rounded up).
 constexpr std::uint64_t kTriangulateBytesPerVertex = 64;
 
-Status triangulate_polygon(const std::vector<std::vector<Vec2>>& rings, std::vector<Vec2>* points,
-                           std::vector<std::uint32_t>* triangles);
+Status triangulate_polygon(const std::vector<std::vector<Vec2>>& rings, std::vector<Vec2>& points,
+                           std::vector<std::uint32_t>& triangles);
 
 // Twice the signed area (positive = counter-clockwise), shoelace formula, in double.
 double signed_area2(const std::vector<Vec2>& ring);

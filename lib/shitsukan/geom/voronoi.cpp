@@ -204,7 +204,7 @@ Status triangulate_sites(const Vec2d* sites, int count, const Vec2d* region, int
         lo = {std::min(lo.x, region[i].x), std::min(lo.y, region[i].y)};
         hi = {std::max(hi.x, region[i].x), std::max(hi.y, region[i].y)};
     }
-    return build_delaunay(sites, count, dt, lo, hi, true);  // Hilbert numbering
+    return build_delaunay(sites, count, *dt, lo, hi, true);  // Hilbert numbering
 }
 
 // Step 3, union of cocircular triangles: triangles that share a circumcircle (exact incircle
@@ -502,8 +502,8 @@ void cells_in_input_order(const DelaunayTriangulation& dt, const std::vector<Vec
 }  // namespace
 
 Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int region_count,
-                     VoronoiCells* out) {
-    SHITSUKAN_TRY(check_voronoi_arguments(sites, count, region, region_count, out));
+                     VoronoiCells& out) {
+    SHITSUKAN_TRY(check_voronoi_arguments(sites, count, region, region_count, &out));
     DelaunayTriangulation dt;
     SHITSUKAN_TRY(triangulate_sites(sites, count, region, region_count, &dt));
     bool any_merged = false;
@@ -513,7 +513,7 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
     const double snap = clip_snap_distance(region, region_count);
     std::vector<unsigned char> inside = centres_inside(dt, root, centre, region, region_count, snap);
     ClippedCells clipped;
-    clip_cells(dt, root, centre, inside, region, region_count, snap, &clipped, out);
+    clip_cells(dt, root, centre, inside, region, region_count, snap, &clipped, &out);
     // the triangulation is walked no more: freed before the result is allocated (the peak
     // working set is the larger of the two halves, not their sum)
     std::vector<DelaunayTriangle>().swap(dt.triangles);
@@ -521,7 +521,7 @@ Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int reg
     std::vector<int>().swap(dt.point_triangle);
     std::vector<int>().swap(root);
     std::vector<unsigned char>().swap(inside);
-    cells_in_input_order(dt, centre, clipped, out);
+    cells_in_input_order(dt, centre, clipped, &out);
     return Status::success();
 }
 

@@ -6,7 +6,7 @@
 //   const Vec2d sites[3] = {{0.2, 0.3}, {0.7, 0.2}, {0.5, 0.8}};
 //   int n = 3;
 //   VoronoiCells cells;
-//   Status s = voronoi_cells(sites, n, square, 4, &cells);
+//   Status s = voronoi_cells(sites, n, square, 4, cells);
 //   if (!s) return s;
 //   for (int i = 0; i < n; ++i) {                  // cell i belongs to sites[i]
 //       int k; const Vec2d* v = cells.cell(i, &k);   // k == 0: empty (see below)
@@ -78,6 +78,6 @@ struct VoronoiCells {
 // sites: count >= 1 finite points. region: a convex counter-clockwise polygon, area > 0
 // (check_convex_region, exact). Sites and region coordinates: 0 or magnitude in [1e-50, 1e50].
 Status voronoi_cells(const Vec2d* sites, int count, const Vec2d* region, int region_count,
-                     VoronoiCells* out);
+                     VoronoiCells& out);
 
 }  // namespace shitsukan

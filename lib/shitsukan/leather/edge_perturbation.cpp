@@ -442,10 +442,8 @@ void start_pattern(ScalePattern* p, float width, float height) {
 }  // namespace
 
 Status perturb_subdivision(const PlanarSubdivision& sub, const PerturbationParams& prm,
-                           std::uint32_t seed, float width, float height, ScalePattern* out,
+                           std::uint32_t seed, float width, float height, ScalePattern& out,
                            PerturbationReport* report) {
-    if (out == nullptr)
-        return Status::error(StatusCode::invalid_argument, "perturb_subdivision: out is null");
     SHITSUKAN_TRY(check_params(prm));
     if (!(width > 0.0f && height > 0.0f) || !is_finite(width) || !is_finite(height))
         return Status::error(StatusCode::invalid_argument,
@@ -456,15 +454,15 @@ Status perturb_subdivision(const PlanarSubdivision& sub, const PerturbationParam
     fan_centres(curves);
     bend_interior_edges(curves);                     // 1. the curves, fitted to their fans
     SHITSUKAN_TRY(shrink_until_star_shaped(curves));  // 2. every polygon star-shaped
-    start_pattern(out, width, height);
+    start_pattern(&out, width, height);
     for (int f_id = 0; f_id < sub.face_count(); ++f_id)
-        append_polygon(out, curves.polys[std::size_t(f_id)]);
+        append_polygon(&out, curves.polys[std::size_t(f_id)]);
     if (report) *report = subdivision_report(curves);
     return Status::success();
 }
 
 Status subdivision_to_pattern(const PlanarSubdivision& sub, float width, float height,
-                              ScalePattern* out) {
+                              ScalePattern& out) {
     PerturbationParams none;
     none.p = 0.0f;
     return perturb_subdivision(sub, none, 0, width, height, out, nullptr);
@@ -828,10 +826,8 @@ PerturbationReport two_stage_report(const TwoStageCurves& c) {
 
 Status perturb_two_stage(const PlanarSubdivision& s1, const PlanarSubdivision& cells,
                          const std::vector<int>& cell_stage1, const PerturbationParams& prm,
-                         std::uint32_t seed, float width, float height, ScalePattern* stage1_out,
-                         ScalePattern* out, PerturbationReport* report) {
-    if (out == nullptr || stage1_out == nullptr)
-        return Status::error(StatusCode::invalid_argument, "perturb_two_stage: out is null");
+                         std::uint32_t seed, float width, float height, ScalePattern& stage1_out,
+                         ScalePattern& out, PerturbationReport* report) {
     SHITSUKAN_TRY(check_params(prm));
     if (!(width > 0.0f && height > 0.0f) || !is_finite(width) || !is_finite(height))
         return Status::error(StatusCode::invalid_argument,
@@ -848,10 +844,10 @@ Status perturb_two_stage(const PlanarSubdivision& s1, const PlanarSubdivision& c
     bend_stage2_edges(c);                  // fig. 7: the stage-2 curves
     collect_touched_faces(c);
     SHITSUKAN_TRY(shrink_until_tiling(c));  // both levels star-shaped, sharing every edge
-    start_pattern(stage1_out, width, height);
-    start_pattern(out, width, height);
-    for (int f = 0; f < c.f1; ++f) append_polygon(stage1_out, c.polys[std::size_t(f)]);
-    for (int f = 0; f < c.f2; ++f) append_polygon(out, c.polys[std::size_t(c.f1 + f)]);
+    start_pattern(&stage1_out, width, height);
+    start_pattern(&out, width, height);
+    for (int f = 0; f < c.f1; ++f) append_polygon(&stage1_out, c.polys[std::size_t(f)]);
+    for (int f = 0; f < c.f2; ++f) append_polygon(&out, c.polys[std::size_t(c.f1 + f)]);
     if (report) *report = two_stage_report(c);
     return Status::success();
 }

@@ -4,12 +4,12 @@
 //
 // Manual
 //   ScaleParams sp;  ScaleDivision steps;            // scale_division.hpp: the cells to bend
-//   Status s = divide_scales(sp, &steps);
+//   Status s = divide_scales(sp, steps);
 //   PerturbationParams prm;             // p = 0.015 (fig. 7), 4 levels, decay 1/2
 //   ScalePattern pattern;
 //   PerturbationReport report;
 //   std::uint32_t seed = 7;
-//   if (s) s = perturb_subdivision(steps.cells, prm, seed, sp.width, sp.height, &pattern, &report);
+//   if (s) s = perturb_subdivision(steps.cells, prm, seed, sp.width, sp.height, pattern, &report);
 //   return s;
 //   #include "shitsukan/leather/scale_division.hpp"
 //
@@ -86,7 +86,7 @@ void midpoint_displacement(Vec2d a, Vec2d b, const PerturbationParams& prm, std:
 // Perturb every interior edge of `sub` and write its polygons (counter-clockwise, float,
 // centroids) into `out`, which tiles [0, width] x [0, height] when `sub` does.
 Status perturb_subdivision(const PlanarSubdivision& sub, const PerturbationParams& prm,
-                           std::uint32_t seed, float width, float height, ScalePattern* out,
+                           std::uint32_t seed, float width, float height, ScalePattern& out,
                            PerturbationReport* report = nullptr);
 
 // tokai1994's stage order (§3.1): the stage-1 curves are bent first and the stage-2 cells fill
@@ -102,11 +102,11 @@ Status perturb_subdivision(const PlanarSubdivision& sub, const PerturbationParam
 // rectangle); a curve that breaks it is scaled down, a stage-1 curve in both patterns at once.
 Status perturb_two_stage(const PlanarSubdivision& stage1, const PlanarSubdivision& cells,
                          const std::vector<int>& cell_stage1, const PerturbationParams& prm,
-                         std::uint32_t seed, float width, float height, ScalePattern* stage1_out,
-                         ScalePattern* out, PerturbationReport* report = nullptr);
+                         std::uint32_t seed, float width, float height, ScalePattern& stage1_out,
+                         ScalePattern& out, PerturbationReport* report = nullptr);
 
 // The same output without perturbation (p = 0): the straight polygons as a ScalePattern.
 Status subdivision_to_pattern(const PlanarSubdivision& sub, float width, float height,
-                              ScalePattern* out);
+                              ScalePattern& out);
 
 }  // namespace shitsukan

@@ -37,10 +37,10 @@
 // Manual (a crocodile belly's maps):
 //   ScaleParams prm;        // scale_division.hpp's two-stage division (see its manual)
 //   ScalePattern pattern;
-//   Status s = generate_scale_pattern(prm, &pattern);
+//   Status s = generate_scale_pattern(prm, pattern);
 //   LeatherMaps maps;       // then the label, height and normal maps
 //   if (s) s = make_leather_maps(pattern, 256, 256, table1_section(Table1Section::convex),
-//                                ReliefOptions{}, &maps);
+//                                ReliefOptions{}, maps);
 //   return s;
 #pragma once
 #include "shitsukan/leather/seed_layout.hpp"

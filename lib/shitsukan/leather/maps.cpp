@@ -126,25 +126,25 @@ void relief_row(const ScalePattern& pattern, const int* labels, const ScaleTable
 
 Status make_leather_maps(const ScalePattern& pattern, const int* labels, int width, int height,
                          const BezierChain& section, const ReliefOptions& options,
-                         LeatherMaps* out, Progress progress) {
+                         LeatherMaps& out, Progress progress) {
     SHITSUKAN_TRY(check_leather_map_inputs(pattern, labels, width, height, section, options));
     const std::size_t count = std::size_t(width) * std::size_t(height);
     // heights (4 B) and normals (12 B) a pixel, and the per-scale tables
     SHITSUKAN_TRY(check_memory_budget(
         budget_add(budget_mul(count, 16), budget_mul(pattern.vertices.size(), 4)),
         "leather maps (heights and normals)"));
-    out->width = width;
-    out->height = height;
-    out->pattern_width = pattern.width;
-    out->pattern_height = pattern.height;
-    out->heights.assign(count, 0.0f);
-    out->normals.assign(count, Vec3{0, 0, 1});
-    out->max_height = 0.0f;
+    out.width = width;
+    out.height = height;
+    out.pattern_width = pattern.width;
+    out.pattern_height = pattern.height;
+    out.heights.assign(count, 0.0f);
+    out.normals.assign(count, Vec3{0, 0, 1});
+    out.max_height = 0.0f;
     ScaleTables tables;
     prepare_scale_tables(pattern, tables);
     const int block = std::max(1, height / 100);  // chosen: about 100 reports per map
     for (int j = 0; j < height; ++j) {
-        relief_row(pattern, labels, tables, section, options, j, out);
+        relief_row(pattern, labels, tables, section, options, j, &out);
         if ((j + 1) % block == 0 || j + 1 == height) progress.report(float(j + 1) / float(height));
     }
     return Status::success();
@@ -221,7 +221,7 @@ void encode_normal_rgb(const LeatherMaps& maps, std::uint8_t* out) {
     }
 }
 
-Status make_relief_mesh(const LeatherMaps& maps, int step, float z_scale, TriangleMesh* out) {
+Status make_relief_mesh(const LeatherMaps& maps, int step, float z_scale, TriangleMesh& out) {
     if (step < 1)
         return Status::error(StatusCode::invalid_argument,
                              "relief mesh: step must be >= 1 (got %d)", step);
@@ -232,7 +232,7 @@ Status make_relief_mesh(const LeatherMaps& maps, int step, float z_scale, Triang
         return Status::error(StatusCode::invalid_argument,
                              "relief mesh: %d x %d map with step %d gives fewer than 2x2 samples",
                              maps.width, maps.height, step);
-    *out = TriangleMesh{};
+    out = TriangleMesh{};
     const float sx = maps.pattern_width / float(maps.width);
     const float sy = maps.pattern_height / float(maps.height);
     for (int b = 0; b < ny; ++b) {
@@ -241,7 +241,7 @@ Status make_relief_mesh(const LeatherMaps& maps, int step, float z_scale, Triang
             float x = (float(i) + 0.5f) * sx, y = (float(j) + 0.5f) * sy;
             Vec3 n = maps.at_normal(i, j);
             if (z_scale != 1.0f) n = normalize(Vec3{n.x * z_scale, n.y * z_scale, n.z});
-            out->add_vertex({x, y, maps.at_height(i, j) * z_scale}, n,
+            out.add_vertex({x, y, maps.at_height(i, j) * z_scale}, n,
                             {x / maps.pattern_width, y / maps.pattern_height});
         }
     }
@@ -249,8 +249,8 @@ Status make_relief_mesh(const LeatherMaps& maps, int step, float z_scale, Triang
         for (int a = 0; a + 1 < nx; ++a) {
             std::uint32_t v00 = std::uint32_t(b * nx + a), v10 = v00 + 1;
             std::uint32_t v01 = v00 + std::uint32_t(nx), v11 = v01 + 1;
-            out->add_triangle(v00, v10, v11);  // counter-clockwise seen from +z
-            out->add_triangle(v00, v11, v01);
+            out.add_triangle(v00, v10, v11);  // counter-clockwise seen from +z
+            out.add_triangle(v00, v11, v01);
         }
     }
     return Status::success();
@@ -269,7 +269,7 @@ struct RowProgress {
 
 Status make_leather_maps(const ScalePattern& pattern, int width, int height,
                          const BezierChain& section, const ReliefOptions& options,
-                         LeatherMaps* out, Progress progress) {
+                         LeatherMaps& out, Progress progress) {
     if (width < 1 || height < 1 || width > 16384 || height > 16384)
         return Status::error(StatusCode::invalid_argument,
                              "leather maps: size %d x %d outside 1..16384", width, height);

@@ -4,11 +4,11 @@
 //
 // Manual
 //   ScaleParams prm;  ScalePattern pattern;
-//   Status s = generate_scale_pattern(prm, &pattern);    // scale_division.hpp
+//   Status s = generate_scale_pattern(prm, pattern);    // scale_division.hpp
 //   int w = 256, h = 256;
 //   LeatherMaps maps;                               // one call: labels, then the maps
 //   if (s) s = make_leather_maps(pattern, w, h, table1_section(Table1Section::convex),
-//                                ReliefOptions{}, &maps);
+//                                ReliefOptions{}, maps);
 //   if (!s) return s;
 //   Vec2 uv{1.7f, -0.4f};
 //   Vec3 n = mirrored_normal_at(maps, uv);           // tiled by mirroring: any (u, v)
@@ -18,11 +18,11 @@
 //   ...                                             // label function (leather/scale_pattern)
 //   LeatherMaps maps;
 //   Status s = make_leather_maps(pattern, labels.data(), w, h,
-//                                table1_section(Table1Section::convex), ReliefOptions{}, &maps);
+//                                table1_section(Table1Section::convex), ReliefOptions{}, maps);
 //   Vec3 n = normal_at(maps, {x, y});                // bilinear, in pattern units, unit length
 //   std::vector<uint16_t> h16(w * h);  encode_height16(maps, h16.data());   // top row = +y
 //   std::vector<uint8_t> rgb(3 * w * h); encode_normal_rgb(maps, rgb.data());
-//   TriangleMesh mesh; make_relief_mesh(maps, 4, &mesh);  write_obj("relief.obj", mesh);
+//   TriangleMesh mesh; make_relief_mesh(maps, 4, 1.0f, mesh);  write_obj("relief.obj", mesh);
 //
 // Conventions
 //   Pixel (i, j) of the maps is the pattern point ((i + 0.5)·W/w, (j + 0.5)·H/h): row 0 is
@@ -74,7 +74,7 @@ struct LeatherMaps {
 // (wrapped) pattern pass its torus_cover (tileable.hpp) and that cover's labels.
 Status make_leather_maps(const ScalePattern& pattern, const int* labels, int width, int height,
                          const BezierChain& section, const ReliefOptions& options,
-                         LeatherMaps* out, Progress progress = {});
+                         LeatherMaps& out, Progress progress = {});
 
 // The same in one call: the label image (rasterize_scale_labels, scale_labels.hpp) at
 // width x height, then the maps above. Same errors; the sizes are checked before the label
@@ -83,7 +83,7 @@ Status make_leather_maps(const ScalePattern& pattern, const int* labels, int wid
 // `progress`: 0.1 once the labels are drawn, then the rows as above (0.1 .. 1).
 Status make_leather_maps(const ScalePattern& pattern, int width, int height,
                          const BezierChain& section, const ReliefOptions& options,
-                         LeatherMaps* out, Progress progress = {});
+                         LeatherMaps& out, Progress progress = {});
 
 // Bilinear normal at a pattern point (clamped to the map), renormalised.
 Vec3 normal_at(const LeatherMaps& maps, Vec2 pattern_point);
@@ -106,6 +106,6 @@ void encode_normal_rgb(const LeatherMaps& maps, std::uint8_t* out);
 // A grid mesh of the relief: every `step`-th pixel centre becomes a vertex
 // (x, y, height · z_scale) with the map's normal and uv = (x/W, y/H). invalid_argument for
 // step < 1 or a map smaller than 2x2 samples.
-Status make_relief_mesh(const LeatherMaps& maps, int step, float z_scale, TriangleMesh* out);
+Status make_relief_mesh(const LeatherMaps& maps, int step, float z_scale, TriangleMesh& out);
 
 }  // namespace shitsukan

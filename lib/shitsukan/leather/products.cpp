@@ -109,7 +109,7 @@ Handbag make_handbag() {
     return bag;
 }
 
-Status make_belt(const BeltDesign& d, std::vector<BezierPatch>* out) {
+Status make_belt(const BeltDesign& d, std::vector<BezierPatch>& out) {
     if (!is_finite(d.width) || !is_finite(d.r0) || !is_finite(d.r1) || !is_finite(d.turns) ||
         !(d.width > 0) || !(d.r0 > 0) || !(d.r1 > d.r0))
         return Status::error(StatusCode::invalid_argument,
@@ -128,7 +128,7 @@ Status make_belt(const BeltDesign& d, std::vector<BezierPatch>* out) {
         float r = d.r0 + (d.r1 - d.r0) * t / total, dr = (d.r1 - d.r0) / total;
         return Vec3{dr * det_cos(t) - r * det_sin(t), 0.0f, dr * det_sin(t) + r * det_cos(t)};
     };
-    out->assign(std::size_t(n), BezierPatch{});
+    out.assign(std::size_t(n), BezierPatch{});
     for (int k = 0; k < n; ++k) {
         float ta = step * float(k), tb = step * float(k + 1);
         // Hermite -> Bezier: the quarter turn with the spiral's end tangents (G1 joints).
@@ -136,13 +136,13 @@ Status make_belt(const BeltDesign& d, std::vector<BezierPatch>* out) {
                        point(tb) - tangent(tb) * (step / 3.0f), point(tb)};
         for (int i = 0; i < 4; ++i)
             for (int j = 0; j < 4; ++j)  // v runs down the belt so du x dv faces outward
-                (*out)[std::size_t(k)].p[i][j] = row[i] + Vec3{0, d.width * float(3 - j) / 3.0f, 0};
+                out[std::size_t(k)].p[i][j] = row[i] + Vec3{0, d.width * float(3 - j) / 3.0f, 0};
     }
     return Status::success();
 }
 
 Status make_spherical_segment(const SphericalSegment& s, int slices, int stacks,
-                              TriangleMesh* out) {
+                              TriangleMesh& out) {
     if (!(s.radius > 0) || !is_finite(s.radius) || !is_finite(s.center))
         return Status::error(StatusCode::invalid_argument,
                              "spherical segment: radius must be finite and > 0 (got %g)",
@@ -155,14 +155,14 @@ Status make_spherical_segment(const SphericalSegment& s, int slices, int stacks,
         return Status::error(StatusCode::invalid_argument,
                              "spherical segment: slices 3..4096, stacks 1..4096 (got %d, %d)",
                              slices, stacks);
-    *out = TriangleMesh{};
+    out = TriangleMesh{};
     const float lat0 = det_asin(s.cut_below), lat1 = 0.5f * kPi;
     for (int j = 0; j <= stacks; ++j) {
         float lat = lat0 + (lat1 - lat0) * float(j) / float(stacks);
         for (int i = 0; i <= slices; ++i) {
             float lon = kTwoPi * float(i) / float(slices);
             Vec3 n{det_cos(lat) * det_cos(lon), det_sin(lat), -det_cos(lat) * det_sin(lon)};
-            out->add_vertex(s.center + n * s.radius, n,
+            out.add_vertex(s.center + n * s.radius, n,
                             {float(i) / float(slices), float(j) / float(stacks)});
         }
     }
@@ -170,8 +170,8 @@ Status make_spherical_segment(const SphericalSegment& s, int slices, int stacks,
         for (int i = 0; i < slices; ++i) {
             std::uint32_t a = std::uint32_t(j * (slices + 1) + i), b = a + 1;
             std::uint32_t c = a + std::uint32_t(slices + 1), e = c + 1;
-            out->add_triangle(a, b, e);
-            if (j + 1 < stacks) out->add_triangle(a, e, c);  // the top row meets at the pole
+            out.add_triangle(a, b, e);
+            if (j + 1 < stacks) out.add_triangle(a, e, c);  // the top row meets at the pole
         }
     return Status::success();
 }

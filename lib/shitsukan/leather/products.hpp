@@ -5,11 +5,11 @@
 //   Handbag bag = make_handbag();                    // the design (chosen here, see below)
 //   PatchStripOptions opt;                           // geom/bezier_patch_mesh.hpp
 //   TriangleMesh body;
-//   Status s = tessellate_patch_strip(bag.patches + bag.body_first, bag.body_count, opt, &body);
+//   Status s = tessellate_patch_strip(bag.patches + bag.body_first, bag.body_count, opt, body);
 //   TriangleMesh clasp;
-//   if (s) s = make_spherical_segment(bag.clasp[0], 24, 12, &clasp);
+//   if (s) s = make_spherical_segment(bag.clasp[0], 24, 12, clasp);
 //   std::vector<BezierPatch> belt;
-//   if (s) s = make_belt(BeltDesign{}, &belt);       // a coiled strip
+//   if (s) s = make_belt(BeltDesign{}, belt);       // a coiled strip
 //   return s;
 //   #include "shitsukan/geom/bezier_patch_mesh.hpp"
 //
@@ -87,11 +87,11 @@ struct BeltDesign {
 };
 
 // invalid_argument for non-finite or non-positive sizes, r1 <= r0, or turns outside 0.25..8.
-Status make_belt(const BeltDesign& design, std::vector<BezierPatch>* out);
+Status make_belt(const BeltDesign& design, std::vector<BezierPatch>& out);
 
 // Triangles of a spherical segment (outward normals, uv = (longitude, latitude) in [0, 1]).
 // invalid_argument for radius <= 0, cut_below outside [-1, 1), slices < 3 or stacks < 1.
 Status make_spherical_segment(const SphericalSegment& segment, int slices, int stacks,
-                              TriangleMesh* out);
+                              TriangleMesh& out);
 
 }  // namespace shitsukan

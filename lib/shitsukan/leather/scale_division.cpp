@@ -120,7 +120,7 @@ std::uint64_t scale_pattern_bytes(const ScaleParams& prm) {
 }
 
 Status divide_single_stage(const Vec2d* seeds, int count, float width, float height,
-                           PlanarSubdivision* out, std::vector<int>* face_site) {
+                           PlanarSubdivision& out, std::vector<int>* face_site) {
     if (!(width > 0.0f && height > 0.0f) || !is_finite(width) || !is_finite(height))
         return Status::error(StatusCode::invalid_argument,
                              "divide_single_stage: empty region %g x %g", double(width),
@@ -128,7 +128,7 @@ Status divide_single_stage(const Vec2d* seeds, int count, float width, float hei
     const Vec2d region[4] = {
         {0, 0}, {double(width), 0}, {double(width), double(height)}, {0, double(height)}};
     VoronoiCells cells;
-    SHITSUKAN_TRY(voronoi_cells(seeds, count, region, 4, &cells));
+    SHITSUKAN_TRY(voronoi_cells(seeds, count, region, 4, cells));
     std::vector<Vec2d> verts;
     std::vector<int> offsets(1, 0);
     if (face_site) face_site->clear();
@@ -157,7 +157,7 @@ Status stage2_row_for_polygon(const ScaleParams& prm, int f, ScaleDivision& out,
     const int row_id =
         out.stage1_row_id.empty() ? site : out.stage1_row_id[std::size_t(site)];
     SHITSUKAN_TRY(stage2_row_seeds(out.columns, prm.a, out.stage1_seeds.moved[std::size_t(site)].y,
-                                   row_id, prm.seed, &row, side));
+                                   row_id, prm.seed, row, side));
     keep_border_seeds_inside(prm.width, &row);
     out.stage2_seeds.original.insert(out.stage2_seeds.original.end(), row.original.begin(),
                                      row.original.end());
@@ -221,7 +221,7 @@ Status stage2_divide_polygon(const PlanarSubdivision& s1, int f, const SeedLayou
     for (int k = 0; k < m; ++k)
         region.push_back(
             s1.vertices[std::size_t(s1.face_vertex(s1.face_edges[std::size_t(e0 + k)]))]);
-    SHITSUKAN_TRY(voronoi_cells(row.moved.data(), int(row.moved.size()), region.data(), m, &vc));
+    SHITSUKAN_TRY(voronoi_cells(row.moved.data(), int(row.moved.size()), region.data(), m, vc));
     for (int c = 0; c < vc.cell_count(); ++c) {
         int k;
         const Vec2d* v = vc.cell(c, &k);
@@ -400,7 +400,7 @@ Status stitch_final_cells(const PlanarSubdivision& s1, const Stage2Cells& st, do
     }
     out.cell_stage1 = kept_stage1;
     Status s = build_planar_subdivision(verts.data(), offsets.data(), int(offsets.size()) - 1,
-                                        &out.cells);
+                                        out.cells);
     if (!s)
         return Status::error(StatusCode::degenerate, "divide_scales: stage-2 cells do not fit: %s",
                              s.message());
@@ -474,7 +474,7 @@ Status weld_close_stage1_vertices(double weld, ScaleDivision& out) {
     }
     PlanarSubdivision welded;
     SHITSUKAN_TRY(build_planar_subdivision(verts.data(), offsets.data(), int(offsets.size()) - 1,
-                                           &welded));
+                                           welded));
     out.stage1 = std::move(welded);
     return Status::success();
 }
@@ -484,14 +484,14 @@ Status weld_close_stage1_vertices(double weld, ScaleDivision& out) {
 Status stage1_vertical_division(const ScaleParams& prm, ScaleDivision& out) {
     SHITSUKAN_TRY(divide_single_stage(out.stage1_seeds.moved.data(),
                                       int(out.stage1_seeds.moved.size()), prm.width, prm.height,
-                                      &out.stage1, &out.stage1_site));
+                                      out.stage1, &out.stage1_site));
     return weld_close_stage1_vertices(
         kWeldRelative * std::max(double(prm.width), double(prm.height)), out);
 }
 
 Status stage2_horizontal_division(const ScaleParams& prm, ScaleDivision& out) {
     const PlanarSubdivision& s1 = out.stage1;
-    SHITSUKAN_TRY(stage2_columns(prm.width, prm.D, prm.edge_ratio, &out.columns));
+    SHITSUKAN_TRY(stage2_columns(prm.width, prm.D, prm.edge_ratio, out.columns));
     out.stage2_seeds.original.clear();
     out.stage2_seeds.moved.clear();
     out.stage2_row.clear();
@@ -512,24 +512,19 @@ Status stage2_horizontal_division(const ScaleParams& prm, ScaleDivision& out) {
     return stitch_final_cells(s1, st, weld, out);
 }
 
-Status divide_scales(const ScaleParams& prm, ScaleDivision* out) {
-    if (out == nullptr)
-        return Status::error(StatusCode::invalid_argument, "divide_scales: out is null");
+Status divide_scales(const ScaleParams& prm, ScaleDivision& out) {
     SHITSUKAN_TRY(check_scale_params(prm));
     SHITSUKAN_TRY(check_memory_budget(scale_pattern_bytes(prm), "scale pattern (divide_scales)"));
     // ---- Stage 1 (§3.1 (1)): vertical division, processings 1-3 ---------------------------
-    SHITSUKAN_TRY(stage1_seeds(stage1_seed_params(prm), out->stage1_seeds));
-    out->stage1_row_id.clear();
-    SHITSUKAN_TRY(stage1_vertical_division(prm, *out));
+    SHITSUKAN_TRY(stage1_seeds(stage1_seed_params(prm), out.stage1_seeds));
+    out.stage1_row_id.clear();
+    SHITSUKAN_TRY(stage1_vertical_division(prm, out));
     // ---- Stage 2 (§3.1 (2)): horizontal division inside each stage-1 polygon -------------
-    return stage2_horizontal_division(prm, *out);
+    return stage2_horizontal_division(prm, out);
 }
 
-Status generate_scale_pattern(const ScaleParams& prm, ScalePattern* pattern, ScaleDivision* steps,
+Status generate_scale_pattern(const ScaleParams& prm, ScalePattern& pattern, ScaleDivision* steps,
                               Progress progress) {
-    if (pattern == nullptr)
-        return Status::error(StatusCode::invalid_argument,
-                             "generate_scale_pattern: pattern is null");
     ScaleDivision local;
     ScaleDivision* div = steps ? steps : &local;
     SHITSUKAN_TRY(check_scale_params(prm));
@@ -543,22 +538,22 @@ Status generate_scale_pattern(const ScaleParams& prm, ScalePattern* pattern, Sca
     progress.report(0.5f);
     // processing 4 in the paper's order: the stage-1 curves first, the stage-2 cells in them
     SHITSUKAN_TRY(perturb_two_stage(div->stage1, div->cells, div->cell_stage1, prm.perturbation,
-                                    prm.seed, prm.width, prm.height, &div->stage1_pattern,
+                                    prm.seed, prm.width, prm.height, div->stage1_pattern,
                                     pattern, &div->perturbation));
     progress.report(0.95f);
     // The contract, checked once more: the final polygons' areas sum to the rectangle's. A
     // pattern that fails it is refused rather than returned wrong (found by make fuzz: p = 0.1
     // with rows far closer than D).
     double area = 0.0;
-    for (int f = 0; f < pattern->polygon_count(); ++f) {
+    for (int f = 0; f < pattern.polygon_count(); ++f) {
         int n = 0;
-        const Vec2* v = pattern->polygon(f, &n);
+        const Vec2* v = pattern.polygon(f, &n);
         area += polygon_area(v, n);
     }
     const double want = double(prm.width) * double(prm.height);
     if (!(std::fabs(area - want) <= 1e-6 * want)) {
-        const int polygons = pattern->polygon_count();
-        *pattern = ScalePattern{};
+        const int polygons = pattern.polygon_count();
+        pattern = ScalePattern{};
         return Status::error(StatusCode::degenerate,
                              "generate_scale_pattern: the perturbed scales do not tile the %g x "
                              "%g rectangle (their areas sum to %.9g of %.9g over %d polygons); "

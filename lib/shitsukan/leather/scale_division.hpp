@@ -5,13 +5,13 @@
 // Manual
 //   ScaleParams prm;                        // fig. 7: d = 1.0 D, a = 0.25, p = 0.015
 //   ScalePattern pattern;
-//   Status s = generate_scale_pattern(prm, &pattern);   // polygons tiling [0,W] x [0,H]
+//   Status s = generate_scale_pattern(prm, pattern);   // polygons tiling [0,W] x [0,H]
 //   ScaleDivision steps;                    // optional: every intermediate (figs. 4-6)
-//   if (s) s = generate_scale_pattern(prm, &pattern, &steps);
+//   if (s) s = generate_scale_pattern(prm, pattern, &steps);
 //   return s;
 //
-//   Single stage (fig. 2, fig. 3): divide_single_stage(seeds, n, W, H, &sub) then
-//   perturb_subdivision(sub, prm.perturbation, seed, W, H, &pattern).
+//   Single stage (fig. 2, fig. 3): divide_single_stage(seeds, n, W, H, sub) then
+//   perturb_subdivision(sub, prm.perturbation, seed, W, H, pattern).
 //
 // Steps (§3.1 (1), (2), each with processings 1-4):
 //   stage 1: two seed rows parallel to y at distance d from the centre line, spacing D,
@@ -96,7 +96,7 @@ std::uint64_t scale_pattern_bytes(const ScaleParams& prm);
 
 // Processings 1-3 of both stages (no perturbation): stage1_seeds (seed_layout.hpp), then the
 // two steps below.
-Status divide_scales(const ScaleParams& prm, ScaleDivision* out);
+Status divide_scales(const ScaleParams& prm, ScaleDivision& out);
 
 // Stage 1, processings 1-2: the ScaleParams' share of stage1_seeds.
 Stage1SeedParams stage1_seed_params(const ScaleParams& prm);
@@ -114,11 +114,11 @@ Status stage2_horizontal_division(const ScaleParams& prm, ScaleDivision& out);
 // Everything: both stages, then processing 4; `steps` (optional) keeps the intermediates.
 // `progress` (core/progress.hpp) hears 0.05 after stage 1, 0.5 after stage 2, 0.95 after the
 // perturbation and 1 at the end.
-Status generate_scale_pattern(const ScaleParams& prm, ScalePattern* pattern,
+Status generate_scale_pattern(const ScaleParams& prm, ScalePattern& pattern,
                               ScaleDivision* steps = nullptr, Progress progress = {});
 
 // One Voronoi division of [0, W] x [0, H] (fig. 2, fig. 3): polygons with area.
 Status divide_single_stage(const Vec2d* seeds, int count, float width, float height,
-                           PlanarSubdivision* out, std::vector<int>* face_site = nullptr);
+                           PlanarSubdivision& out, std::vector<int>* face_site = nullptr);
 
 }  // namespace shitsukan

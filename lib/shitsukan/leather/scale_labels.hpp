@@ -2,7 +2,7 @@
 //
 // Manual
 //   ScaleParams prm;  ScalePattern pattern;
-//   Status s = generate_scale_pattern(prm, &pattern);     // scale_division.hpp
+//   Status s = generate_scale_pattern(prm, pattern);     // scale_division.hpp
 //   int w = 128, h = 128, i = 10, j = 20;
 //   std::vector<int32_t> labels(size_t(w) * h);
 //   if (s) s = rasterize_scale_labels(pattern, w, h, labels.data());  // row-major, w per row

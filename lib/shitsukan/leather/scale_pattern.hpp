@@ -4,7 +4,7 @@
 // Manual
 //   ScaleParams prm;
 //   ScalePattern pattern;                       // filled by the two-stage division
-//   Status s = generate_scale_pattern(prm, &pattern);   // scale_division.hpp
+//   Status s = generate_scale_pattern(prm, pattern);   // scale_division.hpp
 //   for (int i = 0; i < pattern.polygon_count(); ++i) {
 //       int n; const Vec2* v = pattern.polygon(i, &n);   // n vertices, counter-clockwise
 //       Vec2 m = pattern.centroids[std::size_t(i)];      // area centroid ("m" in fig. 12)

@@ -7,10 +7,10 @@
 namespace shitsukan {
 
 Status measure_scale_statistics(const PlanarSubdivision& cells, float width, float height,
-                                ScaleStatistics* out) {
-    if (out == nullptr || !(width > 0.0f) || !(height > 0.0f))
+                                ScaleStatistics& out) {
+    if (!(width > 0.0f) || !(height > 0.0f))
         return Status::error(StatusCode::invalid_argument,
-                             "measure_scale_statistics: need an output and a region (got %g x %g)",
+                             "measure_scale_statistics: need a region (got %g x %g)",
                              double(width), double(height));
     ScaleStatistics st;
     const double W = width, H = height, xc = 0.5 * W;
@@ -51,7 +51,7 @@ Status measure_scale_statistics(const PlanarSubdivision& cells, float width, flo
     if (st.edge_cells > 0) st.edge_width /= st.edge_cells;
     if (st.centre_cells > 0) st.centre_width /= st.centre_cells;
     if (st.centre_width > 0.0) st.edge_to_centre = st.edge_width / st.centre_width;
-    *out = st;
+    out = st;
     return Status::success();
 }
 

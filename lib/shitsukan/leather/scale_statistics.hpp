@@ -3,9 +3,9 @@
 //
 // Manual
 //   ScaleParams prm;
-//   ScaleDivision steps;  Status s = divide_scales(prm, &steps);    // scale_division.hpp
+//   ScaleDivision steps;  Status s = divide_scales(prm, steps);    // scale_division.hpp
 //   ScaleStatistics st;
-//   if (s) s = measure_scale_statistics(steps.cells, prm.width, prm.height, &st);
+//   if (s) s = measure_scale_statistics(steps.cells, prm.width, prm.height, st);
 //   // st.mean_corners     ~4 for the fig. 7 settings
 //   // st.edge_to_centre   < 1: edge scales narrower than centre scales
 //   return s;
@@ -34,6 +34,6 @@ struct ScaleStatistics {
 };
 
 Status measure_scale_statistics(const PlanarSubdivision& cells, float width, float height,
-                                ScaleStatistics* out);
+                                ScaleStatistics& out);
 
 }  // namespace shitsukan

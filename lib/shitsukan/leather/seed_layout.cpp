@@ -35,36 +35,36 @@ float hashed_rnd(std::uint32_t seed, std::uint32_t stream, std::int32_t i, std::
 }
 
 Status square_lattice_seeds(float width, float height, float D, float a, std::uint32_t seed,
-                            SeedLayout* out) {
+                            SeedLayout& out) {
     SHITSUKAN_TRY(check_common("square_lattice_seeds", width, height, D, a));
-    out->original.clear();
-    out->moved.clear();
+    out.original.clear();
+    out.moved.clear();
     const int nx = int(std::ceil(width / D)), ny = int(std::ceil(height / D));
     for (int j = -1; j <= ny + 1; ++j)
         for (int i = -1; i <= nx + 1; ++i) {
             Vec2d p{i * double(D), j * double(D)};
-            out->original.push_back(p);
+            out.original.push_back(p);
             p.x += seed_displacement(D, a, hashed_rnd(seed, kStreamLatticeX, i, j));
             p.y += seed_displacement(D, a, hashed_rnd(seed, kStreamLatticeY, i, j));
-            out->moved.push_back(p);
+            out.moved.push_back(p);
         }
     return Status::success();
 }
 
 Status triangular_lattice_seeds(float width, float height, float D, float a, std::uint32_t seed,
-                                SeedLayout* out) {
+                                SeedLayout& out) {
     SHITSUKAN_TRY(check_common("triangular_lattice_seeds", width, height, D, a));
-    out->original.clear();
-    out->moved.clear();
+    out.original.clear();
+    out.moved.clear();
     const double row = double(D) * std::sqrt(3.0) / 2.0;
     const int nx = int(std::ceil(width / D)), ny = int(std::ceil(height / row));
     for (int j = -1; j <= ny + 1; ++j)
         for (int i = -1; i <= nx + 1; ++i) {
             Vec2d p{(i + 0.5 * double(j & 1)) * double(D), j * row};
-            out->original.push_back(p);
+            out.original.push_back(p);
             p.x += seed_displacement(D, a, hashed_rnd(seed, kStreamLatticeX, i, j));
             p.y += seed_displacement(D, a, hashed_rnd(seed, kStreamLatticeY, i, j));
-            out->moved.push_back(p);
+            out.moved.push_back(p);
         }
     return Status::success();
 }
@@ -100,7 +100,7 @@ float stage2_spacing(float width, float D, float edge_ratio, double x) {
     return float(double(D) * (1.0 - (1.0 - double(edge_ratio)) * u * u));
 }
 
-Status stage2_columns(float width, float D, float edge_ratio, Stage2Columns* out) {
+Status stage2_columns(float width, float D, float edge_ratio, Stage2Columns& out) {
     SHITSUKAN_TRY(check_common("stage2_columns", width, width, D, 0.0f));
     if (!(edge_ratio > 0.05f && edge_ratio <= 1.0f))
         return Status::error(StatusCode::invalid_argument,
@@ -127,41 +127,41 @@ Status stage2_columns(float width, float D, float edge_ratio, Stage2Columns* out
         s[k] *= stretch;
     }
     t[nearest] = xc;  // exactly: (xc / t) * t can miss xc by an ulp, leaving x = 1e-17
-    out->x.clear();
-    out->spacing.clear();
-    out->index.clear();
+    out.x.clear();
+    out.spacing.clear();
+    out.index.clear();
     const int n = int(t.size());
     for (int k = n - 1; k >= 0; --k) {
-        out->x.push_back(xc - t[std::size_t(k)]);
-        out->spacing.push_back(s[std::size_t(k)]);
-        out->index.push_back(-(k + 1));
+        out.x.push_back(xc - t[std::size_t(k)]);
+        out.spacing.push_back(s[std::size_t(k)]);
+        out.index.push_back(-(k + 1));
     }
     for (int k = 0; k < n; ++k) {
-        out->x.push_back(xc + t[std::size_t(k)]);
-        out->spacing.push_back(s[std::size_t(k)]);
-        out->index.push_back(k + 1);
+        out.x.push_back(xc + t[std::size_t(k)]);
+        out.spacing.push_back(s[std::size_t(k)]);
+        out.index.push_back(k + 1);
     }
     return Status::success();
 }
 
 Status stage2_row_seeds(const Stage2Columns& columns, float a, double row_y, int row_id,
-                        std::uint32_t seed, SeedLayout* out, int side) {
+                        std::uint32_t seed, SeedLayout& out, int side) {
     if (!(a >= 0.0f && a <= 1.0f))
         return Status::error(StatusCode::invalid_argument,
                              "stage2_row_seeds: relative displacement a must be in [0, 1] (got %g)",
                              double(a));
     if (!is_finite(row_y))
         return Status::error(StatusCode::invalid_argument, "stage2_row_seeds: row y is not finite");
-    out->original.clear();
-    out->moved.clear();
+    out.original.clear();
+    out.moved.clear();
     for (std::size_t k = 0; k < columns.x.size(); ++k) {
         if ((side < 0 && columns.index[k] > 0) || (side > 0 && columns.index[k] < 0)) continue;
         // processing 1: seeds on a row parallel to x; processing 2: moved along x
         Vec2d p{columns.x[k], row_y};
-        out->original.push_back(p);
+        out.original.push_back(p);
         p.x += seed_displacement(float(columns.spacing[k]), a,
                                  hashed_rnd(seed, kStreamStage2, row_id, columns.index[k]));
-        out->moved.push_back(p);
+        out.moved.push_back(p);
     }
     return Status::success();
 }

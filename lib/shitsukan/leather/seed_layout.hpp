@@ -3,13 +3,13 @@
 //
 // Manual
 //   SeedLayout s;
-//   Status st = square_lattice_seeds(1, 1, 0.1f, 0.2f, 7, &s);  // fig. 3 (e)-(h): x and y
-//   if (st) st = triangular_lattice_seeds(1, 1, 0.1f, 0.2f, 7, &s);  // fig. 3 (a)-(d)
+//   Status st = square_lattice_seeds(1, 1, 0.1f, 0.2f, 7, s);  // fig. 3 (e)-(h): x and y
+//   if (st) st = triangular_lattice_seeds(1, 1, 0.1f, 0.2f, 7, s);  // fig. 3 (a)-(d)
 //   Stage1SeedParams p1;                      // fig. 4: W, H, D, d, a, seed (fig. 7's values)
 //   if (st) st = stage1_seeds(p1, s);
 //   Stage2Columns c;
-//   if (st) st = stage2_columns(1, 0.1f, 0.5f, &c);       // fig. 6: W, D, edge ratio -> columns
-//   if (st) st = stage2_row_seeds(c, 0.25f, 0.5, 3, 7, &s);  // one row: a, y, row id, seed
+//   if (st) st = stage2_columns(1, 0.1f, 0.5f, c);       // fig. 6: W, D, edge ratio -> columns
+//   if (st) st = stage2_row_seeds(c, 0.25f, 0.5, 3, 7, s);  // one row: a, y, row id, seed
 //   if (!st) return st;
 //   Vec2d lattice_point = s.original[0], moved = s.moved[0];  // before and after eq. (1)
 //
@@ -69,10 +69,10 @@ constexpr float kDefaultEdgeRatio = 0.5f;  // chosen: stage-2 spacing at the edg
 // points on the border, so the border cuts cells through their middle, never to slivers),
 // each seed moved along x and along y by independent eq. (1) displacements.
 Status square_lattice_seeds(float width, float height, float D, float a, std::uint32_t seed,
-                            SeedLayout* out);
+                            SeedLayout& out);
 // Triangular lattice: rows D·sqrt(3)/2 apart, odd rows shifted by D/2; moved along x and y.
 Status triangular_lattice_seeds(float width, float height, float D, float a, std::uint32_t seed,
-                                SeedLayout* out);
+                                SeedLayout& out);
 
 // Stage 1 (fig. 4): two rows parallel to y at x = W/2 - d (left) and x = W/2 + d (right),
 // y = j D for j = -1 .. ceil(H / D) + 1 (chosen: the top and bottom edges then cut rows near
@@ -93,13 +93,13 @@ struct Stage2Columns {
 };
 
 // Stage 2 (fig. 6): column positions from the spacing law above.
-Status stage2_columns(float width, float D, float edge_ratio, Stage2Columns* out);
+Status stage2_columns(float width, float D, float edge_ratio, Stage2Columns& out);
 float stage2_spacing(float width, float D, float edge_ratio, double x);  // s(u(x))
 
 // One stage-2 row at height row_y: a seed on every column (side < 0: left columns only,
 // side > 0: right only, 0: all), moved along x by s_k · a · Rnd; row_id selects the random
 // numbers (the tokai pipeline uses the stage-1 seed index).
 Status stage2_row_seeds(const Stage2Columns& columns, float a, double row_y, int row_id,
-                        std::uint32_t seed, SeedLayout* out, int side = 0);
+                        std::uint32_t seed, SeedLayout& out, int side = 0);
 
 }  // namespace shitsukan

@@ -159,18 +159,18 @@ Status generate_tileable_pattern(const TileParams& prm, ScalePattern& out, TileR
         pp.period_x = 0.0f;
         pp.period_y = sp.height;
         SHITSUKAN_TRY(perturb_two_stage(div.stage1, div.cells, div.cell_stage1, pp, sp.seed,
-                                        bp.width, bp.height, &div.stage1_pattern, &block,
+                                        bp.width, bp.height, div.stage1_pattern, block,
                                         &rep.perturbation));
     } else {
         std::vector<Vec2d> seeds;
         lattice_block_seeds(prm, bx, by, rep, seeds);
         const float bw = float(bx) * sp.width, bh = float(by) * sp.height;
         PlanarSubdivision sub;
-        SHITSUKAN_TRY(divide_single_stage(seeds.data(), int(seeds.size()), bw, bh, &sub));
+        SHITSUKAN_TRY(divide_single_stage(seeds.data(), int(seeds.size()), bw, bh, sub));
         progress.report(0.05f);
         pp.period_x = sp.width;
         pp.period_y = sp.height;
-        SHITSUKAN_TRY(perturb_subdivision(sub, pp, sp.seed, bw, bh, &block, &rep.perturbation));
+        SHITSUKAN_TRY(perturb_subdivision(sub, pp, sp.seed, bw, bh, block, &rep.perturbation));
     }
     progress.report(0.9f);
     keep_middle_tile(block, sp.width, sp.height, mx, my, out);

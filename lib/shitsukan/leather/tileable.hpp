@@ -13,7 +13,7 @@
 //   Status s = generate_tileable_pattern(tp, torus, &rep);   // rep.Dx, rep.Dy: spacing used
 //   LeatherMaps maps;                       // maps.hpp: a wrapped pattern is covered first
 //   if (s) s = make_leather_maps(torus, 128, 128, table1_section(Table1Section::convex),
-//                                ReliefOptions{}, &maps);
+//                                ReliefOptions{}, maps);
 //   if (!s) return s;                       // maps.height tiles: column 0 follows column 127
 //
 // How (chosen here). A periodic Voronoi division is built from geom's ordinary one: the seeds

@@ -3,7 +3,7 @@
 //
 // Manual
 //   TriangleMesh mesh;                                 // any mesh with uvs
-//   Status s = make_uv_sphere(1.0f, 16, 8, &mesh);
+//   Status s = make_uv_sphere(1.0f, 16, 8, mesh);
 //   if (!s) return s;
 //   Vec3 dpdx, dpdy;                                   // once per triangle
 //   triangle_texture_tangents(mesh.positions[0], mesh.positions[1], mesh.positions[2],

@@ -2,7 +2,7 @@
 //
 // Manual
 //   TriangleMesh mesh;
-//   Status s = make_uv_sphere(1.0f, 32, 16, &mesh);
+//   Status s = make_uv_sphere(1.0f, 32, 16, mesh);
 //   Camera camera = perspective_camera({0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 35.0f, 128, 128);
 //   Light lights[1] = {directional_light({-1, 1, 1})};
 //   int light_count = 1;

@@ -7,7 +7,7 @@
 //   clear_band(band, Rgb8{0, 0, 0});
 //   Camera camera = perspective_camera({0, 1, 4}, {0, 0, 0}, {0, 1, 0}, 35.0f, 512, 512);
 //   TriangleMesh mesh;
-//   Status s = make_torus(1.0f, 0.35f, 64, 32, &mesh);
+//   Status s = make_torus(1.0f, 0.35f, 64, 32, mesh);
 //   DrawOptions opt;  opt.model = Mat4::rotate_y(0.3f);  opt.cull = CullMode::back;
 //   auto shader = [&](const Fragment& f) { return to_rgb8(0.5f * (f.normal + Vec3{1, 1, 1})); };
 //   RasterStats stats;

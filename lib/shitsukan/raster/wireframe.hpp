@@ -2,7 +2,7 @@
 //
 // Manual
 //   TriangleMesh mesh;
-//   Status s = make_box({-1, -1, -1}, {1, 1, 1}, &mesh);
+//   Status s = make_box({-1, -1, -1}, {1, 1, 1}, mesh);
 //   Camera camera = perspective_camera({3, 2, 4}, {0, 0, 0}, {0, 1, 0}, 35.0f, 128, 128);
 //   RgbImage color(128, 128); FloatImage depth(128, 128);
 //   FrameBand band = full_frame_band(color.view(), depth.view());

@@ -4,12 +4,12 @@
 //
 // Manual
 //   ScaleParams prm;  ScalePattern pattern;                    // leather/scale_division.hpp
-//   Status s = generate_scale_pattern(prm, &pattern);
+//   Status s = generate_scale_pattern(prm, pattern);
 //   LeatherMaps maps;                                          // leather/maps.hpp
 //   if (s) s = make_leather_maps(pattern, 128, 128, table1_section(Table1Section::convex),
-//                                ReliefOptions{}, &maps);
+//                                ReliefOptions{}, maps);
 //   TriangleMesh mesh;
-//   if (s) s = make_uv_sphere(1.0f, 32, 16, &mesh);
+//   if (s) s = make_uv_sphere(1.0f, 32, 16, mesh);
 //   TextureTangents tangents;                                  // per triangle dP/du, dP/dv
 //   if (s) s = compute_texture_tangents(mesh.view(), tangents);
 //   Camera camera = perspective_camera({0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 35.0f, 96, 96);

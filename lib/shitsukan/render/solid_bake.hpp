@@ -4,8 +4,8 @@
 // surface point behind each texel).
 //
 // Manual
-//   TriangleMesh mesh;  Status s = make_uv_sphere(1.0f, 24, 12, &mesh);  // or read_obj (obj_read)
-//   if (s) s = fit_mesh_to_cube(&mesh, 0.92f);                         // into [-1, 1]^3
+//   TriangleMesh mesh;  Status s = make_uv_sphere(1.0f, 24, 12, mesh);  // or read_obj (obj_read)
+//   if (s) s = fit_mesh_to_cube(mesh, 0.92f);                         // into [-1, 1]^3
 //   FractalLattice lattice;
 //   if (s) s = lattice.build(okada1987_lattice_params());
 //   RgbImage texture;
