@@ -8,76 +8,6 @@
 
 namespace shitsukan {
 
-Status make_box_arrays(Vec3 lo, Vec3 hi, Vec3* positions, Vec3* normals, Vec2* uvs,
-                       int vertex_capacity, std::uint32_t* indices, int index_capacity,
-                       MeshView& out) {
-    if (!positions || !normals || !indices)
-        return Status::error(StatusCode::invalid_argument,
-                             "make_box_arrays: null positions, normals or indices");
-    if (!is_finite(lo) || !is_finite(hi) || !(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
-        return Status::error(StatusCode::invalid_argument,
-                             "make_box: need finite corners with min < max on every axis "
-                             "(got (%g,%g,%g) .. (%g,%g,%g))",
-                             double(lo.x), double(lo.y), double(lo.z), double(hi.x), double(hi.y),
-                             double(hi.z));
-    if (vertex_capacity < kBoxVertexCount || index_capacity < 3 * kBoxTriangleCount)
-        return Status::error(StatusCode::buffer_too_small,
-                             "make_box_arrays: a box needs %d vertices and %d indices (got "
-                             "capacity %d and %d)",
-                             kBoxVertexCount, 3 * kBoxTriangleCount, vertex_capacity,
-                             index_capacity);
-    int nv = 0, ni = 0;
-    // Each face: normal axis, sign; its four corners get their own vertices (flat normals).
-    for (int axis = 0; axis < 3; ++axis) {
-        for (int sign = -1; sign <= 1; sign += 2) {
-            Vec3 n{};
-            n[axis] = float(sign);
-            const int u_axis = (axis + 1) % 3, v_axis = (axis + 2) % 3;
-            const std::uint32_t base = std::uint32_t(nv);
-            for (int k = 0; k < 4; ++k) {
-                const int du = (k == 1 || k == 2), dv = (k >= 2);
-                Vec3 p;
-                p[axis] = sign > 0 ? hi[axis] : lo[axis];
-                p[u_axis] = du ? hi[u_axis] : lo[u_axis];
-                p[v_axis] = dv ? hi[v_axis] : lo[v_axis];
-                positions[nv] = p;
-                normals[nv] = n;
-                if (uvs) uvs[nv] = Vec2{float(du), float(dv)};
-                ++nv;
-            }
-            // Two triangles (base, +1, +2) and (base, +2, +3), each turned counter-clockwise
-            // as seen from outside (the side n points to).
-            for (int t = 0; t < 2; ++t) {
-                std::uint32_t a = base, b = base + 1 + std::uint32_t(t), c = b + 1;
-                const Vec3 face = cross(positions[b] - positions[a], positions[c] - positions[a]);
-                if (dot(face, n) < 0.0f) {
-                    const std::uint32_t s = b;
-                    b = c;
-                    c = s;
-                }
-                indices[ni++] = a;
-                indices[ni++] = b;
-                indices[ni++] = c;
-            }
-        }
-    }
-    MeshView v;
-    v.positions = positions;
-    v.normals = normals;
-    v.uvs = uvs;
-    v.vertex_count = nv;
-    v.indices = indices;
-    v.triangle_count = ni / 3;
-    out = v;
-    return Status::success();
-}
-
-}  // namespace shitsukan
-
-// ---- sphere, revolution (cylinder, torus) into caller arrays ----
-
-namespace shitsukan {
-
 namespace {
 
 // Where a builder writes: the caller's arrays and how much of them is used.
@@ -108,7 +38,7 @@ struct ArrayMesh {
         indices[index_count++] = b;
         indices[index_count++] = c;
     }
-    void view(MeshView* out) const {
+    MeshView view() const {
         MeshView v;
         v.positions = positions;
         v.normals = normals;
@@ -116,9 +46,63 @@ struct ArrayMesh {
         v.vertex_count = vertices;
         v.indices = indices;
         v.triangle_count = index_count / 3;
-        *out = v;
+        return v;
     }
 };
+
+}  // namespace
+
+Status make_box_arrays(Vec3 lo, Vec3 hi, Vec3* positions, Vec3* normals, Vec2* uvs,
+                       int vertex_capacity, std::uint32_t* indices, int index_capacity,
+                       MeshView& out) {
+    if (!positions || !normals || !indices)
+        return Status::error(StatusCode::invalid_argument,
+                             "make_box_arrays: null positions, normals or indices");
+    if (!is_finite(lo) || !is_finite(hi) || !(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
+        return Status::error(StatusCode::invalid_argument,
+                             "make_box: need finite corners with min < max on every axis "
+                             "(got (%g,%g,%g) .. (%g,%g,%g))",
+                             double(lo.x), double(lo.y), double(lo.z), double(hi.x), double(hi.y),
+                             double(hi.z));
+    if (vertex_capacity < kBoxVertexCount || index_capacity < 3 * kBoxTriangleCount)
+        return Status::error(StatusCode::buffer_too_small,
+                             "make_box_arrays: a box needs %d vertices and %d indices (got "
+                             "capacity %d and %d)",
+                             kBoxVertexCount, 3 * kBoxTriangleCount, vertex_capacity,
+                             index_capacity);
+    ArrayMesh m{positions, normals, uvs, indices};
+    // Each face: normal axis, sign; its four corners get their own vertices (flat normals),
+    // then two triangles (base, +1, +2) and (base, +2, +3), counter-clockwise from outside.
+    for (int axis = 0; axis < 3; ++axis) {
+        for (int sign = -1; sign <= 1; sign += 2) {
+            Vec3 n{};
+            n[axis] = float(sign);
+            const int u_axis = (axis + 1) % 3, v_axis = (axis + 2) % 3;
+            const std::uint32_t base = std::uint32_t(m.vertices);
+            for (int k = 0; k < 4; ++k) {
+                const int du = (k == 1 || k == 2), dv = (k >= 2);
+                Vec3 p;
+                p[axis] = sign > 0 ? hi[axis] : lo[axis];
+                p[u_axis] = du ? hi[u_axis] : lo[u_axis];
+                p[v_axis] = dv ? hi[v_axis] : lo[v_axis];
+                m.add_vertex(p, n, Vec2{float(du), float(dv)});
+            }
+            m.add_oriented(base, base + 1, base + 2, n);
+            m.add_oriented(base, base + 2, base + 3, n);
+        }
+    }
+    out = m.view();
+    return Status::success();
+}
+
+}  // namespace shitsukan
+
+// ---- sphere, revolution (cylinder, torus) into caller arrays ----
+
+namespace shitsukan {
+
+namespace {
+
 
 Status check_arrays(const char* what, const Vec3* positions, const Vec3* normals,
                     const std::uint32_t* indices) {
@@ -270,7 +254,7 @@ void revolve(const Profile& p, int segments, double total, ArrayMesh& m) {
 
 Status revolution_arrays(const char* what, const Profile& p, int segments, Vec3* positions,
                          Vec3* normals, Vec2* uvs, int vertex_capacity, std::uint32_t* indices,
-                         int index_capacity, MeshView* out) {
+                         int index_capacity, MeshView& out) {
     SHITSUKAN_TRY(check_arrays(what, positions, normals, indices));
     double total = 0.0;
     SHITSUKAN_TRY(check_profile(p, segments, &total));
@@ -278,7 +262,7 @@ Status revolution_arrays(const char* what, const Profile& p, int segments, Vec3*
         check_capacity(what, profile_sizes(p, segments), vertex_capacity, index_capacity));
     ArrayMesh m{positions, normals, uvs, indices};
     revolve(p, segments, total, m);
-    m.view(out);
+    out = m.view();
     return Status::success();
 }
 
@@ -301,7 +285,7 @@ Status make_revolution_arrays(const Vec2d* profile, int count, int segments, Vec
     p.points = profile;
     p.count = count;
     return revolution_arrays("make_revolution_arrays", p, segments, positions, normals, uvs,
-                             vertex_capacity, indices, index_capacity, &out);
+                             vertex_capacity, indices, index_capacity, out);
 }
 
 MeshSizes torus_sizes(int major_segments, int minor_segments) {
@@ -334,7 +318,7 @@ Status make_torus_arrays(float major_radius, float minor_radius, int major_segme
     p.minor = minor_radius;
     p.count = minor_segments + 1;
     return revolution_arrays("make_torus_arrays", p, major_segments, positions, normals, uvs,
-                             vertex_capacity, indices, index_capacity, &out);
+                             vertex_capacity, indices, index_capacity, out);
 }
 
 MeshSizes cylinder_sizes(int slices, bool caps) {
@@ -355,7 +339,7 @@ Status make_cylinder_arrays(float radius, float y0, float y1, int slices, bool c
     p.points = caps ? profile : profile + 1;
     p.count = caps ? 4 : 2;
     return revolution_arrays("make_cylinder_arrays", p, slices, positions, normals, uvs,
-                             vertex_capacity, indices, index_capacity, &out);
+                             vertex_capacity, indices, index_capacity, out);
 }
 
 MeshSizes uv_sphere_sizes(int slices, int stacks) {
@@ -401,7 +385,7 @@ Status make_uv_sphere_arrays(float radius, int slices, int stacks, Vec3* positio
             m.add_oriented(a, c, d, mid);
             m.add_oriented(a, d, b, mid);
         }
-    m.view(&out);
+    out = m.view();
     return Status::success();
 }
 
