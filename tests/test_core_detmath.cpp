@@ -20,6 +20,15 @@ std::uint32_t float_bits(float f) {
     std::memcpy(&u, &f, sizeof u);
     return u;
 }
+
+// FNV-1a over the bytes of each float, low byte first (the transcript's digest).
+struct FloatDigest {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    void add(float v) {
+        const std::uint32_t u = float_bits(v);
+        for (int i = 0; i < 4; ++i) h = (h ^ ((u >> (8 * i)) & 0xffu)) * 0x100000001b3ull;
+    }
+};
 float from_bits(std::uint32_t u) {
     float f;
     std::memcpy(&f, &u, sizeof f);
@@ -246,11 +255,8 @@ TEST_CASE("det_sin, det_cos (double) within 4 double ulps for mesh angles") {
 // ports/cortex-m's transcript (host gcc -O2, host clang -O0, Cortex-M4F and M7 at -Os), and
 // this file runs at -O2 (make test) and -O1 with sanitizers (make test-sanitize).
 TEST_CASE("detmath digest: fixed bits at every optimisation level and on every target") {
-    std::uint64_t h = 0xcbf29ce484222325ull;
-    auto add = [&](float v) {
-        const std::uint32_t u = float_bits(v);
-        for (int i = 0; i < 4; ++i) h = (h ^ ((u >> (8 * i)) & 0xffu)) * 0x100000001b3ull;
-    };
+    FloatDigest digest;
+    auto add = [&](float v) { digest.add(v); };
     for (int i = 0; i < 4096; ++i) {
         const float x = float(i - 2048) * 0.0123f, u = float(i) / 4096.0f;
         add(det_sinf(x * 37.0f));
@@ -262,15 +268,12 @@ TEST_CASE("detmath digest: fixed bits at every optimisation level and on every t
         add(det_acosf(u * 2.0f - 1.0f));
         add(det_atan2f(x, u - 0.5f));
     }
-    CHECK(h == 0x6baa0d5c02c1a86dull);  // ports/cortex-m transcript line "detmath"
+    CHECK(digest.h == 0x6baa0d5c02c1a86dull);  // ports/cortex-m transcript line "detmath"
 }
 
 TEST_CASE("detmath float-arithmetic digest: fixed bits at every optimisation level and target") {
-    std::uint64_t h = 0xcbf29ce484222325ull;
-    auto add = [&](float v) {
-        const std::uint32_t u = float_bits(v);
-        for (int i = 0; i < 4; ++i) h = (h ^ ((u >> (8 * i)) & 0xffu)) * 0x100000001b3ull;
-    };
+    FloatDigest digest;
+    auto add = [&](float v) { digest.add(v); };
     for (int i = 0; i < 4096; ++i) {
         const float x = float(i - 2048) * 0.0123f, u = float(i) / 4096.0f;
         add(det_expf_fast(x * 0.5f));
@@ -278,5 +281,5 @@ TEST_CASE("detmath float-arithmetic digest: fixed bits at every optimisation lev
         add(det_logf_fast(float(i + 1) * 1.0e-9f));
         add(det_sinf_fast(x * 37.0f));
     }
-    CHECK(h == 0x2c5acc37dd3d0b04ull);  // ports/cortex-m transcript line "detmath fast"
+    CHECK(digest.h == 0x2c5acc37dd3d0b04ull);  // ports/cortex-m transcript line "detmath fast"
 }
