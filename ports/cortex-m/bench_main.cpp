@@ -86,6 +86,22 @@ Vec2 g_sphere_uv[kSphereVertices];
 std::uint32_t g_sphere_idx[kSphereIndices];
 volatile float g_sink;
 
+// The frame drawn band by band with a flat shader: the rasterizer's own cost per pixel
+// (set-up, coverage, interpolation), its statistics summed over the bands.
+bool draw_flat_in_bands(const Camera& cam, const MeshView& mesh, const DrawOptions& opt,
+                        RasterStats& stats) {
+    auto flat = [](const Fragment& f, void*) {
+        return Rgb8{std::uint8_t(f.x), std::uint8_t(f.y), 0};
+    };
+    for (int y0 = 0; y0 < kW; y0 += kRows) {
+        const FrameBand band = make_band(RgbView{g_color, kW, kRows, kW},
+                                         FloatView{g_depth, kW, kRows, kW}, y0, kW, kW);
+        clear_band(band, Rgb8{0, 0, 0});
+        if (!draw_mesh(cam, band, mesh, opt, flat, nullptr, &stats)) return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 int main() {
@@ -130,18 +146,9 @@ int main() {
         return 1;
     const Camera cam = perspective_camera({3.6f, 3.0f, 4.6f}, {0, 0, 0}, {0, 1, 0}, 30.0f, kW, kW);
     DrawOptions opt;
-    // A flat shader: the rasterizer's own cost per pixel (set-up, coverage, interpolation).
     RasterStats flat_stats;
-    auto flat = [](const Fragment& f, void*) {
-        return Rgb8{std::uint8_t(f.x), std::uint8_t(f.y), 0};
-    };
     timer_start();
-    for (int y0 = 0; y0 < kW; y0 += kRows) {
-        const FrameBand band = make_band(RgbView{g_color, kW, kRows, kW},
-                                         FloatView{g_depth, kW, kRows, kW}, y0, kW, kW);
-        clear_band(band, Rgb8{0, 0, 0});
-        if (!draw_mesh(cam, band, cube, opt, flat, nullptr, &flat_stats)) return 1;
-    }
+    if (!draw_flat_in_bands(cam, cube, opt, flat_stats)) return 1;
     bench_line("rasterized cube 128x128 in 16-row bands, flat shader (M4F)",
                instructions_since_start(), std::uint64_t(flat_stats.fragments_shaded),
                "rasterized pixel");
@@ -151,12 +158,7 @@ int main() {
         return 1;
     RasterStats sphere_stats;
     timer_start();
-    for (int y0 = 0; y0 < kW; y0 += kRows) {
-        const FrameBand band = make_band(RgbView{g_color, kW, kRows, kW},
-                                         FloatView{g_depth, kW, kRows, kW}, y0, kW, kW);
-        clear_band(band, Rgb8{0, 0, 0});
-        if (!draw_mesh(cam, band, sphere, opt, flat, nullptr, &sphere_stats)) return 1;
-    }
+    if (!draw_flat_in_bands(cam, sphere, opt, sphere_stats)) return 1;
     const std::uint64_t sphere_instructions = instructions_since_start();
     bench_line("rasterized UV sphere 48x24 128x128 in 16-row bands, flat shader (M4F)",
                sphere_instructions, std::uint64_t(sphere_stats.triangles_in) / (kW / kRows),
