@@ -38,9 +38,10 @@ typedef float Float4 __attribute__((vector_size(16)));
 typedef int Int4 __attribute__((vector_size(16)));
 
 inline Float4 splat(float v) { return Float4{v, v, v, v}; }
-
-// detail::lerp on four fractions at once, with the same operation order.
-inline Float4 lerp4(Float4 a, Float4 b, Float4 t) { return (splat(1.0f) - t) * a + t * b; }
+#else
+typedef float Float4;  // without the extension: one lane, the loops below run four times
+inline Float4 splat(float v) { return v; }
+#endif
 
 // The eight nodes of one cell, each in all four lanes: loaded once per cell of the row.
 struct CellCorners4 {
@@ -52,6 +53,11 @@ inline void load_corners4(const float* base, std::size_t side, std::size_t plane
                         base[plane], base[plane + 1], base[plane + side], base[plane + side + 1]};
     for (int k = 0; k < 8; ++k) c->d[k] = splat(v[k]);
 }
+
+#if defined(__GNUC__) || defined(__clang__)
+
+// detail::lerp on four fractions at once, with the same operation order.
+inline Float4 lerp4(Float4 a, Float4 b, Float4 t) { return (splat(1.0f) - t) * a + t * b; }
 
 // trilinear_corners for four samples of one cell (the same eight nodes, four x fractions).
 inline void trilinear_corners4(const CellCorners4& c, const float* fx, Float4 ty, Float4 tz,
@@ -98,17 +104,6 @@ void split_row4_inside(float start, float step, int i, int* cell, float* fractio
     std::memcpy(fraction, &f, sizeof f);
 }
 #else
-struct CellCorners4 {
-    float d[8];
-};
-typedef float Float4;
-inline Float4 splat(float v) { return v; }
-inline void load_corners4(const float* base, std::size_t side, std::size_t plane,
-                          CellCorners4* c) {
-    const float v[8] = {base[0],     base[1],         base[side],         base[side + 1],
-                        base[plane], base[plane + 1], base[plane + side], base[plane + side + 1]};
-    for (int k = 0; k < 8; ++k) c->d[k] = v[k];
-}
 void trilinear_corners4(const CellCorners4& c, const float* fx, float fy, float fz, float* out) {
     for (int k = 0; k < 4; ++k) out[k] = trilinear_corners(c.d, fx[k], fy, fz);
 }
@@ -167,10 +162,7 @@ void turbulence_row(const LatticeView& lattice, Vec3 start, float step_x, int n,
         // quarter of a cell) they share its eight nodes, loaded once per cell, and go through
         // eq. (6) as one vector; otherwise, and for the last few, one by one.
         auto single = [&](int l) {
-            const float* b = row + std::size_t(cell[l]);
-            const float d[8] = {b[0],     b[1],         b[side],         b[side + 1],
-                                b[plane], b[plane + 1], b[plane + side], b[plane + side + 1]};
-            out[i0 + l] = trilinear_corners(d, fx[l], fy, fz);
+            out[i0 + l] = detail::cell_trilinear(lattice, cell[l], iy, iz, fx[l], fy, fz);
         };
         int k = 0;
         for (; k + 4 <= m; k += 4) {
