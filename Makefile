@@ -127,8 +127,8 @@ define ensure_packages
 	if [ -n "$$missing" ]; then \
 	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
 	    echo "shitsukan: installing$$missing (apt-get)"; \
-	    apt-get update -qq >/dev/null && \
-	    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing >/dev/null || \
+	    apt-get -o DPkg::Lock::Timeout=600 update -qq >/dev/null && \
+	    DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y -qq $$missing >/dev/null || \
 	    { echo "shitsukan: apt-get install$$missing failed"; exit 1; }; \
 	  else echo "shitsukan: missing packages:$$missing -- run: sudo apt-get install$$missing"; exit 1; fi; \
 	fi

@@ -9,7 +9,7 @@ WrControlMesh make_control_mesh(int cols, int rows) {
     WrControlMesh m;
     m.cols = cols > 0 ? cols : 0;
     m.rows = rows > 0 ? rows : 0;
-    if (long(m.cols) * long(m.rows) <= kMaxWrControlPoints)
+    if ((long long)m.cols * m.rows <= kMaxWrControlPoints)
         m.points.resize(std::size_t(m.cols) * std::size_t(m.rows));
     return m;
 }
@@ -18,7 +18,7 @@ Status validate_control_mesh(const WrControlMesh& mesh, SurfaceBasis basis, int 
     if (degree < 1 || degree > kMaxBasisDegree)
         return Status::error(StatusCode::invalid_argument, "degree n must be in 1..%d (got %d)",
                              kMaxBasisDegree, degree);
-    if (long(mesh.cols) * long(mesh.rows) > kMaxWrControlPoints)
+    if ((long long)mesh.cols * mesh.rows > kMaxWrControlPoints)
         return Status::error(
             StatusCode::too_large,
             "control mesh of %d x %d points is larger than the limit of %ld points", mesh.cols,
