@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "commands.hpp"
+#include "shitsukan/core/output_file.hpp"
 #include "shitsukan/core/config.hpp"
 
 namespace {
@@ -33,6 +34,9 @@ int usage(std::FILE* out) {
 
 int main(int argc, char** argv) {
     using namespace shitsukan::cli;
+    // Ctrl-C, kill or a hang-up while files are written: their temporaries are removed and
+    // nothing appears under the requested names (core/output_file.hpp).
+    shitsukan::remove_temporaries_on_signals();
     if (argc < 2) return usage(stderr);
     const char* c = argv[1];
     if (std::strcmp(c, "--help") == 0 || std::strcmp(c, "-h") == 0 || std::strcmp(c, "help") == 0)
