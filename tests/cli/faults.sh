@@ -48,6 +48,8 @@ intact() {  # intact FILE...: each still holds $OLD
 # --- disk full ---
 "$BIN" marble --size 64 -o /dev/full --quiet 2> err.txt
 failed $? . "/dev/full" "No space left on device" && ok
+"$BIN" ist --N 3 --K 4 > /dev/full 2> err.txt
+failed $? . "standard output" "No space left on device" && ok
 mkdir quota && echo "$OLD" > quota/m.png
 ( ulimit -f 16; exec "$BIN" marble --size 256 -o quota/m.png --quiet ) 2> err.txt
 failed $? quota "quota/m.png" "File too large" && intact quota/m.png && ok
