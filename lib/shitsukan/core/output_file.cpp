@@ -174,7 +174,8 @@ Status OutputFile::commit() {
     if (error_ != 0) return fail(nullptr, error_);
     if (temp_.empty()) return Status::success();
     if (t_set != nullptr) {
-        t_set->hold(target_, temp_);
+        t_set->hold(std::unique_ptr<OutputSet::Held>(
+            new OutputSet::Held{target_, temp_, std::string(), -1}));
     } else if (std::rename(temp_.c_str(), target_.c_str()) != 0) {
         return fail(nullptr, errno);
     }
@@ -187,18 +188,15 @@ OutputSet::OutputSet() : outer_(t_set) { t_set = this; }
 
 OutputSet::~OutputSet() {
     if (active_) t_set = outer_;
-    for (Held& h : held_) {
-        unlink(h.temp.c_str());
-        unregister_temporary(h.slot);
+    for (const std::unique_ptr<Held>& h : held_) {
+        unlink(h->temp.c_str());
+        unregister_temporary(h->slot);
     }
 }
 
-void OutputSet::hold(const std::string& path, const std::string& temp) {
-    held_.push_back(Held{path, temp, std::string(), -1});
-    for (Held& h : held_) {  // the vector may have moved the names: register them again
-        unregister_temporary(h.slot);
-        h.slot = register_temporary(h.temp.c_str());
-    }
+void OutputSet::hold(std::unique_ptr<Held> held) {
+    if (held->slot < 0) held->slot = register_temporary(held->temp.c_str());
+    held_.push_back(std::move(held));
 }
 
 Status OutputSet::commit() {
@@ -206,16 +204,13 @@ Status OutputSet::commit() {
     active_ = false;
     t_set = outer_;
     if (outer_ != nullptr) {  // the enclosing set renames them
-        for (Held& h : held_) {
-            outer_->hold(h.path, h.temp);
-            unregister_temporary(h.slot);
-        }
+        for (std::unique_ptr<Held>& h : held_) outer_->hold(std::move(h));
         held_.clear();
         return Status::success();
     }
     const HeldSignals held_signals;
     Status s = rename_all();
-    for (Held& h : held_) unregister_temporary(h.slot);
+    for (const std::unique_ptr<Held>& h : held_) unregister_temporary(h->slot);
     held_.clear();
     return s;
 }
@@ -224,31 +219,31 @@ Status OutputSet::commit() {
 // renamed ones are put back (or removed when they are new) and the rest removed.
 Status OutputSet::rename_all() {
     struct stat st;
-    for (Held& h : held_)
-        if (lstat(h.path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) {
-            h.backup = sibling_name(h.path, "old");
-            if (link(h.path.c_str(), h.backup.c_str()) != 0) h.backup.clear();
+    for (const std::unique_ptr<Held>& h : held_)
+        if (lstat(h->path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) {
+            h->backup = sibling_name(h->path, "old");
+            if (link(h->path.c_str(), h->backup.c_str()) != 0) h->backup.clear();
         }
     std::size_t done = 0;
     int error = 0;
     for (; done < held_.size(); ++done)
-        if (std::rename(held_[done].temp.c_str(), held_[done].path.c_str()) != 0) {
+        if (std::rename(held_[done]->temp.c_str(), held_[done]->path.c_str()) != 0) {
             error = errno;
             break;
         }
     for (std::size_t i = 0; i < held_.size(); ++i) {
-        const Held& h = held_[i];
+        const Held* h = held_[i].get();
         if (error != 0 && i < done) {
-            if (h.backup.empty() || std::rename(h.backup.c_str(), h.path.c_str()) != 0)
-                unlink(h.path.c_str());
+            if (h->backup.empty() || std::rename(h->backup.c_str(), h->path.c_str()) != 0)
+                unlink(h->path.c_str());
         } else if (error != 0) {
-            unlink(h.temp.c_str());
+            unlink(h->temp.c_str());
         }
-        if (!h.backup.empty()) unlink(h.backup.c_str());
+        if (!h->backup.empty()) unlink(h->backup.c_str());
     }
     if (error == 0) return Status::success();
     return Status::error(StatusCode::io_error, "cannot write %s: %s (none of the %zu files written)",
-                         held_[done].path.c_str(), reason(error), held_.size());
+                         held_[done]->path.c_str(), reason(error), held_.size());
 }
 
 Status write_text_file(const char* path, const std::string& text) {

@@ -49,6 +49,7 @@
 
 #include <cstddef>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -103,9 +104,9 @@ private:
         std::string path, temp, backup;  // backup: a hard link to the file it replaces
         int slot = -1;
     };
-    void hold(const std::string& path, const std::string& temp);
+    void hold(std::unique_ptr<Held> held);
     Status rename_all();
-    std::vector<Held> held_;
+    std::vector<std::unique_ptr<Held>> held_;  // never moved: the signal handler reads names
     OutputSet* outer_ = nullptr;
     bool active_ = true;
 };
