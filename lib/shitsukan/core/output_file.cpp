@@ -126,15 +126,19 @@ Status OutputFile::open(const char* path) {
     int fd = -1;
     for (int attempt = 0; fd < 0 && attempt < 100; ++attempt) {
         temp_ = sibling_name(target_, "tmp");
+        slot_ = register_temporary(temp_.c_str());  // before it exists: no unlisted moment
         fd = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd < 0) unregister_temporary(slot_);
         if (fd < 0 && errno != EEXIST) {
             const int e = errno;
             temp_.clear();
             return fail("directory", e);
         }
     }
-    if (fd < 0) return fail("directory", EEXIST);
-    slot_ = register_temporary(temp_.c_str());
+    if (fd < 0) {
+        temp_.clear();
+        return fail("directory", EEXIST);
+    }
     if (replacing) (void)fchmod(fd, mode);  // keep the old file's mode; a failure keeps 0666
     f_ = fdopen(fd, "wb");
     if (f_ == nullptr) {
