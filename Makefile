@@ -104,10 +104,12 @@ cli:
 	@$(SUBMAKE) $(CLI)
 
 # The tool's tests run the binary: good runs make their files, each bad flag exits 2 with a
-# one-line message naming it (tests/cli/run.sh).
+# one-line message naming it (tests/cli/run.sh); failed writes (disk full, read-only or missing
+# directories, a signal mid-write) leave nothing behind and name the reason (tests/cli/faults.sh).
 test-cli: deps
 	@$(SUBMAKE) $(CLI)
 	bash tests/cli/run.sh $(CLI)
+	bash tests/cli/faults.sh $(CLI)
 
 # ---- packages: installed when missing (apt-get as root), otherwise named ----
 REQUIRED := /usr/include/doctest/doctest.h:doctest-dev /usr/include/stb/stb_image_write.h:libstb-dev

@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "flags.hpp"
 #include "shitsukan/bark/bark.hpp"
+#include "shitsukan/core/output_file.hpp"
 #include "shitsukan/geom/obj.hpp"
 #include "shitsukan/image/image_io.hpp"
 #include "shitsukan/image/raster_canvas.hpp"
@@ -79,6 +80,7 @@ int run_bark(int argc, char** argv) {
     // Defaults shown in --help are camphor's; the chosen species replaces those not given.
     const int rc = f.parse(argc, argv);
     if (rc != kParsed) return rc;
+    if (int e = f.check_prefix("o", out)) return e;
     csv = !no_csv;
     const Species sp = Species(species);
     p.species = species_preset(sp);
@@ -106,6 +108,7 @@ int run_bark(int argc, char** argv) {
     if (s) s = measure_regions(bark, T, W, rep);
     if (!s) return f.fail_status(s);
     RgbImage map;
+    OutputSet files;  // every file of the run appears, or none (core/output_file.hpp)
     if (!(s = draw_cracks(bark, T, W, px_per_cm, &map))) return f.fail_status(s);
     if (!(s = write_png((out + "_cracks.png").c_str(), map.view()))) return f.fail_status(s);
     if (!(s = write_crack_svg(bark, T, W, (out + ".svg").c_str(), px_per_cm)))
@@ -114,6 +117,7 @@ int run_bark(int argc, char** argv) {
     TriangleMesh trunk;
     if (!(s = make_trunk_mesh(bark, T, W, trunk))) return f.fail_status(s);
     if (!(s = write_obj((out + "_trunk.obj").c_str(), trunk))) return f.fail_status(s);
+    if (!(s = files.commit())) return f.fail_status(s);
     std::fprintf(stderr,
                  "shitsukan bark: %s, %d breaks, %zu regions of mean %.2f x %.2f cm (width x "
                  "height, Table 3's measure); wrote %s_cracks.png, %s.svg%s, %s_trunk.obj\n",

@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "flags.hpp"
+#include "shitsukan/core/output_file.hpp"
 #include "shitsukan/geom/obj.hpp"
 #include "shitsukan/image/image_io.hpp"
 #include "shitsukan/image/pfm.hpp"
@@ -143,6 +144,7 @@ int run_leather(int argc, char** argv) {
               "also <o>_relief.obj, one vertex every this many pixels (0 = no OBJ)");
     const int rc = f.parse(argc, argv);
     if (rc != kParsed) return rc;
+    if (int e = f.check_prefix("o", out)) return e;
     BezierChain chain = table1_section(Table1Section(section));
     if (!control.empty()) {
         if (f.given("section")) return f.fail("--control and --section: give one of them");
@@ -171,6 +173,7 @@ int run_leather(int argc, char** argv) {
     Gray16Image height(w, h);
     encode_height16(maps, height.data());
     const std::string height_path = out + "_height16.png", normal_path = out + "_normal.png";
+    OutputSet files;  // every file of the run appears, or none (core/output_file.hpp)
     if (!(s = write_png16(height_path.c_str(), height.view()))) return f.fail_status(s);
     std::vector<std::uint8_t> rgb(3 * std::size_t(w) * std::size_t(h));
     encode_normal_rgb(maps, rgb.data());
@@ -204,6 +207,7 @@ int run_leather(int argc, char** argv) {
         if (!(s = make_relief_mesh(maps, mesh_step, 1.0f, mesh))) return f.fail_status(s);
         if (!(s = write_obj((out + "_relief.obj").c_str(), mesh))) return f.fail_status(s);
     }
+    if (!(s = files.commit())) return f.fail_status(s);
     progress.report(1.0f);
     std::fprintf(stderr,
                  "shitsukan leather: %d scales; wrote %s, %s, %s_pattern.svg%s%s (%d x %d; height "

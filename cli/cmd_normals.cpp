@@ -72,7 +72,7 @@ int run_normals(int argc, char** argv) {
     const int rc = f.parse(argc, argv);
     if (rc != kParsed) return rc;
     if (in.empty()) return f.fail("a height map is required (shitsukan normals HEIGHT.png)");
-    if (!ends_with(out, ".png")) return f.fail("-o must name a .png file (got \"%s\")", out.c_str());
+    if (int e = f.check_output("o", out, ".png")) return e;
     std::vector<float> heights;
     int w = 0, rows = 0;
     Status s = read_heights(in, &heights, &w, &rows);

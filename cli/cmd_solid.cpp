@@ -5,6 +5,7 @@
 
 #include "commands.hpp"
 #include "flags.hpp"
+#include "shitsukan/core/output_file.hpp"
 #include "shitsukan/geom/mesh_fit.hpp"
 #include "shitsukan/geom/obj_read.hpp"
 #include "shitsukan/image/image_io.hpp"
@@ -110,6 +111,11 @@ int run_solid(int argc, char** argv, bool wood) {
         return f.fail("--tileable is for slices; --obj bakes the mesh's own surface");
     if (!view.empty() && obj.empty()) return f.fail("--view needs --obj");
     if (!pfm.empty() && !obj.empty()) return f.fail("--pfm is for slices (not with --obj)");
+    if (int e = f.check_output("o", out, ".png")) return e;
+    if (!pfm.empty())
+        if (int e = f.check_output("pfm", pfm, ".pfm")) return e;
+    if (!view.empty())
+        if (int e = f.check_output("view", view, ".png")) return e;
 
     FractalParams lp = defaults;
     lp.R = R, lp.beta = beta, lp.seed = seed;
@@ -164,6 +170,7 @@ int run_solid(int argc, char** argv, bool wood) {
     if (!s) return f.fail_status(s);
     const LatticeView lattice = tileable ? periodic.view() : type1.view();
     const float n = float(1 << R);
+    OutputSet files;  // every file of the run appears, or none (core/output_file.hpp)
 
     if (!obj.empty()) {
         TriangleMesh mesh;
@@ -176,8 +183,6 @@ int run_solid(int argc, char** argv, bool wood) {
                                    Rgb8{0, 0, 0}, 4, f.progress("baking onto the uv map"));
             if (s) s = write_png(out.c_str(), texture.view());
             if (!s) return f.fail_status(s);
-            std::fprintf(stderr, "shitsukan %s: wrote %s (%d x %d uv texture of %s)\n",
-                         f.command(), out.c_str(), size, size, obj.c_str());
         } else if (view.empty()) {
             return f.fail("--obj %s has no uv (vt) to bake onto; add --view picture.png to "
                           "render the mesh with the solid texture instead", obj.c_str());
@@ -191,9 +196,14 @@ int run_solid(int argc, char** argv, bool wood) {
             s = render_solid_texture(cam, mesh.view(), lattice, material, picture, shading);
             if (s) s = write_png(view.c_str(), picture.view());
             if (!s) return f.fail_status(s);
+        }
+        if (!(s = files.commit())) return f.fail_status(s);
+        if (!mesh.uvs.empty())
+            std::fprintf(stderr, "shitsukan %s: wrote %s (%d x %d uv texture of %s)\n",
+                         f.command(), out.c_str(), size, size, obj.c_str());
+        if (!view.empty())
             std::fprintf(stderr, "shitsukan %s: wrote %s (%d triangles)\n", f.command(),
                          view.c_str(), mesh.triangle_count());
-        }
         return 0;
     }
 
@@ -214,6 +224,7 @@ int run_solid(int argc, char** argv, bool wood) {
                            pfm.empty() ? nullptr : &density, f.progress("slice"));
     if (s) s = write_png(out.c_str(), image.view());
     if (s && !pfm.empty()) s = write_pfm(pfm.c_str(), density.data(), size, size, 1);
+    if (s) s = files.commit();
     if (!s) return f.fail_status(s);
     std::fprintf(stderr, "shitsukan %s: wrote %s%s%s (%d x %d%s)\n", f.command(), out.c_str(),
                  pfm.empty() ? "" : " and ", pfm.c_str(), size, size,

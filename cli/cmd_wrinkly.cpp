@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "flags.hpp"
+#include "shitsukan/core/output_file.hpp"
 #include "shitsukan/geom/obj.hpp"
 #include "shitsukan/image/image_io.hpp"
 #include "shitsukan/raster/camera.hpp"
@@ -128,6 +129,7 @@ int run_wrinkly(int argc, char** argv) {
     f.text("o", &out, "output prefix");
     const int rc = f.parse(argc, argv);
     if (rc != kParsed) return rc;
+    if (int e = f.check_prefix("o", out)) return e;
     if (mesh_path.empty()) return f.fail("--mesh is required (a control-mesh file; see --help)");
     if (delta != -1.0f && !(delta > 0.0f))
         return f.fail("--delta must be in (0, 1) or -1 (got %g)", double(delta));
@@ -171,6 +173,7 @@ int run_wrinkly(int argc, char** argv) {
     if (!(s = tessellate_wr_surface(surface, form == 0 ? nullptr : &hs, o, wm)))
         return f.fail_status(s);
     progress.report(0.7f);
+    OutputSet files;  // the OBJ and the picture appear together, or neither
     if (!(s = write_obj((out + ".obj").c_str(), wm.mesh))) return f.fail_status(s);
     // A picture: the mesh's bounding box seen from above-front, two-sided Lambert on the vertex
     // colours (light and view chosen here, as examples/30).
@@ -199,6 +202,7 @@ int run_wrinkly(int argc, char** argv) {
     dopt.cull = CullMode::none;
     s = draw_mesh(camera, band, wm.mesh.view(), dopt, shader);
     if (s) s = write_png((out + ".png").c_str(), color.view());
+    if (s) s = files.commit();
     if (!s) return f.fail_status(s);
     progress.report(1.0f);
     std::fprintf(stderr, "shitsukan wrinkly: %d triangles; wrote %s.obj, %s.png\n",

@@ -1,6 +1,7 @@
 // cli/flags.cpp — see flags.hpp.
 #include "flags.hpp"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdarg>
@@ -8,7 +9,8 @@
 #include <cstdlib>
 #include <cstring>
 
-#include <unistd.h>  // isatty (POSIX)
+#include <sys/stat.h>  // stat (POSIX)
+#include <unistd.h>    // isatty (POSIX)
 
 namespace shitsukan::cli {
 
@@ -86,6 +88,42 @@ int FlagSet::fail(const char* format, ...) const {
     va_end(args);
     std::fprintf(stderr, "\n");
     return 2;
+}
+
+namespace {
+
+bool ends_with_nocase(const std::string& s, const char* tail) {
+    const std::size_t n = std::strlen(tail);
+    if (s.size() < n) return false;
+    for (std::size_t i = 0; i < n; ++i)
+        if (std::tolower((unsigned char)s[s.size() - n + i]) != std::tolower((unsigned char)tail[i]))
+            return false;
+    return true;
+}
+
+std::string flag_name(const char* flag) {
+    return std::strcmp(flag, "o") == 0 ? "-o" : std::string("--") + flag;
+}
+
+}  // namespace
+
+int FlagSet::check_output(const char* flag, const std::string& path, const char* extension) const {
+    if (ends_with_nocase(path, extension) && path.size() > std::strlen(extension)) return 0;
+    struct stat st;  // a device or a FIFO (/dev/stdout, /dev/null) takes any bytes
+    if (stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) return 0;
+    return fail("%s must name a %s file (got \"%s\")", flag_name(flag).c_str(), extension,
+                path.c_str());
+}
+
+int FlagSet::check_prefix(const char* flag, const std::string& prefix) const {
+    static const char* const kFileKinds[] = {".png", ".jpg", ".jpeg", ".gif", ".bmp", ".tga",
+                                             ".tif", ".tiff", ".webp", ".exr", ".hdr", ".pfm",
+                                             ".ppm", ".pgm", ".svg", ".obj", ".csv", ".ply"};
+    for (const char* kind : kFileKinds)
+        if (ends_with_nocase(prefix, kind))
+            return fail("%s is the prefix of the files written (<prefix>_...), not a %s file "
+                        "(got \"%s\")", flag_name(flag).c_str(), kind, prefix.c_str());
+    return 0;
 }
 
 int FlagSet::fail_status(const Status& s) const {

@@ -36,6 +36,12 @@ public:
     bool given(const char* name) const;
     // One line "shitsukan <command>: <message>" on stderr; returns 2.
     int fail(const char* format, ...) const;
+    // Output names (0 when fine, else 2 with one line naming the flag): a file flag must end
+    // in the one extension the command writes ("-o must name a .png file (got "x.jpg")") or
+    // name a device or FIFO (/dev/stdout); a
+    // prefix flag (the command adds "_height16.png" and the like) must not end in one.
+    int check_output(const char* flag, const std::string& path, const char* extension) const;
+    int check_prefix(const char* flag, const std::string& prefix) const;
     // A library error: "shitsukan <command>: <message>"; returns 1.
     int fail_status(const Status& s) const;
     const char* command() const { return command_; }

@@ -5,10 +5,12 @@
 //   shitsukan leather --size 2048 -o croc                 tokai1994 §3: height + normal maps
 //   shitsukan bark --species pine -o pine                 hirota1998 §3: crack map, SVG, CSV, OBJ
 //   shitsukan <command> --help                            every flag, its default, the paper
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 
 #include "commands.hpp"
+#include "shitsukan/core/output_file.hpp"
 #include "shitsukan/core/config.hpp"
 
 namespace {
@@ -29,9 +31,7 @@ int usage(std::FILE* out) {
     return out == stderr ? 2 : 0;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
     using namespace shitsukan::cli;
     if (argc < 2) return usage(stderr);
     const char* c = argv[1];
@@ -51,4 +51,19 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "shitsukan: unknown command \"%s\" (marble, wood, leather, wrinkly, bark, "
                          "ist, normals, version; see shitsukan --help)\n", c);
     return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    // Ctrl-C, kill or a hang-up while files are written: their temporaries are removed and
+    // nothing appears under the requested names (core/output_file.hpp).
+    shitsukan::remove_temporaries_on_signals();
+    const int rc = run(argc, argv);
+    // Standard output (ist's table, --help) is checked like every file: `ist > /dev/full` fails.
+    if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        std::fprintf(stderr, "shitsukan: cannot write standard output: %s\n", std::strerror(errno));
+        return rc == 0 ? 1 : rc;
+    }
+    return rc;
 }

@@ -30,6 +30,7 @@
 #include "shitsukan/core/gaussian.hpp"
 #include "shitsukan/core/hash.hpp"
 #include "shitsukan/core/memory_budget.hpp"
+#include "shitsukan/core/output_file.hpp"
 #include "shitsukan/core/prng.hpp"
 #include "shitsukan/core/progress.hpp"
 #include "shitsukan/core/scalar.hpp"

@@ -4,6 +4,7 @@
 #include <cstdarg>
 #include <cstdio>
 
+#include "shitsukan/core/output_file.hpp"
 #include "shitsukan/image/image_io.hpp"
 
 namespace shitsukan::figures {
@@ -121,12 +122,7 @@ Status FigureContext::save_markdown(const std::string& markdown) {
 }
 
 Status FigureContext::save_text(const std::string& suffix, const std::string& text) {
-    std::string p = path(suffix);
-    std::FILE* f = std::fopen(p.c_str(), "wb");
-    if (!f) return Status::error(StatusCode::io_error, "cannot open %s for writing", p.c_str());
-    bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-    ok = (std::fclose(f) == 0) && ok;
-    if (!ok) return Status::error(StatusCode::io_error, "writing %s failed", p.c_str());
+    SHITSUKAN_TRY(write_text_file(path(suffix).c_str(), text));  // core/output_file.hpp
     outputs_.push_back(id_ + suffix);
     return Status::success();
 }

@@ -123,6 +123,17 @@ refused "--strength must be a number in [0, 1e+06]" normals own_height16.png --s
 refused "a height map is required" normals
 refused "-o must name a .png file" normals own_height16.png -o n.jpg
 refused "unknown command" frobnicate
+# an output name the command cannot write: refused before any work, nothing written
+refused "-o must name a .png file (got \"x.jpg\")" marble --size 8 -o x.jpg
+refused "-o must name a .png file" wood --size 8 -o x.tif
+refused "--pfm must name a .pfm file" marble --size 8 --pfm d.png
+refused "--view must name a .png file" marble --obj pine_trunk.obj --view v.jpg
+refused "-o is the prefix of the files written" leather --size 8 -o croc.png
+refused "-o is the prefix of the files written" bark -o pine.svg
+refused "-o is the prefix of the files written" wrinkly --mesh broken.mesh -o wr.obj
+for f in x.jpg x.tif d.png v.jpg croc.png_height16.png pine.svg_cracks.png; do
+    if [ -e "$f" ]; then bad "$f written by a refused run"; else ok; fi
+done
 refused "takes no value" marble --tileable=yes
 refused "unexpected argument" marble stray
 # a malformed control-mesh file: exit 1 with the line number

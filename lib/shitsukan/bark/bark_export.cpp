@@ -9,28 +9,12 @@
 
 #include "shitsukan/bark/crack_drawing.hpp"
 #include "shitsukan/core/format_number.hpp"
+#include "shitsukan/core/output_file.hpp"
 #include "shitsukan/core/scalar.hpp"
 
 namespace shitsukan {
 
 namespace {
-
-struct File {
-    std::FILE* f = nullptr;
-    explicit File(const std::string& path) : f(std::fopen(path.c_str(), "wb")) {}
-    ~File() {
-        if (f) std::fclose(f);
-    }
-    Status close(const std::string& path) {
-        const bool bad = std::ferror(f) != 0;
-        const bool closed = std::fclose(f) == 0;
-        f = nullptr;
-        if (bad || !closed)
-            return Status::error(StatusCode::io_error, "bark export: writing %s failed",
-                                 path.c_str());
-        return Status::success();
-    }
-};
 
 // One CSV row: integers, and floats as the shortest decimal that reads back to the same
 // float (core/format_number), no printf per number.
@@ -56,9 +40,9 @@ public:
         text_.append(buf, std::size_t(format_float_round_trip(buf, sizeof buf, v)));
         return *this;
     }
-    void write(std::FILE* f) {
+    void write(OutputFile& f) {
         text_ += '\n';
-        std::fwrite(text_.data(), 1, text_.size(), f);
+        f.write(text_.data(), text_.size());
         text_.clear();
         first_ = true;
     }
@@ -71,11 +55,6 @@ private:
     std::string text_;
     bool first_ = true;
 };
-
-Status open_error(const std::string& path) {
-    return Status::error(StatusCode::io_error, "bark export: cannot open %s for writing",
-                         path.c_str());
-}
 
 Status check_time(const BarkCylinder& bark, float t, const Vec3* W) {
     if (!W || bark.net.W.size() != bark.net.X.size())
@@ -92,24 +71,23 @@ Status write_bark_csv(const BarkCylinder& bark, float t, const Vec3* W, const ch
     SHITSUKAN_TRY(check_time(bark, t, W));
     if (!prefix) return Status::error(StatusCode::invalid_argument, "write_bark_csv: no prefix");
     const SpringNetwork& net = bark.net;
+    OutputSet files;  // the three appear together or not at all
     {
-        const std::string path = std::string(prefix) + "_nodes.csv";
-        File f(path);
-        if (!f.f) return open_error(path);
-        std::fprintf(f.f, "id,c,r,u_cm,z_cm,area_cm2\n");
+        OutputFile f;
+        SHITSUKAN_TRY(f.open(std::string(prefix) + "_nodes.csv"));
+        f.print("id,c,r,u_cm,z_cm,area_cm2\n");
         CsvRow row;
         for (int p = 0; p < net.node_count(); ++p) {
             const Vec3 x = node_position(bark, std::uint32_t(p), t, W);
             row.integer(p).integer(bark.column_of(p)).integer(bark.row_of(p));
-            row.real(x.x).real(x.y).real(bark.node_area[std::size_t(p)]).write(f.f);
+            row.real(x.x).real(x.y).real(bark.node_area[std::size_t(p)]).write(f);
         }
-        SHITSUKAN_TRY(f.close(path));
+        SHITSUKAN_TRY(f.commit());
     }
     {
-        const std::string path = std::string(prefix) + "_springs.csv";
-        File f(path);
-        if (!f.f) return open_error(path);
-        std::fprintf(f.f, "id,i,j,c,r,dir,family,l0_cm,eps_c,t_break,width_cm\n");
+        OutputFile f;
+        SHITSUKAN_TRY(f.open(std::string(prefix) + "_springs.csv"));
+        f.print("id,i,j,c,r,dir,family,l0_cm,eps_c,t_break,width_cm\n");
         CsvRow row;
         for (std::size_t s = 0; s < net.springs.size(); ++s) {
             const BarkSpring& sp = net.springs[s];
@@ -118,20 +96,20 @@ Status write_bark_csv(const BarkCylinder& bark, float t, const Vec3* W, const ch
             row.integer((long long)s).integer(sp.i).integer(sp.j);
             row.integer(sp.key >> 32).integer((sp.key >> 2) & 0x3fffffffu).integer(sp.key & 3u);
             row.integer(int(sp.family)).real(sp.l0).real(sp.eps_c);
-            row.real(broken ? sp.t_break : -1.0f).real(width).write(f.f);
+            row.real(broken ? sp.t_break : -1.0f).real(width).write(f);
         }
-        SHITSUKAN_TRY(f.close(path));
+        SHITSUKAN_TRY(f.commit());
     }
-    const std::string path = std::string(prefix) + "_triangles.csv";
-    File f(path);
-    if (!f.f) return open_error(path);
-    std::fprintf(f.f, "id,a,b,c,s_ab,s_bc,s_ca\n");
-    for (std::size_t i = 0; i < bark.triangles.size(); ++i) {
+    OutputFile f;
+    SHITSUKAN_TRY(f.open(std::string(prefix) + "_triangles.csv"));
+    f.print("id,a,b,c,s_ab,s_bc,s_ca\n");
+    for (std::size_t i = 0; i < bark.triangles.size() && !f.failed(); ++i) {
         const ConnectionTriangle& tri = bark.triangles[i];
-        std::fprintf(f.f, "%zu,%u,%u,%u,%u,%u,%u\n", i, tri.node[0], tri.node[1], tri.node[2],
-                     tri.spring[0], tri.spring[1], tri.spring[2]);
+        f.print("%zu,%u,%u,%u,%u,%u,%u\n", i, tri.node[0], tri.node[1], tri.node[2],
+                tri.spring[0], tri.spring[1], tri.spring[2]);
     }
-    return f.close(path);
+    SHITSUKAN_TRY(f.commit());
+    return files.commit();
 }
 
 Status write_crack_svg(const BarkCylinder& bark, float t, const Vec3* W, const char* path,
@@ -145,37 +123,36 @@ Status write_crack_svg(const BarkCylinder& bark, float t, const Vec3* W, const c
     const float C = bark.circumference * (1.0f + hoop_strain(bark.params, t));
     const float H = bark.H0 * (1.0f + axial_strain(bark.params, t));
     const double s = px_per_cm, w = double(C) * s, h = double(H) * s;
-    File f(path);
-    if (!f.f) return open_error(path);
-    std::fprintf(f.f,
-                 "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.1f\" height=\"%.1f\" "
-                 "viewBox=\"0 0 %.3f %.3f\">\n"
-                 "<!-- hirota1998: unrolled bark at t = %g s; u to the right, z up; cracks as "
-                 "Fig. 4 (width l - l0) -->\n<rect width=\"100%%\" height=\"100%%\" "
-                 "fill=\"#1c140e\"/>\n<g fill=\"#b08a62\">\n",
-                 w, h, w, h, double(t));
+    OutputFile f;
+    SHITSUKAN_TRY(f.open(path));
+    f.print("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.1f\" height=\"%.1f\" "
+            "viewBox=\"0 0 %.3f %.3f\">\n"
+            "<!-- hirota1998: unrolled bark at t = %g s; u to the right, z up; cracks as "
+            "Fig. 4 (width l - l0) -->\n<rect width=\"100%%\" height=\"100%%\" "
+            "fill=\"#1c140e\"/>\n<g fill=\"#b08a62\">\n",
+            w, h, w, h, double(t));
     auto point = [&](Vec3 p) {
-        std::fprintf(f.f, "%.2f,%.2f ", double(p.x) * s, h - double(p.y) * s);
+        f.print("%.2f,%.2f ", double(p.x) * s, h - double(p.y) * s);
     };
     for (const ConnectionTriangle& tri : bark.triangles) {
-        std::fprintf(f.f, "<polygon points=\"");
+        f.print("<polygon points=\"");
         for (int k = 0; k < 3; ++k) point(corner_position(bark, tri.corner[k], tri.node[k], t, W));
-        std::fprintf(f.f, "\"/>\n");
+        f.print("\"/>\n");
     }
-    std::fprintf(f.f, "</g>\n<g fill=\"#1c140e\">\n");
+    f.print("</g>\n<g fill=\"#1c140e\">\n");
     std::vector<CrackRibbon> cracks;
     SHITSUKAN_TRY(crack_ribbons(bark, t, W, cracks));
     for (const CrackRibbon& r : cracks) {
         Vec3 quads[2][4];
         ribbon_quads(r, quads);
         for (auto& quad : quads) {
-            std::fprintf(f.f, "<polygon points=\"");
+            f.print("<polygon points=\"");
             for (const Vec3& p : quad) point(p);
-            std::fprintf(f.f, "\"/>\n");
+            f.print("\"/>\n");
         }
     }
-    std::fprintf(f.f, "</g>\n</svg>\n");
-    return f.close(path);
+    f.print("</g>\n</svg>\n");
+    return f.commit();
 }
 
 Status make_trunk_mesh(const BarkCylinder& bark, float t, const Vec3* W, TriangleMesh& out) {

@@ -18,6 +18,9 @@
 //   return s;
 //   #include "shitsukan/bark/crack_events.hpp"
 //
+// Files are written through core/output_file.hpp: the three CSV files appear together or not
+// at all, and a failure names the path and the reason.
+//
 // CSV (so others can measure the regions independently; all lengths in cm at time t):
 //   nodes:     id,c,r,u_cm,z_cm,area_cm2          unrolled positions (u around, z along)
 //   springs:   id,i,j,c,r,dir,family,l0_cm,eps_c,t_break,width_cm

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "shitsukan/core/format_number.hpp"
+#include "shitsukan/core/output_file.hpp"
 
 namespace shitsukan {
 
@@ -13,7 +14,7 @@ namespace {
 // shortest decimal that reads back to the same float), no printf per number.
 class ObjText {
 public:
-    explicit ObjText(std::FILE* f) : f_(f), buf_(kBlock + kLine) {}
+    explicit ObjText(OutputFile& out) : out_(out), buf_(kBlock + kLine) {}
     void text(const char* s) {
         while (*s) buf_[n_++] = *s++;
     }
@@ -35,18 +36,16 @@ public:
         if (n_ >= kBlock) flush();
     }
     void flush() {
-        if (n_ > 0 && std::fwrite(buf_.data(), 1, n_, f_) != n_) failed_ = true;
+        out_.write(buf_.data(), n_);
         n_ = 0;
     }
-    bool failed() const { return failed_; }
 
 private:
     static constexpr std::size_t kBlock = std::size_t(1) << 16;
     static constexpr std::size_t kLine = 256;  // the longest line: "v" and six numbers
-    std::FILE* f_;
+    OutputFile& out_;
     std::vector<char> buf_;
     std::size_t n_ = 0;
-    bool failed_ = false;
 };
 
 }  // namespace
@@ -59,13 +58,13 @@ Status write_obj(const char* path, const TriangleMesh& mesh) {
         if (i >= nv)
             return Status::error(StatusCode::invalid_argument,
                                  "write_obj %s: index %u out of range (%zu vertices)", path, i, nv);
-    std::FILE* f = std::fopen(path, "wb");
-    if (!f) return Status::error(StatusCode::io_error, "cannot open %s for writing", path);
+    OutputFile file;
+    SHITSUKAN_TRY(file.open(path));
     bool has_n = mesh.normals.size() == nv && nv > 0, has_t = mesh.uvs.size() == nv && nv > 0;
     bool has_c = mesh.colors.size() == nv && nv > 0;
-    std::fprintf(f, "# shitsukan mesh: %zu vertices, %zu triangles\n", nv, mesh.indices.size() / 3);
+    file.print("# shitsukan mesh: %zu vertices, %zu triangles\n", nv, mesh.indices.size() / 3);
     // Every number is the shortest decimal that reads back (strtof) to the same float.
-    ObjText out(f);
+    ObjText out(file);
     for (std::size_t i = 0; i < nv; ++i) {
         const Vec3& p = mesh.positions[i];
         out.text("v");
@@ -110,10 +109,7 @@ Status write_obj(const char* path, const TriangleMesh& mesh) {
         out.end_line();
     }
     out.flush();
-    bool ok = !out.failed() && !std::ferror(f);
-    ok = (std::fclose(f) == 0) && ok;
-    if (!ok) return Status::error(StatusCode::io_error, "writing %s failed", path);
-    return Status::success();
+    return file.commit();
 }
 
 }  // namespace shitsukan

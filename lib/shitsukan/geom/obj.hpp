@@ -7,6 +7,9 @@
 //                                            // the common vertex-colour extension), vt, vn, f
 //   return s;
 //   #include "shitsukan/geom/mesh_builders.hpp"
+//
+// Written through core/output_file.hpp: the file appears complete or not at all, and a
+// failure names the path and the reason.
 #pragma once
 
 #include "shitsukan/core/status.hpp"

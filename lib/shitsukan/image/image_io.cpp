@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "shitsukan/core/output_file.hpp"
 #include "shitsukan/image/png16.hpp"
 
 // stb_image_write (Debian libstb-dev) compresses the PNGs when its header is there. It is
@@ -65,15 +66,12 @@ Status check(const char* path, int width, int height, bool empty) {
 template <class P>
 Status write_netpbm(const char* path, const ImageView<P>& image, const char* magic, int channels) {
     SHITSUKAN_TRY(check(path, image.width, image.height, image.empty()));
-    std::FILE* f = std::fopen(path, "wb");
-    if (!f) return Status::error(StatusCode::io_error, "cannot open %s for writing", path);
-    bool ok = std::fprintf(f, "%s\n%d %d\n255\n", magic, image.width, image.height) > 0;
-    for (int y = 0; ok && y < image.height; ++y)
-        ok = std::fwrite(image.row(y), std::size_t(channels), std::size_t(image.width), f) ==
-             std::size_t(image.width);
-    ok = (std::fclose(f) == 0) && ok;
-    if (!ok) return Status::error(StatusCode::io_error, "writing %s failed", path);
-    return Status::success();
+    OutputFile out;
+    SHITSUKAN_TRY(out.open(path));
+    out.print("%s\n%d %d\n255\n", magic, image.width, image.height);
+    for (int y = 0; !out.failed() && y < image.height; ++y)
+        out.write(image.row(y), std::size_t(channels) * std::size_t(image.width));
+    return out.commit();
 }
 
 }  // namespace
@@ -82,9 +80,17 @@ namespace {
 Status encode_png8(const char* path, const void* pixels, int width, int height, int channels,
                    int stride_bytes) {
 #ifdef SHITSUKAN_USE_STB_IMAGE_WRITE
-    if (!stbi_write_png(path, width, height, channels, pixels, stride_bytes))
-        return Status::error(StatusCode::io_error, "cannot write PNG %s", path);
-    return Status::success();
+    // Encoded in memory by stb, written through OutputFile (stb's own file writer checks
+    // neither fwrite nor fclose).
+    OutputFile out;
+    SHITSUKAN_TRY(out.open(path));
+    auto to_file = [](void* context, void* data, int size) {
+        static_cast<OutputFile*>(context)->write(data, std::size_t(size));
+    };
+    if (!stbi_write_png_to_func(to_file, &out, width, height, channels, pixels, stride_bytes))
+        return Status::error(StatusCode::too_large, "cannot write %s: PNG encoding of %d x %d "
+                             "failed (out of memory)", path, width, height);
+    return out.commit();
 #else
     return detail::write_png8_stored(path, static_cast<const std::uint8_t*>(pixels), width,
                                      height, channels, std::size_t(stride_bytes), false);

@@ -7,8 +7,9 @@
 //   if (s) s = write_ppm("out.ppm", img.view());        // binary P6
 //   if (s) s = write_pgm("out.pgm", gray.view());       // binary P5
 //   return s;
-// Failures (empty image, unwritable path) come back as a Status with the path in the
-// message; nothing is silent. Views with a stride are handled.
+// Failures (empty image, unwritable path, a failed write) come back as a Status with the path
+// and the reason in the message; nothing is silent. Files are written through
+// core/output_file.hpp: complete under their name, or not there (an old file is kept). Views with a stride are handled.
 // PNG: compressed by stb_image_write when the library was built with its header (compiled
 // privately, no stbi_* symbol leaves the library); otherwise by the library's own encoder
 // in stored (uncompressed) deflate blocks: same pixels, bigger files. png_compressed() says

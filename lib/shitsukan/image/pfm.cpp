@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "shitsukan/core/memory_budget.hpp"
+#include "shitsukan/core/output_file.hpp"
 
 namespace shitsukan {
 namespace {
@@ -35,17 +36,14 @@ Status write_pfm(const char* path, const float* samples, int width, int height, 
     if (channels != 1 && channels != 3)
         return Status::error(StatusCode::invalid_argument,
                              "write_pfm %s: channels must be 1 or 3 (got %d)", path, channels);
-    std::FILE* f = std::fopen(path, "wb");
-    if (!f) return Status::error(StatusCode::io_error, "cannot open %s for writing", path);
-    std::fprintf(f, "%s\n%d %d\n%s\n", channels == 3 ? "PF" : "Pf", width, height,
-                 little_endian() ? "-1.0" : "1.0");
+    OutputFile out;
+    SHITSUKAN_TRY(out.open(path));
+    out.print("%s\n%d %d\n%s\n", channels == 3 ? "PF" : "Pf", width, height,
+              little_endian() ? "-1.0" : "1.0");
     const std::size_t row = std::size_t(width) * std::size_t(channels);
-    for (int j = height - 1; j >= 0; --j)
-        std::fwrite(samples + std::size_t(j) * row, sizeof(float), row, f);
-    bool ok = !std::ferror(f);
-    ok = std::fclose(f) == 0 && ok;
-    if (!ok) return Status::error(StatusCode::io_error, "writing %s failed", path);
-    return Status::success();
+    for (int j = height - 1; j >= 0 && !out.failed(); --j)
+        out.write(samples + std::size_t(j) * row, sizeof(float) * row);
+    return out.commit();
 }
 
 Status read_pfm(const char* path, PfmImage& out) {

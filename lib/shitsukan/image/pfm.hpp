@@ -16,7 +16,8 @@
 // row up (the format's convention; the functions here take and give the top row first).
 // Errors: empty image, channels other than 1 or 3, non-finite samples are allowed (PFM
 // stores any float); unreadable or malformed files -> io_error / invalid_argument with the
-// path; sizes above 65536 a side -> too_large. Host side.
+// path; sizes above 65536 a side -> too_large. Written through core/output_file.hpp (a failed
+// write names the reason and leaves no part of a file). Host side.
 #pragma once
 
 #include <vector>

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "shitsukan/core/memory_budget.hpp"
+#include "shitsukan/core/output_file.hpp"
 #include "shitsukan/image/deflate.hpp"
 
 namespace shitsukan {
@@ -66,15 +67,13 @@ namespace {
 
 constexpr std::size_t kStoredBlockMax = 65535;  // RFC 1951: LEN is 16 bits
 
-// Writes one PNG file; remembers the first failure so the calls can be chained.
+// Writes one PNG file; the OutputFile remembers the first failure so the calls can be chained.
 class PngWriter {
 public:
-    explicit PngWriter(std::FILE* f) : f_(f) {}
-    bool ok() const { return ok_; }
+    explicit PngWriter(OutputFile& out) : out_(out) {}
+    bool ok() const { return !out_.failed(); }
 
-    void raw(const std::uint8_t* data, std::size_t size) {
-        if (ok_ && size > 0 && std::fwrite(data, 1, size, f_) != size) ok_ = false;
-    }
+    void raw(const std::uint8_t* data, std::size_t size) { out_.write(data, size); }
     void begin_chunk(std::uint32_t length, const char type[4]) {
         std::uint8_t head[8];
         put_u32(head, length);
@@ -100,8 +99,7 @@ public:
     }
 
 private:
-    std::FILE* f_;
-    bool ok_ = true;
+    OutputFile& out_;
     std::uint32_t crc_ = 0;
 };
 
@@ -278,10 +276,9 @@ Status encode_png(const char* path, int width, int height, int channels, int bit
         use_compressed = zlib_deflate(filtered.data(), filtered.size(), compressed).ok() &&
                          compressed.size() < idat_bytes;
     }
-    std::FILE* f = std::fopen(path, "wb");
-    if (!f) return Status::error(StatusCode::io_error, "cannot open %s for writing", path);
-
-    PngWriter png(f);
+    OutputFile out;
+    SHITSUKAN_TRY(out.open(path));
+    PngWriter png(out);
     const std::uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
     png.raw(signature, 8);
 
@@ -309,10 +306,7 @@ Status encode_png(const char* path, int width, int height, int channels, int bit
     png.begin_chunk(0, "IEND");
     png.end_chunk();
 
-    bool ok = png.ok();
-    ok = (std::fclose(f) == 0) && ok;
-    if (!ok) return Status::error(StatusCode::io_error, "writing %s failed", path);
-    return Status::success();
+    return out.commit();
 }
 
 

@@ -27,7 +27,8 @@
 // bytes, streamed through a one-row buffer. Views with a stride are handled.
 // Errors: empty image or path -> invalid_argument; an image whose data would not fit one
 // PNG chunk (2^31 - 1 bytes) -> too_large; open or write failures -> io_error (the path
-// is in the message). Host side (stdio).
+// and the reason are in the message; the file is written through core/output_file.hpp:
+// complete or not there). Host side (stdio).
 #pragma once
 
 #include <cstddef>

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "shitsukan/core/output_file.hpp"
 #include "shitsukan/image/font.hpp"
 
 namespace shitsukan {
@@ -333,13 +334,7 @@ std::string SvgCanvas::str() const {
 Status SvgCanvas::save(const char* path) const {
     if (path == nullptr || path[0] == '\0')
         return Status::error(StatusCode::invalid_argument, "SVG path is empty");
-    std::FILE* f = std::fopen(path, "wb");
-    if (!f) return Status::error(StatusCode::io_error, "cannot open %s for writing", path);
-    std::string doc = str();
-    bool ok = std::fwrite(doc.data(), 1, doc.size(), f) == doc.size();
-    ok = (std::fclose(f) == 0) && ok;
-    if (!ok) return Status::error(StatusCode::io_error, "writing %s failed", path);
-    return Status::success();
+    return write_text_file(path, str());
 }
 
 }  // namespace shitsukan

@@ -49,7 +49,8 @@ public:
     void clear(Rgb8 color) override;
 
     std::string str() const;             // the complete SVG document
-    Status save(const char* path) const;  // writes str(); io_error names the path
+    // Writes str() through core/output_file.hpp; io_error names the path and the reason.
+    Status save(const char* path) const;
     Status save(const std::string& path) const { return save(path.c_str()); }
     int element_count() const { return elements_; }
 

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "shitsukan/core/memory_budget.hpp"
+#include "shitsukan/core/output_file.hpp"
 
 namespace shitsukan {
 namespace {
@@ -68,9 +69,8 @@ Status FractalLattice::build(const FractalParams& params, std::uint64_t budget_b
 Status save_lattice(const std::string& path, const FractalLattice& lattice) {
     if (lattice.empty())
         return Status::error(StatusCode::invalid_argument, "save_lattice: the lattice is empty");
-    std::FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f)
-        return Status::error(StatusCode::io_error, "save_lattice: cannot open %s", path.c_str());
+    OutputFile out;
+    SHITSUKAN_TRY(out.open(path));
     const FractalParams& p = lattice.params();
     unsigned char header[kHeaderBytes];
     std::memcpy(header, kMagic, 8);
@@ -79,21 +79,17 @@ Status save_lattice(const std::string& path, const FractalLattice& lattice) {
     put_u32(header + 16, p.seed);
     put_u32(header + 20, std::uint32_t(p.noise));
     for (int i = 0; i < 8; ++i) put_u32(header + 24 + 4 * i, float_bits(p.corners[i]));
-    bool ok = std::fwrite(header, 1, kHeaderBytes, f) == kHeaderBytes;
+    out.write(header, kHeaderBytes);
     // Values in little-endian order, written in chunks.
     const LatticeView v = lattice.view();
     const std::size_t count = std::size_t(v.side) * std::size_t(v.side) * std::size_t(v.side);
     unsigned char chunk[4096 * 4];
-    for (std::size_t i = 0; ok && i < count; i += 4096) {
+    for (std::size_t i = 0; !out.failed() && i < count; i += 4096) {
         std::size_t n = count - i < 4096 ? count - i : 4096;
         for (std::size_t j = 0; j < n; ++j) put_u32(chunk + 4 * j, float_bits(v.values[i + j]));
-        ok = std::fwrite(chunk, 1, 4 * n, f) == 4 * n;
+        out.write(chunk, 4 * n);
     }
-    ok = (std::fclose(f) == 0) && ok;
-    if (!ok)
-        return Status::error(StatusCode::io_error, "save_lattice: write to %s failed",
-                             path.c_str());
-    return Status::success();
+    return out.commit();
 }
 
 Status load_lattice(const std::string& path, FractalLattice& out, std::uint64_t budget_bytes) {

@@ -19,7 +19,8 @@
 // File format (all little-endian): 8 bytes magic "SHKLAT01", int32 R, float32 beta,
 // uint32 seed, uint32 noise source (0 hash, 1 sequential), float32 corners[8], then
 // (2^R + 1)^3 float32 values, x fastest, then y, then z. Loading refuses non-finite values
-// and bytes after the last value.
+// and bytes after the last value. Saving goes through core/output_file.hpp: the file appears
+// complete or not at all, and a failure names the path and the reason.
 #pragma once
 
 #include <cstdint>
