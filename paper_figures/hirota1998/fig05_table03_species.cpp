@@ -124,10 +124,14 @@ SHITSUKAN_FIGURE(hirota_fig05, "hirota1998", "fig05",
         style.min_width_cm = min_crack;
         style.plate = kBarkPlate;
         style.crack = kCrack;
-        style.regions = &s.regions;
+        // The trunk's texture shades the regions of the whole cylinder; the window below
+        // shades those of Table 3's section (the end bands flat).
+        style.regions = &s.whole;
         SHITSUKAN_TRY(draw_crack_map(mc, s.bark, T, s.bark.net.W.data(), style));
         RgbImage render(col, render_h);
         SHITSUKAN_TRY(render_trunk(s, map, px_per_cm, render.view()));
+        style.regions = &s.regions;
+        SHITSUKAN_TRY(draw_crack_map(mc, s.bark, T, s.bark.net.W.data(), style));
         for (int y = 0; y < render_h; ++y)
             for (int x = 0; x < col; ++x) out.at(i * col + x, header + y) = render.at(x, y);
         // The window: 13 cm of the map (its middle), full height.
