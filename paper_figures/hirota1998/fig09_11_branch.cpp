@@ -216,7 +216,7 @@ SHITSUKAN_FIGURE(hirota_fig11, "hirota1998", "fig11",
     // 0.01 cm along the normal so they lie on the surface. Cracked = broken, or intact in no
     // intact triangle (opened by sliding: drawn at the minimum width, as fig05's map does). A
     // spring on a cut end has one triangle: its ribbon stops at M, on the cut.
-    const float min_width = ctx.quick() ? 0.08f : 0.045f;  // about 1.5 px in these views
+    const float min_width = ctx.quick() ? 0.12f : 0.065f;  // about 1.5 px (23 px/cm at 512 px)
     const std::vector<std::uint8_t> cracked = cracked_springs(b, T);
     TriangleMesh cracks;
     std::vector<Vec3> centroid(b.triangles.size());
@@ -312,7 +312,7 @@ SHITSUKAN_FIGURE(hirota_fig11, "hirota1998", "fig11",
     c.text({10, 8}, fmt("r_h = %.3f   r_r = %.3f (trunk)   %d springs broken",
                         double(p.growth.r_h), double(p.growth.r_h + p.growth.r_n / p.shape.trunk_radius),
                         broken),
-           Rgb8{20, 20, 20}, 2);
+           Rgb8{20, 20, 20}, ctx.quick() ? 1 : 2);
     // Enforced: cracks mostly around the trunk, denser on the branch, connected across the
     // crotch.
     const bool ok = hoop_share >= 0.6f && branch_density > trunk_density && crotch.crossing >= 1;
