@@ -62,6 +62,55 @@ TEST_CASE("branch cracks: around the trunk where hoop growth dominates, denser o
     for (std::uint32_t s = 0; s < std::uint32_t(b.net.springs.size()); ++s)
         if (b.net.springs[s].intact())
             CHECK(p.growth.duration * strain_rate(b.net, s) <= b.net.springs[s].eps_c * 1.0001f);
+    // §5.3 "cracks connect naturally between trunk and branch": a crack network (as the picture
+    // draws it) reaches kCrotchDepth into both limbs. The crotch itself cracks less than the
+    // trunk (its saddle shortens along the crotch curve): pinned where it stands.
+    CrotchCrackStats crotch;
+    REQUIRE(crotch_crack_stats(b, p.growth.duration, kCrotchDepth, crotch).ok());
+    MESSAGE("crossing networks " << crotch.crossing << " of " << crotch.networks
+                                 << ", crotch / trunk density "
+                                 << crotch.density_crotch / crotch.density_trunk);
+    CHECK(crotch.crossing >= 1);
+    CHECK(crotch.largest_crossing >= 50);
+    CHECK(crotch.density_crotch > 0.4 * crotch.density_trunk);
+    CHECK(crotch.density_branch > crotch.density_trunk);
+}
+
+TEST_CASE("the crotch-crossing measure on prescribed cracks") {
+    BranchBarkParams p;
+    p.edge_length = 0.6f;
+    BranchBark b;
+    REQUIRE(build_branch_bark(p, b).ok());
+    CrotchCrackStats st;
+    REQUIRE(crotch_crack_stats(b, 1.0f, kCrotchDepth, st).ok());  // nothing broken
+    CHECK(st.networks == 0);
+    CHECK(st.crossing == 0);
+    CHECK(st.density_trunk == 0.0);
+    // Every spring of the trunk zone broken (zones 2 cm deep): the cracks, and the intact
+    // springs they leave in no intact triangle, stay short of the branch zone.
+    const float depth = 2.0f;
+    for (std::uint32_t s = 0; s < std::uint32_t(b.net.springs.size()); ++s) {
+        const BarkSpring& sp = b.net.springs[s];
+        const LimbDistances d =
+            limb_distances(p.shape, (b.mesh.positions[sp.i] + b.mesh.positions[sp.j]) * 0.5f);
+        if (d.f_trunk < d.f_branch - depth) break_spring(b.net, s, 0.5f);
+    }
+    REQUIRE(crotch_crack_stats(b, 1.0f, depth, st).ok());
+    CHECK(st.networks >= 1);
+    CHECK(st.crossing == 0);
+    CHECK(st.density_trunk > 0.0);
+    CHECK(st.density_branch == 0.0);
+    // Before the breaks (t = 0.25) nothing is cracked yet.
+    REQUIRE(crotch_crack_stats(b, 0.25f, kCrotchDepth, st).ok());
+    CHECK(st.networks == 0);
+    // Everything broken: one network spanning both limbs.
+    for (std::uint32_t s = 0; s < std::uint32_t(b.net.springs.size()); ++s)
+        if (b.net.springs[s].intact()) break_spring(b.net, s, 0.5f);
+    REQUIRE(crotch_crack_stats(b, 1.0f, kCrotchDepth, st).ok());
+    CHECK(st.networks == 1);
+    CHECK(st.crossing == 1);
+    CHECK(st.largest_crossing == int(b.net.springs.size()));
+    CHECK(crotch_crack_stats(b, -1.0f, kCrotchDepth, st).code() == StatusCode::invalid_argument);
 }
 
 TEST_CASE("springs on a mesh refuse NaN, degenerate and non-manifold input") {

@@ -44,17 +44,26 @@ Status memoised(int key, Build build, const T** out) {
     return Status::success();
 }
 
+// chosen here: the species' trunks are 128 x 80 nodes (H0 = 26.4 cm; the library's default
+// is 64 rows), so the section Table 3 is measured on is 21.9 cm tall at T.
+constexpr int kSpeciesRows = 80;
+
+// The section Table 3 is measured on (crack_regions.hpp: kSectionEndRows rows left out at
+// each end; 3 in quick mode's 24-row trunk).
+RegionOptions table3_section(bool quick);
+
 // One species grown to T, measured at T, with snapshots at 0.6, 0.75, 0.9 and 1.0 T.
 struct SpeciesRun {
     Species species;
     CylinderParams params;
     BarkCylinder bark;
     CrackRun run;
-    RegionReport regions;
+    RegionReport regions;  // Table 3's measure: the section away from the cut ends
+    RegionReport whole;    // the whole cylinder, ends included (for comparison)
     double seconds = 0;  // build + growth + cracking
 };
 
-// Full size (128 x 64) or, in quick mode, 32 x 24. Computed once per process (thread-safe).
+// Full size (128 x kSpeciesRows) or, in quick mode, 32 x 24. Computed once per process (thread-safe).
 Status species_run(Species species, bool quick, const SpeciesRun** out);
 
 // Records the parameters that matter (given by Table 2, chosen here) in the figure's table.

@@ -99,7 +99,8 @@ SHITSUKAN_FIGURE(hirota_fig05, "hirota1998", "fig05",
                "so the crack-bounded regions Table 3 measures can be seen");
     ctx.chosen("view", "top: the trunk rendered with the rasterizer, the crack map as texture, "
                        "Lambert light from the upper left; bottom: a 13 cm wide window of the "
-                       "unrolled map, full height",
+                       "unrolled map, full height; red marks bound the section Table 3 measures "
+                       "(the end bands, shaded flat, are left out)",
                "the paper's photograph row cannot be reproduced");
     const int col = 360, render_h = 480;
     const float window_cm = 13.0f;
@@ -123,10 +124,14 @@ SHITSUKAN_FIGURE(hirota_fig05, "hirota1998", "fig05",
         style.min_width_cm = min_crack;
         style.plate = kBarkPlate;
         style.crack = kCrack;
-        style.regions = &s.regions;
+        // The trunk's texture shades the regions of the whole cylinder; the window below
+        // shades those of Table 3's section (the end bands flat).
+        style.regions = &s.whole;
         SHITSUKAN_TRY(draw_crack_map(mc, s.bark, T, s.bark.net.W.data(), style));
         RgbImage render(col, render_h);
         SHITSUKAN_TRY(render_trunk(s, map, px_per_cm, render.view()));
+        style.regions = &s.regions;
+        SHITSUKAN_TRY(draw_crack_map(mc, s.bark, T, s.bark.net.W.data(), style));
         for (int y = 0; y < render_h; ++y)
             for (int x = 0; x < col; ++x) out.at(i * col + x, header + y) = render.at(x, y);
         // The window: 13 cm of the map (its middle), full height.
@@ -135,10 +140,20 @@ SHITSUKAN_FIGURE(hirota_fig05, "hirota1998", "fig05",
         const int ox = i * col + (col - ww) / 2, oy = header + render_h + gap;
         for (int y = 0; y < map.height() && oy + y < out.height(); ++y)
             for (int x = 0; x < ww; ++x) out.at(ox + x, oy + y) = map.at(x0 + x, y);
+        // Table 3's section: marks beside the window at its two ends (the bands outside it
+        // are shaded flat, their regions not counted).
+        const int end_rows = s.regions.label.empty() ? 0 : table3_section(ctx.quick()).end_rows;
+        for (int e = 0; e < 2; ++e) {
+            const float row = e == 0 ? float(end_rows) - 0.5f : float(s.params.N_H - end_rows) - 0.5f;
+            const float y = float(oy + map.height()) -
+                            row * s.params.species.L0 * (1.0f + axial_strain(s.params, T)) * px_per_cm;
+            page.line({float(ox - 14), y}, {float(ox - 3), y}, Rgb8{200, 40, 30}, 2.0f);
+            page.line({float(ox + ww + 2), y}, {float(ox + ww + 13), y}, Rgb8{200, 40, 30}, 2.0f);
+        }
         page.text({float(i * col + 8), 6.0f}, fmt("(%d) %s", i + 1, s.params.species.name),
                   Rgb8{20, 20, 20}, 2);
         page.text({float(i * col + 8), float(oy + map.height() + 6)},
-                  fmt("regions %.2f x %.2f cm (mean)", double(s.regions.mean_width),
+                  fmt("regions %.2f x %.2f cm (mean, section)", double(s.regions.mean_width),
                       double(s.regions.mean_height)),
                   Rgb8{20, 20, 20}, 1);
         page.text({float(i * col + 8), float(oy + map.height() + 20)},
@@ -152,123 +167,279 @@ SHITSUKAN_FIGURE(hirota_fig05, "hirota1998", "fig05",
         SHITSUKAN_TRY(make_trunk_mesh(s.bark, T, s.bark.net.W.data(), trunk));
         SHITSUKAN_TRY(write_obj(ctx.path(fmt("_%d.obj", i + 1)).c_str(), trunk));
     }
-    // "Cracks widen as the trunk grows": the cracks that exist at 0.6 T, measured later.
+    // The width of Fig. 4 over time: the cracks present at the first snapshot that has any
+    // (pine cracks late: its first break comes after 0.75 T), measured at that and every later
+    // snapshot.
     std::string widen;
-    bool widening = true;
     for (int i = 0; i < 3; ++i) {
         const SpeciesRun& s = *runs[i];
+        const float T = s.params.T;
+        std::size_t first = 0;
+        while (first + 1 < s.run.snapshots.size() && s.run.snapshots[first].break_count == 0)
+            ++first;
         std::vector<std::uint32_t> early;
         for (const BreakEvent& e : s.run.breaks)
-            if (e.t <= s.run.snapshots[0].t) early.push_back(e.spring);
-        widen += fmt("%s%s:", i ? "; " : "", s.params.species.name);
+            if (e.t <= s.run.snapshots[first].t) early.push_back(e.spring);
+        widen += fmt("%s%s (first crack at %.2f T; the %zu cracks of %.2f T):", i ? "; " : "",
+                     s.params.species.name,
+                     s.run.breaks.empty() ? 1.0 : double(s.run.breaks[0].t / T), early.size(),
+                     double(s.run.snapshots[first].t / T));
         float last = 0;
-        for (const CrackSnapshot& snap : s.run.snapshots) {
+        bool widening = true;
+        for (std::size_t k = first; k < s.run.snapshots.size(); ++k) {
+            const CrackSnapshot& snap = s.run.snapshots[k];
             const float w = mean_crack_width(s.bark, early.data(), int(early.size()), snap.t,
                                              snap.W.data());
-            widen += fmt(" %.4f", double(w));
-            widening = widening && w > last;
+            widen += fmt(" %.4f at %.2f T", double(w), double(snap.t / T));
+            widening = widening && !early.empty() && w > last;
             last = w;
         }
+        widen += widening ? ", widening" : ", not widening throughout";
     }
     ctx.note(fmt("What to see: camphor in long vertical strips, many reaching the full height "
                  "(Table 3 *1); Chinese tallow in small closed blocks (*2); pine in larger blocks "
-                 "(*3). Mean crack width (cm) of the cracks present at 0.6 T, measured at 0.6, "
-                 "0.75, 0.9 and 1.0 T: %s (%s). Each species' crack network is also written as "
-                 "fig05_N.svg, the deformed trunk as fig05_N.obj and the network as CSV "
-                 "(fig05_N_nodes/_springs/_triangles.csv) for independent measurement.",
-                 widen.c_str(), widening ? "they widen as the trunk grows" : "NOT widening"));
+                 "(*3). Mean width (cm, Fig. 4: l - l0) of the cracks present at each species' "
+                 "first snapshot with cracks, measured then and at the later snapshots: %s. With "
+                 "the set of cracks fixed every opening grows in proportion to t (the linear "
+                 "solution is t W), so a drop between two snapshots is growth taken up by cracks "
+                 "that opened in between (tallow's horizontal cracks, pine's late vertical ones). "
+                 "Each species' crack network is also written as fig05_N.svg, the deformed trunk "
+                 "as fig05_N.obj and the network as CSV (fig05_N_nodes/_springs/_triangles.csv) "
+                 "for independent measurement.",
+                 widen.c_str()));
     return ctx.save_png(out.view());
 }
+
+namespace {
+
+// Table 3's statistics of one species over several seeds (the section measure): mean over the
+// seeds of each run's mean and of each run's max, and the range of the runs' values.
+struct SeedStats {
+    int runs = 0;
+    float mean_w = 0, mean_h = 0, max_w = 0, max_h = 0;
+    float lo[4] = {1e30f, 1e30f, 1e30f, 1e30f}, hi[4] = {0, 0, 0, 0};
+    void add(const RegionReport& r) {
+        const float v[4] = {r.mean_width, r.mean_height, r.max_width, r.max_height};
+        for (int k = 0; k < 4; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
+        mean_w += v[0], mean_h += v[1], max_w += v[2], max_h += v[3], ++runs;
+    }
+    float avg(float sum) const { return runs ? sum / float(runs) : 0.0f; }
+};
+
+// Seeds 2..n: the same run as species_run's, another seed (seed 1998 is the memoised run).
+Status seed_stats(const SpeciesRun& base, bool quick, int seeds, SeedStats* out) {
+    out->add(base.regions);
+    for (int k = 1; k < seeds; ++k) {
+        CylinderParams p = base.params;
+        p.seed = std::uint32_t(k);
+        BarkCylinder bark;
+        SHITSUKAN_TRY(build_cylinder(p, bark));
+        CrackRun run;
+        SHITSUKAN_TRY(grow_and_crack(bark, CrackRunOptions{}, run));
+        RegionReport rep;
+        SHITSUKAN_TRY(measure_regions(bark, p.T, bark.net.W.data(), rep, table3_section(quick)));
+        out->add(rep);
+    }
+    return Status::success();
+}
+
+// The §3.2 shear-lag estimate with this model's own constants: around (diagonals,
+// hoop-dominated strain 0.75 e_theta + 0.25 e_z), along (vertical springs, e_z).
+std::string spacing_estimates(const SpeciesRun& s) {
+    const BarkSpring* diag = nullptr;
+    const BarkSpring* vert = nullptr;
+    for (const BarkSpring& sp : s.bark.net.springs)
+        if (s.bark.spring_triangles[2 * std::size_t(&sp - s.bark.net.springs.data()) + 1] >= 0) {
+            if (sp.family == 2 && !diag) diag = &sp;
+            if (sp.family == 1 && !vert) vert = &sp;
+        }
+    const float k_sh = s.bark.net.k_anchor[std::size_t(s.bark.node(0, s.params.N_H / 2))];
+    const float et = hoop_strain(s.params, s.params.T), ez = axial_strain(s.params, s.params.T);
+    const float L_around = crack_spacing_estimate(s.bark.a_h, std::sqrt(diag->k / k_sh),
+                                                  s.params.species.kappa2 - 1.0f,
+                                                  0.75f * et + 0.25f * ez);
+    const float L_along = crack_spacing_estimate(s.params.species.L0, std::sqrt(vert->k / k_sh),
+                                                 s.params.species.kappa1 - 1.0f, ez);
+    return fmt("%s x %s",
+               std::isinf(L_around) ? "inf" : fmt("%.2f", double(L_around)).c_str(),
+               std::isinf(L_along)
+                   ? fmt("inf (kappa1 - 1 = %.3f > e_z = %.3f: none on an uncracked trunk; the "
+                         "measured ones start where sigma and the stress at crack tips lower "
+                         "the threshold)",
+                         double(s.params.species.kappa1 - 1.0f), double(ez))
+                         .c_str()
+                   : fmt("%.2f", double(L_along)).c_str());
+}
+
+}  // namespace
+
+namespace {
+
+bool within(float ours, float paper, float tolerance) {
+    return std::fabs(ours / paper - 1.0f) <= tolerance;
+}
+
+// Table 3's notes on the fig05 runs, and its numbers over the seeds: enforced where this model
+// meets them, reported where it does not.
+Status table03_checks(FigureContext& ctx, const SpeciesRun* const runs[3],
+                      const SeedStats stats[3], std::string* md) {
+    const RegionReport &c = runs[0]->regions, &t = runs[1]->regions, &p = runs[2]->regions;
+    const SeedStats &sc = stats[0], &st = stats[1], &sp = stats[2];
+    struct Check {
+        const char* what;
+        bool ok, enforced;
+    };
+    const Check list[] = {
+        {"camphor: mean height / mean width >= 4 (long vertical strips, *1)",
+         c.mean_height >= 4.0f * c.mean_width, true},
+        {"camphor: some regions span the whole section ('(>20)')", c.full_height > 0, true},
+        {"Chinese tallow: aspect in [1.3, 3.0], no region spanning the section (closed blocks, *2)",
+         t.mean_height >= 1.3f * t.mean_width && t.mean_height <= 3.0f * t.mean_width &&
+             t.full_height == 0, true},
+        {"pine: mean width >= 1.3 x tallow's and mean height >= 1.2 x tallow's (larger blocks, *3)",
+         p.mean_width >= 1.3f * t.mean_width && p.mean_height >= 1.2f * t.mean_height, true},
+        {"seeds: mean heights in the paper's order, camphor > pine > tallow",
+         sc.avg(sc.mean_h) > sp.avg(sp.mean_h) && sp.avg(sp.mean_h) > st.avg(st.mean_h), true},
+        {"seeds: pine the widest (paper: camphor < tallow < pine)",
+         sp.avg(sp.mean_w) > sc.avg(sc.mean_w) && sp.avg(sp.mean_w) > st.avg(st.mean_w), true},
+        {"seeds: means within 20 % of the paper's: camphor width and height, tallow height, pine "
+         "width and height",
+         within(sc.avg(sc.mean_w), 1.58f, 0.2f) && within(sc.avg(sc.mean_h), 11.6f, 0.2f) &&
+             within(st.avg(st.mean_h), 3.02f, 0.2f) && within(sp.avg(sp.mean_w), 2.34f, 0.2f) &&
+             within(sp.avg(sp.mean_h), 4.28f, 0.2f), true},
+        {"seeds: max row within 30 % of the paper's: tallow and pine width; camphor's max spans "
+         "the section ('(>20)')",
+         within(st.avg(st.max_w), 2.08f, 0.3f) && within(sp.avg(sp.max_w), 3.24f, 0.3f) &&
+             sc.lo[3] > 20.0f, true},
+        {"seeds: tallow's mean width within 20 % of 1.70", within(st.avg(st.mean_w), 1.70f, 0.2f),
+         false},
+        {"seeds: camphor narrower than tallow (the paper's 1.58 < 1.70)",
+         sc.avg(sc.mean_w) < st.avg(st.mean_w), false},
+        {"seeds: camphor's max width within 30 % of 2.06", within(sc.avg(sc.max_w), 2.06f, 0.3f),
+         false},
+        {"seeds: tallow's and pine's max height within 30 % of 3.96 and 6.48",
+         within(st.avg(st.max_h), 3.96f, 0.3f) && within(sp.avg(sp.max_h), 6.48f, 0.3f), false},
+    };
+    *md += "\nChecks (Table 3 and its notes; 'reported' = not met by this model with Table 2 "
+           "and one shared set of chosen values, not tuned in):\n\n";
+    bool checks = true;
+    for (const Check& k : list) {
+        *md += fmt("- %s: **%s**%s\n", k.what, k.ok ? "pass" : (k.enforced ? "FAIL" : "not met"),
+                   k.enforced ? "" : " (reported)");
+        checks = checks && (k.ok || !k.enforced);
+    }
+    *md += fmt("\nTimes: camphor %.2f s, Chinese tallow %.2f s, pine %.2f s (build, growth and "
+               "cracking of the seed-1998 runs; the paper gives none).\n",
+               runs[0]->seconds, runs[1]->seconds, runs[2]->seconds);
+    *md += "\nThe estimate column is the shear-lag largest spacing (reconstructed, "
+           "`bark/spacing_estimate.hpp`) with this model's own k, k_sh and final strains; the "
+           "paper says its simulated spacings come out smaller than the estimate, as ours do.\n";
+    auto first_break = [&](const SpeciesRun& r, int family) {
+        for (const BreakEvent& e : r.run.breaks)
+            if (r.bark.net.springs[e.spring].family == family) return e.t / r.params.T;
+        return 1.0f;
+    };
+    *md += fmt("\nWidths: tallow's blocks come out narrower than camphor's strips (the paper: "
+               "1.70 against 1.58, both observed 1.5). The two species share every subscript-2 "
+               "value, so their vertical cracks start alike (first diagonal break at %.2f T and "
+               "%.2f T), and camphor's smaller G even widens their spacing (the estimate "
+               "column); only tallow's lower kappa1 adds horizontal cracks (first axial break at "
+               "%.2f T, camphor's at %.2f T), and the narrowing comes with them. With both "
+               "strains growing in proportion (Table 1's constant delta_r and delta_h) the "
+               "vertical cracks always come first; a sweep of the shared chosen values (D, sigma, "
+               "the two final strains, the tolerance) over five seeds did not reverse the order, "
+               "so it is reported, not tuned in.\n",
+               double(first_break(*runs[0], 2)), double(first_break(*runs[1], 2)),
+               double(first_break(*runs[1], 1)), double(first_break(*runs[0], 1)));
+    *md += "\nThe max row: each run's largest region, averaged over the seeds. Widths match; "
+           "heights of tallow and pine run long: where a horizontal crack stops short, the blocks "
+           "above and below it are one region, and pine, whose horizontal cracks come only from "
+           "sigma and the stress at crack tips (the estimate column), keeps some strips over "
+           "half the section tall. Among a section's hundreds of regions such a one is nearly "
+           "always present; the paper's max/mean ratios of 1.2-1.5 suggest it measured fewer.\n";
+    ctx.note(fmt("Measured on a section of the trunk away from its cut ends (see 'section'); the "
+                 "whole cylinder's numbers are beside them. Regions are the areas the crack map "
+                 "shows enclosed. %s",
+                 ctx.quick() ? "Quick mode (32 x 24, one seed): checks printed, not enforced."
+                             : (checks ? "All enforced checks pass." : "Some checks FAIL.")));
+    SHITSUKAN_TRY(ctx.save_markdown(*md));
+    if (!ctx.quick() && !checks)
+        return Status::error(StatusCode::not_supported, "table03: a Table 3 check failed");
+    return Status::success();
+}
+
+}  // namespace
 
 SHITSUKAN_FIGURE(hirota_table03, "hirota1998", "table03",
                  "Dimensions of the areas surrounded by cracks: the paper's and ours") {
     const SpeciesRun* runs[3];
     for (int i = 0; i < 3; ++i) SHITSUKAN_TRY(species_run(kSpecies[i], ctx.quick(), &runs[i]));
     record_parameters(ctx, runs[0]->params);
-    ctx.chosen("regions", "connected intact surface over springs in an intact triangle; width "
-                          "and height = node extents + one cell; >= 3 nodes",
-               "Table 3 is titled 'area surrounded by cracks'; a lattice crack can open by "
-               "sliding with one diagonal family broken (MODEL.md §3.6)");
+    const RegionOptions section = table3_section(ctx.quick());
+    ctx.chosen("regions", "the areas the crack map (fig05) shows enclosed by cracks: connected "
+                          "intact surface over springs in an intact triangle; width and height = "
+                          "node extents + one cell; >= 3 nodes",
+               "Table 3 is titled 'area surrounded by cracks' (*2 'closed regions') and was "
+               "measured 'on these patterns' (§3.2), i.e. on pictures of the cracks; a lattice "
+               "crack can open by sliding with one diagonal family broken and is drawn, so it "
+               "bounds a region (crack_regions.hpp)");
+    ctx.chosen("section", fmt("the rows %d..%d of %d: %d rows left out at each end (%.1f cm)",
+                              section.end_rows, runs[0]->params.N_H - 1 - section.end_rows,
+                              runs[0]->params.N_H, section.end_rows,
+                              double(float(section.end_rows) * runs[0]->params.species.L0)),
+               "as one measures a photograph of a long trunk: the cylinder's cut ends are free "
+               "edges that suppress horizontal cracks within a shear-lag length "
+               "(crack_regions.hpp, kSectionEndRows)");
+    const int seeds = ctx.quick() ? 1 : 5;
+    SeedStats stats[3];
+    for (int i = 0; i < 3; ++i) SHITSUKAN_TRY(seed_stats(*runs[i], ctx.quick(), seeds, &stats[i]));
     std::string md;
-    md += "Width x height in cm (width around the trunk, height along it). Paper: Table 3 "
-          "(observed on real trees; simulated by the authors). Ours: the fig05 runs at t = T.\n\n";
+    md += fmt("Width x height in cm (width around the trunk, height along it). Paper: Table 3 "
+              "(observed on real trees; simulated by the authors). Ours: the fig05 runs at t = T "
+              "(seed %u), measured on the section away from the cut ends; the whole cylinder, "
+              "ends included, for comparison.\n\n",
+              runs[0]->params.seed);
     md += "| species | observed | paper mean | paper max | ours mean | ours max | regions "
-          "(full height / wrap) | ours / paper mean | intercepts mean | estimate L_max (around "
-          "x along) |\n|---|---|---|---|---|---|---|---|---|---|\n";
-    bool checks = true;
+          "(full section height / wrap) | ours / paper mean | whole cylinder mean, max | "
+          "intercepts mean | estimate L_max (around x along) |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (int i = 0; i < 3; ++i) {
         const SpeciesRun& s = *runs[i];
         const RegionReport& r = s.regions;
         const PaperRow& p = kPaper[i];
         const float H = s.bark.H0 * (1.0f + axial_strain(s.params, s.params.T));
-        auto ours_h = [&](float h, bool full) {
-            return full ? fmt("> %.1f (full height)", double(H - 0.5f * s.params.species.L0))
-                        : fmt("%.2f", double(h));
-        };
-        // §1.12 estimate with this model's own constants: around (diagonals, hoop-dominated
-        // strain 0.75 e_theta + 0.25 e_z), along (vertical springs, e_z).
-        const BarkSpring* diag = nullptr;
-        const BarkSpring* vert = nullptr;
-        for (const BarkSpring& sp : s.bark.net.springs)
-            if (s.bark.spring_triangles[2 * std::size_t(&sp - s.bark.net.springs.data()) + 1] >= 0) {
-                if (sp.family == 2 && !diag) diag = &sp;
-                if (sp.family == 1 && !vert) vert = &sp;
-            }
-        const float k_sh = s.bark.net.k_anchor[std::size_t(s.bark.node(0, s.params.N_H / 2))];
-        const float et = hoop_strain(s.params, s.params.T), ez = axial_strain(s.params, s.params.T);
-        const float L_around = crack_spacing_estimate(s.bark.a_h, std::sqrt(diag->k / k_sh),
-                                                      s.params.species.kappa2 - 1.0f,
-                                                      0.75f * et + 0.25f * ez);
-        const float L_along = crack_spacing_estimate(s.params.species.L0, std::sqrt(vert->k / k_sh),
-                                                     s.params.species.kappa1 - 1.0f, ez);
-        const bool full_max = r.max_height >= H - s.params.species.L0;
+        const float section_h =
+            H * float(s.params.N_H - 2 * section.end_rows) / float(s.params.N_H);
+        const bool full_max = r.full_height > 0;
         md += fmt("| %s | %s x %s | %s x %s | %s x %s | %.2f x %.2f | %.2f x %s | %zu (%d / %d) "
-                  "| %.2f, %s | %.2f x %.2f | %s x %s |\n",
+                  "| %.2f, %.2f | %.2f x %.2f, %.2f x %.2f | %.2f x %.2f | %s |\n",
                   s.params.species.name, cm(p.observed_w).c_str(), cm(p.observed_h).c_str(),
                   cm(p.mean_w).c_str(), cm(p.mean_h).c_str(), cm(p.max_w).c_str(),
                   cm(p.max_h).c_str(), double(r.mean_width), double(r.mean_height),
-                  double(r.max_width), ours_h(r.max_height, full_max).c_str(), r.regions.size(),
-                  r.full_height, r.wrapped, double(r.mean_width / p.mean_w),
-                  fmt("%.2f", double(r.mean_height / p.mean_h)).c_str(),
-                  double(r.intercept_mean_width), double(r.intercept_mean_height),
-                  std::isinf(L_around) ? "inf" : fmt("%.2f", double(L_around)).c_str(),
-                  std::isinf(L_along) ? "inf (no horizontal cracks predicted)"
-                                      : fmt("%.2f", double(L_along)).c_str());
+                  double(r.max_width),
+                  full_max ? fmt("> %.1f (the section)", double(section_h - s.params.species.L0)).c_str()
+                           : fmt("%.2f", double(r.max_height)).c_str(),
+                  r.regions.size(), r.full_height, r.wrapped, double(r.mean_width / p.mean_w),
+                  double(r.mean_height / p.mean_h), double(s.whole.mean_width),
+                  double(s.whole.mean_height), double(s.whole.max_width),
+                  double(s.whole.max_height), double(r.intercept_mean_width),
+                  double(r.intercept_mean_height), spacing_estimates(s).c_str());
     }
-    const RegionReport &c = runs[0]->regions, &t = runs[1]->regions, &p = runs[2]->regions;
-    struct Check {
-        const char* what;
-        bool ok;
-    };
-    const Check list[] = {
-        {"camphor: mean height / mean width >= 4 (long vertical strips, *1)",
-         c.mean_height >= 4.0f * c.mean_width},
-        {"camphor: some regions reach the full height ('(>20)')", c.full_height > 0},
-        {"Chinese tallow: aspect in [1.3, 3.0], no full-height region (closed blocks, *2)",
-         t.mean_height >= 1.3f * t.mean_width && t.mean_height <= 3.0f * t.mean_width &&
-             t.full_height == 0},
-        {"pine: mean width >= 1.3 x tallow's and mean height >= 1.2 x tallow's (larger blocks, *3)",
-         p.mean_width >= 1.3f * t.mean_width && p.mean_height >= 1.2f * t.mean_height},
-        {"mean heights: camphor > pine > tallow",
-         c.mean_height > p.mean_height && p.mean_height > t.mean_height},
-    };
-    md += "\nChecks (Table 3's notes):\n\n";
-    for (const Check& k : list) {
-        md += fmt("- %s: **%s**\n", k.what, k.ok ? "pass" : "FAIL");
-        checks = checks && k.ok;
+    md += fmt("\nOver %d seeds (1998, 1, 2, ...; the same section): mean over the runs of each "
+              "run's mean and max, [range].\n\n| species | mean | max | paper mean | paper max "
+              "|\n|---|---|---|---|---|\n",
+              seeds);
+    for (int i = 0; i < 3; ++i) {
+        const SeedStats& st = stats[i];
+        const PaperRow& p = kPaper[i];
+        md += fmt("| %s | %.2f [%.2f-%.2f] x %.2f [%.2f-%.2f] | %.2f [%.2f-%.2f] x %.2f "
+                  "[%.2f-%.2f] | %s x %s | %s x %s |\n",
+                  runs[i]->params.species.name, double(st.avg(st.mean_w)), double(st.lo[0]),
+                  double(st.hi[0]), double(st.avg(st.mean_h)), double(st.lo[1]), double(st.hi[1]),
+                  double(st.avg(st.max_w)), double(st.lo[2]), double(st.hi[2]),
+                  double(st.avg(st.max_h)), double(st.lo[3]), double(st.hi[3]),
+                  cm(p.mean_w).c_str(), cm(p.mean_h).c_str(), cm(p.max_w).c_str(),
+                  cm(p.max_h).c_str());
     }
-    md += fmt("\nTimes: camphor %.2f s, Chinese tallow %.2f s, pine %.2f s (build, growth and "
-              "cracking; the paper gives none).\n",
-              runs[0]->seconds, runs[1]->seconds, runs[2]->seconds);
-    md += "\nThe estimate column is the shear-lag largest spacing (reconstructed, "
-          "`bark/spacing_estimate.hpp`) with this model's own k, k_sh and final strains; the "
-          "paper says its simulated spacings come out smaller than the estimate, as ours do.\n";
-    ctx.note(fmt("Camphor's strips come out wider than tallow's blocks (paper: 1.58 vs 1.70; "
-                 "both 1.5 observed): not checked. %s",
-                 ctx.quick() ? "Quick mode (32 x 24): checks printed, not enforced."
-                             : (checks ? "All checks pass." : "Some checks FAIL.")));
-    SHITSUKAN_TRY(ctx.save_markdown(md));
-    if (!ctx.quick() && !checks)
-        return Status::error(StatusCode::not_supported, "table03: a Table 3 check failed");
-    return Status::success();
+    return table03_checks(ctx, runs, stats, &md);
 }

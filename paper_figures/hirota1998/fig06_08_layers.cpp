@@ -235,6 +235,19 @@ SHITSUKAN_FIGURE(hirota_fig07, "hirota1998", "fig07",
             c.marker(e1, MarkerShape::circle, 7.0f, Rgb8{200, 90, 30});
         }
     }
+    // ΔR (§4.1: the growth of the inner layer's radius during T), marked on every cycle: the
+    // inner radius at the cycle's start carried across (dotted), the rise to its end bracketed.
+    for (int k = 0; k < p.cycles; ++k) {
+        const double r0 = double(layer_radii(s, s.T * float(k)).inner - s.R_in0);
+        const double r1 = double(layer_radii(s, s.T * float(k + 1), true).inner - s.R_in0);
+        const Vec2 from = axes.to_pixel(double(k), r0), to = axes.to_pixel(double(k + 1), r0);
+        for (float x = from.x; x < to.x; x += 6) c.line({x, from.y}, {std::min(x + 2, to.x), from.y}, Rgb8{60, 60, 60}, 1.0f);
+        const Vec2 top = axes.to_pixel(double(k + 1) - 0.04, r1), bot = axes.to_pixel(double(k + 1) - 0.04, r0);
+        c.line(top, bot, Rgb8{20, 20, 20}, 1.5f);
+        c.line({top.x - 3, top.y}, {top.x + 3, top.y}, Rgb8{20, 20, 20}, 1.5f);
+        c.line({bot.x - 3, bot.y}, {bot.x + 3, bot.y}, Rgb8{20, 20, 20}, 1.5f);
+        c.text({top.x - 20, 0.5f * (top.y + bot.y) + 4}, "ΔR", Rgb8{20, 20, 20}, 1);
+    }
     for (int i = 0; i < 4; ++i) {
         const float y = axes.corner.y + 12.0f + 16.0f * float(i);
         const float x = axes.corner.x + axes.size.x + 12.0f;
@@ -247,6 +260,12 @@ SHITSUKAN_FIGURE(hirota_fig07, "hirota1998", "fig07",
            Rgb8{20, 20, 20}, 1);
     c.text({axes.corner.x + axes.size.x + 12.0f, axes.corner.y + 116.0f}, "grey: spin-up",
            Rgb8{20, 20, 20}, 1);
+    c.text({axes.corner.x + axes.size.x + 12.0f, axes.corner.y + 132.0f},
+           fmt("ΔR = %.3f cm: the inner", double(s.delta_R)), Rgb8{20, 20, 20}, 1);
+    c.text({axes.corner.x + axes.size.x + 12.0f, axes.corner.y + 144.0f},
+           "layer's radius growth", Rgb8{20, 20, 20}, 1);
+    c.text({axes.corner.x + axes.size.x + 12.0f, axes.corner.y + 156.0f},
+           "during T (sec. 4.1)", Rgb8{20, 20, 20}, 1);
     const LayerRadii mid = layer_radii(s, s.T * 0.5f), end = layer_radii(s, s.T, true);
     const LayerRadii r1 = layer_radii(s, s.T * 1.5f);
     ctx.note(fmt("From the one schedule function the simulation uses (layer_schedule.hpp). "

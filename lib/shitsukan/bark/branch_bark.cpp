@@ -187,4 +187,74 @@ Vec3 branch_node_position(const BranchBark& bark, std::uint32_t i, float t, cons
            W[i] * t;
 }
 
+namespace {
+
+int limb_zone(const BranchShapeParams& shape, Vec3 x, float depth) {  // 1 trunk, 2 branch
+    const LimbDistances d = limb_distances(shape, x);
+    return d.f_trunk < d.f_branch - depth ? 1 : (d.f_branch < d.f_trunk - depth ? 2 : 0);
+}
+
+int find_network(std::vector<int>& parent, int a) {
+    while (parent[std::size_t(a)] != a)
+        a = parent[std::size_t(a)] = parent[std::size_t(parent[std::size_t(a)])];
+    return a;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> cracked_springs(const BranchBark& bark, float t) {
+    const auto& springs = bark.net.springs;
+    std::vector<std::uint8_t> strong(springs.size(), 0), cracked(springs.size(), 0);
+    for (const ConnectionTriangle& tri : bark.triangles) {
+        bool intact = true;
+        for (std::uint32_t s : tri.spring) intact = intact && intact_at(springs[s], t);
+        if (intact)
+            for (std::uint32_t s : tri.spring) strong[s] = 1;
+    }
+    for (std::size_t s = 0; s < springs.size(); ++s) cracked[s] = !strong[s];
+    return cracked;
+}
+
+Status crotch_crack_stats(const BranchBark& bark, float t, float depth, CrotchCrackStats& out) {
+    if (!(is_finite(t) && t >= 0.0f) || !(is_finite(depth) && depth >= 0.0f))
+        return Status::error(StatusCode::invalid_argument,
+                             "crotch_crack_stats: t and depth must be >= 0 (got %g, %g)",
+                             double(t), double(depth));
+    out = CrotchCrackStats{};
+    const auto& springs = bark.net.springs;
+    const auto& x = bark.mesh.positions;
+    double area[3] = {0, 0, 0}, broken[3] = {0, 0, 0};
+    for (std::size_t i = 0; i < x.size(); ++i)
+        area[limb_zone(bark.params.shape, x[i], depth)] += bark.node_area[i];
+    const std::vector<std::uint8_t> cracked = cracked_springs(bark, t);
+    std::vector<int> parent(springs.size()), zone(springs.size());
+    for (std::size_t s = 0; s < springs.size(); ++s) {
+        parent[s] = int(s);
+        zone[s] = limb_zone(bark.params.shape, (x[springs[s].i] + x[springs[s].j]) * 0.5f, depth);
+        if (!intact_at(springs[s], t)) broken[zone[s]] += 1;
+    }
+    for (const ConnectionTriangle& tri : bark.triangles)  // networks: share a triangle
+        for (int k = 0; k < 3; ++k)
+            for (int j = k + 1; j < 3; ++j) {
+                if (!cracked[tri.spring[k]] || !cracked[tri.spring[j]]) continue;
+                const int a = find_network(parent, int(tri.spring[k]));
+                const int b = find_network(parent, int(tri.spring[j]));
+                if (a != b) parent[std::size_t(a)] = b;
+            }
+    std::vector<int> mask(springs.size(), 0), count(springs.size(), 0);
+    for (std::size_t s = 0; s < springs.size(); ++s) {
+        if (!cracked[s]) continue;
+        const int root = find_network(parent, int(s));
+        out.networks += root == int(s);
+        mask[std::size_t(root)] |= zone[s] == 1 ? 1 : (zone[s] == 2 ? 2 : 0);
+        ++count[std::size_t(root)];
+    }
+    for (std::size_t r = 0; r < springs.size(); ++r)
+        if (mask[r] == 3)
+            ++out.crossing, out.largest_crossing = std::max(out.largest_crossing, count[r]);
+    auto density = [&](int z) { return area[z] > 0 ? broken[z] / area[z] : 0.0; };
+    out.density_trunk = density(1), out.density_crotch = density(0), out.density_branch = density(2);
+    return Status::success();
+}
+
 }  // namespace shitsukan

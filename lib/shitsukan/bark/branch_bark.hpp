@@ -80,4 +80,25 @@ Status grow_branch_bark(BranchBark& bark, const CrackRunOptions& options, CrackR
 // Node i at time t: its anchor A_i(t) plus t·W_i.
 Vec3 branch_node_position(const BranchBark& bark, std::uint32_t i, float t, const Vec3* W);
 
+// The springs a crack map shows at t: broken, or intact but in no intact triangle (a crack
+// opened by sliding, as crack_regions.hpp explains for the cylinder). 1 = cracked.
+std::vector<std::uint8_t> cracked_springs(const BranchBark& bark, float t);
+
+// §5.3 "cracks connect naturally between trunk and branch", measured. A point of the reference
+// shape lies in the trunk zone when f_trunk < f_branch - depth, in the branch zone when
+// f_branch < f_trunk - depth, and in the crotch between (limb_distances). A crack network is a
+// set of springs broken by t joined when two of them share a triangle; it crosses the crotch
+// when it holds springs (by midpoint) of both the trunk and the branch zone. Springs count as
+// cracked as cracked_springs says. Densities are
+// broken springs per cm^2 of node area (by node position) in each zone.
+constexpr float kCrotchDepth = 0.5f;  // chosen here: 1.5 L0, past the crotch's blend
+
+struct CrotchCrackStats {
+    int networks = 0;    // crack networks (any size)
+    int crossing = 0;    // of them, reaching depth into both limbs
+    int largest_crossing = 0;  // springs in the largest crossing network
+    double density_trunk = 0, density_crotch = 0, density_branch = 0;
+};
+Status crotch_crack_stats(const BranchBark& bark, float t, float depth, CrotchCrackStats& out);
+
 }  // namespace shitsukan

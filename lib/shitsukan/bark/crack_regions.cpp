@@ -8,6 +8,12 @@ namespace shitsukan {
 
 namespace {
 
+// Is node p inside the measured section (end_rows rows left out at the top and the bottom)?
+bool in_window(const BarkCylinder& bark, int p, int end_rows) {
+    const int r = bark.row_of(p);
+    return r >= end_rows && r < bark.params.N_H - end_rows;
+}
+
 int find_root(std::vector<std::int32_t>& parent, int a) {
     while (parent[std::size_t(a)] != a) {
         parent[std::size_t(a)] = parent[std::size_t(parent[std::size_t(a)])];
@@ -68,16 +74,16 @@ void strong_components(const SpringNetwork& net, const std::vector<std::uint8_t>
 
 // The cell a node stands for, grown to time t (width around, height along).
 struct GrownCell {
-    float C, width, height, full;  // circumference, cell, "full height" extent
+    float C, width, height, full;  // circumference, cell, "full height" extent of the window
 };
 
-GrownCell grown_cell(const BarkCylinder& bark, float t) {
+GrownCell grown_cell(const BarkCylinder& bark, float t, int end_rows) {
     const float et = hoop_strain(bark.params, t), ez = axial_strain(bark.params, t);
     GrownCell g;
     g.C = bark.circumference * (1.0f + et);
     g.width = bark.a_h * (1.0f + et);
     g.height = bark.params.species.L0 * (1.0f + ez);
-    g.full = (float(bark.params.N_H) - 1.5f) * g.height;
+    g.full = (float(bark.params.N_H - 2 * end_rows) - 1.5f) * g.height;
     return g;
 }
 
@@ -87,16 +93,17 @@ GrownCell grown_cell(const BarkCylinder& bark, float t) {
 void region_extents(const BarkCylinder& bark, float t, const Vec3* W,
                     const std::vector<std::uint8_t>& strong,
                     const std::vector<std::int32_t>& component,
-                    const std::vector<std::int32_t>& size, int min_nodes, RegionReport* out) {
+                    const std::vector<std::int32_t>& size, const RegionOptions& options,
+                    RegionReport* out) {
     const SpringNetwork& net = bark.net;
     const int n = net.node_count();
-    const GrownCell cell = grown_cell(bark, t);
+    const GrownCell cell = grown_cell(bark, t, options.end_rows);
     std::vector<Vec3> pos(static_cast<std::size_t>(n));
     std::vector<std::uint8_t> seen(static_cast<std::size_t>(n), 0);
     std::vector<std::uint32_t> stack;
     std::vector<std::int32_t> region_of_component(size.size(), -1);
     for (int start = 0; start < n; ++start) {
-        if (seen[std::size_t(start)]) continue;
+        if (seen[std::size_t(start)] || !in_window(bark, start, options.end_rows)) continue;
         const int comp = component[std::size_t(start)];
         BarkRegion region;
         region.nodes = size[std::size_t(comp)];
@@ -121,7 +128,7 @@ void region_extents(const BarkCylinder& bark, float t, const Vec3* W,
                 stack.push_back(q);
             }
         }
-        if (region.nodes < min_nodes) continue;  // step 4: crumbs are not regions
+        if (region.nodes < options.min_nodes) continue;  // step 4: crumbs are not regions
         region.width = region.wraps ? cell.C : std::min(cell.C, hi.x - lo.x + cell.width);
         region.height = hi.y - lo.y + cell.height;
         region.full_height = hi.y - lo.y >= cell.full;
@@ -130,7 +137,10 @@ void region_extents(const BarkCylinder& bark, float t, const Vec3* W,
     }
     out->label.resize(static_cast<std::size_t>(n));
     for (int p = 0; p < n; ++p)
-        out->label[std::size_t(p)] = region_of_component[std::size_t(component[std::size_t(p)])];
+        out->label[std::size_t(p)] =
+            in_window(bark, p, options.end_rows)
+                ? region_of_component[std::size_t(component[std::size_t(p)])]
+                : -1;
 }
 
 // Table 3: mean and max of width and of height, separately.
@@ -149,14 +159,14 @@ void table3_statistics(RegionReport* out) {
 }
 
 // The text's "crack spacings": changes of component around each ring and along each column.
-void crack_intercepts(const BarkCylinder& bark, float t,
+void crack_intercepts(const BarkCylinder& bark, float t, int end_rows,
                       const std::vector<std::int32_t>& component, RegionReport* out) {
-    const int N_R = bark.params.N_R, N_H = bark.params.N_H;
-    const GrownCell cell = grown_cell(bark, t);
+    const int N_R = bark.params.N_R, r0 = end_rows, r1 = bark.params.N_H - end_rows;
+    const GrownCell cell = grown_cell(bark, t, end_rows);
     double iw = 0, ih = 0;
     int nw = 0, nh = 0;
     auto comp = [&](int c, int r) { return component[std::size_t(bark.node(c, r))]; };
-    for (int r = 0; r < N_H; ++r) {
+    for (int r = r0; r < r1; ++r) {
         std::vector<int> cuts;
         for (int c = 0; c < N_R; ++c)
             if (comp(c, r) != comp(c + 1 == N_R ? 0 : c + 1, r)) cuts.push_back(c);
@@ -169,7 +179,7 @@ void crack_intercepts(const BarkCylinder& bark, float t,
     }
     for (int c = 0; c < N_R; ++c) {
         int last = -1;
-        for (int r = 0; r + 1 < N_H; ++r)
+        for (int r = r0; r + 1 < r1; ++r)
             if (comp(c, r) != comp(c, r + 1)) {
                 if (last >= 0) {
                     const float h = float(r - last) * cell.height;
@@ -187,22 +197,32 @@ void crack_intercepts(const BarkCylinder& bark, float t,
 }  // namespace
 
 Status measure_regions(const BarkCylinder& bark, float t, const Vec3* W, RegionReport& out,
-                       int min_nodes) {
+                       const RegionOptions& options) {
     if (!W)
         return Status::error(StatusCode::invalid_argument,
                              "measure_regions: null displacement field W");
     if (!(is_finite(t) && t >= 0.0f))
         return Status::error(StatusCode::invalid_argument,
                              "measure_regions: time must be >= 0 (got %g)", double(t));
+    if (options.min_nodes < 1 || options.end_rows < 0 ||
+        2 * options.end_rows + 2 > bark.params.N_H)
+        return Status::error(StatusCode::invalid_argument,
+                             "measure_regions: min_nodes must be >= 1 and end_rows in [0, %d] "
+                             "(got %d, %d)",
+                             bark.params.N_H / 2 - 1, options.min_nodes, options.end_rows);
     out = RegionReport{};
     std::vector<std::uint8_t> strong;
     strong_springs(bark, t, &strong);                       // step 1
+    for (std::size_t s = 0; s < strong.size(); ++s)         // the measured section only
+        if (!in_window(bark, int(bark.net.springs[s].i), options.end_rows) ||
+            !in_window(bark, int(bark.net.springs[s].j), options.end_rows))
+            strong[s] = 0;
     std::vector<std::int32_t> component, size;
     strong_components(bark.net, strong, &component, &size);  // step 2
     out.components = int(size.size());
-    region_extents(bark, t, W, strong, component, size, min_nodes, &out);  // steps 3-4
+    region_extents(bark, t, W, strong, component, size, options, &out);  // steps 3-4
     table3_statistics(&out);
-    crack_intercepts(bark, t, component, &out);
+    crack_intercepts(bark, t, options.end_rows, component, &out);
     return Status::success();
 }
 
