@@ -1,6 +1,7 @@
 // Tests for lib/shitsukan/bark: crack_regions (Table 3's measurement), crack_drawing (Fig. 4),
 // bark_export (CSV that others can measure independently), and the three species at full size.
 #include <doctest/doctest.h>
+#include "measured.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -222,7 +223,7 @@ TEST_CASE("the three species at full size read as Table 3's notes say" *
         CrackRun run;
         REQUIRE(grow_and_crack(bark, CrackRunOptions{}, run).ok());
         REQUIRE(measure_regions(bark, p.T, bark.net.W.data(), rep[i]).ok());
-        MESSAGE(std::string(p.species.name) << ": " << rep[i].regions.size() << " regions, mean "
+        MEASURED(std::string(p.species.name) << ": " << rep[i].regions.size() << " regions, mean "
                                << rep[i].mean_width << " x " << rep[i].mean_height << ", max "
                                << rep[i].max_width << " x " << rep[i].max_height);
         // Table 3: within 30 % of the paper's simulated means.

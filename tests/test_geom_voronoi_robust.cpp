@@ -3,6 +3,7 @@
 // stress over sites an ulp apart, far sites, thin and tiny regions and lattices checks that an
 // ok result is always a tiling of the region.
 #include <doctest/doctest.h>
+#include "measured.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -223,7 +224,7 @@ TEST_CASE("voronoi robust: seeded stress, every ok result tiles its region") {
         REQUIRE(t.finite);
         REQUIRE(std::fabs(t.area - want) <= t.allowed + 1e-12 * want);
     }
-    MESSAGE("voronoi stress: " << checked << " ok results, every one a tiling");
+    MEASURED("voronoi stress: " << checked << " ok results, every one a tiling");
     CHECK(checked > 2000);
 }
 
