@@ -1,5 +1,7 @@
 // hirota1998 fig. 9 (connection areas on an irregular mesh) and fig. 11 (cracks on a branching
 // trunk), from one branch run (memoised).
+// Example: none of its own; examples/60_two_layer_bark.cpp teaches the cylinder the branch model
+//   generalises.
 #include <algorithm>
 #include <chrono>
 #include <cmath>

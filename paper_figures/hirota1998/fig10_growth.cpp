@@ -4,6 +4,7 @@
 //       only, normal offset only, both (growth magnified: s = 1.25, d = 0.6 cm);
 //   (b) the mesh coloured by the growth rate ε̂·T for the fig11 parameters (per vertex: the
 //       mean over its edges), (c) a close-up of the crotch with every edge in its own ε̂·T.
+// Example: none of its own; examples/60_two_layer_bark.cpp teaches the growth of the cylinder.
 #include <chrono>
 #include <cmath>
 #include <vector>
