@@ -24,7 +24,7 @@ void cut(BarkCylinder& bark, int c, int r, int dir) {
         break_spring(bark.net, std::uint32_t(s), 0.0f);
 }
 
-// The synthetic grid of MODEL.md §5 test 10: column boundaries every 8 columns (both diagonals,
+// A synthetic grid: column boundaries every 8 columns (both diagonals,
 // or only the up-right one), row boundaries every 8 rows (every spring straddling 8m - 1/2).
 void cut_grid(BarkCylinder& bark, bool columns, bool only_up_right) {
     const int N_R = bark.params.N_R, N_H = bark.params.N_H;

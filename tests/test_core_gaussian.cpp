@@ -1,4 +1,4 @@
-// core/gaussian: gaussian_from_bits_float, all in float arithmetic (issue 12), stays within 8
+// core/gaussian: gaussian_from_bits_float, all in float arithmetic, stays within 8
 // float ulps of gaussian_from_bits (the double definition) at the region edges, deep in both
 // tails and everywhere else; its integer tail test is the double one's.
 #include <doctest/doctest.h>

@@ -398,7 +398,7 @@ TEST_CASE("bad input: a clear status, no crash") {
     CHECK(std::count(labels.begin(), labels.end(), 0) == 4);
 }
 
-TEST_CASE("perturbation honours p (issue 13.1): curves that fit keep the requested amplitude") {
+TEST_CASE("perturbation honours p: curves that fit keep the requested amplitude") {
     // Small p on large square scales: no curve comes near its fan triangles' sides or turns
     // back around a centroid, so every edge keeps exactly the requested curve.
     SeedLayout s;
@@ -417,7 +417,7 @@ TEST_CASE("perturbation honours p (issue 13.1): curves that fit keep the request
     CHECK(pattern_area(pat) == doctest::Approx(1.0).epsilon(1e-9));
 }
 
-TEST_CASE("perturbation honours p (issue 13.1): fig. 10 grows rougher panel by panel") {
+TEST_CASE("perturbation honours p: fig. 10 grows rougher panel by panel") {
     // The old slope cap realised 57 % of the requested RMS on fig. 7 and made p = 0.015 and
     // p = 0.03 look alike; now only the edges that would break the tiling or a scale's star
     // shape are scaled down.
@@ -443,7 +443,7 @@ TEST_CASE("perturbation honours p (issue 13.1): fig. 10 grows rougher panel by p
     }
 }
 
-TEST_CASE("stage order (issue 13.2): fig. 5's stage-1 curves are fig. 7's row boundaries") {
+TEST_CASE("stage order: fig. 5's stage-1 curves are fig. 7's row boundaries") {
     for (std::uint32_t seed : {1u, 2u, 7u})
         for (float p : {0.015f, 0.03f}) {
             ScaleParams prm = fig07();

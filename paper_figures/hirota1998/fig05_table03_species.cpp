@@ -189,7 +189,7 @@ SHITSUKAN_FIGURE(hirota_table03, "hirota1998", "table03",
     ctx.chosen("regions", "connected intact surface over springs in an intact triangle; width "
                           "and height = node extents + one cell; >= 3 nodes",
                "Table 3 is titled 'area surrounded by cracks'; a lattice crack can open by "
-               "sliding with one diagonal family broken (MODEL.md §3.6)");
+               "sliding with one diagonal family broken (docs/papers/hirota1998.md §2)");
     std::string md;
     md += "Width x height in cm (width around the trunk, height along it). Paper: Table 3 "
           "(observed on real trees; simulated by the authors). Ours: the fig05 runs at t = T.\n\n";
