@@ -11,6 +11,7 @@
 #                         references (tools/check_output_params.py)
 #   make check-manuals    every header's manual example compiles (and runs, unless compile-only)
 #   make check-lengths    no function in lib/ over 100 lines (tools/function_lengths.py)
+#   make check-references nothing cites an issue or a file outside the repository
 #   make test-consumers   installs cmake/pkg-config if missing; builds tests/consumer four ways
 #                         (add_subdirectory, FetchContent, find_package, pkg-config)
 #   make test-mcu         installs the Arm toolchain, newlib and QEMU if missing; runs
@@ -44,7 +45,7 @@ SMALL_FLAGS := -fno-exceptions -fno-rtti -DSHITSUKAN_SMALL_DEVICE -Wdouble-promo
 # check-small's stack budget per function (bytes, from -fstack-usage; chosen: a quarter of the
 # 16 KB main stack ports/cortex-m reserves, so a call chain of a few library frames fits).
 # Known over it, listed rather than hidden: none (incircle_exact's 37.8 KB of expansion
-# arithmetic became a 2048-bit fixed-point sum of 1.1 KB, issue 12).
+# arithmetic became a 2048-bit fixed-point sum of 1.1 KB).
 empty :=
 space := $(empty) $(empty)
 STACK_BUDGET := 4096
@@ -87,6 +88,7 @@ EXAMPLES   := $(EXAMPLE_SRCS:examples/%.cpp=$(BUILD)/examples/%)
 LIBRARY    := $(BUILD)/libshitsukan.a
 
 .PHONY: all test test-sanitize figures examples bench check-small check-api test-consumers \
+        check-references \
         install deps bench-deps consumer-deps mcu-deps clean fuzz fuzz-deps figures-determinism \
         cli test-cli test-mcu bench-mcu footprint-mcu check-manuals check-lengths
 
@@ -323,7 +325,7 @@ check-api: deps
 	@echo "check-api: a dropped Status does not compile under -Werror (nodiscard)"
 	@# 6. README.md's module map lists what the tree holds, and nothing else
 	@python3 tools/check_module_map.py
-	@# 7. required outputs are references, not pointers every function null-checks (issue 16)
+	@# 7. required outputs are references, not pointers every function null-checks
 	@python3 tools/check_output_params.py
 
 # Every header's manual example (the lines under "// Manual") compiled into a program of its
@@ -336,10 +338,15 @@ check-manuals: deps
 	  --flags '$(CPPFLAGS) $(CXXFLAGS) -O0 -Wno-unused-variable -Wno-unused-but-set-variable' \
 	  --lib $(LIBRARY) -j $(JOBS)
 
-# Issue 16: no function in lib/ over 100 lines (tools/function_lengths.py lists the ones over).
+# No function in lib/ over 100 lines (tools/function_lengths.py lists the ones over).
 check-lengths:
 	$(call ensure_packages,$(PY_REQUIRED))
 	@python3 tools/function_lengths.py lib
+
+# Nothing cites an issue or a file outside the repository (tools/check_references.py).
+check-references:
+	$(call ensure_packages,$(PY_REQUIRED))
+	@python3 tools/check_references.py
 
 test-consumers: consumer-deps
 	JOBS=$(JOBS) CXX=$(CXX) bash tests/consumer/run.sh

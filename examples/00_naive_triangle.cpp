@@ -1,4 +1,5 @@
 // Lesson 0: a triangle in thirty lines, before the exact rasterizer.
+// Figure: paper_figures/foundation/coverage.cpp.
 //
 // For every pixel in the triangle's bounding box, ask the three edge functions on which side
 // of each edge the pixel centre lies; inside all three, blend the corners' colours by the

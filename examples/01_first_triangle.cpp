@@ -1,5 +1,6 @@
 // Lesson 1: the first triangle (lesson 0, 00_naive_triangle, in thirty naive lines; here the
 // same thing made exact).
+// Figure: paper_figures/foundation/coverage.cpp.
 //
 // A triangle is three points. The rasterizer's job is to find the pixels it covers and to
 // ask a "shader" what colour each of them gets. Here the three corners carry a colour each

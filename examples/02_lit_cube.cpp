@@ -1,4 +1,5 @@
 // Lesson 2: a lit cube.
+// Figure: paper_figures/foundation/lit_objects.cpp.
 //
 // Lighting turns a flat silhouette into a solid. For each pixel the shader gets the surface
 // normal n (the direction the surface faces) and computes, per light, how directly the

@@ -1,4 +1,5 @@
 // Lesson 3: rendering in bands.
+// Figure: paper_figures/foundation/lit_objects.cpp.
 //
 // A 512 x 512 frame needs 512·512·3 bytes of colour and 512·512·4 bytes of depth: 1.75 MiB,
 // more than most microcontrollers have. But a scanline rasterizer only ever touches the rows

@@ -1,4 +1,5 @@
 // Lesson 4: a plot with axes, drawn once for pixels and once for vectors.
+// Figure: paper_figures/okada1987/fig06_interpolation.cpp.
 //
 // The papers' figures are not all renderings: many are curves (a spectrum, a section, a
 // layer radius over time). shitsukan draws them through one interface, Canvas, so the

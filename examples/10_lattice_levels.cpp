@@ -1,4 +1,5 @@
 // Lesson 10: the 3D random fractal lattice, level by level (okada1987 §2.2, eqs. (1)-(5)).
+// Figure: paper_figures/okada1987/fig01_02_lattice_levels.cpp.
 //
 // The lattice has 2^R + 1 points a side (R = 6: 65). It starts from its 8 corners; each
 // level n halves the spacing and fills in, in three steps:

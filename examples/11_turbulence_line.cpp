@@ -1,4 +1,6 @@
 // Lesson 11: the turbulence D(P) along a line, and why a renderer shifts backwards.
+// Figures: paper_figures/okada1987/fig06_interpolation.cpp,
+//   paper_figures/okada1987/fig07_turbulence.cpp.
 //
 // D(P) is the lattice interpolated trilinearly (okada1987 eq. (6)): exact at the nodes,
 // straight between them along a cell edge. The texture is a regular function G disturbed

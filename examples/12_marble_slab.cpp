@@ -2,6 +2,9 @@
 // exponential skirts (eq. (8)), displaced along z by k·D(P) (eq. (9), as pixel shift), and
 // coloured by eq. (12). The slab is the vertical plane y = 32 of the lattice: every pixel
 // is one point P = (x, 32, z), no rasterizer needed.
+// Figures: paper_figures/okada1987/fig09_trapezoid.cpp,
+//   paper_figures/okada1987/fig12_k_variation.cpp,
+//   paper_figures/okada1989/fig06_07_fundamental.cpp.
 // Run: make examples   (12_marble_slab.png appears in build/examples/out/)
 #include <cstdio>
 

@@ -4,6 +4,8 @@
 // board sawn along the axis (the plane y = 20: stripes). sin lies in [-1, 1]; eq. (12)
 // wants [0, 1]: (G + 1)/2. On the axis (r = 0) the radial direction is undefined and the
 // point is not moved (wood_radial_direction() reports it).
+// Figures: paper_figures/okada1987/fig10_15_objects.cpp,
+//   paper_figures/okada1989/fig06_07_fundamental.cpp.
 // Run: make examples   (13_wood_slab.png appears in build/examples/out/)
 #include <cstdio>
 

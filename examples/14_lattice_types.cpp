@@ -1,4 +1,5 @@
 // Lesson 14: okada1989's three ways to get the same lattice.
+// Figure: paper_figures/okada1989/table_types.cpp.
 //   Type I   the whole (2^R + 1)^3 array in memory, built level by level: O(2^{3R}).
 //   Type II  evaluate one node at a time: compute its parents (and theirs) on demand and
 //            keep every node computed in a list, so a node keeps its random number.

@@ -1,4 +1,6 @@
 // Lesson 15: okada1987 marble (and wood) on a mesh of your own, with one library call.
+// Figures: paper_figures/okada1987/fig10_15_objects.cpp,
+//   paper_figures/okada1989/fig08_10_objects.cpp.
 // The mesh is moved into [-1, 1]^3 (fit_mesh_to_cube), each pixel's object-space point is
 // mapped into the 65^3 lattice (object_to_lattice), and render_solid_texture shades it with
 // the figures' chosen stripes, colours and light (solid/okada1987_presets.hpp). Replace the

@@ -1,5 +1,8 @@
 // Lesson 20 (ist_table): print every sub-interval number alpha^0 and its image alpha^K under an IST
 // (fujimoto2000 §2.3): watch the scale reversal of eq. (7) and eq. (12).
+// Figures: paper_figures/fujimoto2000/fig03_04_unit_ist.cpp,
+//   paper_figures/fujimoto2000/fig06_09_connected_ist.cpp,
+//   paper_figures/fujimoto2000/fig11_12_scale_reverse.cpp.
 //
 //   20_ist_table                         N = 3, K = 2, unit-IST (the default table)
 //   20_ist_table N K [kind] [options]

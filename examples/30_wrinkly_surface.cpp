@@ -1,4 +1,6 @@
 // Lesson 30: a wrinkly surface (fujimoto2000 §3, eq. 15).
+// Figures: paper_figures/fujimoto2000/fig14_15_ist_surfaces.cpp,
+//   paper_figures/fujimoto2000/fig16_external_shuffles.cpp.
 //
 // A wrinkly (WR) surface starts like any B-spline surface: a grid of control points gives a
 // smooth base surface P(u, v), and a height h_i per control point gives a smooth height

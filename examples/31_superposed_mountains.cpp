@@ -1,4 +1,6 @@
 // Lesson 31: superposed wrinkly surfaces (fujimoto2000 §4, eqs. 16-20).
+// Figures: paper_figures/fujimoto2000/fig17_18_superposed.cpp,
+//   paper_figures/fujimoto2000/fig19_20_sampling.cpp, paper_figures/fujimoto2000/fig21_terrain.cpp.
 //
 // A plain wrinkly surface turns spiky as its heights grow. The superposed surface adds the
 // shuffled heights of every IST step k = 0, 1, 2, ... with weights W^k = (1 - delta)·delta^k

@@ -1,4 +1,5 @@
 // Lesson 40: a Voronoi division that stays exact on a lattice.
+// Figures: paper_figures/tokai1994/fig02_voronoi.cpp, paper_figures/tokai1994/fig03_lattices.cpp.
 //
 // The Voronoi cell of a seed is the part of the plane nearer to it than to any other seed.
 // On a square lattice four seeds lie on every little circle, and a floating-point Voronoi

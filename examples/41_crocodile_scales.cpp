@@ -1,4 +1,6 @@
 // Lesson 41: a crocodile-belly scale pattern in four steps (tokai1994 §3.1).
+// Figures: paper_figures/tokai1994/fig04_06_layouts.cpp,
+//   paper_figures/tokai1994/fig07_10_patterns.cpp.
 //
 // Stage 1 puts two columns of seeds beside the centre line and divides the square by
 // Voronoi: long horizontal bands that meet along the centre in a zig-zag (the "joint").

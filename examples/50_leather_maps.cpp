@@ -1,5 +1,7 @@
 // Lesson 50: from a scale pattern to the files an artist loads — a 16-bit height map, an RGB
 // normal map and an OBJ relief mesh (tokai1994 §3.2).
+// Figures: paper_figures/tokai1994/fig12_one_scale.cpp,
+//   paper_figures/tokai1994/fig13_15_sections.cpp.
 //
 // Each scale gets a relief from a Bezier cross-section z(r) swept around its centroid m:
 // for a pixel x, the ray from m through x leaves the scale at p, r = |x - m| / |p - m|, and

@@ -1,4 +1,6 @@
 // Lesson 51: a Bezier curve used as a function z(r) (tokai1994 §3.2, Table 1).
+// Figures: paper_figures/tokai1994/fig11_bezier_curve.cpp,
+//   paper_figures/tokai1994/fig13_15_sections.cpp.
 //
 // A cubic Bezier curve P(t) = (r(t), z(t)) (eq. 2) is given by 4 control points. To use it as
 // the cross-section of a scale we need z for a given r, i.e. the t with r(t) = r. That only

@@ -1,5 +1,7 @@
 // Lesson 52: bump mapping a leather normal map onto a curved Bezier patch (tokai1994 §4-5,
 // Blinn 1978), and why the tangent frame must be orthonormal.
+// Figures: paper_figures/tokai1994/fig16_bezier_patch.cpp,
+//   paper_figures/tokai1994/fig17_18_handbag.cpp, paper_figures/tokai1994/fig19_belt.cpp.
 //
 // The leather normal map stores normals in the texture's own frame: x, y along the texture,
 // z out of it. On the surface, texture x and y run along dP/dx and dP/dy, which are neither

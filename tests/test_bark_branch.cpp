@@ -1,6 +1,7 @@
 // Tests for lib/shitsukan/bark/branch_bark: springs on an irregular mesh, Fig. 9's connection
 // areas on it, growth and cracking on the branching trunk (§5).
 #include <doctest/doctest.h>
+#include "measured.hpp"
 
 #include <cmath>
 #include <vector>
@@ -67,7 +68,7 @@ TEST_CASE("branch cracks: around the trunk where hoop growth dominates, denser o
     // trunk (its saddle shortens along the crotch curve): pinned where it stands.
     CrotchCrackStats crotch;
     REQUIRE(crotch_crack_stats(b, p.growth.duration, kCrotchDepth, crotch).ok());
-    MESSAGE("crossing networks " << crotch.crossing << " of " << crotch.networks
+    MEASURED("crossing networks " << crotch.crossing << " of " << crotch.networks
                                  << ", crotch / trunk density "
                                  << crotch.density_crotch / crotch.density_trunk);
     CHECK(crotch.crossing >= 1);

@@ -1,6 +1,6 @@
-// Tests for lib/shitsukan/bark/branch_shape (hirota1998 §5, MODEL.md §1.11, §3.8, §5 tests
-// 16-17): the trunk-with-branch mesh is a manifold pair of pants of near-uniform edges; the
-// anisotropic growth field on a plain cylinder equals the cylinder model's.
+// Tests for lib/shitsukan/bark/branch_shape (hirota1998 §5; docs/papers/hirota1998.md §6): the
+// trunk-with-branch mesh is a manifold pair of pants of near-uniform edges; the anisotropic growth
+// field on a plain cylinder equals the cylinder model's.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -86,8 +86,8 @@ TEST_CASE("branch shape: the implicit function and its zones") {
     CHECK(!validate_branch_shape(bad));
 }
 
-TEST_CASE("branch mesh: manifold pair of pants with near-uniform edges (MODEL.md §3.8)") {
-    // The figure's size (L0 = 0.33 cm); the acceptance numbers of §3.8.
+TEST_CASE("branch mesh: manifold pair of pants with near-uniform edges ") {
+    // The figure's size (L0 = 0.33 cm); the mesh docs/papers/hirota1998.md §6 describes.
     BranchShapeParams s;
     TriangleMesh m;
     BranchMeshStats st;
@@ -101,7 +101,7 @@ TEST_CASE("branch mesh: manifold pair of pants with near-uniform edges (MODEL.md
     CHECK(topo.euler_characteristic == -1);
     CHECK(st.boundary_loops == 3);
     CHECK(st.euler_characteristic == -1);
-    // ~3,700 nodes (MODEL.md §2.3); measured 3,465.
+    // measured 3,465 nodes.
     CHECK(m.vertex_count() > 3000);
     CHECK(m.vertex_count() < 4200);
     CHECK(st.remesh.after.edge_length_cv < 0.15);

@@ -167,7 +167,7 @@ TEST_CASE("thresholds come from the spring's coordinates: eps_c around kappa - 1
     CHECK(sd == doctest::Approx(p.sigma).epsilon(0.1));
 }
 
-TEST_CASE("the shear-lag spacing estimate (reconstructed) reproduces MODEL.md's numbers") {
+TEST_CASE("the shear-lag spacing estimate (reconstructed) reproduces Table 3's observed spacings") {
     const float a_h = 0.33f * std::sqrt(3.0f) / 2, ratio = 1.689f;
     CHECK(std::isinf(crack_spacing_estimate(a_h, ratio, 0.04f, 0.0381f)));  // camphor: "(>20)"
     CHECK(crack_spacing_estimate(a_h, ratio, 0.015f, 0.0252f) == doctest::Approx(1.50).epsilon(1e-2));

@@ -1,6 +1,7 @@
 // Tests for lib/shitsukan/bark: crack_regions (Table 3's measurement), crack_drawing (Fig. 4),
 // bark_export (CSV that others can measure independently), and the three species at full size.
 #include <doctest/doctest.h>
+#include "measured.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +25,7 @@ void cut(BarkCylinder& bark, int c, int r, int dir) {
         break_spring(bark.net, std::uint32_t(s), 0.0f);
 }
 
-// The synthetic grid of MODEL.md §5 test 10: column boundaries every 8 columns (both diagonals,
+// A synthetic grid: column boundaries every 8 columns (both diagonals,
 // or only the up-right one), row boundaries every 8 rows (every spring straddling 8m - 1/2).
 void cut_grid(BarkCylinder& bark, bool columns, bool only_up_right) {
     const int N_R = bark.params.N_R, N_H = bark.params.N_H;
@@ -280,7 +281,7 @@ Table3Stats table3_over_seeds(Species species, const std::vector<std::uint32_t>&
     }
     const float n = float(st.runs);
     st.mean_w /= n, st.mean_h /= n, st.max_w /= n, st.max_h /= n;
-    MESSAGE(std::string(species_name(species)) << " over " << st.runs << " seeds: mean " << st.mean_w << " x "
+    MEASURED(std::string(species_name(species)) << " over " << st.runs << " seeds: mean " << st.mean_w << " x "
                                   << st.mean_h << ", max " << st.max_w << " x " << st.max_h);
     return st;
 }

@@ -1,6 +1,7 @@
 // Tests for lib/shitsukan/bark: spring_network (the equilibrium) and crack_events (breaking),
 // on cases with a closed form, then on the cylinder.
 #include <doctest/doctest.h>
+#include "measured.hpp"
 
 #include <cmath>
 #include <vector>
@@ -148,7 +149,7 @@ TEST_CASE("the break sequence is deterministic and does not depend on how spring
     // Golden: the first 500 breaks of this run, as canonical keys. A change here means the
     // physics, the thresholds or the tie-breaking changed: say why in the commit.
     const std::uint64_t h = break_sequence_hash(a.net, ra, 500);
-    MESSAGE("break sequence hash: " << h);
+    MEASURED("break sequence hash: " << h);
     CHECK(h == 0x09fb99b4d7e0bf74ull);
 }
 

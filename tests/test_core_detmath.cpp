@@ -2,6 +2,7 @@
 // their domains (measured against long double), follow C99's special values, and give
 // fixed bits (a digest the host, the sanitizer build and the Cortex-M transcripts share).
 #include <doctest/doctest.h>
+#include "measured.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -91,7 +92,7 @@ TEST_CASE("det_sinf, det_cosf, det_tanf: within 1 ulp over all finite floats") {
         Worst b = which == 0   ? scan(s, rs, 0x1p19f, 3.4e38f, 8191)
                   : which == 1 ? scan(c, rc, 0x1p19f, 3.4e38f, 8191)
                                : scan(t, rt, 0x1p19f, 3.4e38f, 8191);
-        MESSAGE("sin/cos/tan #" << which << ": worst " << a.err << " ulp at " << a.x
+        MEASURED("sin/cos/tan #" << which << ": worst " << a.err << " ulp at " << a.x
                                 << " (below 2^19), " << b.err << " ulp at " << b.x << " (above)");
         CHECK(a.err < 1.0);
         CHECK(b.err < 1.0);
@@ -112,7 +113,7 @@ TEST_CASE("det_expf, det_logf: within 1 ulp over their domains") {
                    104.0f, 1021);
     Worst l = scan([](float x) { return det_logf(x); }, [](long double x) { return logl(x); },
                    from_bits(1), 3.4e38f, 4093);
-    MESSAGE("exp worst " << e.err << " ulp at " << e.x << ", log worst " << l.err << " ulp at "
+    MEASURED("exp worst " << e.err << " ulp at " << e.x << ", log worst " << l.err << " ulp at "
                          << l.x);
     CHECK(e.err < 1.0);
     CHECK(l.err < 1.0);
@@ -124,7 +125,7 @@ TEST_CASE("det_expf, det_logf: within 1 ulp over their domains") {
 TEST_CASE("det_expf_fast: float arithmetic only, within 2 ulp over its domain") {
     Worst e = scan([](float x) { return det_expf_fast(x); },
                    [](long double x) { return expl(x); }, 0.0f, 104.0f, 257);
-    MESSAGE("exp (float arithmetic) worst " << e.err << " ulp at " << e.x);
+    MEASURED("exp (float arithmetic) worst " << e.err << " ulp at " << e.x);
     CHECK(e.err < 2.0);
     CHECK(det_expf_fast(0.0f) == 1.0f);
     CHECK(std::isinf(det_expf_fast(89.0f)));
@@ -139,7 +140,7 @@ TEST_CASE("det_logf_fast: float arithmetic only, within 1 ulp over all positive 
     Worst all = scan(f, ref, from_bits(1), 3.4e38f, 1021);  // every exponent
     Worst near1 = scan(f, ref, 0.5f, 2.0f, 7);              // k = 0, +-1: f = m - 1
     Worst tails = scan(f, ref, 0x1p-55f, 0.0243f, 509);     // the Gaussian tails' t
-    MESSAGE("log (float arithmetic) worst " << all.err << " ulp at " << all.x << ", " << near1.err
+    MEASURED("log (float arithmetic) worst " << all.err << " ulp at " << all.x << ", " << near1.err
                                             << " near 1, " << tails.err
                                             << " on the Gaussian tails' range");
     CHECK(all.err < 1.0);
@@ -159,7 +160,7 @@ TEST_CASE("det_sinf_fast: float arithmetic only, within 1 ulp for |x| <= 4096") 
     auto ref = [](long double x) { return sinl(x); };
     Worst all = scan(f, ref, 0.0f, 4096.0f, 331);
     Worst small = scan(f, ref, 0.0f, 8.0f, 13);  // the first quadrants, densely
-    MESSAGE("sin (float arithmetic) worst " << all.err << " ulp at " << all.x << ", "
+    MEASURED("sin (float arithmetic) worst " << all.err << " ulp at " << all.x << ", "
                                             << small.err << " on [0, 8]");
     CHECK(all.err < 1.0);
     CHECK(small.err < 1.0);
@@ -188,7 +189,7 @@ TEST_CASE("det_powf: within 1 ulp, exact powers exact, C99 special values") {
         const float y2 = float(1.0 + rng.uniform() * 127.0);
         w.add(ulp_error(det_powf(x2, y2), powl((long double)x2, (long double)y2)), x2, y2);
     }
-    MESSAGE("pow worst " << w.err << " ulp at x = " << w.x << ", y = " << w.y);
+    MEASURED("pow worst " << w.err << " ulp at x = " << w.x << ", y = " << w.y);
     CHECK(w.err < 1.0);
     CHECK(det_powf(2.0f, 3.0f) == 8.0f);
     CHECK(det_powf(-2.0f, 3.0f) == -8.0f);
@@ -223,7 +224,7 @@ TEST_CASE("det_acosf, det_asinf, det_atanf, det_atan2f: within 1 ulp") {
         const float y2 = float(rng.uniform() * 2 - 1), x2 = float(rng.uniform() * 2 - 1);
         a2.add(ulp_error(det_atan2f(y2, x2), atan2l((long double)y2, (long double)x2)), y2, x2);
     }
-    MESSAGE("acos " << ac.err << ", asin " << as.err << ", atan " << at.err << ", atan2 "
+    MEASURED("acos " << ac.err << ", asin " << as.err << ", atan " << at.err << ", atan2 "
                     << a2.err << " ulp (worst)");
     CHECK(ac.err < 1.0);
     CHECK(as.err < 1.0);
@@ -247,7 +248,7 @@ TEST_CASE("det_sin, det_cos (double) within 4 double ulps for mesh angles") {
         worst = std::fmax(worst, double(std::fabs(det_sin(x) - rs)) / us);
         worst = std::fmax(worst, double(std::fabs(det_cos(x) - rc)) / uc);
     }
-    MESSAGE("det_sin/det_cos worst " << worst << " double ulp on [-74, 74]");
+    MEASURED("det_sin/det_cos worst " << worst << " double ulp on [-74, 74]");
     CHECK(worst < 4.0);
 }
 

@@ -1,4 +1,4 @@
-// Tests for core/memory_budget.hpp: the per-request byte budget (issue 17, point 6).
+// Tests for core/memory_budget.hpp: the per-request byte budget.
 #include <cstring>
 
 #include <doctest/doctest.h>

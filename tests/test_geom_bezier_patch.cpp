@@ -1,6 +1,7 @@
 // Tests for lib/shitsukan/geom/bezier_patch and bezier_patch_mesh: eq. (5) corners, normals
 // vs finite differences, bad patches, and the arc-length texture mapping of tokai1994 §4.
 #include <doctest/doctest.h>
+#include "measured.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -137,7 +138,7 @@ TEST_CASE("patch strip: the arc-length mapping gives near-uniform texel density 
     std::sort(dp.begin(), dp.end());
     float spread_c = dc[dc.size() * 99 / 100] / dc[dc.size() / 100];
     float spread_p = dp[dp.size() * 99 / 100] / dp[dp.size() / 100];
-    MESSAGE("texel density (1st..99th percentile ratio): arc length "
+    MEASURED("texel density (1st..99th percentile ratio): arc length "
             << spread_c << ", plain (u, v) " << spread_p);
     // Measured 1.22 vs 2.91: what remains is the shear of a curved, tapering (not
     // developable) strip; the plain mapping adds the crowded control points' squeeze.

@@ -51,7 +51,8 @@ TEST_CASE("isotropic remesh: a marched sphere becomes near-uniform and stays a s
     CHECK(st.before.fraction_angle_above_25 < 0.8);
     CHECK(st.collapses > 0);
     CHECK(st.flips > 0);
-    // Acceptance (MODEL.md §3.8): CV < 0.15, 99 % of triangles with min angle > 25°.
+    // Acceptance (docs/papers/hirota1998.md §6): CV < 0.15, 99 % of triangles with min angle
+    // > 25°.
     CHECK(st.after.edge_length_cv < 0.15);
     CHECK(st.after.fraction_angle_above_25 >= 0.99);
     CHECK(std::fabs(st.after.edge_length_mean / double(L) - 1.0) < 0.1);

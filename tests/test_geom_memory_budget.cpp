@@ -1,5 +1,5 @@
 // Tests for the memory budget in lib/shitsukan/geom/{voronoi,delaunay,triangulate,
-// planar_subdivision} (issue 17, point 6): a request over the budget is refused at once with a
+// planar_subdivision}: a request over the budget is refused at once with a
 // too_large Status that names the call and gives the bytes, before anything is allocated.
 #include <doctest/doctest.h>
 
@@ -57,7 +57,7 @@ TEST_CASE("memory budget: voronoi_cells and build_delaunay refuse at once with t
 }
 
 TEST_CASE("memory budget: 2e7 Voronoi sites are over the default 4 GiB budget, 1e7 fit") {
-    // 1e7 sites took 4.6 GB before they died of std::bad_alloc (issue 17); issue 18's rework
+    // 1e7 sites took 4.6 GB before they died of std::bad_alloc; the Voronoi rework
     // brought the working set from 461 to 221 B per site, so 1e7 sites (2.6 GB) now fit the
     // default budget and 2e7 (5.1 GB) are refused at once (the calls themselves are not made
     // here: the sites alone would take 320 MB)

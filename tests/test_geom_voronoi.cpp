@@ -92,7 +92,7 @@ TEST_CASE("predicates: in-circle on a rounded lattice, every stage against the e
     // Sites (i + 0.5) / side rounded to doubles: four of them on one lattice circle are off
     // it by ~1e-16 of the determinant's size (the double-double stage decides those), some are
     // exactly on it (the expansions decide), axis-parallel rectangles are 0 by comparisons.
-    // The sign must be the exact one for every quadruple (issue 18's double-double stage).
+    // The sign must be the exact one for every quadruple (the double-double stage).
     const int side = 100;
     auto p = [&](int i, int j) { return Vec2d{(i + 0.5) / side, (j + 0.5) / side}; };
     Pcg32 rng(18, 4);

@@ -1,7 +1,7 @@
 // Tests for lib/shitsukan/geom/voronoi: the cells of `make bench`'s inputs, locked vertex by
 // vertex. Every bit of every cell (offsets, vertices, region-edge labels, duplicates) is
 // hashed (tests/bench/bench_voronoi_sites.hpp); the values below were computed with the
-// implementation on main before issue 16's split, issue 17's guard box and issue 12's
+// implementation before the Voronoi code was split into steps, before its guard box and its
 // fixed-point in-circle, and are the same with it (also at 1e6 sites, checked by hand:
 // uniform 0x3bc2a5f7d529e5e3, perturbed 0xe91f67b25c17db62, lattice 0x05e97270af1a00d7).
 // A speed-up or a refactoring that changes any cell fails here.

@@ -1,8 +1,9 @@
-// Tests for lib/shitsukan/geom/{voronoi,delaunay,polygon,double_double} under hostile input
-// (issue 17): each defect class found by probing is a named regression case, and a seeded
-// stress over sites an ulp apart, far sites, thin and tiny regions and lattices checks that an
-// ok result is always a tiling of the region.
+// Tests for lib/shitsukan/geom/{voronoi,delaunay,polygon,double_double} under hostile input:
+// each defect class found by probing is a named regression case, and a seeded stress over
+// sites an ulp apart, far sites, thin and tiny regions and lattices checks that an ok result
+// is always a tiling of the region.
 #include <doctest/doctest.h>
+#include "measured.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -223,7 +224,7 @@ TEST_CASE("voronoi robust: seeded stress, every ok result tiles its region") {
         REQUIRE(t.finite);
         REQUIRE(std::fabs(t.area - want) <= t.allowed + 1e-12 * want);
     }
-    MESSAGE("voronoi stress: " << checked << " ok results, every one a tiling");
+    MEASURED("voronoi stress: " << checked << " ok results, every one a tiling");
     CHECK(checked > 2000);
 }
 
@@ -315,7 +316,7 @@ TEST_CASE("fuzz finding 8: a far site's cell is not invented between nearly para
 }
 
 TEST_CASE("incircle_exact: fixed-point sum, signs consistent under swaps, rotations, scaling") {
-    // incircle_exact sums 192 products of four doubles in a 2048-bit integer (issue 12: the
+    // incircle_exact sums 192 products of four doubles in a 2048-bit integer (the
     // expansion version needed 37.8 KB of stack). Its sign was compared with the expansion
     // version on 2.8 million inputs (0 differences, 435,040 exact zeros) when it was written;
     // here: properties that any exact sign has, on inputs whose differences are inexact

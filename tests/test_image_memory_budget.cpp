@@ -1,4 +1,4 @@
-// Tests for the memory budget (core/memory_budget.hpp, issue 17.6) in image/: owning images
+// Tests for the memory budget (core/memory_budget.hpp) in image/: owning images
 // (try_resize) and the readers refuse at once, with the byte count, what does not fit.
 #include <cstdio>
 #include <cstring>

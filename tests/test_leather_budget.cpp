@@ -1,4 +1,4 @@
-// The byte budget (core/memory_budget.hpp, issue 17) before the leather module's large
+// The byte budget (core/memory_budget.hpp) before the leather module's large
 // allocations: the scale pattern, the tileable block and the maps refuse at once, with the
 // byte count, instead of dying of std::bad_alloc.
 #include <doctest/doctest.h>

@@ -2,6 +2,7 @@
 // tokai1994 §3.1 — the two-stage division tiles the square before and after perturbation,
 // shared edges stay shared, the pattern statistics the figures claim, bad input.
 #include <doctest/doctest.h>
+#include "measured.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -179,7 +180,7 @@ TEST_CASE("stage 2: no sliver scales at the left and right edges (a = 0.5)") {
         }
     }
     const double edge_spacing = steps_edge_spacing();
-    MESSAGE("narrowest edge cell at a = 0.5: " << narrowest << " (edge spacing " << edge_spacing
+    MEASURED("narrowest edge cell at a = 0.5: " << narrowest << " (edge spacing " << edge_spacing
                                                << ")");
     CHECK(narrowest >= 0.8 * 0.25 * edge_spacing);
 }
@@ -288,7 +289,7 @@ TEST_CASE("pattern statistics of fig. 7: near-quadrilateral scales, narrower at 
         corners += st.mean_corners / seeds;
         ratio += st.edge_to_centre / seeds;
     }
-    MESSAGE("stage-2 cells over 8 seeds: mean corner count " << corners << ", edge / centre width "
+    MEASURED("stage-2 cells over 8 seeds: mean corner count " << corners << ", edge / centre width "
                                                              << ratio);
     CHECK(corners > 3.8);  // (1) near-quadrilateral
     CHECK(corners < 4.6);
@@ -397,7 +398,7 @@ TEST_CASE("bad input: a clear status, no crash") {
     CHECK(std::count(labels.begin(), labels.end(), 0) == 4);
 }
 
-TEST_CASE("perturbation honours p (issue 13.1): curves that fit keep the requested amplitude") {
+TEST_CASE("perturbation honours p: curves that fit keep the requested amplitude") {
     // Small p on large square scales: no curve comes near its fan triangles' sides or turns
     // back around a centroid, so every edge keeps exactly the requested curve.
     SeedLayout s;
@@ -416,7 +417,7 @@ TEST_CASE("perturbation honours p (issue 13.1): curves that fit keep the request
     CHECK(pattern_area(pat) == doctest::Approx(1.0).epsilon(1e-9));
 }
 
-TEST_CASE("perturbation honours p (issue 13.1): fig. 10 grows rougher panel by panel") {
+TEST_CASE("perturbation honours p: fig. 10 grows rougher panel by panel") {
     // The old slope cap realised 57 % of the requested RMS on fig. 7 and made p = 0.015 and
     // p = 0.03 look alike; now only the edges that would break the tiling or a scale's star
     // shape are scaled down.
@@ -428,7 +429,7 @@ TEST_CASE("perturbation honours p (issue 13.1): fig. 10 grows rougher panel by p
         ScalePattern pat;
         REQUIRE(generate_scale_pattern(prm, pat, &steps).ok());
         const PerturbationReport& r = steps.perturbation;
-        MESSAGE("p = " << p << ": realised RMS " << r.realised_rms << " of " << r.requested_rms
+        MEASURED("p = " << p << ": realised RMS " << r.realised_rms << " of " << r.requested_rms
                        << ", " << r.shrunk << " of " << r.edges << " edges scaled down");
         CHECK(r.realised_rms > 1.2 * previous);
         CHECK(r.realised_rms <= r.requested_rms);
@@ -442,7 +443,7 @@ TEST_CASE("perturbation honours p (issue 13.1): fig. 10 grows rougher panel by p
     }
 }
 
-TEST_CASE("stage order (issue 13.2): fig. 5's stage-1 curves are fig. 7's row boundaries") {
+TEST_CASE("stage order: fig. 5's stage-1 curves are fig. 7's row boundaries") {
     for (std::uint32_t seed : {1u, 2u, 7u})
         for (float p : {0.015f, 0.03f}) {
             ScaleParams prm = fig07();

@@ -1,4 +1,4 @@
-// Progress of the long leather work (issue 15): the scale pattern and the maps report how far
+// Progress of the long leather work: the scale pattern and the maps report how far
 // they are through core/progress.hpp; the library itself never prints.
 #include <doctest/doctest.h>
 

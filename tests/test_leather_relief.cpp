@@ -2,6 +2,7 @@
 // §3.2, eq. 4) and the height/normal maps of a whole pattern. Patterns are built inline
 // (regular squares and hexagons), labelled by brute-force point-in-polygon.
 #include <doctest/doctest.h>
+#include "measured.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -202,7 +203,7 @@ TEST_CASE("relief maps: the normal map is the gradient of the height map") {
             std::sort(errors.begin(), errors.end());
             float median = errors[errors.size() / 2];
             float p90 = errors[errors.size() * 9 / 10];
-            MESSAGE(
+            MEASURED(
                 std::string(hex ? "hexagons" : "squares")
                 << ", " << std::string(rule == ReliefNormal::eq4 ? "eq. (4)" : "height gradient")
                 << ": angle(normal map, FD gradient of height map) median " << median

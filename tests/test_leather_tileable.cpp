@@ -1,4 +1,4 @@
-// Seamless tiling of the leather maps (tileable.hpp, issue 15): each layout's maps tiled 2x2
+// Seamless tiling of the leather maps (tileable.hpp): each layout's maps tiled 2x2
 // must be as continuous across the seams as inside the tile.
 #include <doctest/doctest.h>
 

@@ -1,4 +1,4 @@
-// Tests for hostile inputs outside geom (issue 17): one named regression case per defect the
+// Tests for hostile inputs outside geom: one named regression case per defect the
 // probing found in lib/shitsukan/{wrinkly/ist_digits, image/image_view,
 // wrinkly/hierarchical_sampling, solid/lattice_store}.
 #include <doctest/doctest.h>

@@ -1,4 +1,4 @@
-// Tests for the memory budget (core/memory_budget.hpp, issue 17.6) in solid/: the Type I
+// Tests for the memory budget (core/memory_budget.hpp) in solid/: the Type I
 // lattice (build, load_lattice: its own budget and the global one) and the Type II list.
 #include <cstdio>
 #include <cstring>

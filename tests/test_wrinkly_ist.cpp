@@ -533,10 +533,10 @@ TEST_CASE("procedure steps == digit steps at every u^k and u^{k.5} (eqs. 25, 26)
     }
 }
 
-// Issue 17.5: inverse(forward(u)) missed u by up to the whole axis on about 25 % of the
+// Regression: inverse(forward(u)) missed u by up to the whole axis on about 25 % of the
 // sub-interval left ends (u = 0 included): split() floored u B N^K, which rounds just below
 // an integer at many left ends, so the inverse read the neighbouring sub-interval.
-TEST_CASE("IST round trip is exact on every sub-interval left end (issue 17.5 regression)") {
+TEST_CASE("IST round trip is exact on every sub-interval left end (a regression)") {
     long checked = 0;
     for (int n = 1; n <= 7; ++n)
         for (int k = 0; k <= 6; ++k)

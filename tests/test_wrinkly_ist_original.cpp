@@ -188,10 +188,10 @@ TEST_CASE("original IST bad input") {
     CHECK(std::string(s.message()).find("M_1") != std::string::npos);
 }
 
-// Issue 17.5: following the point step by step let rounding carry it into the neighbouring
+// Regression: following the point step by step let rounding carry it into the neighbouring
 // part; inverse(forward(u)) missed 23 % of the left ends (by up to 0.9995) and forward() gave
 // values above 1 (then clamped to exactly 1 for u < 1).
-TEST_CASE("original IST round trip is exact on every sub-interval left end (issue 17.5)") {
+TEST_CASE("original IST round trip is exact on every sub-interval left end") {
     long checked = 0;
     const int fig2[5] = {1, 1, 2, 1, 1};
     for (int b = 1; b <= 6; ++b)

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Check README.md's module map ("## How the code is laid out") against the tree (issue 16).
+"""Check README.md's module map ("## How the code is laid out") against the tree.
 
 Usage: tools/check_module_map.py [README.md]
 The map is the first ``` block after that heading. Each entry is a path token that stands at

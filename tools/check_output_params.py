@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Public edges that cannot be called wrongly (issue 16): required outputs are references.
+"""Public edges that cannot be called wrongly: required outputs are references.
 
 Usage: tools/check_output_params.py [--list]
 Reads every public header (lib/shitsukan/**/*.hpp) and finds the functions that return a

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Compile (and where it can, run) the example in every header's manual (issue 16).
+"""Compile (and where it can, run) the example in every header's manual.
 
 Usage: tools/extract_manuals.py [--out DIR] [--build] [--cxx CXX] [--flags FLAGS]
                                 [--lib LIBRARY] [-j N] [--list] [headers...]

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""List the functions in lib/ longer than a limit (issue 16: none over 100 lines).
+"""List the functions in lib/ longer than a limit (none over 100 lines).
 
 Usage: tools/function_lengths.py [--limit N] [--top K] [paths...]
 A function is a brace block opened at namespace level (a line that is not a namespace,

@@ -16,18 +16,23 @@ out=lib/shitsukan/shitsukan.hpp
 //   FractalLattice lattice;
 //   Status s = lattice.build(okada1987_lattice_params());
 //   TriangleMesh mesh;
-//   if (s) s = make_torus(0.64f, 0.28f, 48, 24, &mesh);
+//   if (s) s = make_torus(0.64f, 0.28f, 48, 24, mesh);
 //   Camera camera = perspective_camera({1.9f, 2.4f, 4.2f}, {0, 0, 0}, {0, 1, 0}, 30, 128, 128);
 //   RgbImage image;
 //   if (s) s = render_solid_texture(camera, mesh.view(), lattice.view(), okada1987_marble(),
-//                                   &image);
+//                                   image);
 //   if (s) s = write_png("marble_torus.png", image.view());
 //   return s;
 //
 // Including single headers (shitsukan/<module>/<file>.hpp) compiles faster; this one is for
 // trying things out and for users who want everything. Modules, lowest first: core, image,
 // geom, raster, then the paper modules solid (okada1987/1989), leather (tokai1994), wrinkly
-// (fujimoto2000), and render (paper materials on meshes through the rasterizer).
+// (fujimoto2000), bark (hirota1998), and render (paper materials on meshes through the
+// rasterizer).
+//
+// Conventions (frames and axes, units, corner and index orders, float and double, outputs,
+// Status, Progress, the memory budget): docs/DESIGN.md, section "Conventions". Each paper's
+// steps, chosen values and readings: docs/papers/<key>.md.
 #pragma once
 HEAD
   for m in core image geom raster solid leather wrinkly bark render; do

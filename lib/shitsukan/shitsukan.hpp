@@ -18,7 +18,12 @@
 // Including single headers (shitsukan/<module>/<file>.hpp) compiles faster; this one is for
 // trying things out and for users who want everything. Modules, lowest first: core, image,
 // geom, raster, then the paper modules solid (okada1987/1989), leather (tokai1994), wrinkly
-// (fujimoto2000), and render (paper materials on meshes through the rasterizer).
+// (fujimoto2000), bark (hirota1998), and render (paper materials on meshes through the
+// rasterizer).
+//
+// Conventions (frames and axes, units, corner and index orders, float and double, outputs,
+// Status, Progress, the memory budget): docs/DESIGN.md, section "Conventions". Each paper's
+// steps, chosen values and readings: docs/papers/<key>.md.
 #pragma once
 
 // core

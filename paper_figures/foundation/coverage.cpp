@@ -5,6 +5,7 @@
 // once = a pastel colour of its triangle, never = red, more than once = magenta. The
 // triangle edges are drawn over it, so one sees which side of an edge each pixel centre
 // went to (the top-left rule).
+// Examples: examples/00_naive_triangle.cpp, examples/01_first_triangle.cpp.
 #include <cmath>
 #include <vector>
 

@@ -3,6 +3,7 @@
 //   lit_cube    flat shading (each triangle's plane normal)
 //   lit_torus   Gouraud shading (vertices lit once, colours interpolated)
 // They exercise the camera, the rasterizer, the shading helpers and the mesh builders.
+// Examples: examples/02_lit_cube.cpp, examples/03_bands.cpp.
 #include "driver/figure.hpp"
 #include "shitsukan/geom/mesh_builders.hpp"
 #include "shitsukan/image/image.hpp"

@@ -1,6 +1,8 @@
 // Foundation demo figure: a hidden-line wireframe. The torus and the sphere are first drawn
 // into the Z-buffer with a flat fill, then each unique edge is drawn as a line that shows
 // only where it is not behind a surface.
+// Example: none of its own; examples/01_first_triangle.cpp teaches the rasterizer the wireframe is
+//   drawn with.
 #include <vector>
 
 #include "driver/figure.hpp"

@@ -1,5 +1,7 @@
 // fujimoto2000 figs 1 and 2: the original IST of §2.1 — constant M = 1 over u^0 .. u^3, and
 // M_i = 2 for the centre base interval (u^0 -> u^1), drawn from the library's procedure.
+// Example: none of its own; examples/20_ist_table.cpp teaches the later ISTs; the original IST has
+//   no lesson.
 #include "driver/figure.hpp"
 #include "ist_diagram.hpp"
 

@@ -1,5 +1,6 @@
 // fujimoto2000 figs 3 and 4: the unit-IST (§2.2.1) — N = 5 over u^0 .. u^3 with the
 // sub-interval numbers, and the internal shuffle of iteration 2 for N = 1, 2, 3, 4.
+// Example: examples/20_ist_table.cpp.
 #include "driver/figure.hpp"
 #include "ist_diagram.hpp"
 

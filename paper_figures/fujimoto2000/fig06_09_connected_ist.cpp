@@ -2,6 +2,7 @@
 // u^{k.5} axes (fig 6a), the fig 6b shuffle, other external shuffles (fig 7), the
 // fully-connected external shuffles for N = 1, 3, 7 (fig 8) and the ends of a translation
 // axis (fig 9).
+// Example: examples/20_ist_table.cpp.
 #include "driver/figure.hpp"
 #include "ist_diagram.hpp"
 

@@ -2,6 +2,7 @@
 // plotted against its image alpha^3 (unit-IST N = 5, eq. 7; fully-connected IST N = 5 on
 // base interval 6, eq. 12), the points joined in the order of alpha^0 (eq. 5) and coloured
 // by the shift copy (sc1, sc2, sc3) that creates them from the group G1 = (000, 000).
+// Example: examples/20_ist_table.cpp.
 #include <cmath>
 #include <string>
 #include <vector>

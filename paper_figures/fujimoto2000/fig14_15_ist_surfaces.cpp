@@ -21,6 +21,7 @@
 // and its zooms (the zooms magnify (b) without a further step, which would hide the tendency);
 // fig. 15's fully-connected IST keeps its colours local at any K, so its zooms go one step
 // deeper. Each zoom's note prints the measured mean colour of its third.
+// Example: examples/30_wrinkly_surface.cpp.
 #include <cmath>
 
 #include "driver/figure.hpp"

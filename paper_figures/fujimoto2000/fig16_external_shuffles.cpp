@@ -8,6 +8,7 @@
 // "(f) -> (e) -> (d) the connection becomes denser" (§3.2). In (f) every span keeps its own
 // colour (25 independent unit-ISTs); in (e) only groups 0 and 4 are exchanged with the
 // neighbours; in (d) every group moves.
+// Example: examples/30_wrinkly_surface.cpp.
 #include <cmath>
 
 #include "driver/figure.hpp"

@@ -10,6 +10,7 @@
 // more than 0.1 % of max|h_i| between (a) and (b). A Bezier control point acts on the whole
 // patch; a B-spline one on 4 x 4 spans, and the IST carries that change to the places it maps
 // there (every small interval whose source lies in the changed region).
+// Example: examples/31_superposed_mountains.cpp.
 #include <algorithm>
 #include <cmath>
 

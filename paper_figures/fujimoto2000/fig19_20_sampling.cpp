@@ -7,6 +7,7 @@
 // surface is sampled on its edges too) are the hollow dots.
 // fig. 20: the sampling points of the unit-IST N = 3 at k = 1 and k = 2: one per small region
 // ((3^k)^2 of them), plus points on the boundary of the open surface.
+// Example: examples/31_superposed_mountains.cpp.
 #include <cmath>
 #include <vector>
 

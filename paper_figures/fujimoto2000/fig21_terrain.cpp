@@ -8,6 +8,7 @@
 // The product IST (u and v separately) gives every WR surface a plaid grain; a camera looking
 // along one parameter turns it into curtains, so the view is diagonal, the light from above.
 // Table 2 lists our time per stage beside the paper's Origin2000 minutes.
+// Example: examples/31_superposed_mountains.cpp.
 #include <algorithm>
 #include <cmath>
 

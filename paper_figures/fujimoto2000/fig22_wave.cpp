@@ -4,6 +4,7 @@
 // 1 = WR surface (spiky), 2/3/4 = superposed with delta 0.25 / 0.50 / 0.75. K = 3, Hermite
 // interpolation of the samples, displacement along per-point directions and Gaussian jitter
 // of the samples (§5). The two ISTs distribute the heights differently (§5).
+// Example: none of its own; examples/31_superposed_mountains.cpp teaches the superposed surface.
 #include <algorithm>
 #include <cmath>
 #include <map>

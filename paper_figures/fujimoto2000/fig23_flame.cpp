@@ -9,6 +9,7 @@
 // Transparency (chosen method): the triangles are sorted back to front by the view depth of
 // their centroids and drawn with the Z-buffer; each fragment is blended over the colour
 // already in the frame, out = (1 - t)·c + t·dst, t = the interpolated transparency.
+// Example: none of its own; examples/31_superposed_mountains.cpp teaches the superposed surface.
 #include <cmath>
 #include <map>
 

@@ -1,6 +1,8 @@
 // fujimoto2000 Table 1: time per coordinate of the IST, the step-by-step procedure (the
 // implementation of ref. 13) against the scale reverse formula eq. (14), for N = 3, 5, 7 and
 // K = 1..6, on 10^6 pseudo-random coordinates, beside the paper's numbers (R10000 250 MHz).
+// Example: none of its own; examples/20_ist_table.cpp teaches the procedure and formula this table
+//   times.
 #include <time.h>
 
 #include <cmath>

@@ -52,7 +52,7 @@ void record_parameters(FigureContext& ctx, const CylinderParams& p) {
               "Table 2");
     ctx.chosen("1 / 2 subscripts", "1 = axial (vertical springs), 2 = around the trunk (diagonals)",
                "camphor and tallow share every subscript-2 value and Table 3's width, and differ "
-               "in subscript 1 and the height (MODEL.md §2.2)");
+               "in subscript 1 and the height (docs/papers/hirota1998.md §3)");
     ctx.given("R0, H0", fmt("sqrt(3) L0 N_R / (4 pi) = %.3f cm, L0 N_H = %.2f cm",
                             double(initial_radius(p)), double(initial_height(p))),
               "Table 1");

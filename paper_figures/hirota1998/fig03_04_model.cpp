@@ -1,5 +1,6 @@
 // hirota1998 fig. 3 (the two-layer model on a cylinder) and fig. 4 (how a broken spring is drawn
 // as a crack).
+// Example: examples/60_two_layer_bark.cpp.
 #include <algorithm>
 #include <cmath>
 #include <string>

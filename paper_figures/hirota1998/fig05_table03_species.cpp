@@ -1,5 +1,6 @@
 // hirota1998 fig. 5 (the barks of camphor, Chinese tallow and pine) and Table 3 (the size of
 // the regions bounded by cracks), from the same three runs.
+// Example: examples/60_two_layer_bark.cpp.
 #include <algorithm>
 #include <cmath>
 #include <string>

@@ -1,6 +1,8 @@
 // hirota1998 figs. 6-8: the four-layer model (a radial section), the layers' radii over time,
 // and the bark growing over several cycles (cracking, lifting, peeling, new layers). One run of
 // the four-layer model feeds all three (memoised).
+// Example: none of its own; examples/60_two_layer_bark.cpp teaches the two-layer model the four
+//   layers extend.
 #include <algorithm>
 #include <chrono>
 #include <cmath>

@@ -1,5 +1,7 @@
 // hirota1998 fig. 9 (connection areas on an irregular mesh) and fig. 11 (cracks on a branching
 // trunk), from one branch run (memoised).
+// Example: none of its own; examples/60_two_layer_bark.cpp teaches the cylinder the branch model
+//   generalises.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -245,7 +247,7 @@ SHITSUKAN_FIGURE(hirota_fig11, "hirota1998", "fig11",
             cracks.add_triangle(a, bb, cc), cracks.add_triangle(a, cc, d);
         }
     }
-    // Checks (MODEL.md §4 fig11).
+    // Checks (docs/papers/hirota1998.md §6, "Result").
     int trunk_breaks = 0, trunk_hoop = 0, branch_breaks = 0;
     double trunk_area = 0, branch_area = 0;
     auto zone = [&](Vec3 x) {  // 1 trunk, 2 branch, 0 crotch

@@ -1,9 +1,10 @@
 // hirota1998 fig. 10: anisotropic growth of trunk and branch = isotropic scaling + normal
-// offset (§5.2), shown on the branch shape of §5 (MODEL.md §1.11, §2.3, §4 fig10).
+// offset (§5.2), shown on the branch shape of §5 (docs/papers/hirota1998.md §6).
 //   (a) the section of the mesh by the plane y = 0, four outlines: original, isotropic scaling
 //       only, normal offset only, both (growth magnified: s = 1.25, d = 0.6 cm);
 //   (b) the mesh coloured by the growth rate ε̂·T for the fig11 parameters (per vertex: the
 //       mean over its edges), (c) a close-up of the crotch with every edge in its own ε̂·T.
+// Example: none of its own; examples/60_two_layer_bark.cpp teaches the growth of the cylinder.
 #include <chrono>
 #include <cmath>
 #include <vector>
@@ -27,7 +28,8 @@ namespace {
 // Fig. 10's magnified growth (chosen here: large enough to see at figure scale).
 constexpr float kShowScale = 1.25f;
 constexpr float kShowOffset = 0.6f;  // cm
-// The fig11 growth (MODEL.md §2.3): r_h = 0.010, r_r(trunk) = 0.030 -> r_n = (r_r - r_h) R_t.
+// The fig11 growth (docs/papers/hirota1998.md §6): r_h = 0.010, r_r(trunk) = 0.030
+// -> r_n = (r_r - r_h) R_t.
 constexpr float kRh = 0.010f;
 constexpr float kRr = 0.030f;
 constexpr float kT = 100.0f;
@@ -118,13 +120,14 @@ SHITSUKAN_FIGURE(hirota1998_fig10, "hirota1998", "fig10",
     ctx.chosen("shape",
                "trunk R_t = 2.5 cm, z in [0, 16]; branch R_b = 1.5 cm from (0, 0, 6) "
                "at 40 deg from vertical in the x-z plane; smooth-min blend k = 1 cm",
-               "no scan: an implicit trunk + branch (MODEL.md §2.3)");
+               "no scan: an implicit trunk + branch (docs/papers/hirota1998.md §6)");
     ctx.chosen("mesh",
                fmt("marching tetrahedra at L0/2, isotropic remeshing to L0 = %.2f cm "
                    "(8 passes)%s",
                    double(L0), ctx.quick() ? " [quick]" : ""),
                "the bubble-mesh substitute: near-uniform node spacing (§5.1)");
-    ctx.chosen("c (scaling centre)", "(0, 0, 0), the base centre of the trunk", "MODEL.md §1.11");
+    ctx.chosen("c (scaling centre)", "(0, 0, 0), the base centre of the trunk",
+               "docs/papers/hirota1998.md §6");
     ctx.chosen("panel (a) growth",
                fmt("s = %.2f, d = %.1f cm", double(kShowScale), double(kShowOffset)),
                "magnified so the four outlines separate at figure scale");
@@ -132,7 +135,7 @@ SHITSUKAN_FIGURE(hirota1998_fig10, "hirota1998", "fig10",
                fmt("r_h = %.3f, r_r = %.3f, T = %.0f -> r_n = (r_r - "
                    "r_h) R_t = %.3f cm",
                    double(kRh), double(kRr), double(kT), double((kRr - kRh) * shape.trunk_radius)),
-               "the fig11 values (MODEL.md §2.3)");
+               "the fig11 values (docs/papers/hirota1998.md §6)");
 
     auto t0 = std::chrono::steady_clock::now();
     TriangleMesh mesh;

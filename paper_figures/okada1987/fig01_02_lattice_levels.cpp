@@ -1,4 +1,5 @@
 // okada1987 figs. 1 and 2: the random fractal lattice, level by level (2D quadtree, 3D octree).
+// Examples: examples/10_lattice_levels.cpp, examples/16_lattice_rules.cpp.
 #include <cmath>
 #include <vector>
 

@@ -1,4 +1,5 @@
 // okada1987 fig. 6: trilinear interpolation — D along a line against the lattice samples.
+// Examples: examples/04_plot.cpp, examples/11_turbulence_line.cpp.
 #include <cmath>
 #include <vector>
 

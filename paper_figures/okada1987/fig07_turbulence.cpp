@@ -1,4 +1,5 @@
 // okada1987 fig. 7: the original function G and the same G disturbed by D, side by side.
+// Example: examples/11_turbulence_line.cpp.
 #include "okada1987/okada_common.hpp"
 #include "okada1987/okada_plot.hpp"
 #include "shitsukan/image/raster_canvas.hpp"

@@ -1,4 +1,5 @@
 // okada1987 fig. 9: one stripe g(z), the trapezoid with exponential skirts of eq. (8).
+// Example: examples/12_marble_slab.cpp.
 #include <cmath>
 
 #include "okada1987/okada_common.hpp"

@@ -1,4 +1,5 @@
 // okada1987 figs. 10, 11, 13, 14, 15: the marble (a) and wood (b) objects.
+// Examples: examples/13_wood_slab.cpp, examples/15_marble_on_your_mesh.cpp.
 #include "okada1987/okada_common.hpp"
 
 using namespace shitsukan;

@@ -1,5 +1,6 @@
 // okada1987 fig. 12: the turbulence contribution k, 16 cubes each (marble k = 0..30 step 2,
 // wood k = 0..6 step 0.4).
+// Example: examples/12_marble_slab.cpp.
 #include "okada1987/okada_common.hpp"
 #include "shitsukan/image/raster_canvas.hpp"
 

@@ -1,4 +1,5 @@
 // okada1987 Table 1: processing time per figure, the paper's FACOM M-382 seconds next to ours.
+// Example: none of its own; examples/12_marble_slab.cpp teaches the marble this table times.
 #include <chrono>
 #include <cstdio>
 #include <functional>

@@ -1,5 +1,6 @@
 // okada1989 figs. 6 and 7: the two fundamental textures (original functions) before any
 // pixel shift: the trapezoid with exponential skirts and the coaxial sine wave.
+// Examples: examples/12_marble_slab.cpp, examples/13_wood_slab.cpp.
 #include <cmath>
 
 #include "okada1987/okada_common.hpp"

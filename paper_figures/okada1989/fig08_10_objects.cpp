@@ -1,4 +1,5 @@
 // okada1989 figs. 8-10: cup, ashtray and torus, marble (a, single stripe) and wood (b).
+// Example: examples/15_marble_on_your_mesh.cpp.
 #include "okada1987/okada_common.hpp"
 
 using namespace shitsukan;

@@ -1,5 +1,6 @@
 // okada1989 §2-3 "Table types": lattice Types I, II and III — memory and time for the same
 // points, and the check that they agree.
+// Example: examples/14_lattice_types.cpp.
 #include <chrono>
 #include <cmath>
 #include <cstring>

@@ -1,4 +1,5 @@
 // tokai1994 fig. 2: Voronoi division of scattered seeds, drawn with its seeds.
+// Example: examples/40_exact_voronoi.cpp.
 #include "driver/figure.hpp"
 #include "shitsukan/core/prng.hpp"
 #include "shitsukan/leather/scale_division.hpp"

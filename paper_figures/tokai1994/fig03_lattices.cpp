@@ -1,5 +1,6 @@
 // tokai1994 fig. 3: patterns from triangular-lattice seeds (a-d) and square-lattice seeds
 // (e-h) with increasing relative displacement a; (b) looks like snake skin, (f) like crocodile.
+// Example: examples/40_exact_voronoi.cpp.
 #include "driver/figure.hpp"
 #include "shitsukan/leather/scale_division.hpp"
 #include "tokai1994/scale_drawing.hpp"

@@ -1,6 +1,7 @@
 // tokai1994 figs. 4-6: the stage-1 seed layout (fig. 4, d and D marked), the pattern after
 // the vertical division (fig. 5), and the stage-2 seed layout with columns narrowing toward
 // the left and right edges (fig. 6). Open circles: original seeds; dots: moved seeds.
+// Example: examples/41_crocodile_scales.cpp.
 #include <cmath>
 
 #include "driver/figure.hpp"

@@ -1,6 +1,7 @@
 // tokai1994 figs. 7-10: the scale pattern after both divisions (fig. 7: d = 1.0 D, a = 0.25,
 // p = 0.015) and the effect of d (fig. 8), a (fig. 9) and the perturbation p (fig. 10), each
 // varied around the fig. 7 values.
+// Example: examples/41_crocodile_scales.cpp.
 #include <cstdint>
 #include <string>
 #include <vector>

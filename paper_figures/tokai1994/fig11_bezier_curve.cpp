@@ -1,5 +1,6 @@
 // tokai1994 fig. 11: a cubic Bezier curve (eq. 2) with its control polygon, and the
 // derivative of eq. (3) drawn as tangents at a few t.
+// Example: examples/51_bezier_section.cpp.
 #include <cstdio>
 #include <vector>
 

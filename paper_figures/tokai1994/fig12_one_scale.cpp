@@ -1,6 +1,7 @@
 // tokai1994 fig. 12: the relief of one scale. (a) top view: the polygon, its centroid m, the
 // r axis from m through a point x to the edge point p, the height as grey; (b) the section
 // along that r axis with the eq. (4) normals.
+// Example: examples/50_leather_maps.cpp.
 #include <cmath>
 #include <vector>
 

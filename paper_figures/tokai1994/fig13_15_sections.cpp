@@ -1,5 +1,6 @@
 // tokai1994 figs. 13-15: the three cross-sections of Table 1 and the leather they give.
 // (a) the section plot, (b) the shaded leather texture of the fig. 7 pattern, (c) a close-up.
+// Examples: examples/50_leather_maps.cpp, examples/51_bezier_section.cpp.
 #include <cmath>
 #include <vector>
 

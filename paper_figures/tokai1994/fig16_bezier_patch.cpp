@@ -1,4 +1,5 @@
 // tokai1994 fig. 16: a bicubic Bezier patch (eq. 5) with its 16-point control net.
+// Example: examples/52_bump_mapped_patch.cpp.
 #include <vector>
 
 #include "driver/figure.hpp"

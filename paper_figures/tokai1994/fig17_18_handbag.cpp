@@ -1,6 +1,7 @@
 // tokai1994 figs. 17-18: the handbag (7 bicubic Bezier patches + 2 spherical segments) as a
 // wireframe, and rendered with the fig. 13 leather bump-mapped (Blinn 1977 shading, two point
 // lights, Z-buffer, no shadows, no anti-aliasing), with a close-up.
+// Example: examples/52_bump_mapped_patch.cpp.
 #include <algorithm>
 #include <chrono>
 #include <cmath>

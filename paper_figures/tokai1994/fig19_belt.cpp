@@ -1,5 +1,6 @@
 // tokai1994 fig. 19: a snake-leather belt (the fig. 3(b) pattern with the fig. 13(a) section)
 // and the leather texture used.
+// Example: examples/52_bump_mapped_patch.cpp.
 #include <algorithm>
 #include <chrono>
 

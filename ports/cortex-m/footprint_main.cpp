@@ -1,4 +1,4 @@
-// ports/cortex-m/footprint_main.cpp — the two firmwares of issue 12's footprint goals, built by
+// ports/cortex-m/footprint_main.cpp — the two firmwares of the footprint goals, built by
 // `make footprint-mcu` for the Cortex-M4F and run under QEMU (so the numbers are of programs
 // that work):
 //   FOOTPRINT_LATTICE   a Type III lattice (okada1987's R = 6, no table) and D(P) at 4096

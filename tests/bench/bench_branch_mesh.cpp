@@ -1,5 +1,5 @@
-// bench_branch_mesh — the hirota1998 §5 branch mesh (MODEL.md §3.8): marching tetrahedra at
-// L0/2 = 0.165 cm, then isotropic remeshing to L0 = 0.33 cm, 8 passes.
+// bench_branch_mesh — the hirota1998 §5 branch mesh (docs/papers/hirota1998.md §6): marching
+// tetrahedra at L0/2 = 0.165 cm, then isotropic remeshing to L0 = 0.33 cm, 8 passes.
 //   - marching tetrahedra: time per mesh, and the share of it spent sampling f on the grid
 //     (the same grid sampled alone, timed in the same run): the polygonisation's overhead;
 //   - the remesher against CGAL's Polygon_mesh_processing::isotropic_remeshing (the same

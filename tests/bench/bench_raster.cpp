@@ -4,7 +4,7 @@
 // baseline:  the very same shader called on the very same fragments (recorded from one
 //            render, overwritten ones included), without the rasterizer.
 // The difference is what the rasterizer costs (setup, clipping, edge walking, depth test,
-// interpolation); issue 2 asks for <= 15 % of the shader time.
+// interpolation); the goal is <= 15 % of the shader time.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -6,6 +6,10 @@
 #   2. CMake FetchContent from this clone (git, at HEAD: commit your changes first)
 #   3. CMake find_package after `cmake --install` of this clone's CMake build
 #   4. pkg-config after `make install` (and find_package against that install too)
+# and two traps of using it from outside:
+#   5. a C++20 project through pkg-config stays C++20 (std::span; the .pc carries no -std)
+#   6. add_subdirectory from a parent that set no build type still compiles the library with
+#      -O (and a parent's own build type is left alone)
 # Work happens in build/consumers/. Needs cmake, pkg-config, git and a compiler.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -81,6 +85,36 @@ cmake -S "$root/tests/consumer" -B "$work/find_package_make" -DCONSUME=find_pack
 cmake --build "$work/find_package_make" -j "$jobs" >/dev/null
 run_consumer find_package_make "$work/find_package_make/consumer"
 
+echo "-- 5. a C++20 project through pkg-config (std::span)"
+# shellcheck disable=SC2046
+${CXX:-g++} -std=c++20 -O1 "$root/tests/consumer/cxx20_span.cpp" \
+  $(pkg-config --cflags --libs shitsukan) -o "$work/cxx20" ||
+  { echo "test-consumers: a C++20 consumer does not compile through pkg-config"; exit 1; }
+echo "  $("$work/cxx20")"
+
+echo "-- 6. add_subdirectory's compile flags for the library (configure only)"
+# library_flags <dir>: the compile commands of the library's own sources, one a line.
+library_flags() {
+  python3 -c 'import json, sys
+for c in json.load(open(sys.argv[1])):
+    if "/lib/shitsukan/" in c["file"]: print(c["command"])' "$1/compile_commands.json"
+}
+cmake -S "$root/tests/consumer" -B "$work/subdirectory_plain" -DCONSUME=subdirectory \
+  -DSHITSUKAN_DIR="$root" -DCMAKE_BUILD_TYPE= -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -Wno-dev >/dev/null
+n_lib="$(library_flags "$work/subdirectory_plain" | wc -l)"
+n_opt="$(library_flags "$work/subdirectory_plain" | grep -c -- ' -O[1-3s]\? ' || true)"
+if [ "$n_lib" -eq 0 ] || [ "$n_opt" -ne "$n_lib" ]; then
+  echo "test-consumers: with no build type, $n_opt of $n_lib library sources compile with -O"; exit 1
+fi
+echo "  no build type in the parent: all $n_lib library sources compile with -O"
+cmake -S "$root/tests/consumer" -B "$work/subdirectory_debug" -DCONSUME=subdirectory \
+  -DSHITSUKAN_DIR="$root" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_EXPORT_COMPILE_COMMANDS=ON \
+  -Wno-dev >/dev/null
+if library_flags "$work/subdirectory_debug" | grep -q -- ' -O'; then
+  echo "test-consumers: the library overrode the parent's Debug build type with an -O"; exit 1
+fi
+echo "  a parent's Debug build type is kept (no -O added)"
+
 for h in "${hashes[@]}"; do
   if [ "$h" != "${hashes[0]}" ]; then
     echo "test-consumers: image hashes differ between the ways of building: ${hashes[*]}"
@@ -88,4 +122,5 @@ for h in "${hashes[@]}"; do
   fi
 done
 echo "test-consumers: ${#hashes[@]} builds (Makefile, add_subdirectory, FetchContent," \
-     "find_package x2, pkg-config) ran; same version $version, same image bits"
+     "find_package x2, pkg-config) ran; same version $version, same image bits;" \
+     "C++20 through pkg-config and add_subdirectory's -O checked"

@@ -7,14 +7,14 @@
 //   float R0 = initial_radius(p), H0 = initial_height(p);   // Table 1
 //   return s;
 //
-// Table 1 names the parameters; Table 2 gives L0, E1, E2, G, kappa1, kappa2 for three
-// species. Everything else is "chosen here" below, with the reason (MODEL.md §2.3 calibrated
-// them with a prototype; this library re-measured them, see the README and table03).
+// Table 1 names the parameters; Table 2 gives L0, E1, E2, G, kappa1, kappa2 for three species.
+// Everything else is "chosen here" below, with the reason (docs/papers/hirota1998.md §4 gives each
+// with its reason; the table03 figure measures them).
 //
-// Reading of the subscripts (the paper does not say; MODEL.md §2.2): 1 = along the trunk axis
-// (the vertical springs; they break into horizontal cracks), 2 = around the trunk (the diagonal
-// springs; they break into vertical cracks). Camphor and tallow share every subscript-2 value
-// and Table 3's horizontal size, and differ in subscript 1 and in the vertical size.
+// Reading of the subscripts (the paper does not say; docs/papers/hirota1998.md §3): 1 = along the
+// trunk axis (the vertical springs; they break into horizontal cracks), 2 = around the trunk (the
+// diagonal springs; they break into vertical cracks). Camphor and tallow share every subscript-2
+// value and Table 3's horizontal size, and differ in subscript 1 and in the vertical size.
 //
 // Units: cm, s, and Table 2's moduli read as dyn/cm^2 (the paper prints g·cm/s^2); only the
 // ratios E/G and the critical elongations shape the pattern.
@@ -55,8 +55,9 @@ struct CylinderParams {
     int N_R = 128;            // nodes around (must be even: alternate columns shift by L0/2)
     int N_H = 64;             // nodes along the axis
     // chosen here: layer thickness (the element height H and the shear length h of the
-    // connection-area rule, §5.1). Region sizes scale with D; 0.55 cm puts the three species
-    // near Table 3 (MODEL.md App. A). Below about L0 the damage is diffuse, not line cracks.
+    // connection-area rule, §5.1). Region sizes scale with D; 0.55 cm puts the three species near
+    // Table 3 (docs/papers/hirota1998.md §4). Below about L0 the damage is diffuse, not line
+    // cracks.
     float D = 0.55f;
     // chosen here: spread of the critical elongation, relative, Gaussian clipped at 3 sigma.
     // Measured (seeds 1998, 1, 2, 3): 0.015 makes camphor's strips full height (mean 14-19

@@ -1,7 +1,7 @@
 // shitsukan/bark/branch_bark.hpp — hirota1998 §5: cracks on a branching trunk (Figs. 9, 11).
 //
 // Manual
-//   BranchBarkParams p;                          // MODEL.md §2.3 branch values
+//   BranchBarkParams p;                          // the chosen branch values
 //   p.edge_length = 0.8f;                        // coarser than the figure's, to be quick
 //   BranchBark bark;
 //   Status s = build_branch_bark(p, bark);      // mesh, springs on its edges, constants
@@ -23,10 +23,10 @@
 // node has three degrees of freedom; the solver and the event driver are the cylinder's
 // (spring_network.hpp, crack_events.hpp).
 //
-// Material (chosen here, MODEL.md §2.3): isotropic, E = 117.3e7, G = 53.3e7, kappa = 1.015
-// for every spring: at the crotch "axial" and "around" are undefined (the paper's own point),
-// and the growth's anisotropy alone orients the cracks. Thresholds from a hash of the spring's
-// two end positions (sorted), stream 13: independent of how the mesh is numbered.
+// Material (chosen here, docs/papers/hirota1998.md §6): isotropic, E = 117.3e7, G = 53.3e7, kappa =
+// 1.015 for every spring: at the crotch "axial" and "around" are undefined (the paper's own point),
+// and the growth's anisotropy alone orients the cracks. Thresholds from a hash of the spring's two
+// end positions (sorted), stream 13: independent of how the mesh is numbered.
 #pragma once
 
 #include <cstdint>

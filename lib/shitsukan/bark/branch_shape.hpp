@@ -2,7 +2,7 @@
 // and its anisotropic growth (isotropic scaling + normal offset, Fig. 10).
 //
 // Manual
-//   BranchShapeParams shape;                               // MODEL.md §2.3 values
+//   BranchShapeParams shape;                               // the chosen values
 //   TriangleMesh mesh;  BranchMeshStats stats;
 //   Status s = make_branch_mesh(shape, 0.6f, mesh, &stats);   // 0.33: ~3,500 nodes; n = ∇f/|∇f|
 //   Vec3 p{0.5f, 1.0f, 2.0f};
@@ -16,7 +16,7 @@
 //   float rate = edge_growth_rate(g, X_i, X_j, n_i, n_j);   // ε̂_ij, per unit time
 //
 // The paper (§5.1) digitised a real branching trunk and re-meshed it with the bubble mesh;
-// there is no scan here, so the shape is an implicit surface (MODEL.md §1.11, §3.8):
+// there is no scan here, so the shape is an implicit surface (docs/papers/hirota1998.md §6):
 //   f(p) = smin(f_trunk(p), f_branch(p); k),
 //   f_trunk(p)  = |p - proj_trunk(p)| - R_t      (distance to the vertical z axis minus R_t),
 //   f_branch(p) = |p - proj_branch(p)| - R_b     (distance to the half-line from the branch
@@ -104,7 +104,8 @@ Status make_branch_mesh(const BranchShapeParams& params, float target_edge_lengt
 
 // ---- §5.2 anisotropic growth ----
 struct AnisotropicGrowth {
-    float r_h = 0.010f;       // isotropic (length) growth over the duration (MODEL.md §2.3)
+    float r_h = 0.010f;       // isotropic (length) growth over the duration (chosen, §6 of
+                              // docs/papers/hirota1998.md)
     float r_n = 0.05f;        // normal offset over the duration, cm ((r_r - r_h)·R_t)
     float duration = 100.0f;  // T
     Vec3 centre{0, 0, 0};     // c: the fixed point of the scaling (the trunk's base centre)

@@ -121,7 +121,8 @@ Status run_cracking(SpringNetwork& net, float T, float tol, const CrackRunOption
 Status grow_and_crack(BarkCylinder& bark, const CrackRunOptions& options, CrackRun& out) {
     float g_max = 0.0f;
     for (const BarkSpring& s : bark.net.springs) g_max = std::max(g_max, std::fabs(s.growth_rate));
-    // Relaxation tolerance (MODEL.md §3.3): tau·L0·max g_s, in cm per unit time of W.
+    // Relaxation tolerance (docs/papers/hirota1998.md §2, "Relaxation tolerance"): tau·L0·max g_s,
+    // in cm per unit time of W.
     const float tol = bark.params.tolerance * bark.params.species.L0 * g_max;
     return run_cracking(bark.net, bark.params.T, tol, options, out);
 }

@@ -26,7 +26,7 @@
 // Regions (primary). A central-force triangular lattice has a zero-energy mechanism: along a
 // lattice line a crack opens by sliding once one of the two diagonal families across it has
 // broken, while the other family only rotates. Plain connectivity over intact springs would
-// then merge regions a visible crack separates. So (chosen here, MODEL.md §3.6):
+// then merge regions a visible crack separates. So (chosen here, docs/papers/hirota1998.md §2):
 //   1. a triangle is intact when its three springs are; a spring is strong when it belongs to
 //      an intact triangle;
 //   2. regions are the connected components of nodes over strong springs;

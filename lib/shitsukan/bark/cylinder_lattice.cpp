@@ -97,7 +97,8 @@ void make_springs(BarkCylinder& b, bool reverse_springs) {
         sp.j = std::uint32_t(b.node(c2, r2));
         sp.n = kDirection[k.dir];
         sp.l0 = params.species.L0;
-        sp.family = k.dir == 0 ? 1 : 2;  // 1 = axial, 2 = circumferential (MODEL.md §2.2)
+        // 1 = axial, 2 = circumferential (docs/papers/hirota1998.md §3)
+        sp.family = k.dir == 0 ? 1 : 2;
         // §3.1: the anchors pull the spring at g_s = (dr/R0) n_u^2 + (dh/H0) n_z^2.
         sp.growth_rate = rate_u * sp.n.x * sp.n.x + rate_z * sp.n.y * sp.n.y;
         const float kappa = sp.family == 1 ? params.species.kappa1 : params.species.kappa2;
@@ -107,7 +108,7 @@ void make_springs(BarkCylinder& b, bool reverse_springs) {
     }
 }
 
-// The lattice's triangles with seam-corrected corners (MODEL.md §1.1):
+// The lattice's triangles with seam-corrected corners (docs/papers/hirota1998.md §2):
 //   T_up(c, r)    = {(c, r), (c, r+1), up-right(c, r)}
 //   T_right(c, r) = {(c, r), up-right(c, r), down-right(c, r)}
 void make_triangles(BarkCylinder& b) {

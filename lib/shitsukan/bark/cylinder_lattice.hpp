@@ -9,9 +9,9 @@
 //   float t = 0.5f * p.T;
 //   Vec3 x = node_position(bark, std::uint32_t(i), t, bark.net.W.data());  // unrolled (u, z) at t
 //
-// Layout (Table 1's R0 = sqrt(3)·L0·N_R/(4 pi) decoded, MODEL.md §1.1): the circumference
-// 2 pi R0 = N_R·(sqrt(3)/2)·L0 holds N_R columns a_h = (sqrt(3)/2)·L0 apart, each with N_H
-// nodes L0 apart; odd columns are shifted up by L0/2. That is the equilateral triangular
+// Layout (Table 1's R0 = sqrt(3)·L0·N_R/(4 pi) decoded, docs/papers/hirota1998.md §2): the
+// circumference 2 pi R0 = N_R·(sqrt(3)/2)·L0 holds N_R columns a_h = (sqrt(3)/2)·L0 apart, each
+// with N_H nodes L0 apart; odd columns are shifted up by L0/2. That is the equilateral triangular
 // lattice of spacing L0 with vertical lattice lines: node (c, r) sits at
 //     u = c·a_h,  z = (r + (c mod 2)/2)·L0,
 // and has up to six neighbours at distance L0:

@@ -56,7 +56,7 @@
 
 namespace shitsukan {
 
-// Table 4: the names are given, the values are not (chosen here, MODEL.md §2.3).
+// Table 4: the names are given, the values are not (chosen here, docs/papers/hirota1998.md §5).
 struct PeelingParams {
     // Mean critical shear strain. Measured interface shear strains: ~0.002 before cracking,
     // mean 0.02, max 0.05 after; 0.08 lets plates lift only where drying has weakened them.

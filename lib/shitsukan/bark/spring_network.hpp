@@ -25,9 +25,9 @@
 // surface node i sits on its anchor a_i(t), the point of the grown inner layer beneath it,
 // through its shear spring k_anchor,i.
 //
-// Quasi-static and linear (chosen here; MODEL.md §1.5): growth is slow next to any elastic
-// wave, so the paper's damped dynamics settle into a sequence of equilibria, and with strains
-// of a few percent the springs are linear about the reference lattice. With the anchors
+// Quasi-static and linear (chosen here; docs/papers/hirota1998.md §2): growth is slow next to any
+// elastic wave, so the paper's damped dynamics settle into a sequence of equilibria, and with
+// strains of a few percent the springs are linear about the reference lattice. With the anchors
 // moving linearly in t, a node's position is x_i(t) = a_i(t) + t·W_i, where W (per unit time)
 // minimises
 //     Phi(W) = sum_s 1/2 k_s (l0_s·g_s + n_s·(W_j - W_i))^2 + sum_i 1/2 k_anchor,i |W_i|^2

@@ -15,7 +15,7 @@
 // Why: the C library's sin, pow, exp, ... are not required to be correctly rounded, so two
 // libms (glibc on a PC, newlib on a microcontroller, MSVC) differ in the last bit on many
 // inputs, and a texture, a lit pixel or a mesh vertex computed through them differs too
-// (issue 12 found newlib's sinf/powf 1-2 ulp off glibc's on a Cortex-M4F). These use only
+// (newlib's sinf/powf are 1-2 ulp off glibc's on a Cortex-M4F). These use only
 // IEEE +, -, *, /, sqrt, floor and exact bit manipulation, so with -ffp-contract=off (the
 // library's flag; no -ffast-math) they give the same bits with gcc or clang, at -O0 or -O2,
 // on a PC or a Cortex-M (tests/test_core_detmath.cpp, and make test-mcu compares the

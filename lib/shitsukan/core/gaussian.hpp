@@ -9,7 +9,7 @@
 //                                             // 8 float ulps of gaussian_from_bits (worst
 //                                             // measured 7), about 10x fewer instructions on a
 //                                             // single-precision FPU (the fractal lattice's
-//                                             // noise, solid/fractal_node.hpp; issue 12)
+//                                             // noise, solid/fractal_node.hpp)
 // Why not the C++ library's normal distribution: its algorithm is implementation-defined, so
 // the same seed gives different numbers under libstdc++, libc++ and MSVC. Why not Box-Muller: it
 // consumes two uniforms and keeps state. The inverse CDF maps one uniform to one Gaussian,

@@ -15,11 +15,10 @@
 // A Status is a small value: the code, the format (a string literal: it is kept, not
 // copied) and the arguments (numbers, copies of short strings) in kArgumentBytes bytes:
 // 80 with SHITSUKAN_SMALL_DEVICE defined (for the library and your code alike), so
-// sizeof(Status) is 92 bytes on a 32-bit microcontroller, where it was 201 when it carried
-// its formatted text; 184 on hosts, so sizeof(Status) stays 200 there and file paths fit
-// (tests assert both). The message is formatted only when asked, by the library's own
-// formatter (core/format_number.hpp), so it keeps its numbers on any C library
-// (newlib-nano's printf drops %g) and never allocates.
+// sizeof(Status) is 92 bytes on a 32-bit microcontroller; 184 on hosts, so sizeof(Status)
+// stays 200 there and file paths fit (tests assert both). The message is formatted only when
+// asked, by the library's own formatter (core/format_number.hpp), so it keeps its numbers on
+// any C library (newlib-nano's printf drops %g) and never allocates.
 //
 // Formats follow printf: flags - + space 0 #, width and precision (digits or *), lengths
 // hh h l ll z j t L, conversions d i u x X o c s p g G e E f F %. Numbers are kept exactly

@@ -58,7 +58,8 @@ namespace shitsukan {
 
 struct IsotropicRemeshOptions {
     float target_edge_length = 0.0f;  // L
-    int passes = 8;                   // chosen here (MODEL.md §3.8): converged by then
+    int passes = 8;                   // chosen here: converged by then (the bark's branch mesh,
+                                      // docs/papers/hirota1998.md §6)
     int newton_steps = 3;
     float smoothing = 0.5f;
     ImplicitFunction surface = nullptr;  // f, the surface is f = 0

@@ -160,7 +160,7 @@ namespace {
 
 // The exact in-circle determinant as a sum of products of four doubles, accumulated in a
 // fixed-point integer (chosen here instead of Shewchuk's full expansion product, whose
-// worst-case arrays need 37.8 KB of stack, over check-small's 4 KB budget: issue 12).
+// worst-case arrays need 37.8 KB of stack, over check-small's 4 KB budget).
 // Each coordinate difference is exact as two doubles (two_diff), so
 //   det = sum over k of (dx_k^2 + dy_k^2) (dx_i dy_j - dx_j dy_i),  (i, j, k) cyclic,
 // expands into 3 * 2 * 2 * 16 = 192 products of four doubles m 2^e (m an integer < 2^53).
@@ -439,7 +439,7 @@ inline bool two_pairs(double p, double q, double r, double s) {
 // are two equal pairs and so are the y coordinates, the four points are the corners of an
 // axis-parallel rectangle (or two doubled points), exactly cocircular: the determinant is 0,
 // decided by comparisons (every square of a lattice, before: Shewchuk's stage B or the full
-// exact sum, 35-43 % of a lattice's Delaunay time; issue 18).
+// exact sum, 35-43 % of a lattice's Delaunay time).
 inline bool axis_parallel_rectangle(Vec2d a, Vec2d b, Vec2d c, Vec2d d) {
     return two_pairs(a.x, b.x, c.x, d.x) && two_pairs(a.y, b.y, c.y, d.y);
 }

@@ -19,7 +19,7 @@
 // expansions (sums of non-overlapping doubles, Shewchuk's stage B), the general in-circle as
 // 192 products of four doubles summed in two 2048-bit fixed-point integers (32-bit limbs, no
 // heap, about 1.3 KB of stack; Shewchuk's full expansion product needed 37.8 KB, too much
-// for a microcontroller: issue 12; ~2x slower, on the rare calls with inexact differences).
+// for a microcontroller; ~2x slower, on the rare calls with inexact differences).
 // The square lattice's cocircular case (an axis-parallel rectangle) is decided by
 // comparisons before any exact stage. Every stack frame here stays under 2.4 KB.
 // The filters are inline (the triangulation and the Voronoi cells call them millions of times;

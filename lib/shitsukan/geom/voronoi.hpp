@@ -57,9 +57,9 @@ namespace shitsukan {
 // triangulation (~80 B), the cocircular groups, their centres and inside flags (~42 B) and
 // the inside cells' vertex lists (~28 B); after the triangulation is freed, the centres, the
 // lists and the result (~152 B: vertices 96 B, region-edge labels 48 B, offsets, duplicates).
-// Measured peak 221 B per site at 1e6 uniform sites (172 B on the square lattice; 461 B
-// before issue 18's rework). Chosen here: 256 B per site, so 2e7 sites (5.1 GB) are refused
-// at once under the default 4 GiB budget.
+// Measured peak 221 B per site at 1e6 uniform sites (172 B on the square lattice). Chosen
+// here: 256 B per site, so 2e7 sites (5.1 GB) are refused at once under the default 4 GiB
+// budget.
 constexpr std::uint64_t kVoronoiBytesPerSite = 256;
 
 struct VoronoiCells {

@@ -85,7 +85,7 @@ struct ScaleDivision {
 
 Status check_scale_params(const ScaleParams& prm);
 
-// The memory a scale pattern needs (issue 17's budget, core/memory_budget.hpp), estimated
+// The memory a scale pattern needs (the byte budget of core/memory_budget.hpp), estimated
 // before anything is allocated: N scales times (1024 + 128 · 2^levels) bytes (measured here:
 // ~0.7 KB + 87 B · 2^levels a scale at D = 0.005 and 0.0025, levels 4 and 7, rounded up),
 // with N = stage-1 rows (2 (ceil(H / D) + 3)) times the stage-2 columns a row gets

@@ -1,4 +1,4 @@
-// shitsukan/leather/tileable.hpp — seamless tiling (not in tokai1994; issue 15): the scale
+// shitsukan/leather/tileable.hpp — seamless tiling (not in tokai1994): the scale
 // patterns of §3.1 on a torus, so the height, normal and colour maps of §3.2 repeat with no
 // seam. Exact, not blended: the same Voronoi division, the same two-stage division and the
 // same edge perturbation on both sides of every seam.

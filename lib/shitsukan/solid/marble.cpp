@@ -13,7 +13,7 @@ float trapezoid_skirt(float z, const MarbleStripe& s) {
     const float d = std::fabs(z - s.c) - s.w * 0.5f;  // distance from the stripe's edge
     if (d <= 0.0f) return 1.0f;                       // inside the stripe: the flat top
     // the skirt: e^{-alpha·d}, in float arithmetic (det_expf_fast, <= 2 ulp): the double
-    // det_exp cost ~2.5k instructions per stripe on a Cortex-M4F (issue 12)
+    // det_exp cost ~2.5k instructions per stripe on a Cortex-M4F
     return det_expf_fast(-(s.alpha * d));
 }
 

@@ -24,7 +24,8 @@
 //   stripes       six layers of impurity, uneven spacing and widths, sharp and soft skirts:
 //                 (c, w, alpha) = (8, 1.2, 0.9) (17, 2.5, 0.6) (26, 0.8, 1.5) (35, 3.5, 0.5)
 //                 (46, 1.5, 0.8) (55, 2, 0.7)
-//   okada1989     one stripe (c 32, w 3, alpha 0.5): one layer through the object's middle
+//   okada1989     one layer (c 32, w 1.2, alpha 1) repeated every 12 units along z: the
+//                 "layered, striped marble" of okada1989 §4-2 (kOkada1989LayerPeriod below)
 //   marble colour I_max limestone (238, 234, 226) warm white, I_min impurity (62, 74, 80)
 //   wood          axis (x0, y0) = (6, 14), off the objects' centre as a board cut beside the
 //                 pith; k2 = 1.2 (rings every 2·pi/k2 = 5.2 units, about 10 across an object);

@@ -116,8 +116,8 @@ inline float turbulence_clamped(const LatticeView& lattice, Vec3 p) {
 // order i + 2j + 4k, then eq. (6). Inline: a renderer calls it once per pixel, and the call
 // itself would cost as much as a fifth of the lookup. A point strictly inside the lattice
 // (nearly every sample) needs no clamping: its cell and fraction are those
-// split_lattice_coordinate gives there, found without waiting for the clamps (the single
-// sample went from 1.27x to 1.18x the raw lookup, tests/bench/bench_solid.cpp).
+// split_lattice_coordinate gives there, found without waiting for the clamps
+// (tests/bench/bench_solid.cpp times it against the raw lookup).
 SHITSUKAN_TURBULENCE_INLINE float turbulence(const LatticeView& lattice, Vec3 p) {
     SHITSUKAN_REQUIRE_BUILT(lattice.values != nullptr && lattice.side >= 2,
                             "build_fractal_lattice()", "turbulence() on an empty LatticeView");

@@ -51,7 +51,7 @@ Real join(const IstAxis& axis, int base, std::uint64_t index, Real offset, std::
                                      : Real(base + 1) / Real(axis.base_intervals);
     if (offset >= Real(1)) return z;  // u = 1: the right end of the last sub-interval
     // Rounding must not carry a point out of its sub-interval [a, z): the inverse would then
-    // read it as the neighbour's and send it anywhere on the axis (issue 17.5).
+    // read it as the neighbour's and send it anywhere on the axis.
     if (v >= z) return z > a ? std::nextafter(z, a) : a;
     return v < a ? a : v;
 }
@@ -61,7 +61,7 @@ Real join(const IstAxis& axis, int base, std::uint64_t index, Real offset, std::
 // The sub-interval is the last one whose computed left end (left_end above) is <= u, so that
 // split(join(b, i, 0)) == (b, i, 0) exactly; the plain floor of u B N^K missed this on about
 // 20 % of the left ends (u B rounded just below b, or (t - b) N^K just below i), and the
-// inverse then returned the image of the neighbouring sub-interval (issue 17.5).
+// inverse then returned the image of the neighbouring sub-interval.
 template <class Real>
 void split(const IstAxis& axis, Real u, std::uint64_t count, int* base, std::uint64_t* index,
            Real* offset) {

@@ -16,7 +16,7 @@
 // and u = 1 belongs to the last sub-interval (Δ = N^-K there), so F(1) is the right end of
 // the image of the last sub-interval.
 //
-// Round trips (issue 17.5): the left end of sub-interval i of base b is computed as
+// Round trips: the left end of sub-interval i of base b is computed as
 // (b + i / N^K) / B (ist_position with offset 0); forward and inverse map left ends to left
 // ends exactly, so inverse(forward(u)) == u there, u = 0 included, wherever the Real resolves
 // the left ends (double: B N^K up to about 2^50; float: B N^K up to about 2^22). Any other u

@@ -223,7 +223,7 @@ void ist_original_step(const IstOriginal& ist, IstPoint* point, int* part) {
     if (part != nullptr) *part = g;
 }
 
-// ---- forward / inverse on sub-interval identities (issue 17.5) ----
+// ---- forward / inverse on sub-interval identities ----
 // Following a point step by step (ist_original_step) lets rounding move it into the
 // neighbouring part: inverse(forward(u)) then missed u by up to the whole axis on about a
 // quarter of the sub-interval left ends, and forward() returned values just above 1. Here a
