@@ -65,6 +65,20 @@ const std::map<std::string, Call>& functions() {
          }},
         {"sk_okada1989_types",
          [](const Args& a) { return sk_okada1989_types(int(a[0]), float(a[1]), unsigned(a[2]), int(a[3]), int(a[4])); }},
+        {"sk_tokai1994_pattern",
+         [](const Args& a) { return sk_tokai1994_pattern(float(a[0]), float(a[1]), float(a[2]), float(a[3]), unsigned(a[4])); }},
+        {"sk_tokai1994_step", [](const Args& a) { return sk_tokai1994_step(int(a[0]), int(a[1])); }},
+        {"sk_tokai1994_section_load", [](const Args& a) { return sk_tokai1994_section_load(int(a[0])); }},
+        {"sk_tokai1994_section_points", [](const Args&) { return sk_tokai1994_section_points(); }},
+        {"sk_tokai1994_section_move",
+         [](const Args& a) { return sk_tokai1994_section_move(int(a[0]), int(a[1]), float(a[2]), float(a[3])); }},
+        {"sk_tokai1994_section_curve", [](const Args& a) { return sk_tokai1994_section_curve(int(a[0])); }},
+        {"sk_tokai1994_scale_relief",
+         [](const Args& a) {
+             return sk_tokai1994_scale_relief(int(a[0]), float(a[1]), float(a[2]), float(a[3]), float(a[4]));
+         }},
+        {"sk_tokai1994_maps", [](const Args& a) { return sk_tokai1994_maps(int(a[0])); }},
+        {"sk_tokai1994_patch", [](const Args& a) { return sk_tokai1994_patch(float(a[0]), float(a[1]), int(a[2])); }},
     };
     return f;
 }
@@ -107,6 +121,23 @@ const std::vector<Case>& cases() {
         {"okada1989 Types I/II/III, a row", "sk_okada1989_types", {6, 0.9, 1987, 2048, 0}, "floats"},
         {"okada1989 Types I/II/III, scattered", "sk_okada1989_types", {6, 0.9, 1987, 2048, 1}, "floats"},
         {"okada1989 Types II/III at R = 16", "sk_okada1989_types", {16, 0.9, 1987, 512, 1}, "floats"},
+        {"tokai1994 pattern D = 0 refused", "sk_tokai1994_pattern", {0, 1, 0.25, 0.015, 1}, "status"},
+        {"tokai1994 fig. 7 pattern", "sk_tokai1994_pattern", {0.1, 1, 0.25, 0.015, 1}, "text"},
+        {"tokai1994 fig. 4 stage-1 seeds", "sk_tokai1994_step", {0, 384}, "picture"},
+        {"tokai1994 fig. 5 stage 1", "sk_tokai1994_step", {1, 384}, "picture"},
+        {"tokai1994 fig. 6 stage 2", "sk_tokai1994_step", {2, 384}, "picture"},
+        {"tokai1994 fig. 7 final", "sk_tokai1994_step", {3, 384}, "picture"},
+        {"tokai1994 fig. 10 perturbation", "sk_tokai1994_step", {4, 384}, "picture"},
+        {"tokai1994 Table 1 convex section", "sk_tokai1994_section_load", {0}, "status"},
+        {"tokai1994 convex z(r)", "sk_tokai1994_section_curve", {128}, "floats"},
+        {"tokai1994 fig. 12 one scale", "sk_tokai1994_scale_relief", {160, 1, 0.3, 0.5, 0.8}, "picture floats text"},
+        {"tokai1994 fig. 7 maps 256", "sk_tokai1994_maps", {256}, "picture floats"},
+        {"tokai1994 fig. 18 patch", "sk_tokai1994_patch", {0.6, 0.7, 256}, "picture"},
+        {"tokai1994 section point moved", "sk_tokai1994_section_move", {0, 1, 0.3, 0.9}, "status"},
+        {"tokai1994 section moved, points", "sk_tokai1994_section_points", {}, "floats"},
+        {"tokai1994 section move refused", "sk_tokai1994_section_move", {0, 1, 2.5, 0.9}, "status"},
+        {"tokai1994 Table 1 two-segment section", "sk_tokai1994_section_load", {2}, "status"},
+        {"tokai1994 two-segment relief", "sk_tokai1994_scale_relief", {128, 1, -0.4, 0.2, 0.9}, "picture"},
     };
     return c;
 }

@@ -24,10 +24,10 @@ EM_ENV       := NODE_PATH=/usr/share/nodejs$(if $(NODE_PATH),:$(NODE_PATH))
 WEB_PAPERS   := okada1987 okada1989 tokai1994
 # Same flags as the native build (docs/DESIGN.md: same inputs, same bits). stb's headers come
 # from Debian's libstb-dev through a directory of their own (not all of /usr/include: the WASM
-# build must not see glibc's headers); the page never reads or writes image files, so the
+# build must not see glibc's headers), as system headers like the native build's; the page never reads or writes image files, so the
 # linker drops them from the page.
 WEB_CXXFLAGS := -std=c++17 -O2 $(WARN) -ffp-contract=off
-WEB_CPPFLAGS := -Ilib -Ipaper_figures -Iports/web -I$(WEB_DIR)/include
+WEB_CPPFLAGS := -Ilib -Ipaper_figures -Iports/web -isystem $(WEB_DIR)/include
 WEB_API_SRCS := $(sort $(wildcard ports/web/api/*.cpp))
 WEB_LIB_OBJS := $(LIB_SRCS:%.cpp=$(WEB_DIR)/obj/%.o)
 WEB_API_OBJS := $(WEB_API_SRCS:%.cpp=$(WEB_DIR)/obj/%.o)
@@ -68,7 +68,15 @@ $(WEB_DIR)/include/.stamp:
 	@ln -sfn /usr/include/doctest $(@D)/doctest
 	@touch $@
 
-$(WEB_DIR)/obj/%.o: %.cpp $(FLAGS_STAMP) $(WEB_DIR)/include/.stamp
+# Objects depend on a stamp named after the WASM flags too (as the native build's FLAGS_STAMP).
+WEB_FLAGS_HASH  := $(shell printf '%s' '$(EMXX) $(WEB_CPPFLAGS) $(WEB_CXXFLAGS)' | cksum | cut -d' ' -f1)
+WEB_FLAGS_STAMP := $(WEB_DIR)/.flags-$(WEB_FLAGS_HASH)
+$(WEB_FLAGS_STAMP):
+	@mkdir -p $(@D)
+	@rm -f $(WEB_DIR)/.flags-*
+	@touch $@
+
+$(WEB_DIR)/obj/%.o: %.cpp $(WEB_FLAGS_STAMP) $(WEB_DIR)/include/.stamp
 	@mkdir -p $(@D)
 	$(EM_ENV) $(EMXX) $(WEB_CPPFLAGS) $(WEB_CXXFLAGS) $(WEB_EXTRA) -MMD -MP -c $< -o $@
 

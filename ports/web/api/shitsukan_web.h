@@ -45,6 +45,17 @@ int sk_okada1987_object(int scene, int material, float k, float yaw, float pitch
 /* api_okada1989.cpp */
 int sk_okada1989_types(int R, float beta, unsigned seed, int n, int pattern);
 
+/* api_tokai1994.cpp */
+int sk_tokai1994_pattern(float D, float d_over_D, float a, float p, unsigned seed);
+int sk_tokai1994_step(int step, int size);
+int sk_tokai1994_section_load(int which);
+int sk_tokai1994_section_points(void);
+int sk_tokai1994_section_move(int segment, int index, float r, float z);
+int sk_tokai1994_section_curve(int n);
+int sk_tokai1994_scale_relief(int size, float height_scale, float lx, float ly, float lz);
+int sk_tokai1994_maps(int size);
+int sk_tokai1994_patch(float azimuth, float elevation, int size);
+
 #ifdef __cplusplus
 }
 #endif

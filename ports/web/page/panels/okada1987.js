@@ -110,7 +110,7 @@
     cite: 'okada1987 eq. (6) (D(P): trilinear interpolation of the lattice, fig. 6), §4.1 eq. (8) (the stripes: trapezoids with exponential skirts, fig. 9), eq. (9) (the shift k·D(P) along z), eq. (12) (the colours); fig. 12 varies k',
     source: 'lib/shitsukan/solid/turbulence.cpp turbulence_row(), lib/shitsukan/solid/marble.cpp marble_original() / marble_texture(), lib/shitsukan/render/solid_bake.cpp render_solid_slice()',
     figures: ['okada1987/fig07', 'okada1987/fig09', 'okada1987/fig12a'],
-    bench: { control: 'k', values: [2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30, 32, 3, 5, 7, 9], what: '512x512 marble' },
+    bench: { control: 'k', values: [2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30, 32, 3, 5, 7, 9], what: '512x512 marble', fn: 'sk_okada1987_marble_slice' },
     interaction: { control: 'k', value: 24, canvas: 'canvas.sk-marble' },
     async open(body) {
       const box = SK.el('div', { class: 'sk-controls' }, body);
