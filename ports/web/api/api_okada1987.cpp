@@ -64,8 +64,8 @@ int rule_of(int x, int y, int z, int R, int n) {
 const Rgb8 kRuleColor[4] = {{200, 200, 200}, {52, 101, 164}, {245, 121, 0}, {204, 0, 0}};
 
 // Two panels side by side, each size x size: the values (diverging map over [-range, range],
-// each node drawn as the square nearest to it, nodes not yet set grey-magenta) and the rule
-// that set each node at level n.
+// each node drawn as the square nearest to it, nodes not yet set light grey) and the rule
+// that set each node at level n, on the same squares.
 template <class Value, class Rule>
 void draw_levels(int size, int side, int spacing, float range, Value value, Rule rule, RgbImage& out) {
     out.resize(2 * size + 8, size, Rgb8{255, 255, 255});
@@ -79,8 +79,8 @@ void draw_levels(int size, int side, int spacing, float range, Value value, Rule
             const float val = value(i, j);
             out.view().at(px, py) = std::isnan(val) ? Rgb8{236, 236, 236}
                                                     : colormap(ColorMap::diverging, 0.5f + 0.5f * val / range);
-            // rules: the nearest node of the finest grid
-            const int r = rule(int(std::lround(u * cells)), int(std::lround(v * cells)));
+            // rules: the same node's (each node of the level a square, as fig. 1 draws them)
+            const int r = rule(i, j);
             out.view().at(size + 8 + px, py) = r < 0 ? Rgb8{250, 250, 250} : kRuleColor[r];
         }
 }

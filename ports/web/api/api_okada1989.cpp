@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "api_common.hpp"
+#include "shitsukan/core/memory_budget.hpp"
 #include "shitsukan/core/prng.hpp"
 #include "shitsukan/solid/lattice_store.hpp"
 #include "shitsukan/solid/lattice_type2.hpp"
@@ -52,8 +53,8 @@ SK_API int sk_okada1989_types(int R, float beta, unsigned seed, int n, int patte
     p.beta = beta;
     p.seed = seed;
     Status s = validate_fractal_params(p, kTypeIIIMaxDepth);
-    if (s && (n < 1 || n > 1000000))
-        s = Status::error(StatusCode::invalid_argument, "points must be in 1..1000000 (got %d)", n);
+    if (s && (n < 1 || n > 200000))
+        s = Status::error(StatusCode::invalid_argument, "points must be in 1..200000 (got %d)", n);
     if (s && (pattern < 0 || pattern > 1))
         s = Status::error(StatusCode::invalid_argument, "pattern must be 0 (row) or 1 (scattered) (got %d)", pattern);
     if (!s) return skweb::finish(s);
@@ -77,8 +78,14 @@ SK_API int sk_okada1989_types(int R, float beta, unsigned seed, int n, int patte
     }
     t += ",\"I_status\":" + skweb::json_string(s1.message());
 
+    // Type II keeps every node it computes. Chosen here: its run is refused beforehand (with
+    // the budget's message) when n points could need more than the budget, counting at most
+    // 27 new nodes per level per point and 48 bytes a held node (TypeIILattice's own 32 per
+    // node and 16 of buckets): a hung or aborted worker is worse than a skipped column.
     TypeIILattice type2;
-    Status s2 = type2.init(p);
+    Status s2 = check_memory_budget(budget_mul(budget_mul(std::uint64_t(n), 27u * std::uint64_t(R > 0 ? R : 1)), 48u),
+                                    "the Type II list for these points");
+    if (s2) s2 = type2.init(p);
     if (s2) {
         t0 = skweb::now_ms();
         for (int i = 0; i < n && s2; ++i) out[std::size_t(n + i)] = type2.turbulence(pts[std::size_t(i)]);

@@ -218,6 +218,9 @@
       });
       wire(c, update);
       wire(w, update);
+      await SK.call('sk_okada1987_build', [3, 0.9, 1987], []);  // warm-up on a small lattice
+      await SK.call('sk_okada1987_wood_slice', [1.6, 1.2, 6, 14, 4, 32], []);
+      built = '';
       await update();
     },
   });
@@ -258,6 +261,9 @@
       });
       wire(c, update);
       wire(m, update);
+      await SK.call('sk_okada1987_build', [3, 0.9, 1987], []);  // warm-up on a small lattice
+      await SK.call('sk_okada1987_mapping', [16, 4, 32, 1], []);
+      built = '';
       await update();
     },
   });
@@ -302,6 +308,9 @@
         update();
       });
       fo.canvas.addEventListener('pointerup', () => { drag = null; });
+      await SK.call('sk_okada1987_build', [3, 0.9, 1987], []);  // warm-up on a small lattice
+      await SK.call('sk_okada1987_object', [1, 1, 1.6, 0, 0, 32], []);
+      built = '';
       await update();
     },
   });

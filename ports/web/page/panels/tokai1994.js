@@ -167,6 +167,7 @@
       });
       sec.canvas.addEventListener('pointerup', () => { drag = null; });
       await SK.call('sk_tokai1994_section_load', [0], []);
+      if (T.pattern) await SK.call('sk_tokai1994_scale_relief', [16, 1, 0.3, 0.5, 0.8], []);  // warm-up
       await drawSection();
       await drawRelief();
     },
