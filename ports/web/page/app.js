@@ -216,7 +216,7 @@
   // The parameter tables the figures record (paper_figures, via params.js), merged.
   SK.params = function (parent, figureIds) {
     const all = window.SK_FIGURE_PARAMS || {};
-    const box = el('details', { class: 'sk-params' }, parent);
+    const box = el('details', { class: 'sk-params', open: '' }, parent);
     el('summary', {}, box, 'Parameters as the figures record them: given by the paper, or chosen here (' + figureIds.join(', ') + ')');
     const table = el('table', {}, box);
     const head = el('tr', {}, el('thead', {}, table));
