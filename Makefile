@@ -510,3 +510,7 @@ clean:
 	rm -rf $(BUILD) paper_figures/out
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
+
+# ---- web port (ports/web): make web | test-wasm | test-web | bench-web, all in one file ----
+include ports/web/web.mk
+# ---- end of the web port ----

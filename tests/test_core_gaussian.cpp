@@ -20,23 +20,25 @@ constexpr std::uint64_t kLowTail = 218424581927469ull, kHighTail = 8788774672813
 constexpr std::uint64_t kTop = std::uint64_t(1) << 53;  // m = bits >> 11 is below it
 
 // Distance in float ulps (the floats between them, across zero too); NaN is far from all.
-long ulps_apart(float a, float b) {
-    if (std::isnan(a) || std::isnan(b)) return 1L << 40;
+// 64-bit throughout: long is 32 bits on WASM (and Windows), where 1L << 40 and the difference of
+// two far floats would overflow.
+long long ulps_apart(float a, float b) {
+    if (std::isnan(a) || std::isnan(b)) return 1LL << 40;
     std::int32_t x, y;
     std::memcpy(&x, &a, sizeof x);
     std::memcpy(&y, &b, sizeof y);
-    const long lx = x < 0 ? -long(x & 0x7fffffff) : long(x);
-    const long ly = y < 0 ? -long(y & 0x7fffffff) : long(y);
-    return std::labs(lx - ly);
+    const long long lx = x < 0 ? -static_cast<long long>(x & 0x7fffffff) : static_cast<long long>(x);
+    const long long ly = y < 0 ? -static_cast<long long>(y & 0x7fffffff) : static_cast<long long>(y);
+    return std::llabs(lx - ly);
 }
 
 struct Worst {
-    long ulps = 0;
+    long long ulps = 0;
     std::uint64_t m = 0;
     long draws = 0;
     void add(std::uint64_t mm, std::uint64_t low_bits = 0) {
         const std::uint64_t bits = (mm << 11) | low_bits;
-        const long u = ulps_apart(gaussian_from_bits_float(bits), gaussian_from_bits(bits));
+        const long long u = ulps_apart(gaussian_from_bits_float(bits), gaussian_from_bits(bits));
         draws += 1;
         if (u > ulps) {
             ulps = u;

@@ -2,6 +2,7 @@
 // formatter; every printf conversion the library uses, cutting, numbers that survive.
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <string>
 
 #include <doctest/doctest.h>
@@ -28,8 +29,9 @@ static_assert(sizeof(void*) != 8 || sizeof(Status) == 200, "sizeof(Status) on a 
 TEST_CASE("Status messages equal printf's for every conversion the library uses") {
     int i = -42;
     unsigned u = 4000000000u;
-    long l = -1234567890123L;
-    unsigned long ul = 18000000000000000000UL;
+    // Near the ends of long and unsigned long, whatever their width (32 bits on WASM).
+    long l = -(std::numeric_limits<long>::max() / 7);
+    unsigned long ul = std::numeric_limits<unsigned long>::max() - 12345u;
     long long ll = -9000000000000000000LL;
     unsigned long long ull = 1234ULL;
     std::size_t z = 77;
@@ -45,7 +47,6 @@ TEST_CASE("Status messages equal printf's for every conversion the library uses"
     EXPECT_SAME_AS_PRINTF("%s: %.3s, %10s|%-10s|", s, s, s, s);
     EXPECT_SAME_AS_PRINTF("%*d|%-*d|%.*f|%.*s", 6, 42, 6, 42, 2, 3.14159, 2, s);
     EXPECT_SAME_AS_PRINTF("100%% sure, %s", "yes");
-    EXPECT_SAME_AS_PRINTF("%p %p", static_cast<void*>(&i), static_cast<void*>(nullptr));
     EXPECT_SAME_AS_PRINTF("%s", static_cast<const char*>("no conversions at all"));
     // 9 floats and an int, as geom/isotropic_remesh.cpp reports a degenerate triangle.
     EXPECT_SAME_AS_PRINTF("triangle %d: (%g, %g, %g), (%g, %g, %g), (%g, %g, %g)", 3, 0.1f, 0.2f,
@@ -53,6 +54,13 @@ TEST_CASE("Status messages equal printf's for every conversion the library uses"
     // 6 doubles at full precision, as geom/voronoi.cpp does.
     EXPECT_SAME_AS_PRINTF("(%.17g, %.17g), (%.17g, %.17g), (%.17g, %.17g)", 0.1, 0.2, 0.3,
                           1.0 / 3.0, 2.0 / 3.0, 1e-16);
+}
+
+// %p on its own: the library writes a null pointer as glibc does, "(nil)" (musl, as in the
+// WASM build, prints "0"), so this case is glibc's text, not a rule of the format.
+TEST_CASE("Status messages equal printf's for %p (glibc's pointer text)") {
+    int i = -42;
+    EXPECT_SAME_AS_PRINTF("%p %p", static_cast<void*>(&i), static_cast<void*>(nullptr));
 }
 
 TEST_CASE("Status: long strings are cut with ..., numbers after them survive") {

@@ -75,6 +75,7 @@ Status read_image(const char* path, LoadedImage& out) {
     out = std::move(img);
     return Status::success();
 #else
+    (void)out;  // nothing read: a build without stb_image (say, the WASM build) leaves it as is
     return Status::error(StatusCode::not_supported,
                          "read_image %s: this build has no stb_image (install libstb-dev)", path);
 #endif

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# ports/web/tests/test_web.sh WEB_DIR — make test-web: the page's self-test against the native
+# reference, and the interaction test, in Debian's headless Chromium opening the single-file
+# page from disk (cdp.js: the DevTools protocol over a pipe, real time, console captured).
+#  1. WEB_DIR/native_reference writes the expected hashes (selftest_expected.js) beside the page
+#  2. index.html#selftest: the page makes the same C API calls in WASM, hashes what it drew
+#     and writes PASS/FAIL into the DOM; any difference fails
+#  3. index.html#interaction: every panel opens and draws, a slider changes the picture and
+#     its hash; a console error or uncaught exception on any panel fails
+set -euo pipefail
+web=${1:?usage: test_web.sh WEB_DIR}
+here=$(cd "$(dirname "$0")" && pwd)
+page="file://$(cd "$web" && pwd)/index.html"
+start=$(date +%s)
+
+"$web/native_reference" --js "$web/selftest_expected.js" > "$web/native_reference.txt"
+echo "test-web: native reference: $(grep -c '^selftest:' "$web/native_reference.txt") lines ($web/native_reference.txt)"
+
+run() {  # run NAME URL-HASH DATASET-KEY
+  local name=$1 hash=$2 key=$3 rc=0
+  node "$here/cdp.js" "$page#$hash" --timeout 240 \
+    --wait "document.body.dataset.$key" \
+    --eval "document.getElementById('sk-selftest').textContent" \
+    > "$web/test_$name.txt" 2> "$web/test_$name.console" || rc=$?
+  head -1 "$web/test_$name.txt" | sed "s/^/test-web: $name: /"
+  grep -E '^(FAIL|ok|panel)' "$web/test_$name.txt" | grep -v '^ok' | sed "s/^/test-web:   /" || true
+  if [ $rc = 3 ]; then echo "test-web: $name: console errors:"; grep -E 'console: (error|exception)' "$web/test_$name.console"; return 1; fi
+  if [ $rc != 0 ]; then echo "test-web: $name: the browser run failed ($rc):"; cat "$web/test_$name.console"; return 1; fi
+  head -1 "$web/test_$name.txt" | grep -q '^PASS' || { echo "test-web: $name FAILED (see $web/test_$name.txt)"; return 1; }
+}
+run selftest selftest selftest
+run interaction interaction interaction
+echo "test-web: passed in $(( $(date +%s) - start )) s (native hashes = WASM hashes; slider changes the picture; no console error)"
