@@ -6,7 +6,7 @@ A reader of a clone has this repository and the papers' bibliographic references
 else: no issue tracker, no notes beside the clone. So every tracked (or new, not ignored)
 text file is searched for
   - an issue reference: "issue 12", "issues 12 and 17", "Issue 17.5", "#12" (one to four
-    digits standing alone; "#000000" colours, "#include" and Markdown anchors such as
+    digits standing alone; "#000000" colours, CSS colours ("#555;"), "#include" and Markdown anchors such as
     "#3-table-2" do not count);
   - a note kept outside the repository: the name of the bark model's reading notes file
     (the reasoning lives in docs/papers/hirota1998.md);
@@ -20,7 +20,7 @@ import os, re, subprocess, sys
 # Built from pieces so that this file does not match itself when it is read as text.
 RULES = [
     ('issue reference', re.compile(r'\bissues?\s+#?\d+(\.\d+)?\b', re.IGNORECASE)),
-    ('issue reference', re.compile(r'(?<![\w&#/"\'=])#\d{1,4}(?![\w-])')),
+    ('issue reference', re.compile(r'(?<![\w&#/"\'=])#\d{1,4}(?![\w;-])')),
     ('note outside the repository', re.compile('MODEL' + r'\.md')),
     ('path outside the repository',
      re.compile(r'\.\./+shared\b|(?<![\w.])/' + 'work' + r'/|\bshared/' + 'papers\b')),
