@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "shitsukan/wrinkly/hierarchical_sampling.hpp"
 #include "shitsukan/wrinkly/ist_formula.hpp"
@@ -332,4 +333,62 @@ TEST_CASE(
     }
     CHECK(mismatches == 0);
     CHECK(cu.calls == wm.grid_u + 2 * long(wm.mesh.positions.size()));  // + the reference's
+}
+
+namespace {
+
+// Local maxima of the relief r = H(F^-k(u), F^-k(v)) - H(u, v) along u, per row, at the step-k
+// vertex positions (i + 1/2)/(B·N^k) inside [u0, u1] x [v0, v1]: the wrinkles a view shows.
+double wrinkles_across(const WrSurface& s, int k, float u0, float u1, float v0, float v1) {
+    std::vector<float> us, vs;
+    for (float p : hierarchical_sample_positions(s.axis_u().base_intervals, s.axis_u().division, k))
+        if (p > 0.0f && p < 1.0f && p >= u0 && p <= u1) us.push_back(p);
+    for (float p : hierarchical_sample_positions(s.axis_v().base_intervals, s.axis_v().division, k))
+        if (p > 0.0f && p < 1.0f && p >= v0 && p <= v1) vs.push_back(p);
+    double maxima = 0;
+    for (float v : vs) {
+        std::vector<float> r;
+        for (float u : us) r.push_back(s.wr_attributes(u, v, k).height - s.attributes(u, v).height);
+        for (std::size_t i = 1; i + 1 < r.size(); ++i)
+            if (r[i] > r[i - 1] && r[i] >= r[i + 1]) maxima += 1;
+    }
+    return vs.empty() ? 0.0 : maxima / double(vs.size());
+}
+
+}  // namespace
+
+TEST_CASE("self-similarity (fujimoto2000 §3.2, figs. 14-15): a third at K + 1 repeats the whole at K") {
+    // The zooms (d)(e)(f) magnify a third of (b) 3x and refine one IST step (adaptive sampling):
+    // they must show as many wrinkles across as (b); without the extra step only a third.
+    for (SurfaceBasis basis : {SurfaceBasis::bezier, SurfaceBasis::bspline}) {
+        WrControlMesh m = flat_mesh(basis == SurfaceBasis::bezier ? 4 : 11,
+                                    basis == SurfaceBasis::bezier ? 4 : 11);
+        WrSurface s;
+        REQUIRE(make_wr_surface(m, basis, 3, s));
+        IstAxis iu, iv;
+        if (basis == SurfaceBasis::bezier) {
+            REQUIRE(ist_unit_axis(3, 1, iu));
+            REQUIRE(ist_unit_axis(3, 1, iv));
+        } else {
+            REQUIRE(ist_fully_connected_axis(3, 1, s.spans_u(), IstEnds::translation, iu));
+            REQUIRE(ist_fully_connected_axis(3, 1, s.spans_v(), IstEnds::translation, iv));
+        }
+        WrIstAxis au, av;
+        REQUIRE(make_wr_ist_axis(iu, 4, au));
+        REQUIRE(make_wr_ist_axis(iv, 4, av));
+        REQUIRE(s.set_axes(au.axis(), av.axis()));
+        const int K = basis == SurfaceBasis::bezier ? 3 : 2;
+        const double whole = wrinkles_across(s, K, 0.0f, 1.0f, 0.0f, 1.0f);
+        REQUIRE(whole >= 3.0);
+        for (float uc : {1.0f / 6.0f, 0.5f, 5.0f / 6.0f}) {
+            const float u0 = uc - 1.0f / 6.0f, u1 = uc + 1.0f / 6.0f;
+            const double zoom = wrinkles_across(s, K + 1, u0, u1, 1.0f / 3.0f, 2.0f / 3.0f);
+            const double same_k = wrinkles_across(s, K, u0, u1, 1.0f / 3.0f, 2.0f / 3.0f);
+            INFO("basis " << int(basis) << " third at " << uc << ": " << zoom << " / " << same_k
+                          << " wrinkles against " << whole);
+            CHECK(zoom >= 0.7 * whole);
+            CHECK(zoom <= 1.4 * whole);
+            CHECK(same_k < 0.6 * whole);  // no refinement: not self-similar
+        }
+    }
 }
