@@ -79,6 +79,7 @@ Status draw_panel(bool quick, char kind, int setting, RgbView view, StageTimes* 
     SHITSUKAN_TRY(surface.set_axes(axes.u.axis(), axes.v.axis()));
     Shading shading;
     shading.background = Rgb8{0, 0, 0};
+    shading.emissive = true;
     const Camera camera = shot_camera(kShot, view.width, view.height);
     if (kind == '1') {
         // Wider than the surface panels: the height sticks reach above the flame.

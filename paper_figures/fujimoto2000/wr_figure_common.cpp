@@ -98,7 +98,9 @@ Status render_transparent(const Camera& camera, const WrMesh& wm, RgbView target
     }
     auto shader = [&](const Fragment& f) {
         const float lambert = std::fabs(dot(f.normal, light));
-        const Vec3 c = f.color * (0.85f + 0.25f * lambert);  // mostly emissive
+        const Vec3 c = shading.emissive
+                           ? f.color * (0.85f + 0.25f * lambert)  // mostly emissive
+                           : f.color * (shading.ambient + (1.0f - shading.ambient) * lambert);
         const float t = clamp(f.uv.x, 0.0f, 1.0f);
         const Vec3 dst = from_rgb8(target.at(f.x, f.y - band.y0));
         if (seen) {
@@ -113,16 +115,18 @@ Status render_transparent(const Camera& camera, const WrMesh& wm, RgbView target
     opt.cull = CullMode::none;
     const Status st = draw_mesh(camera, band, sorted.view(), opt, shader, stats);
     if (seen && st) {
-        double covered = 0, behind = 0, showing = 0;
+        double covered = 0, behind = 0, showing = 0, through = 0;
         for (std::size_t i = 0; i < background_share.size(); ++i)
             if (background_share[i] < 1.0f) {
                 covered += 1;
+                through += background_share[i];
                 behind += behind_share[i];
                 if (behind_share[i] > 0.15f) showing += 1;
             }
         seen->coverage = covered / double(background_share.size());
         seen->see_through = covered > 0 ? behind / covered : 0.0;
         seen->see_through_pixels = covered > 0 ? showing / covered : 0.0;
+        seen->background = covered > 0 ? through / covered : 0.0;
     }
     return st;
 }
