@@ -381,7 +381,7 @@ TEST_CASE("relief: the angular index finds the same edge point as the full scan"
     CHECK(!make_angular_index(bow, 6, {1.0f, 1.5f}, tmp));
 }
 
-TEST_CASE("relief: convex scales slope outwards over their inner part, concave inwards (figs. 13-14)") {
+TEST_CASE("relief: convex scales slope outwards over their inner part, concave inwards") {
     // What tells fig. 14's sunken scales from fig. 13's raised ones under one light: over the
     // inner part of a scale (rho 0.3-0.85, the floor and the rim's inner wall or the
     // shoulder) the normal's radial component n·(x - m)/|x - m| is, on average, > 0 for the

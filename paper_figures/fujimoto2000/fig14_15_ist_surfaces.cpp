@@ -107,7 +107,8 @@ ReliefStats measure_relief(const WrSurface& s, int level, float u0, float u1, fl
     for (std::size_t j = 0; j < vs.size(); ++j)
         for (std::size_t i = 0; i < us.size(); ++i) {
             h[j * us.size() + i] = s.attributes(us[i], vs[j]).height;
-            r[j * us.size() + i] = s.wr_attributes(us[i], vs[j], level).height - h[j * us.size() + i];
+            r[j * us.size() + i] =
+                s.wr_attributes(us[i], vs[j], level).height - h[j * us.size() + i];
             mr += r[j * us.size() + i];
             mh += h[j * us.size() + i];
         }
@@ -255,10 +256,11 @@ Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
         // differs from (c). The zoom's window is its third of u (without the margin).
         const ReliefStats whole = measure_relief(surface, K, 0.0f, 1.0f, 0.0f, 1.0f);
         if (panel == 'b') {
-            ctx.note(fmt("Relief against (c) (measured at the step-%d vertices, over the patch): "
-                         "%.1f wrinkles across per row, roughness %.2f, relief/plain height "
-                         "variation %.2f (0 would read as (c)).",
-                         K, whole.wrinkles, whole.roughness, whole.relief));
+            ctx.note(
+                fmt("Relief against (c) (measured at the step-%d vertices, over the patch): "
+                    "%.1f wrinkles across per row, roughness %.2f, relief/plain height "
+                    "variation %.2f (0 would read as (c)).",
+                    K, whole.wrinkles, whole.roughness, whole.relief));
             if (whole.relief < 0.5)
                 return Status::error(StatusCode::not_supported,
                                      "%s(b): relief %.2f cannot be told from (c)", f.key,
@@ -270,13 +272,14 @@ Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
             const ReliefStats z_same = measure_relief(surface, K, uc - 1.0f / 6.0f,
                                                       uc + 1.0f / 6.0f, 1.0f / 3.0f, 2.0f / 3.0f);
             const double ratio = whole.wrinkles > 0 ? z.wrinkles / whole.wrinkles : 0.0;
-            ctx.note(fmt("Self-similarity, measured: %.1f wrinkles across this third at K = %d "
-                         "against %.1f across (b) at K = %d (ratio %.2f; at (b)'s own K the third "
-                         "would show %.1f); roughness %.2f against (b)'s %.2f.",
-                         z.wrinkles, o.levels, whole.wrinkles, K, ratio, z_same.wrinkles,
-                         z.roughness, whole.roughness));
-            if (ratio < 0.6 || ratio > 1.6 || std::fabs(z.roughness - whole.roughness) >
-                                                   0.35 * whole.roughness)
+            ctx.note(
+                fmt("Self-similarity, measured: %.1f wrinkles across this third at K = %d "
+                    "against %.1f across (b) at K = %d (ratio %.2f; at (b)'s own K the third "
+                    "would show %.1f); roughness %.2f against (b)'s %.2f.",
+                    z.wrinkles, o.levels, whole.wrinkles, K, ratio, z_same.wrinkles, z.roughness,
+                    whole.roughness));
+            if (ratio < 0.6 || ratio > 1.6 ||
+                std::fabs(z.roughness - whole.roughness) > 0.35 * whole.roughness)
                 return Status::error(StatusCode::not_supported,
                                      "%s(%c): the zoom does not repeat (b)'s wrinkles "
                                      "(wrinkle ratio %.2f, roughness %.2f vs %.2f)",

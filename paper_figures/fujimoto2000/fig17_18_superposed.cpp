@@ -197,7 +197,8 @@ ShapeStats measure_shape(const WrSurface& surface, const HierarchicalSampling& h
             const float u = (float(i) + 0.5f) / float(n), v = (float(j) + 0.5f) / float(n);
             const double plain = surface.attributes(u, v).height;
             h[std::size_t(j) * n + i] = plain;
-            r[std::size_t(j) * n + i] = superposed_sampled(surface, hs, u, v).attributes.height - plain;
+            r[std::size_t(j) * n + i] =
+                superposed_sampled(surface, hs, u, v).attributes.height - plain;
         }
     double mh = 0, mr = 0;
     for (std::size_t i = 0; i < r.size(); ++i) mh += h[i], mr += r[i];
@@ -292,10 +293,11 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, char row, int panel) 
                  wm.mesh.triangle_count(), wm.max_levels_used, wm.mean_levels_used));
     if (panel >= 4) {
         const ShapeStats st = measure_shape(rs.surface, hs);
-        ctx.note(fmt("Shape (measured on eq. (20)'s height): departure from (2) %.2f, relief "
-                     "anisotropy %.2f, repetition at a third of the patch %.2f, step share %.2f "
-                     "(definitions: measure_shape in the source).",
-                     st.departure, st.anisotropy, st.repetition, st.step_share));
+        ctx.note(
+            fmt("Shape (measured on eq. (20)'s height): departure from (2) %.2f, relief "
+                "anisotropy %.2f, repetition at a third of the patch %.2f, step share %.2f "
+                "(definitions: measure_shape in the source).",
+                st.departure, st.anisotropy, st.repetition, st.step_share));
         // §4.1: (4) and (5) are not the conventional surface, and fig. 17's read as ranges.
         if (st.departure < 0.15 || (bezier && panel == 5 && st.anisotropy < 0.4))
             return Status::error(StatusCode::not_supported,

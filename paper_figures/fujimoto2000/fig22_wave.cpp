@@ -218,13 +218,14 @@ SHITSUKAN_FIGURE(
             100 * times["(a-2)"].mean_offset / plain, 100 * times["(a-3)"].mean_offset / plain,
             100 * times["(a-4)"].mean_offset / plain, 100 * times["(b-2)"].mean_offset / plain,
             100 * times["(b-3)"].mean_offset / plain, 100 * times["(b-4)"].mean_offset / plain));
-    std::string seen = "Transparency, measured (coverage of the frame; mean share of the colour "
-                       "that is the background seen through the water; share from the wave's "
-                       "own layers behind its front one):";
+    std::string seen =
+        "Transparency, measured (coverage of the frame; mean share of the colour "
+        "that is the background seen through the water; share from the wave's "
+        "own layers behind its front one):";
     for (const char* label : {"(z)", "(a-3)", "(b-3)"}) {
         const TransparencySeen& v = times[label].seen;
-        seen += fmt(" %s %.1f %%, %.2f, %.2f;", label, 100.0 * v.coverage, v.background,
-                    v.see_through);
+        seen +=
+            fmt(" %s %.1f %%, %.2f, %.2f;", label, 100.0 * v.coverage, v.background, v.see_through);
         if (v.background + v.see_through < 0.1)
             return Status::error(StatusCode::not_supported,
                                  "fig22 %s: the water shows nothing through it (§5 gives it a "

@@ -57,8 +57,8 @@ WrControlMesh flame_mesh(const Setting& s) {
             const float tongue = 0.45f + 0.55f * det_cos(1.5f * float(c) + s.phase);
             p.height = 0.1f + 1.3f * det_pow(t, 1.5f) * tongue * (1.0f + (s.tip_scale - 1.0f) * t);
             const float lean = s.lean * (0.3f + t);
-            p.direction = normalize(Vec3{det_sin(lean) + 0.3f * det_sin(theta), det_cos(lean),
-                                         0.3f * det_cos(theta)});
+            p.direction = normalize(
+                Vec3{det_sin(lean) + 0.3f * det_sin(theta), det_cos(lean), 0.3f * det_cos(theta)});
             const Vec3 base{1.0f, 0.95f, 0.62f}, mid{1.0f, 0.55f, 0.10f}, tip{0.85f, 0.12f, 0.03f};
             p.color = t < 0.5f ? lerp(base, mid, 2.0f * t) : lerp(mid, tip, 2.0f * t - 1.0f);
             p.transparency = 0.05f + 0.7f * t;
@@ -215,8 +215,9 @@ SHITSUKAN_FIGURE(
             100 * times["(c-3)"].mean_offset / times["(c-2)"].mean_offset));
     // §5: transparency per control point. Measured while blending (render_transparent): how
     // much of each panel's colour comes from the flame's layers behind its front.
-    std::string seen = "Transparency, measured (coverage of the frame; mean share of the colour "
-                       "from layers behind the front one; pixels where that share exceeds 0.15):";
+    std::string seen =
+        "Transparency, measured (coverage of the frame; mean share of the colour "
+        "from layers behind the front one; pixels where that share exceeds 0.15):";
     for (const char* label : {"(a-2)", "(a-3)", "(b-3)", "(c-3)"}) {
         const TransparencySeen& v = times[label].seen;
         seen += fmt(" %s %.1f %%, %.2f, %.0f %%;", label, 100.0 * v.coverage, v.see_through,

@@ -50,14 +50,13 @@ Status panels_figure(FigureContext& ctx, const std::vector<Panel>& panels, const
         const PerturbationReport& r = steps.perturbation;
         const double length = total_edge_length(patterns[i]);
         if (i == 0) first_length = length;
-        note += fmt(" %s: %d scales, RMS edge offset %.5f of %.5f requested (%.0f %%; %d of %d "
-                    "edges scaled down), largest offset %.4f; edges %.3f long (%.1f %% longer "
-                    "than the first panel's).",
-                    panels[i].label.c_str(), patterns[i].polygon_count(), r.realised_rms,
-                    r.requested_rms, r.requested_rms > 0 ? 100.0 * r.realised_rms / r.requested_rms
-                                                         : 100.0,
-                    r.shrunk, r.edges, r.max_offset, length,
-                    100.0 * (length / first_length - 1.0));
+        note += fmt(
+            " %s: %d scales, RMS edge offset %.5f of %.5f requested (%.0f %%; %d of %d "
+            "edges scaled down), largest offset %.4f; edges %.3f long (%.1f %% longer "
+            "than the first panel's).",
+            panels[i].label.c_str(), patterns[i].polygon_count(), r.realised_rms, r.requested_rms,
+            r.requested_rms > 0 ? 100.0 * r.realised_rms / r.requested_rms : 100.0, r.shrunk,
+            r.edges, r.max_offset, length, 100.0 * (length / first_length - 1.0));
         if (lengths) lengths->push_back(length);
     }
     ctx.note(note);
@@ -182,19 +181,18 @@ SHITSUKAN_FIGURE(tokai_fig10, "tokai1994", "fig10", "Effect of the perturbation 
     SHITSUKAN_TRY(generate_scale_pattern(panels.back().prm, last, &last_steps));
     const double ceiling_rms = steps.perturbation.realised_rms;
     const double ceiling_length = total_edge_length(ceiling);
-    ctx.note(fmt("The ceiling (measured with p = %g, 4x the largest panel's): RMS offset %.5f, "
-                 "edges %.1f %% longer than at p = 0, with %d of %d edges scaled down. The "
-                 "largest panel realises %.0f %% of that RMS (%.0f %% of its own request): a "
-                 "larger p cannot make the pattern rougher without scales overlapping or "
-                 "losing the star shape from their centroid; with D = %.2f the offsets stop at "
-                 "about %.0f %% of D.",
-                 double(top.perturbation.p), ceiling_rms,
-                 100.0 * (ceiling_length / lengths.front() - 1.0), steps.perturbation.shrunk,
-                 steps.perturbation.edges,
-                 100.0 * last_steps.perturbation.realised_rms / ceiling_rms,
-                 100.0 * last_steps.perturbation.realised_rms /
-                     last_steps.perturbation.requested_rms,
-                 double(top.D), 100.0 * ceiling_rms / double(top.D)));
+    ctx.note(
+        fmt("The ceiling (measured with p = %g, 4x the largest panel's): RMS offset %.5f, "
+            "edges %.1f %% longer than at p = 0, with %d of %d edges scaled down. The "
+            "largest panel realises %.0f %% of that RMS (%.0f %% of its own request): a "
+            "larger p cannot make the pattern rougher without scales overlapping or "
+            "losing the star shape from their centroid; with D = %.2f the offsets stop at "
+            "about %.0f %% of D.",
+            double(top.perturbation.p), ceiling_rms,
+            100.0 * (ceiling_length / lengths.front() - 1.0), steps.perturbation.shrunk,
+            steps.perturbation.edges, 100.0 * last_steps.perturbation.realised_rms / ceiling_rms,
+            100.0 * last_steps.perturbation.realised_rms / last_steps.perturbation.requested_rms,
+            double(top.D), 100.0 * ceiling_rms / double(top.D)));
     // The property the figure is for: each step of p lengthens the edges (rougher outlines).
     for (std::size_t i = 1; i < lengths.size(); ++i)
         if (!(lengths[i] > lengths[i - 1] * 1.01))

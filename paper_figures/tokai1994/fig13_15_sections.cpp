@@ -77,11 +77,11 @@ Status section_plot(FigureContext& ctx, Table1Section which) {
 // left). A raised (convex) scale is lit on the side towards the light (> 0); a sunken one
 // (concave, a floor inside a rim) on the far side, the rim's inner wall facing the light (< 0).
 struct LightSide {
-    double correlation = 0;  // luma against s
+    double correlation = 0;     // luma against s
     double near_minus_far = 0;  // mean luma (0..255) where s > 0.3 minus where s < -0.3
 };
-LightSide light_side_profile(const ScalePattern& pattern, const BezierChain& section,
-                             RgbImage& img, Vec2 lo, Vec2 hi) {
+LightSide light_side_profile(const ScalePattern& pattern, const BezierChain& section, RgbImage& img,
+                             Vec2 lo, Vec2 hi) {
     const int w = img.width(), h = img.height();
     std::vector<std::int32_t> labels(std::size_t(w) * std::size_t(h));
     // Labels of the window: a pattern of the window's extent is not at hand, so the full
@@ -180,11 +180,12 @@ Status section_texture(FigureContext& ctx, Table1Section which, bool close_up) {
             pattern.polygon_count(), double(maps.max_height), mean,
             std::sqrt(std::fmax(0.0, sum2 / n - mean * mean))));
     const LightSide side = light_side_profile(pattern, table1_section(which), img, lo, hi);
-    ctx.note(fmt("Shading profile across the scales (measured over each scale's inner part, rho "
-                 "0.3-0.85): correlation of the luma with the position towards the key light "
-                 "%+.2f, mean luma on the light's side minus the far side %+.1f (0..255); > 0: "
-                 "lit on the light's side, raised; < 0: lit on the far side, sunken.",
-                 side.correlation, side.near_minus_far));
+    ctx.note(
+        fmt("Shading profile across the scales (measured over each scale's inner part, rho "
+            "0.3-0.85): correlation of the luma with the position towards the key light "
+            "%+.2f, mean luma on the light's side minus the far side %+.1f (0..255); > 0: "
+            "lit on the light's side, raised; < 0: lit on the far side, sunken.",
+            side.correlation, side.near_minus_far));
     // The property the figures exist for (§4, figs. 13-14): raised against sunken scales.
     if ((which == Table1Section::convex && side.correlation < 0.3) ||
         (which == Table1Section::concave && side.correlation > -0.3))
