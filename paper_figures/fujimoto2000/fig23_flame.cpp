@@ -222,7 +222,8 @@ SHITSUKAN_FIGURE(
         const TransparencySeen& v = times[label].seen;
         seen += fmt(" %s %.1f %%, %.2f, %.0f %%;", label, 100.0 * v.coverage, v.see_through,
                     100.0 * v.see_through_pixels);
-        if (label[3] == '3' && v.see_through_pixels < 0.2)
+        // Checked in the full run (--quick tessellates one step coarser).
+        if (!ctx.quick() && label[3] == '3' && v.see_through_pixels < 0.2)
             return Status::error(StatusCode::not_supported,
                                  "fig23 %s: only %.0f %% of the flame shows what is behind it "
                                  "(the paper's flames are transparent, §5)",
