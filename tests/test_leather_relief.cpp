@@ -381,3 +381,33 @@ TEST_CASE("relief: the angular index finds the same edge point as the full scan"
     float tmp[6];
     CHECK(!make_angular_index(bow, 6, {1.0f, 1.5f}, tmp));
 }
+
+TEST_CASE("relief: convex scales slope outwards over their inner part, concave inwards") {
+    // What tells fig. 14's sunken scales from fig. 13's raised ones under one light: over the
+    // inner part of a scale (rho 0.3-0.85, the floor and the rim's inner wall or the
+    // shoulder) the normal's radial component n·(x - m)/|x - m| is, on average, > 0 for the
+    // convex section (the surface falls outwards: lit on the light's side) and < 0 for the
+    // concave one (it rises to the rim: lit on the far side).
+    const Vec2 hex[6] = {{1, 0},  {0.5f, 0.866f},   {-0.5f, 0.866f},
+                         {-1, 0}, {-0.5f, -0.866f}, {0.5f, -0.866f}};
+    auto mean_radial = [&](Table1Section w) {
+        double sum = 0;
+        int n = 0;
+        for (int k = 0; k < 2000; ++k) {
+            const float a = float(k) * 2.3999632f, rr = 0.2f + 0.8f * float(k % 97) / 97.0f;
+            const Vec2 x{rr * std::cos(a), rr * std::sin(a)};
+            ReliefSample r;
+            scale_relief(hex, 6, {0, 0}, x, table1_section(w), ReliefOptions{}, &r);
+            if (r.rho < 0.3f || r.rho > 0.85f) continue;
+            sum += double(r.normal.x * x.x + r.normal.y * x.y) / double(length(x));
+            ++n;
+        }
+        REQUIRE(n > 500);
+        return sum / double(n);
+    };
+    const double convex = mean_radial(Table1Section::convex);
+    const double concave = mean_radial(Table1Section::concave);
+    INFO("mean radial normal: convex " << convex << ", concave " << concave);
+    CHECK(convex > 0.02);
+    CHECK(concave < -0.02);
+}

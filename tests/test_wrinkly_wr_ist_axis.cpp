@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "shitsukan/wrinkly/hierarchical_sampling.hpp"
 #include "shitsukan/wrinkly/ist_formula.hpp"
@@ -332,4 +333,114 @@ TEST_CASE(
     }
     CHECK(mismatches == 0);
     CHECK(cu.calls == wm.grid_u + 2 * long(wm.mesh.positions.size()));  // + the reference's
+}
+
+namespace {
+
+// Local maxima of the relief r = H(F^-k(u), F^-k(v)) - H(u, v) along u, per row, at the step-k
+// vertex positions (i + 1/2)/(B·N^k) inside [u0, u1] x [v0, v1]: the wrinkles a view shows.
+double wrinkles_across(const WrSurface& s, int k, float u0, float u1, float v0, float v1) {
+    std::vector<float> us, vs;
+    for (float p : hierarchical_sample_positions(s.axis_u().base_intervals, s.axis_u().division, k))
+        if (p > 0.0f && p < 1.0f && p >= u0 && p <= u1) us.push_back(p);
+    for (float p : hierarchical_sample_positions(s.axis_v().base_intervals, s.axis_v().division, k))
+        if (p > 0.0f && p < 1.0f && p >= v0 && p <= v1) vs.push_back(p);
+    double maxima = 0;
+    for (float v : vs) {
+        std::vector<float> r;
+        for (float u : us) r.push_back(s.wr_attributes(u, v, k).height - s.attributes(u, v).height);
+        for (std::size_t i = 1; i + 1 < r.size(); ++i)
+            if (r[i] > r[i - 1] && r[i] >= r[i + 1]) maxima += 1;
+    }
+    return vs.empty() ? 0.0 : maxima / double(vs.size());
+}
+
+}  // namespace
+
+TEST_CASE(
+    "self-similarity (fujimoto2000 §3.2, figs. 14-15): a third at K + 1 repeats the whole at K") {
+    // The zooms (d)(e)(f) magnify a third of (b) 3x and refine one IST step (adaptive sampling):
+    // they must show as many wrinkles across as (b); without the extra step only a third.
+    for (SurfaceBasis basis : {SurfaceBasis::bezier, SurfaceBasis::bspline}) {
+        WrControlMesh m = flat_mesh(basis == SurfaceBasis::bezier ? 4 : 11,
+                                    basis == SurfaceBasis::bezier ? 4 : 11);
+        WrSurface s;
+        REQUIRE(make_wr_surface(m, basis, 3, s));
+        IstAxis iu, iv;
+        if (basis == SurfaceBasis::bezier) {
+            REQUIRE(ist_unit_axis(3, 1, iu));
+            REQUIRE(ist_unit_axis(3, 1, iv));
+        } else {
+            REQUIRE(ist_fully_connected_axis(3, 1, s.spans_u(), IstEnds::translation, iu));
+            REQUIRE(ist_fully_connected_axis(3, 1, s.spans_v(), IstEnds::translation, iv));
+        }
+        WrIstAxis au, av;
+        REQUIRE(make_wr_ist_axis(iu, 4, au));
+        REQUIRE(make_wr_ist_axis(iv, 4, av));
+        REQUIRE(s.set_axes(au.axis(), av.axis()));
+        const int K = basis == SurfaceBasis::bezier ? 3 : 2;
+        const double whole = wrinkles_across(s, K, 0.0f, 1.0f, 0.0f, 1.0f);
+        REQUIRE(whole >= 3.0);
+        for (float uc : {1.0f / 6.0f, 0.5f, 5.0f / 6.0f}) {
+            const float u0 = uc - 1.0f / 6.0f, u1 = uc + 1.0f / 6.0f;
+            const double zoom = wrinkles_across(s, K + 1, u0, u1, 1.0f / 3.0f, 2.0f / 3.0f);
+            const double same_k = wrinkles_across(s, K, u0, u1, 1.0f / 3.0f, 2.0f / 3.0f);
+            INFO("basis " << int(basis) << " third at " << uc << ": " << zoom << " / " << same_k
+                          << " wrinkles against " << whole);
+            CHECK(zoom >= 0.7 * whole);
+            CHECK(zoom <= 1.4 * whole);
+            CHECK(same_k < 0.6 * whole);  // no refinement: not self-similar
+        }
+    }
+}
+
+TEST_CASE(
+    "superposed unit-IST Bezier (fig. 17): step 1 is the identity; delta moves the surface off H") {
+    // eq. (7): with one digit the unit-IST's reversal changes nothing, so step 1 samples H
+    // itself and steps 0 and 1 hold 1 - delta^2 of eq. (19)'s weight. How far eq. (20) departs
+    // from H (RMS over H's own variation) must grow with delta (§4.1: larger delta, rougher).
+    WrControlMesh m = flat_mesh(4, 4);
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) m.at(c, r).height = 0.2f + 0.3f * float((c + r) % 3);
+    WrSurface s;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bezier, 3, s));
+    IstAxis iu, iv;
+    REQUIRE(ist_unit_axis(3, 1, iu));
+    REQUIRE(ist_unit_axis(3, 1, iv));
+    WrIstAxis au, av;
+    REQUIRE(make_wr_ist_axis(iu, 4, au));
+    REQUIRE(make_wr_ist_axis(iv, 4, av));
+    REQUIRE(s.set_axes(au.axis(), av.axis()));
+    for (float u : {0.1f, 0.45f, 0.8f})
+        CHECK(s.inverse_u(u, 1) == doctest::Approx(u).epsilon(1e-6));
+    double previous = 0;
+    for (float delta : {0.35f, 0.5f, 0.75f}) {
+        for (WrControlPoint& p : m.points) p.delta = delta;
+        WrSurface sd;
+        REQUIRE(make_wr_surface(m, SurfaceBasis::bezier, 3, sd));
+        REQUIRE(sd.set_axes(au.axis(), av.axis()));
+        HierarchicalOptions o;
+        o.levels = 4;
+        o.interpolation = SampleInterpolation::hermite;
+        HierarchicalSampling hs;
+        REQUIRE(sample_hierarchy(sd, o, hs));
+        double sr = 0, sh = 0, mh = 0;
+        const int n = 81;
+        std::vector<double> h, r;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const float u = (float(i) + 0.5f) / float(n), v = (float(j) + 0.5f) / float(n);
+                h.push_back(sd.attributes(u, v).height);
+                r.push_back(superposed_sampled(sd, hs, u, v).attributes.height - h.back());
+                mh += h.back();
+            }
+        mh /= double(h.size());
+        for (std::size_t i = 0; i < h.size(); ++i)
+            sr += r[i] * r[i], sh += (h[i] - mh) * (h[i] - mh);
+        const double departure = std::sqrt(sr / sh);
+        INFO("delta " << delta << ": departure " << departure);
+        CHECK(departure > 1.3 * previous);
+        previous = departure;
+    }
+    CHECK(previous > 0.3);
 }

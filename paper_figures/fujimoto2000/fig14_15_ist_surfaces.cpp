@@ -17,12 +17,17 @@
 // unit-IST's own "locality" (§2.2.1(2)), and it fades as N^-K: at K = 2 the left third reads
 // [0, 1/9) + j/3 and the right [2/9, 1/3) + j/3, a clear tendency (measured mean red minus blue
 // of the zooms: +0.35, -0.03, -0.25; fig. 15: +0.42, +0.04, -0.37); at K = 3 it is a shift of
-// 2/27 (+0.05, +0.04, 0.00) and at K = 4 the zooms look alike. So fig. 14 uses K = 2 for (b)
-// and its zooms (the zooms magnify (b) without a further step, which would hide the tendency);
-// fig. 15's fully-connected IST keeps its colours local at any K, so its zooms go one step
-// deeper. Each zoom's note prints the measured mean colour of its third.
+// 2/27 (+0.05, +0.04, 0.00) and at K = 4 the zooms look alike. So fig. 14's (b) uses K = 2.
+// Its zooms, like fig. 15's, go one step deeper (K = 3): a third of the patch then shows as
+// many small intervals, wrinkles across, as (b) does — the self-similarity the caption names,
+// measured in each zoom's note (wrinkles across and roughness against (b)'s; the figure fails
+// if they part). At (b)'s own K a zoom showed a third of (b)'s wrinkles, smooth colour bands.
+// The price, for the unit-IST alone: its zooms' colour tendency is the faint one of K = 3;
+// fig. 15's fully-connected IST keeps its colours local at any K. Each zoom's note prints the
+// measured mean colour of its third.
 // Example: examples/30_wrinkly_surface.cpp.
 #include <cmath>
+#include <vector>
 
 #include "driver/figure.hpp"
 #include "fujimoto2000/wr_figure_common.hpp"
@@ -44,7 +49,10 @@ Vec3 column_color(float t) {
 }
 
 // fig. 14 (chosen): 4 x 4 Bezier control points on [-1.2, 1.2]^2, a low dome, heights
-// 0.04..0.50 in a fixed pattern, colour by column.
+// 0.08..1.00 in a fixed pattern (the pattern below times kFig14HeightScale), colour by column.
+// Chosen: heights twice the dome's 0.35 rather than about equal to it, so the wrinkles of (b)
+// stand out against the smooth (c) (at 0.04..0.50 the relief's slopes were hardly seen).
+constexpr float kFig14HeightScale = 2.0f;
 WrControlMesh fig14_mesh() {
     static const float h[4][4] = {{0.10f, 0.34f, 0.22f, 0.04f},
                                   {0.30f, 0.48f, 0.40f, 0.18f},
@@ -53,22 +61,75 @@ WrControlMesh fig14_mesh() {
     return square_control_mesh(4, 1.2f, [](int c, int r, float, float, WrControlPoint& p) {
         const bool inner = c > 0 && c < 3 && r > 0 && r < 3;
         p.position.y = inner ? 0.35f : 0.0f;
-        p.height = h[r][c];
+        p.height = kFig14HeightScale * h[r][c];
         p.color = column_color(float(c) / 3.0f);
     });
 }
 
 // fig. 15 (chosen): 11 x 11 B-spline control points (8 x 8 knot spans = base intervals) on
-// [-1.5, 1.5]^2, a low dome, heights 0.05..0.45 from a smooth pattern plus a hashed variation
-// (seed 15), colour by column.
+// [-1.5, 1.5]^2, a low dome, heights 0.05..0.45 from a smooth pattern varying along both
+// columns and rows (one along the columns alone made the relief ridges along v, curtains)
+// plus a hashed variation (seed 15), colour by column.
 WrControlMesh fig15_mesh() {
     const int n = 11;
     return square_control_mesh(n, 1.5f, [&](int c, int r, float x, float z, WrControlPoint& p) {
         p.position.y = 0.35f * (1.0f - (x * x + z * z) / 4.5f);
-        p.height = 0.25f + 0.12f * det_sin(1.7f * float(c) + 0.9f * float(r)) +
+        p.height = 0.25f + 0.07f * det_sin(1.7f * float(c) + 0.9f * float(r)) +
+                   0.07f * det_sin(1.7f * float(r) - 0.9f * float(c)) +
                    0.16f * (hash_uniform(15, 0, c, r) - 0.5f);
         p.color = column_color(float(c) / float(n - 1));
     });
+}
+
+// The relief of a panel, measured on the heights its vertices carry: at the step-`level`
+// sample positions (i + 1/2)/(B·N^level) inside the window [u0, u1] x [v0, v1], the relief
+// r = H(F^-level(u), F^-level(v)) - H(u, v) (eq. 15's height minus the conventional one).
+//   wrinkles:  local maxima of r along u per row, mean over the rows (how many wrinkles the
+//              view shows across; self-similar zooms show as many as (b));
+//   roughness: mean |r_{i+1} - r_i| along u over the standard deviation of r (0 smooth, about
+//              1.4 for unrelated neighbours: how abruptly the wrinkles change);
+//   relief:    standard deviation of r over that of the conventional height H(u, v) in the
+//              window (about 0 when (b) cannot be told from (c)).
+struct ReliefStats {
+    double wrinkles = 0, roughness = 0, relief = 0;
+};
+ReliefStats measure_relief(const WrSurface& s, int level, float u0, float u1, float v0, float v1) {
+    auto positions = [&](const WrAxis& a, float lo, float hi) {
+        std::vector<float> x;
+        for (float p : hierarchical_sample_positions(a.base_intervals, a.division, level))
+            if (p > 0.0f && p < 1.0f && p >= lo && p <= hi) x.push_back(p);
+        return x;
+    };
+    const std::vector<float> us = positions(s.axis_u(), u0, u1), vs = positions(s.axis_v(), v0, v1);
+    ReliefStats st;
+    if (us.size() < 3 || vs.empty()) return st;
+    std::vector<double> r(us.size() * vs.size()), h(r.size());
+    double mr = 0, mh = 0;
+    for (std::size_t j = 0; j < vs.size(); ++j)
+        for (std::size_t i = 0; i < us.size(); ++i) {
+            h[j * us.size() + i] = s.attributes(us[i], vs[j]).height;
+            r[j * us.size() + i] =
+                s.wr_attributes(us[i], vs[j], level).height - h[j * us.size() + i];
+            mr += r[j * us.size() + i];
+            mh += h[j * us.size() + i];
+        }
+    mr /= double(r.size());
+    mh /= double(h.size());
+    double vr = 0, vh = 0, steps = 0, maxima = 0;
+    for (std::size_t j = 0; j < vs.size(); ++j)
+        for (std::size_t i = 0; i < us.size(); ++i) {
+            const double* row = &r[j * us.size()];
+            vr += (row[i] - mr) * (row[i] - mr);
+            vh += (h[j * us.size() + i] - mh) * (h[j * us.size() + i] - mh);
+            if (i + 1 < us.size()) steps += std::fabs(row[i + 1] - row[i]);
+            if (i > 0 && i + 1 < us.size() && row[i] > row[i - 1] && row[i] >= row[i + 1])
+                maxima += 1;
+        }
+    const double sr = std::sqrt(vr / double(r.size())), sh = std::sqrt(vh / double(h.size()));
+    st.wrinkles = maxima / double(vs.size());
+    st.roughness = sr > 0 ? steps / double(vs.size() * (us.size() - 1)) / sr : 0.0;
+    st.relief = sh > 0 ? sr / sh : 0.0;
+    return st;
 }
 
 struct SurfaceFigure {
@@ -88,7 +149,7 @@ const SurfaceFigure kFig15{"fig15",
                            IstKind::fully_connected,
                            3,
                            fig15_mesh,
-                           Shot{{0.0f, 3.6f, 2.9f}, {0.0f, 0.15f, 0.1f}, {0, 1, 0}, 42.0f}};
+                           Shot{{1.6f, 3.4f, 2.9f}, {0.0f, 0.15f, 0.1f}, {0, 1, 0}, 42.0f}};
 
 Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
     const bool quick = ctx.quick();
@@ -97,9 +158,11 @@ Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
     // the structure can be seen; for fig. 14 also the K at which the unit-IST's left/right
     // tendency of §3.2 can still be seen (it fades as N^-K, header).
     const int K = 2;
-    // The zooms: one IST step deeper for the fully-connected IST (fig. 15); the same K for the
-    // unit-IST (fig. 14), whose left/right tendency fades as N^-K (see the file header).
-    const int zoom_levels = f.kind == IstKind::unit ? K : K + 1;
+    // The zooms: one IST step deeper (the adaptive sampling of §3.1 refines with the screen
+    // detail), so a third of the patch shows as many small intervals as (b) does: the
+    // self-similarity the caption names (measured below). For fig. 14 this costs colour
+    // locality in the zooms (the unit-IST's fades as N^-K, file header); (b) keeps it.
+    const int zoom_levels = K + 1;
     const int subdivisions = quick ? 1 : 2;
     ctx.given("base surface",
               f.basis == SurfaceBasis::bezier ? "Bezier, n = 3" : "uniform B-spline, n = 3",
@@ -113,6 +176,14 @@ Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
                "not printed; chosen to show the caption's properties");
     ctx.chosen("colours", "columns red -> green -> blue",
                "§3.2: 'red to the left, blue to the right'");
+    ctx.chosen("view",
+               f.basis == SurfaceBasis::bezier
+                   ? "from the front, above (u runs left to right)"
+                   : "from the front right, above, 29 degrees off the v direction",
+               f.basis == SurfaceBasis::bezier
+                   ? "left/right ends of the caption's zooms on screen"
+                   : "a view along a parameter lines the IST ridges up into curtains (fig. 21's "
+                     "reason too); red still at the left, blue at the right");
 
     WrControlMesh mesh = f.mesh();
     WrSurface surface;
@@ -181,6 +252,41 @@ Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
     const auto t1 = Clock::now();
     RasterStats stats;
     SHITSUKAN_TRY(render_opaque(camera, wm.mesh, img.view(), shading, &stats));
+    if (panel == 'b' || panel >= 'd') {
+        // Measured: the zoom repeats the wrinkles of (b) (self-similarity, §3.2), and (b)
+        // differs from (c). The zoom's window is its third of u (without the margin).
+        const ReliefStats whole = measure_relief(surface, K, 0.0f, 1.0f, 0.0f, 1.0f);
+        if (panel == 'b') {
+            ctx.note(
+                fmt("Relief against (c) (measured at the step-%d vertices, over the patch): "
+                    "%.1f wrinkles across per row, roughness %.2f, relief/plain height "
+                    "variation %.2f (0 would read as (c)).",
+                    K, whole.wrinkles, whole.roughness, whole.relief));
+            if (whole.relief < 0.5)
+                return Status::error(StatusCode::not_supported,
+                                     "%s(b): relief %.2f cannot be told from (c)", f.key,
+                                     whole.relief);
+        } else {
+            const float uc = panel == 'd' ? 1.0f / 6.0f : (panel == 'e' ? 0.5f : 5.0f / 6.0f);
+            const ReliefStats z = measure_relief(surface, o.levels, uc - 1.0f / 6.0f,
+                                                 uc + 1.0f / 6.0f, 1.0f / 3.0f, 2.0f / 3.0f);
+            const ReliefStats z_same = measure_relief(surface, K, uc - 1.0f / 6.0f,
+                                                      uc + 1.0f / 6.0f, 1.0f / 3.0f, 2.0f / 3.0f);
+            const double ratio = whole.wrinkles > 0 ? z.wrinkles / whole.wrinkles : 0.0;
+            ctx.note(
+                fmt("Self-similarity, measured: %.1f wrinkles across this third at K = %d "
+                    "against %.1f across (b) at K = %d (ratio %.2f; at (b)'s own K the third "
+                    "would show %.1f); roughness %.2f against (b)'s %.2f.",
+                    z.wrinkles, o.levels, whole.wrinkles, K, ratio, z_same.wrinkles, z.roughness,
+                    whole.roughness));
+            if (ratio < 0.6 || ratio > 1.6 ||
+                std::fabs(z.roughness - whole.roughness) > 0.35 * whole.roughness)
+                return Status::error(StatusCode::not_supported,
+                                     "%s(%c): the zoom does not repeat (b)'s wrinkles "
+                                     "(wrinkle ratio %.2f, roughness %.2f vs %.2f)",
+                                     f.key, panel, ratio, z.roughness, whole.roughness);
+        }
+    }
     if (panel >= 'd') {
         // Measured, so the locality claim of §3.2 can be checked in numbers, not only by eye:
         // the mean vertex colour over this third of the surface (u within 1/6 of uc).

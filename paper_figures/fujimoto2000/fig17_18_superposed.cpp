@@ -10,6 +10,13 @@
 // more than 0.1 % of max|h_i| between (a) and (b). A Bezier control point acts on the whole
 // patch; a B-spline one on 4 x 4 spans, and the IST carries that change to the places it maps
 // there (every small interval whose source lies in the changed region).
+// Each panel (4)(5) measures its shape (measure_shape): how far it departs from (2), the
+// relief's anisotropy and repetition, and its step share against eq. (16) evaluated directly:
+// the hierarchical sampling of §4.2 removes fig. 19(b)'s staircase (fig. 18 (a-4): 0.72 ->
+// 0.44; fig. 17 (a-4): 0.58 -> 0.21) but fig. 18 keeps terraces on the slopes of its range:
+// the fully-connected IST gives each base interval's sub-intervals H from base intervals b - 1,
+// b, b + 1 (eq. 12), a ramp and a drop at every step, in eq. (16) as in eq. (20); a more
+// irregular range or linear interpolation left the step share at 0.43 / 0.42.
 // Example: examples/31_superposed_mountains.cpp.
 #include <algorithm>
 #include <cmath>
@@ -19,6 +26,7 @@
 #include "shitsukan/core/hash.hpp"
 #include "shitsukan/core/scalar.hpp"
 #include "shitsukan/core/detmath.hpp"
+#include "shitsukan/wrinkly/superposition.hpp"
 
 namespace shitsukan::fujimoto2000 {
 namespace {
@@ -26,26 +34,36 @@ namespace {
 using figures::FigureContext;
 using figures::fmt;
 
-// Chosen in one place for both figures: the two ratio values of panels (4) and (5).
-constexpr float kDeltaSmooth = 0.35f, kDeltaRough = 0.65f;
+// Chosen in one place for both figures: the two ratio values of panels (4) and (5). The text
+// prints none for figs. 17-18; it says only "the smaller delta the smoother, the larger the
+// rougher" (§4.1) and that delta sets the fractal dimension as in ordinary fractals (eq. 17);
+// fig. 22 prints 0.25 / 0.50 / 0.75 and fig. 23 0.60. These are fig. 22's two larger values:
+// with the unit-IST of fig. 17 the first step is the identity (a one-digit reversal, eq. 7),
+// so steps 0 and 1 both carry the smooth H and hold W^0 + W^1 = 1 - delta^2 of the weight:
+// 88 % at the former 0.35, where (a-4) departed from the plain (a-2) by only 0.11 of its
+// height variation (measured, notes); 75 % at 0.5 (0.23) and 44 % at 0.75.
+constexpr float kDeltaSmooth = 0.5f, kDeltaRough = 0.75f;
 
 Vec3 height_color(float h, float hmax) {
     const Vec3 low{0.50f, 0.58f, 0.34f}, high{0.88f, 0.84f, 0.78f};
     return lerp(low, high, clamp(h / hmax, 0.0f, 1.0f));
 }
 
-// fig. 17 (chosen): 4 x 4 Bezier points on [-1.2, 1.2]^2 (flat), a ridge of heights up to 1.2.
-// Row (b): the point at column 0, row 2 (front left) is raised from 0.20 to 1.0, the peak at
-// column 2, row 2 lowered from 1.20 to 0.6.
+// fig. 17 (chosen): 4 x 4 Bezier points on [-1.2, 1.2]^2 (flat), a diagonal ridge of heights
+// up to 1.2 running away from the camera. The unit-IST spreads copies of the whole H over the
+// patch (§2.2.1): a single hump made them a quilt of humps (relief anisotropy of (a-5) 0.22
+// on a 243-cell grid, at delta 0.65); a ridge makes ranges with one strike (0.66 on that grid
+// at delta 0.75; the notes measure on 162 cells). Row (b): the front corner (column 3, row 3) is
+// raised from 0.05 to 1.0, the ridge point at column 1, row 2 lowered from 1.10 to 0.5.
 WrControlMesh fig17_mesh(bool changed) {
-    static const float h[4][4] = {{0.05f, 0.35f, 0.45f, 0.10f},
-                                  {0.30f, 1.10f, 0.80f, 0.20f},
-                                  {0.20f, 0.85f, 1.20f, 0.45f},
-                                  {0.05f, 0.30f, 0.45f, 0.10f}};
+    static const float h[4][4] = {{0.05f, 0.15f, 0.50f, 1.00f},
+                                  {0.15f, 0.60f, 1.20f, 0.45f},
+                                  {0.40f, 1.10f, 0.55f, 0.10f},
+                                  {0.90f, 0.50f, 0.20f, 0.05f}};
     return square_control_mesh(4, 1.2f, [changed](int c, int r, float, float, WrControlPoint& p) {
         p.height = h[r][c];
-        if (changed && r == 2 && c == 0) p.height = 1.0f;
-        if (changed && r == 2 && c == 2) p.height = 0.6f;
+        if (changed && r == 3 && c == 3) p.height = 1.0f;
+        if (changed && r == 2 && c == 1) p.height = 0.5f;
         p.color = height_color(p.height, 1.2f);
     });
 }
@@ -164,6 +182,93 @@ Status measure_reach(const SuperFigure& f, int panel, float delta, bool quick, i
     return Status::success();
 }
 
+// What panels (4)(5) must show, measured on the displacement height of eq. (20) over a
+// 162 x 162 grid of (u, v) (cell centres; the panel's own hierarchical samples, no tail cut):
+//   departure:   RMS of (superposed - conventional height) over the RMS variation of the
+//                conventional height: about 0 when (4) cannot be told from the plain (2);
+//   anisotropy:  of the relief r = superposed - conventional, from its gradient's structure
+//                tensor J = sum (grad r)(grad r)^T: sqrt((Jxx - Jyy)^2 + 4 Jxy^2) / (Jxx + Jyy),
+//                0 for bumps alike in every direction (a quilt), towards 1 for ridges with
+//                one strike (ranges);
+//   repetition:  the correlation of r with r shifted by a third of the patch along u, the
+//                period of the unit-IST's copies (a regular quilt repeats: near 1);
+//   step_share:  the share of the relief's squared differences between neighbouring grid
+//                cells (along u and v) carried by the 3 % largest ones: near 0.03 for smooth
+//                slopes, large when the relief is made of flat treads and walls (fig. 19(b)'s
+//                staircase); step_share_direct: the same for eq. (16) evaluated directly at
+//                the same steps, the staircase §4.2's hierarchical sampling is to avoid.
+struct ShapeStats {
+    double departure = 0, anisotropy = 0, repetition = 0, step_share = 0, step_share_direct = 0;
+};
+double top_share(std::vector<double> d2) {
+    std::sort(d2.begin(), d2.end());
+    double total = 0, top = 0;
+    for (std::size_t i = 0; i < d2.size(); ++i) {
+        total += d2[i];
+        if (i >= d2.size() - d2.size() * 3 / 100) top += d2[i];
+    }
+    return total > 0 ? top / total : 0.0;
+}
+double direct_step_share(const WrSurface& surface, int levels, int n) {
+    std::vector<double> r(std::size_t(n) * n), d2;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const float u = (float(i) + 0.5f) / float(n), v = (float(j) + 0.5f) / float(n);
+            r[std::size_t(j) * n + i] = superposed_attributes_direct(surface, u, v, levels).height -
+                                        surface.attributes(u, v).height;
+        }
+    for (int j = 0; j + 1 < n; ++j)
+        for (int i = 0; i + 1 < n; ++i) {
+            const std::size_t k = std::size_t(j) * n + i;
+            d2.push_back((r[k + 1] - r[k]) * (r[k + 1] - r[k]));
+            d2.push_back((r[k + n] - r[k]) * (r[k + n] - r[k]));
+        }
+    return top_share(d2);
+}
+ShapeStats measure_shape(const WrSurface& surface, const HierarchicalSampling& hs) {
+    const int n = 162;  // a third of the patch is 54 cells
+    std::vector<double> r(std::size_t(n) * n), h(r.size());
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const float u = (float(i) + 0.5f) / float(n), v = (float(j) + 0.5f) / float(n);
+            const double plain = surface.attributes(u, v).height;
+            h[std::size_t(j) * n + i] = plain;
+            r[std::size_t(j) * n + i] =
+                superposed_sampled(surface, hs, u, v).attributes.height - plain;
+        }
+    double mh = 0, mr = 0;
+    for (std::size_t i = 0; i < r.size(); ++i) mh += h[i], mr += r[i];
+    mh /= double(h.size());
+    mr /= double(r.size());
+    double vh = 0, vr = 0, jxx = 0, jyy = 0, jxy = 0, c = 0, c0 = 0, c1 = 0;
+    std::vector<double> du2;
+    const int shift = n / 3;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const std::size_t k = std::size_t(j) * n + i;
+            vh += (h[k] - mh) * (h[k] - mh);
+            vr += (r[k] - mr) * (r[k] - mr);
+            if (i + 1 < n && j + 1 < n) {
+                const double gx = r[k + 1] - r[k], gy = r[k + n] - r[k];
+                jxx += gx * gx, jyy += gy * gy, jxy += gx * gy;
+                du2.push_back(gx * gx);
+                du2.push_back(gy * gy);
+            }
+            if (i + shift < n) {
+                const double a = r[k] - mr, b = r[k + shift] - mr;
+                c += a * b, c0 += a * a, c1 += b * b;
+            }
+        }
+    ShapeStats st;
+    st.departure = vh > 0 ? std::sqrt(vr / vh) : 0.0;
+    st.anisotropy =
+        jxx + jyy > 0 ? std::sqrt((jxx - jyy) * (jxx - jyy) + 4 * jxy * jxy) / (jxx + jyy) : 0.0;
+    st.repetition = c0 > 0 && c1 > 0 ? c / std::sqrt(c0 * c1) : 0.0;
+    st.step_share = top_share(std::move(du2));
+    st.step_share_direct = direct_step_share(surface, hs.levels(), n);
+    return st;
+}
+
 Status run_panel(FigureContext& ctx, const SuperFigure& f, char row, int panel) {
     const bool quick = ctx.quick();
     const int size = quick ? 128 : 512;
@@ -174,12 +279,12 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, char row, int panel) 
     ctx.chosen("IST", f.kind == IstKind::unit ? "unit-IST N = 3" : "fully-connected IST N = 3",
                "the ISTs of figs. 14/15");
     ctx.chosen("control mesh",
-               bezier ? "4 x 4 flat, ridge of heights 0.05..1.2"
+               bezier ? "4 x 4 flat, diagonal ridge of heights 0.05..1.2"
                       : "11 x 11 flat (8 x 8 spans), winding range up to 0.7",
                "not printed");
     if (row == 'b')
         ctx.chosen("height change (a-1) -> (b-1)",
-                   bezier ? "front-left point 0.20 -> 1.0, peak 1.20 -> 0.6"
+                   bezier ? "front corner 0.05 -> 1.0, ridge point (1, 2) 1.10 -> 0.5"
                           : "four points beside the ridge (columns 7-8, rows 2-3) +0.45",
                    "the paper changes some h_i and does not print them");
     ctx.chosen("image size", fmt("%d x %d", size, size), "not given");
@@ -205,7 +310,9 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, char row, int panel) 
     if (panel == 3) ctx.chosen("K", chosen, "small intervals of a few pixels");
     if (panel >= 4) {
         ctx.chosen("delta", fmt("%.2f (constant)", double(delta)),
-                   "one smooth and one rough value; the paper does not print them");
+                   "fig. 22's 0.50 / 0.75 (§4.1: smaller smoother, larger rougher; no value "
+                   "printed for figs. 17-18); the unit-IST's first step is the identity, so "
+                   "1 - delta^2 of the weight stays on the smooth H");
         ctx.chosen("sample interpolation", "Hermite",
                    "fig. 19(d); the paper does not say for figs. 17-18");
         ctx.chosen("adaptive sampling", chosen, "cells <= 2 px, omitted rest of the sum < 0.5 px");
@@ -216,6 +323,30 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, char row, int panel) 
     SHITSUKAN_TRY(render_opaque(camera, wm.mesh, img.view(), shading, &stats));
     ctx.note(fmt("%d triangles; superposition steps used: max %d, mean %.2f.",
                  wm.mesh.triangle_count(), wm.max_levels_used, wm.mean_levels_used));
+    if (panel >= 4) {
+        const ShapeStats st = measure_shape(rs.surface, hs);
+        ctx.note(
+            fmt("Shape (measured on eq. (20)'s height): departure from (2) %.2f, relief "
+                "anisotropy %.2f, repetition at a third of the patch %.2f, step share %.2f "
+                "against eq. (16) directly %.2f (definitions: measure_shape in the source).",
+                st.departure, st.anisotropy, st.repetition, st.step_share, st.step_share_direct));
+        // §4.1: (4) and (5) are not the conventional surface, and fig. 17's read as ranges.
+        // §4.2: hierarchical sampling avoids eq. (16)'s staircase (fig. 19(b)). What it leaves
+        // in fig. 18 are the fully-connected IST's own steps on the slopes of H: each base
+        // interval's N sub-intervals take H from base intervals b - 1, b, b + 1 (eq. 12), a
+        // ramp and a drop at every step k, in eq. (16) as in eq. (20) (notes: step share).
+        // The checks hold the full run (--quick sums fewer steps on a coarser grid).
+        if (!quick && st.step_share > 0.8 * st.step_share_direct)
+            return Status::error(StatusCode::not_supported,
+                                 "superposed panel (%d): step share %.2f against eq. (16)'s "
+                                 "%.2f: the hierarchical sampling does not avoid the staircase",
+                                 panel, st.step_share, st.step_share_direct);
+        if (!quick && (st.departure < 0.15 || (bezier && panel == 5 && st.anisotropy < 0.4)))
+            return Status::error(StatusCode::not_supported,
+                                 "superposed panel (%d): departure %.2f, anisotropy %.2f: does "
+                                 "not read as §4.1's mountain ranges",
+                                 panel, st.departure, st.anisotropy);
+    }
     if (row == 'b') {
         double share = 0, largest = 0;
         SHITSUKAN_TRY(measure_reach(f, panel, delta, quick, size, &share, &largest));

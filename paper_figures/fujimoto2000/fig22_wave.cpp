@@ -28,7 +28,8 @@ constexpr float kDeltas[3] = {0.25f, 0.50f, 0.75f};  // given
 
 // Chosen: 10 x 8 control points (7 x 5 spans) on [-3.5, 3.5] x [-2, 2]; a swell along x, the
 // crest (rows 3-4) pushed up and forward (direction (0, 1, crest) normalised, up elsewhere);
-// heights 0.1..1.05; deep blue troughs, white crests; opaque water (transparency 0).
+// heights 0.1..1.05; deep blue troughs, white crests; transparency (§5 gives the wave's control
+// points one) 0.30 in the troughs to 0.05 in the foam of the crest.
 WrControlMesh wave_mesh(float delta) {
     const int cols = 10, rows = 8;
     WrControlMesh m = make_control_mesh(cols, rows);
@@ -44,6 +45,7 @@ WrControlMesh wave_mesh(float delta) {
             p.direction = normalize(Vec3{0.0f, 1.0f, crest});
             p.color = lerp(Vec3{0.05f, 0.22f, 0.42f}, Vec3{0.95f, 0.97f, 1.0f},
                            clamp(1.5f * crest, 0.0f, 1.0f));
+            p.transparency = 0.05f + 0.25f * (1.0f - clamp(1.5f * crest, 0.0f, 1.0f));
             p.delta = delta;
         }
     return m;
@@ -96,6 +98,7 @@ Status draw_panel(bool quick, char row, int col, RgbView view, StageTimes* t) {
         ho.interpolation = SampleInterpolation::hermite;
         ho.jitter_height = 0.15f;
         ho.jitter_color = 0.04f;
+        ho.jitter_transparency = 0.04f;
         ho.seed = 22;
         SHITSUKAN_TRY(sample_hierarchy(surface, ho, hs));
         o.form = WrSurfaceForm::superposed;
@@ -109,7 +112,10 @@ Status draw_panel(bool quick, char row, int col, RgbView view, StageTimes* t) {
     t->polygonisation = seconds_since(t0);
     if (row == 'y') color_by_source_span(&wm, surface, 0);
     t0 = Clock::now();
-    SHITSUKAN_TRY(render_opaque(camera, wm.mesh, view, shading));
+    if (row == 'y')
+        SHITSUKAN_TRY(render_opaque(camera, wm.mesh, view, shading));
+    else
+        SHITSUKAN_TRY(render_transparent(camera, wm, view, shading, nullptr, &t->seen));
     t->rendering = seconds_since(t0);
     t->triangles = wm.mesh.triangle_count();
     t->mean_offset = mean_offset(surface, wm);
@@ -189,10 +195,15 @@ SHITSUKAN_FIGURE(
                "10 x 8 (7 x 5 spans), swell along x, crest rows pushed up and "
                "forward, heights 0.1..1.05",
                "not printed");
-    ctx.chosen("jitter", "height x(1 + 0.15 g), colour + 0.04 g", "§5 gives no deviation");
-    ctx.chosen("transparency", "0 (opaque water)",
-               "the paper gives the wave a transparency but "
-               "does not show through; kept opaque");
+    ctx.chosen("jitter", "height x(1 + 0.15 g), colour + 0.04 g, transparency + 0.04 g",
+               "§5 gives no deviation");
+    ctx.given("transparency per control point", "yes, sampled and superposed like the heights",
+              "§5 (figs. 22, 23)");
+    ctx.chosen("transparency values", "0.30 in the troughs .. 0.05 in the crest's foam",
+               "not printed; clear water, opaque foam");
+    ctx.chosen("transparency rendering",
+               "back-to-front sort of triangles + Z-buffer + blend (as fig. 23), Lambert shading",
+               "the paper does not say how it blended");
     ctx.chosen("adaptive sampling",
                "grid: first step with cells <= 8 px (level <= 3), 2 vertices per interval",
                "cells of <= 4 px on a 1200 x 600 panel (step 2, about 3 px)");
@@ -208,6 +219,21 @@ SHITSUKAN_FIGURE(
             100 * times["(a-2)"].mean_offset / plain, 100 * times["(a-3)"].mean_offset / plain,
             100 * times["(a-4)"].mean_offset / plain, 100 * times["(b-2)"].mean_offset / plain,
             100 * times["(b-3)"].mean_offset / plain, 100 * times["(b-4)"].mean_offset / plain));
+    std::string seen =
+        "Transparency, measured (coverage of the frame; mean share of the colour "
+        "that is the background seen through the water; share from the wave's "
+        "own layers behind its front one):";
+    for (const char* label : {"(z)", "(a-3)", "(b-3)"}) {
+        const TransparencySeen& v = times[label].seen;
+        seen +=
+            fmt(" %s %.1f %%, %.2f, %.2f;", label, 100.0 * v.coverage, v.background, v.see_through);
+        if (v.background + v.see_through < 0.1)
+            return Status::error(StatusCode::not_supported,
+                                 "fig22 %s: the water shows nothing through it (§5 gives it a "
+                                 "transparency)",
+                                 label);
+    }
+    ctx.note(seen);
     ctx.note(
         fmt("Per-panel images (%d x %d): fig22_z.png, fig22_a1.png .. fig22_a4.png, "
             "fig22_b1.png .. fig22_b4.png; this image is the overview.",

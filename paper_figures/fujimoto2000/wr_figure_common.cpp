@@ -62,7 +62,7 @@ Status render_opaque(const Camera& camera, const TriangleMesh& mesh, RgbView tar
 }
 
 Status render_transparent(const Camera& camera, const WrMesh& wm, RgbView target,
-                          const Shading& shading, RasterStats* stats) {
+                          const Shading& shading, RasterStats* stats, TransparencySeen* seen) {
     FloatImage depth(target.width, target.height);
     FrameBand band = full_frame_band(target, depth.view());
     clear_band(band, shading.background);
@@ -89,16 +89,46 @@ Status render_transparent(const Camera& camera, const WrMesh& wm, RgbView target
         for (int e = 0; e < 3; ++e)
             sorted.indices.push_back(m.indices[std::size_t(3 * o.second + e)]);
     const Vec3 light = normalize(shading.light);
+    // For `seen`: per pixel, the share of the colour still the background's, and the share
+    // from surface layers behind the latest fragment.
+    std::vector<float> background_share, behind_share;
+    if (seen) {
+        background_share.assign(std::size_t(target.width) * std::size_t(target.height), 1.0f);
+        behind_share.assign(background_share.size(), 0.0f);
+    }
     auto shader = [&](const Fragment& f) {
         const float lambert = std::fabs(dot(f.normal, light));
-        const Vec3 c = f.color * (0.85f + 0.25f * lambert);  // mostly emissive
+        const Vec3 c = shading.emissive
+                           ? f.color * (0.85f + 0.25f * lambert)  // mostly emissive
+                           : f.color * (shading.ambient + (1.0f - shading.ambient) * lambert);
         const float t = clamp(f.uv.x, 0.0f, 1.0f);
         const Vec3 dst = from_rgb8(target.at(f.x, f.y - band.y0));
+        if (seen) {
+            const std::size_t i =
+                std::size_t(f.y - band.y0) * std::size_t(target.width) + std::size_t(f.x);
+            behind_share[i] = t * (1.0f - background_share[i]);
+            background_share[i] *= t;
+        }
         return to_rgb8(c * (1.0f - t) + dst * t);  // "over" with opacity 1 - t
     };
     DrawOptions opt;
     opt.cull = CullMode::none;
-    return draw_mesh(camera, band, sorted.view(), opt, shader, stats);
+    const Status st = draw_mesh(camera, band, sorted.view(), opt, shader, stats);
+    if (seen && st) {
+        double covered = 0, behind = 0, showing = 0, through = 0;
+        for (std::size_t i = 0; i < background_share.size(); ++i)
+            if (background_share[i] < 1.0f) {
+                covered += 1;
+                through += background_share[i];
+                behind += behind_share[i];
+                if (behind_share[i] > 0.15f) showing += 1;
+            }
+        seen->coverage = covered / double(background_share.size());
+        seen->see_through = covered > 0 ? behind / covered : 0.0;
+        seen->see_through_pixels = covered > 0 ? showing / covered : 0.0;
+        seen->background = covered > 0 ? through / covered : 0.0;
+    }
+    return st;
 }
 
 void draw_control_mesh(RgbView target, const Camera& camera, const WrControlMesh& mesh,

@@ -39,6 +39,9 @@ struct Shading {
     Vec3 light{-0.6f, 0.55f, 0.35f};  // towards the light (normalised inside)
     float ambient = 0.28f;
     Rgb8 background{255, 255, 255};
+    // render_transparent: true = mostly emissive (flames give light, fig. 23); false = the
+    // Lambert shading of render_opaque (fig. 22's water).
+    bool emissive = false;
 };
 
 // Opaque: Z-buffer, two-sided Lambert on the vertex colours.
@@ -46,10 +49,21 @@ Status render_opaque(const Camera& camera, const TriangleMesh& mesh, RgbView tar
                      const Shading& shading, RasterStats* stats = nullptr);
 // Transparent (fig. 23): triangles sorted back to front by their centroid depth, drawn with the
 // Z-buffer, each fragment blended over what is there: out = (1 - t)·c + t·dst with the
-// interpolated transparency t. Shading is mostly emissive (flames give light): colour x (0.85 +
-// 0.25 Lambert). The target is cleared to the background first.
+// interpolated transparency t. Shading: with shading.emissive (flames give light) colour x
+// (0.85 + 0.25 Lambert), else render_opaque's. The target is cleared to the background first.
+// What the transparency shows, measured while blending (the optional `seen` of
+// render_transparent): coverage = share of the frame's pixels the surface covers; see_through
+// = mean, over the covered pixels, of the share of the final colour that comes from layers of
+// the surface behind the front-most one (0: nothing shows through, as an opaque surface);
+// see_through_pixels = share of the covered pixels where that share exceeds 0.15.
+// background = mean, over the covered pixels, of the share of the colour that is still the
+// background's (what shows through the whole surface).
+struct TransparencySeen {
+    double coverage = 0, see_through = 0, see_through_pixels = 0, background = 0;
+};
 Status render_transparent(const Camera& camera, const WrMesh& mesh, RgbView target,
-                          const Shading& shading, RasterStats* stats = nullptr);
+                          const Shading& shading, RasterStats* stats = nullptr,
+                          TransparencySeen* seen = nullptr);
 
 // The "(a)" panels: the control polygon, points in their colours, and for each point a stick
 // of its height h_i along the displacement direction with a dot at the tip (fig. 17 caption).
@@ -93,6 +107,7 @@ struct StageTimes {
     int grid_level = 0, levels = 0;
     bool quick = false;
     double mean_offset = 0;  // mean |R(u,v) - P(u,v)| over the vertices (see mean_offset)
+    TransparencySeen seen;   // transparent panels: what shows through (render_transparent)
 };
 // Mean distance of the displaced vertices from the base surface (every 7th vertex): the total
 // height a panel carries, to compare superposed panels with the plain one (eq. 18).

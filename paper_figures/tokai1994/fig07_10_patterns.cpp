@@ -24,7 +24,21 @@ struct Panel {
     std::string label;
 };
 
-Status panels_figure(FigureContext& ctx, const std::vector<Panel>& panels, const char* varied) {
+// Total length of the scales' outlines (each interior edge counted from both sides, the
+// border once): how much the perturbation lengthens the edges.
+double total_edge_length(const ScalePattern& pattern) {
+    double sum = 0;
+    for (int i = 0; i < pattern.polygon_count(); ++i) {
+        int n = 0;
+        const Vec2* v = pattern.polygon(i, &n);
+        for (int k = 0; k < n; ++k) sum += double(length(v[(k + 1) % n] - v[k]));
+    }
+    return sum;
+}
+
+Status panels_figure(FigureContext& ctx, const std::vector<Panel>& panels, const char* varied,
+                     std::vector<double>* lengths = nullptr) {
+    double first_length = 1.0;
     record_scale_params(ctx, ScaleParams{});
     const int side = ctx.quick() ? 128 : 256, gap = side / 12, caption = 24;
     const int width = int(panels.size()) * side + (int(panels.size()) + 1) * gap;
@@ -35,12 +49,16 @@ Status panels_figure(FigureContext& ctx, const std::vector<Panel>& panels, const
         ScaleDivision steps;
         SHITSUKAN_TRY(generate_scale_pattern(panels[i].prm, patterns[i], &steps));
         const PerturbationReport& r = steps.perturbation;
-        note += fmt(" %s: %d scales, RMS edge offset %.5f of %.5f requested (%.0f %%; %d of %d "
-                    "edges scaled down), largest offset %.4f.",
-                    panels[i].label.c_str(), patterns[i].polygon_count(), r.realised_rms,
-                    r.requested_rms, r.requested_rms > 0 ? 100.0 * r.realised_rms / r.requested_rms
-                                                         : 100.0,
-                    r.shrunk, r.edges, r.max_offset);
+        const double length = total_edge_length(patterns[i]);
+        if (i == 0) first_length = length;
+        note += fmt(
+            " %s: %d scales, RMS edge offset %.5f of %.5f requested (%.0f %%; %d of %d "
+            "edges scaled down), largest offset %.4f; edges %.3f long (%.1f %% longer "
+            "than the first panel's).",
+            panels[i].label.c_str(), patterns[i].polygon_count(), r.realised_rms, r.requested_rms,
+            r.requested_rms > 0 ? 100.0 * r.realised_rms / r.requested_rms : 100.0, r.shrunk,
+            r.edges, r.max_offset, length, 100.0 * (length / first_length - 1.0));
+        if (lengths) lengths->push_back(length);
     }
     ctx.note(note);
     return save_png_and_svg(ctx, width, height, [&](Canvas& c) {
@@ -141,10 +159,47 @@ SHITSUKAN_FIGURE(tokai_fig10, "tokai1994", "fig10", "Effect of the perturbation 
         p.label = fmt("p = %g", double(pv));
         panels.push_back(p);
     }
-    ctx.chosen("p values", "0, 0.0075, 0.015, 0.03", "the paper's values are not printed");
+    ctx.chosen("p values", "0, 0.0075, 0.015, 0.03",
+               "the paper prints only fig. 7's p = 0.015; 0.03 already reaches 97 % of the "
+               "roughness the tiling allows (the ceiling measured in the notes), so a larger p "
+               "would draw the same picture");
     ctx.note(
         "Each curve is made with the requested p; only the curves that would leave their fan "
         "triangles or break a scale's star shape are scaled down (edge_perturbation.hpp), so "
         "the panels grow rougher from left to right: compare the realised RMS offsets.");
-    return panels_figure(ctx, panels, "p (d = 1.0 D, a = 0.25)");
+    std::vector<double> lengths;
+    SHITSUKAN_TRY(panels_figure(ctx, panels, "p (d = 1.0 D, a = 0.25)", &lengths));
+    // Why the largest p is not realised in full: the ceiling. With 4x the largest p nearly every
+    // curve is scaled down to the most its fan triangles and the star shape (which the relief's
+    // rays from the centroid need, eq. 4) allow; the realised RMS and the edge length stop there.
+    ScalePattern ceiling;
+    ScaleParams top = panels.back().prm;
+    top.perturbation.p = 4.0f * panels.back().prm.perturbation.p;
+    ScaleDivision steps;
+    SHITSUKAN_TRY(generate_scale_pattern(top, ceiling, &steps));
+    ScaleDivision last_steps;
+    ScalePattern last;
+    SHITSUKAN_TRY(generate_scale_pattern(panels.back().prm, last, &last_steps));
+    const double ceiling_rms = steps.perturbation.realised_rms;
+    const double ceiling_length = total_edge_length(ceiling);
+    ctx.note(
+        fmt("The ceiling (measured with p = %g, 4x the largest panel's): RMS offset %.5f, "
+            "edges %.1f %% longer than at p = 0, with %d of %d edges scaled down. The "
+            "largest panel realises %.0f %% of that RMS (%.0f %% of its own request): a "
+            "larger p cannot make the pattern rougher without scales overlapping or "
+            "losing the star shape from their centroid; with D = %.2f the offsets stop at "
+            "about %.0f %% of D.",
+            double(top.perturbation.p), ceiling_rms,
+            100.0 * (ceiling_length / lengths.front() - 1.0), steps.perturbation.shrunk,
+            steps.perturbation.edges, 100.0 * last_steps.perturbation.realised_rms / ceiling_rms,
+            100.0 * last_steps.perturbation.realised_rms / last_steps.perturbation.requested_rms,
+            double(top.D), 100.0 * ceiling_rms / double(top.D)));
+    // The property the figure is for: each step of p lengthens the edges (rougher outlines).
+    for (std::size_t i = 1; i < lengths.size(); ++i)
+        if (!(lengths[i] > lengths[i - 1] * 1.01))
+            return Status::error(StatusCode::not_supported,
+                                 "fig10: panel %d is not rougher than panel %d (edges %.3f vs "
+                                 "%.3f)",
+                                 int(i) + 1, int(i), lengths[i], lengths[i - 1]);
+    return Status::success();
 }

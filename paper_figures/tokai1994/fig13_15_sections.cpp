@@ -8,6 +8,7 @@
 #include "shitsukan/image/canvas.hpp"
 #include "shitsukan/leather/maps.hpp"
 #include "shitsukan/leather/relief.hpp"
+#include "shitsukan/leather/scale_labels.hpp"
 #include "tokai1994/fig11_19_common.hpp"
 
 using namespace shitsukan;
@@ -16,7 +17,7 @@ using namespace shitsukan::figures;
 namespace {
 
 // The key light of figs. 13-15 (chosen, one value for the three figures).
-constexpr float kSectionKeyHeight = 0.32f;
+constexpr float kSectionKeyHeight = 1.0f;
 
 const char* table1_text(Table1Section which) {
     switch (which) {
@@ -70,6 +71,54 @@ Status section_plot(FigureContext& ctx, Table1Section which) {
     return ctx.save_png(img.view());
 }
 
+// The shading profile across the scales, measured on the shaded image: over the pixels of
+// each scale's inner part (relative distance rho in [0.3, 0.85] from the centroid: the floor
+// and the rim's inner wall, or the shoulder, not the groove), the correlation between the
+// luma and the signed position s = (x - m)·l / |p - m| towards the key light l (from the upper
+// left). A raised (convex) scale is lit on the side towards the light (> 0); a sunken one
+// (concave, a floor inside a rim) on the far side, the rim's inner wall facing the light (< 0).
+struct LightSide {
+    double correlation = 0;     // luma against s
+    double near_minus_far = 0;  // mean luma (0..255) where s > 0.3 minus where s < -0.3
+};
+LightSide light_side_profile(const ScalePattern& pattern, const BezierChain& section,
+                             RgbImage& img, Vec2 lo, Vec2 hi, const std::vector<int>& full,
+                             int lw, int lh) {
+    const int w = img.width(), h = img.height();
+    const Vec2 size = hi - lo;
+    LightSide out;
+    const Vec2 light = normalize(Vec2{-1.0f, 1.0f});
+    double sl = 0, ss = 0, sll = 0, sss = 0, sls = 0, n = 0, near = 0, nn = 0, far = 0, nf = 0;
+    for (int j = 0; j < h; j += 2)  // every other pixel: the statistic, at half the cost
+        for (int i = 0; i < w; i += 2) {
+            const Vec2 x{lo.x + (float(i) + 0.5f) / float(w) * size.x,
+                         hi.y - (float(j) + 0.5f) / float(h) * size.y};
+            const int li = int(x.x / pattern.width * float(lw));
+            const int lj = int(x.y / pattern.height * float(lh));
+            if (li < 0 || lj < 0 || li >= lw || lj >= lh) continue;
+            const int id = full[std::size_t(lj) * std::size_t(lw) + std::size_t(li)];
+            if (id < 0) continue;
+            int count = 0;
+            const Vec2* poly = pattern.polygon(id, &count);
+            const Vec2 m = pattern.centroids[std::size_t(id)];
+            ReliefSample r;
+            scale_relief(poly, count, m, x, section, ReliefOptions{}, &r);
+            if (r.rho < 0.3f || r.rho > 0.85f) continue;
+            const Rgb8 c = img.view().at(i, j);
+            const double l = 0.299 * c.r + 0.587 * c.g + 0.114 * c.b;
+            const double sp = double(dot(x - m, light)) / double(length(r.edge_point - m));
+            sl += l, ss += sp, sll += l * l, sss += sp * sp, sls += l * sp, n += 1;
+            if (sp > 0.3) near += l, nn += 1;
+            if (sp < -0.3) far += l, nf += 1;
+        }
+    if (n < 2 || nn < 1 || nf < 1) return out;
+    const double cov = sls / n - (sl / n) * (ss / n);
+    const double vl = sll / n - (sl / n) * (sl / n), vs = sss / n - (ss / n) * (ss / n);
+    out.correlation = vl > 0 && vs > 0 ? cov / std::sqrt(vl * vs) : 0.0;
+    out.near_minus_far = near / nn - far / nf;
+    return out;
+}
+
 Status section_texture(FigureContext& ctx, Table1Section which, bool close_up) {
     record_section(ctx, which);
     tokai_relief::record_shading(ctx);
@@ -79,8 +128,12 @@ Status section_texture(FigureContext& ctx, Table1Section which, bool close_up) {
     // The close-up shows the middle third of the pattern (the centre line) at 3x.
     const int zoom = close_up ? 3 : 1;
     LeatherMaps maps;
-    SHITSUKAN_TRY(tokai_relief::leather_maps(pattern, out * zoom, out * zoom, table1_section(which),
-                                             ReliefOptions{}, &maps));
+    // The label image is drawn once: for the maps and for the measure of the shading below.
+    const int mw = out * zoom;
+    std::vector<int> labels(std::size_t(mw) * std::size_t(mw));
+    SHITSUKAN_TRY(rasterize_scale_labels(pattern, mw, mw, labels.data()));
+    SHITSUKAN_TRY(make_leather_maps(pattern, labels.data(), mw, mw, table1_section(which),
+                                    ReliefOptions{}, maps));
     ctx.chosen("map resolution", fmt("%d x %d", out * zoom, out * zoom),
                close_up ? "3x the texture, so the close-up has one map texel per pixel"
                         : "one texel per output pixel");
@@ -95,12 +148,18 @@ Status section_texture(FigureContext& ctx, Table1Section which, bool close_up) {
                        double(hi.y)),
                    "the centre line of the belly, 3x");
     }
-    // Figs. 13-15 are lit alike (the text says nothing of different lights): one key light
-    // low enough for the shallow concave section of fig. 14 (its floor rises 0.03 -> 0.05
-    // over r = 0.8) to show, the same for the convex and two-segment sections.
+    // Figs. 13-15 are lit alike (the text says nothing of different lights). What tells
+    // fig. 14's sunken scales from fig. 13's raised ones is the shading across a scale: the
+    // convex shoulder is lit on the light's side, the concave rim's inner wall on the far side
+    // (fig. 14's floor rises only 0.03 -> 0.05 over r = 0.8; its rim is the cue). A grazing key
+    // light (0.32 spans, about 12 degrees) lit every steep outer wall into the same thin bright
+    // rim on both and left the floors dark: the inner contrast was about +15 (convex) and -14
+    // (concave) luma levels. At about 35 degrees it is about +20 and -16, the floors take light
+    // and the convex scales read as pillows, the concave ones as trays (measured in the notes).
     ctx.chosen("key light height", fmt("%.2f window spans", double(kSectionKeyHeight)),
-               "the same for figs. 13-15 (about 12 degrees above the window's centre): low "
-               "enough for fig. 14's shallow concave floor");
+               "the same for figs. 13-15 (about 35 degrees above the window's centre): the "
+               "shading across a scale, which tells sunken from raised, is strongest there of "
+               "0.32, 0.6 and 1.0 (measured, notes)");
     tokai_relief::shade_flat_texture(maps, lo, hi, img.view(), tokai_relief::leather_material(),
                                      kSectionKeyHeight);
     // Measured: the relief's contrast under the common light (RMS of the luma, 0..255).
@@ -119,6 +178,21 @@ Status section_texture(FigureContext& ctx, Table1Section which, bool close_up) {
             "(0..255) under the light shared by figs. 13-15.",
             pattern.polygon_count(), double(maps.max_height), mean,
             std::sqrt(std::fmax(0.0, sum2 / n - mean * mean))));
+    const LightSide side = light_side_profile(pattern, table1_section(which), img, lo, hi, labels, mw, mw);
+    ctx.note(
+        fmt("Shading profile across the scales (measured over each scale's inner part, rho "
+            "0.3-0.85): correlation of the luma with the position towards the key light "
+            "%+.2f, mean luma on the light's side minus the far side %+.1f (0..255); > 0: "
+            "lit on the light's side, raised; < 0: lit on the far side, sunken.",
+            side.correlation, side.near_minus_far));
+    // The property the figures exist for (§4, figs. 13-14): raised against sunken scales.
+    if ((which == Table1Section::convex && side.correlation < 0.3) ||
+        (which == Table1Section::concave && side.correlation > -0.3))
+        return Status::error(StatusCode::not_supported,
+                             "%s: the shading across the scales (correlation %+.2f) does not "
+                             "read as %s",
+                             table1_section_name(which), side.correlation,
+                             which == Table1Section::convex ? "raised" : "sunken");
     return ctx.save_png(img.view());
 }
 
