@@ -3,6 +3,8 @@
 #   make figures   install missing packages, build, render every paper figure
 #   make test      install missing packages, build and run the tests
 #   make all | test-sanitize | examples | bench | check-small | install PREFIX=... | deps | clean
+#   make measurements  runs the bench, keeps its output (docs/bench_output.txt) and generates
+#                  docs/MEASUREMENTS.md from it (tools/bench_measurements.py)
 #   make cli       the `shitsukan` command-line tool (build/shitsukan; cli/); make test-cli runs it
 #   make check-api        headers compile alone, umbrella header complete, only shitsukan
 #                         symbols exported, a program with its own stb links, PNGs without
@@ -90,7 +92,7 @@ LIBRARY    := $(BUILD)/libshitsukan.a
 .PHONY: all test test-sanitize figures examples bench check-small check-api test-consumers \
         check-references \
         install deps bench-deps consumer-deps mcu-deps clean fuzz fuzz-deps figures-determinism \
-        cli test-cli test-mcu bench-mcu footprint-mcu check-manuals check-lengths
+        cli test-cli test-mcu bench-mcu footprint-mcu check-manuals check-lengths measurements
 
 # The top-level targets run one at a time (each builds in parallel inside its own sub-make), so
 # `make -j test figures` cannot build the library twice at once.
@@ -250,6 +252,21 @@ examples: deps
 bench: bench-deps
 	@$(SUBMAKE) $(BUILD)/bench
 	$(BUILD)/bench $(BENCH_ARGS)
+
+# The measured numbers of docs/MEASUREMENTS.md (which README links): the bench's output is kept
+# as docs/bench_output.txt and the page generated from it by tools/bench_measurements.py, never
+# typed. MEASUREMENTS_FROM=<saved output> regenerates the page without running the bench.
+MEASUREMENTS_FROM ?=
+measurements: bench-deps
+	$(call ensure_packages,$(PY_REQUIRED))
+ifeq ($(MEASUREMENTS_FROM),)
+	@$(SUBMAKE) $(BUILD)/bench
+	$(BUILD)/bench $(BENCH_ARGS) > $(BUILD)/bench_output.txt
+	cp $(BUILD)/bench_output.txt docs/bench_output.txt
+	python3 tools/bench_measurements.py docs/bench_output.txt docs/MEASUREMENTS.md
+else
+	python3 tools/bench_measurements.py $(MEASUREMENTS_FROM) docs/MEASUREMENTS.md
+endif
 
 # Small-device core: compile with -fno-exceptions -fno-rtti, refuse any allocation, and refuse
 # headers that bring in std containers or strings (a microcontroller toolchain may lack them).

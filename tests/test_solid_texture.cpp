@@ -130,6 +130,48 @@ TEST_CASE("turbulence_row and turbulence_points: the same bits as single calls")
     CHECK(mismatches == 0);
 }
 
+TEST_CASE("turbulence_row: whole 512 x 512 slices, the same bits as single calls") {
+    const LatticeView v = test_lattice().view();
+    std::vector<float> row(512);
+    // Slices as the figures and the bench take them (1/8 cell per pixel), others with steps
+    // that do not divide a cell, starting before the lattice or ending beyond it, and slices
+    // on the faces z = 0 and z = 64 and just outside them.
+    struct Slice {
+        float x0, step, y0, y_step, z;
+    };
+    const Slice slices[] = {{0.5f / 8.0f, 1.0f / 8.0f, 0.5f / 8.0f, 1.0f / 8.0f, 32.3f},
+                            {0.0f, 1.0f / 8.0f, 0.0f, 1.0f / 8.0f, 0.0f},
+                            {-3.3f, 0.15f, -2.0f, 0.14f, 64.0f},
+                            {-0.7f, 1.0f / 3.0f, 1.0f, 0.1f, 17.5f},
+                            {60.1f, 0.01f, 63.9f, 0.001f, -0.0f},
+                            {-0.0f, 0.0625f, 10.0f, 0.1f, 64.5f}};
+    long mismatches = 0, samples = 0;
+    for (const Slice& s : slices)
+        for (int y = 0; y < 512; ++y) {
+            const float py = s.y0 + float(y) * s.y_step;
+            turbulence_row(v, Vec3{s.x0, py, s.z}, s.step, 512, row.data());
+            for (int x = 0; x < 512; ++x, ++samples)
+                mismatches += !same_bits(
+                    row[std::size_t(x)], turbulence(v, Vec3{s.x0 + float(x) * s.step, py, s.z}));
+        }
+    CHECK(samples == 6L * 512 * 512);
+    CHECK(mismatches == 0);
+}
+
+TEST_CASE("turbulence: the fast path gives the clamped path's bits, on the faces and beside") {
+    const LatticeView v = test_lattice().view();
+    const float edges[] = {-2.0f, -1.5f, -1.0f,  -0.75f, -0.0f,         0.0f,
+                           1e-30f, 0.5f, 63.99f, 64.0f,  64.0000076f,   65.0f,
+                           1e9f,   -1e9f, std::nanf(""), -std::nanf(""), INFINITY, -INFINITY};
+    int mismatches = 0;
+    for (float x : edges)
+        for (float y : edges)
+            for (float z : {-0.5f, -0.0f, 0.25f, 31.5f, 64.0f, std::nanf("")})
+                mismatches +=
+                    !same_bits(turbulence(v, Vec3{x, y, z}), detail::turbulence_clamped(v, Vec3{x, y, z}));
+    CHECK(mismatches == 0);
+}
+
 TEST_CASE("marble eq. (8): trapezoid with exponential skirt, sum of stripes, pixel shift") {
     const MarbleStripe s{10.0f, 4.0f, 0.5f};
     CHECK(trapezoid_skirt(10.0f, s) == 1.0f);

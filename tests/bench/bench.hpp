@@ -2,84 +2,95 @@
 //
 // Manual
 //   SHITSUKAN_BENCH(lattice_vs_stb) {
-//       double ours = bench::ns_per_op([&] { ...one op... });   // or per batch, then divide
-//       double peer = bench::ns_per_op([&] { ...the peer's op... });
-//       bench::report("D(P) Type I per sample", ours, "stb_perlin fbm-6", peer);
+//       bench::Pair t = bench::in_turns([&] { ...one op of ours... },
+//                                       [&] { ...the peer's op... });
+//       bench::report("D(P) Type I per sample", t, "stb_perlin fbm-6", 15.0);  // goal >= 15
 //   }
 // report() prints exactly one line:
-//   bench: <what>: shitsukan <x> ns, <peer> <y> ns, ratio <y/x>
-// (ratio > 1 means shitsukan is faster). Ours and the peer are timed in the same run on
-// the same inputs. bench::sink(v) keeps the optimiser from deleting work.
+//   bench: <what>: shitsukan <median> ns (best <b>, spread <s>%), <peer> <median> ns (best
+//   <b>, spread <s>%), ratio <peer median / ours median> (best to best <r>)[, goal ratio >=
+//   <g>: met | NOT met]
+// (ratio > 1 means shitsukan is faster; a goal is judged on the medians). Ours and the peer
+// are timed in turns on the same inputs: many short rounds, one of each alternately, in the
+// thread's CPU time, so a disturbance of the shared machine falls on both alike and the time
+// slices other processes take are not counted. spread = (upper quartile - lower quartile) /
+// median of the rounds. bench::sink(v) keeps the optimiser from deleting work.
 // `build/bench --only <substring>` runs the matching benchmarks; --quick shortens timing.
 #pragma once
 
-#include <chrono>
+#include <time.h>
+
+#include <algorithm>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "shitsukan/core/status.hpp"
 
 namespace bench {
 
-extern double g_min_seconds;  // time each measurement for at least this long (0.2 s)
+extern double g_min_seconds;  // the time budget of one pair is twice this (0.2 s; --quick 0.03)
 extern volatile double g_sink;
 
 template <class T>
 inline void sink(T v) { g_sink = g_sink + double(v); }
 
-// Nanoseconds per call of fn: calls fn in growing batches until a round lasts min_seconds/7,
-// runs seven rounds and keeps the fastest (the least disturbed by other processes: on a
-// shared machine the slow rounds measure the neighbours, not the code).
-template <class F>
-double ns_per_op(F&& fn) {
-    using clock = std::chrono::steady_clock;
-    double best = 1e300;
-    for (int rep = 0; rep < 7; ++rep) {
-        long n = 1;
-        for (;;) {
-            auto t0 = clock::now();
-            for (long i = 0; i < n; ++i) fn();
-            double s = std::chrono::duration<double>(clock::now() - t0).count();
-            if (s >= g_min_seconds / 7 || n > (1L << 40)) {
-                double per = s * 1e9 / double(n);
-                if (per < best) best = per;
-                break;
-            }
-            n *= 2;
-        }
-    }
-    return best;
+// CPU time of the calling thread (clock_gettime(CLOCK_THREAD_CPUTIME_ID)), in nanoseconds.
+inline double thread_cpu_ns() {
+    timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) * 1e9 + double(ts.tv_nsec);
 }
 
-// Two operations timed in turns, for ratios near 1: calibrated so that a round lasts about
-// 1 ms, then 7·20 rounds of each, alternating, each keeping its fastest round. A disturbance
-// on the shared machine lasting longer than a round falls on both sides alike, where
-// ns_per_op's long rounds, one side after the other, let it fall on one side only
-// (the D(P) single sample against the raw lookup measured 1.27x one way, 1.13x this way).
-template <class A, class B>
-void ns_per_op_interleaved(A&& a, B&& b, double* a_ns, double* b_ns) {
-    using clock = std::chrono::steady_clock;
-    auto round = [](auto& fn, long n) {
-        auto t0 = clock::now();
+// Nanoseconds per call over the rounds of one side.
+struct Timing {
+    double best = 0, median = 0, spread = 0;  // spread: interquartile range / median
+};
+struct Pair {
+    Timing ours, peer;
+};
+
+Timing summarize(std::vector<double> per_call_ns);
+
+namespace detail {
+// Calls per round so that a round lasts at least round_ns (the calibration also warms up).
+template <class F> long calls_per_round(F& fn, double round_ns) {
+    long n = 1;
+    for (;;) {
+        const double t0 = thread_cpu_ns();
         for (long i = 0; i < n; ++i) fn();
-        return std::chrono::duration<double>(clock::now() - t0).count();
-    };
-    const double round_seconds = g_min_seconds / 200;
-    long na = 1, nb = 1;
-    while (round(a, na) < round_seconds && na < (1L << 40)) na *= 2;
-    while (round(b, nb) < round_seconds && nb < (1L << 40)) nb *= 2;
-    double best_a = 1e300, best_b = 1e300;
-    for (int rep = 0; rep < 140; ++rep) {
-        const double sa = round(a, na) * 1e9 / double(na);
-        const double sb = round(b, nb) * 1e9 / double(nb);
-        if (sa < best_a) best_a = sa;
-        if (sb < best_b) best_b = sb;
+        if (thread_cpu_ns() - t0 >= round_ns || n > (1L << 40)) return n;
+        n *= 2;
     }
-    *a_ns = best_a;
-    *b_ns = best_b;
+}
+template <class F> double round_ns_per_call(F& fn, long n) {
+    const double t0 = thread_cpu_ns();
+    for (long i = 0; i < n; ++i) fn();
+    return (thread_cpu_ns() - t0) / double(n);
+}
+}  // namespace detail
+
+// ours and peer timed in turns: rounds of about g_min_seconds / 100 each (one call when a
+// call is longer), one round of each alternately, as many as fit in 2·g_min_seconds, at least
+// 5 and at most 101 of each.
+template <class A, class B> Pair in_turns(A&& ours, B&& peer) {
+    const double round_ns = g_min_seconds * 1e9 / 100;
+    const long na = detail::calls_per_round(ours, round_ns);
+    const long nb = detail::calls_per_round(peer, round_ns);
+    std::vector<double> ta, tb;
+    const double budget = 2 * g_min_seconds * 1e9, start = thread_cpu_ns();
+    while (ta.size() < 101 && (ta.size() < 5 || thread_cpu_ns() - start < budget)) {
+        ta.push_back(detail::round_ns_per_call(ours, na));
+        tb.push_back(detail::round_ns_per_call(peer, nb));
+    }
+    return Pair{summarize(ta), summarize(tb)};
 }
 
-void report(const std::string& what, double ours_ns, const std::string& peer, double peer_ns);
+// The pair's line; goal_ratio > 0 adds whether peer median / ours median reaches it.
+void report(const std::string& what, const Pair& t, const std::string& peer,
+            double goal_ratio = 0);
+// Both sides divided by the same count (per point, per sample, ...).
+Pair per(const Pair& t, double count);
 void info(const std::string& what, const std::string& text);  // "bench: <what>: <text>"
 
 // A failed set-up must not print a timing: it would measure nothing. Reports the failure

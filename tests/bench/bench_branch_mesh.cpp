@@ -88,23 +88,27 @@ SHITSUKAN_BENCH(branch_mesh_vs_cgal) {
         bench::info("branch mesh", std::string("set-up failed: ") + s.message());
         return;
     }
-    double march = bench::ns_per_op([&] {
-        TriangleMesh m;
-        Status s = marching_tetrahedra(&shape_f, nullptr, mt, m);
-        bench::sink(s.ok() ? m.triangle_count() : -1);
-    });
-    // The grid alone: the same nodes sampled in the same order.
+    // The whole march against the grid alone (the same nodes sampled in the same order), in
+    // turns; medians.
     const Vec3 c = ms.cell;
-    double sample = bench::ns_per_op([&] {
-        float acc = 0;
-        for (int k = 0; k <= ms.nz; ++k)
-            for (int j = 0; j <= ms.ny; ++j)
-                for (int i = 0; i <= ms.nx; ++i)
-                    acc += shape_f({mt.box_min.x + float(i) * c.x, mt.box_min.y + float(j) * c.y,
-                                    mt.box_min.z + float(k) * c.z},
-                                   nullptr);
-        bench::sink(acc);
-    });
+    const bench::Pair march_t = bench::in_turns(
+        [&] {
+            TriangleMesh m;
+            Status s = marching_tetrahedra(&shape_f, nullptr, mt, m);
+            bench::sink(s.ok() ? m.triangle_count() : -1);
+        },
+        [&] {
+            float acc = 0;
+            for (int k = 0; k <= ms.nz; ++k)
+                for (int j = 0; j <= ms.ny; ++j)
+                    for (int i = 0; i <= ms.nx; ++i)
+                        acc += shape_f({mt.box_min.x + float(i) * c.x,
+                                        mt.box_min.y + float(j) * c.y,
+                                        mt.box_min.z + float(k) * c.z},
+                                       nullptr);
+            bench::sink(acc);
+        });
+    const double march = march_t.ours.median, sample = march_t.peer.median;
     const long long nodes = (long long)(ms.nx + 1) * (ms.ny + 1) * (ms.nz + 1);
     bench::info(format("marching tetrahedra, branch shape h = %.3f cm", double(mt.spacing)),
                 std::to_string(nodes) + " nodes -> " + std::to_string(input.triangle_count()) +
@@ -117,23 +121,25 @@ SHITSUKAN_BENCH(branch_mesh_vs_cgal) {
     ro.surface = &shape_f;
     IsotropicRemeshStats rs;
     TriangleMesh out;
-    double ours = bench::ns_per_op([&] {
-        out = input;
-        Status s = isotropic_remesh(ro, out, &rs);
-        bench::sink(s.ok() ? out.triangle_count() : -1);
-    });
     CgalMesh cg;
-    double peer = bench::ns_per_op([&] {
-        to_cgal(input, &cg);
-        CGAL::Polygon_mesh_processing::isotropic_remeshing(
-            faces(cg), double(L0), cg,
-            CGAL::parameters::number_of_iterations(8).relax_constraints(true).projection_functor(
-                CgalProjection{&cg, L0}));
-        bench::sink(cg.number_of_faces());
-    });
+    const bench::Pair t = bench::in_turns(
+        [&] {
+            out = input;
+            Status s = isotropic_remesh(ro, out, &rs);
+            bench::sink(s.ok() ? out.triangle_count() : -1);
+        },
+        [&] {
+            to_cgal(input, &cg);
+            CGAL::Polygon_mesh_processing::isotropic_remeshing(
+                faces(cg), double(L0), cg,
+                CGAL::parameters::number_of_iterations(8)
+                    .relax_constraints(true)
+                    .projection_functor(CgalProjection{&cg, L0}));
+            bench::sink(cg.number_of_faces());
+        });
     bench::report("isotropic remesh of the branch (" + std::to_string(input.triangle_count()) +
                       " -> ~" + std::to_string(out.triangle_count()) + " triangles, 8 passes)",
-                  ours, "CGAL isotropic_remeshing", peer);
+                  t, "CGAL isotropic_remeshing");
     // CGAL's result measured with the same yardstick.
     TriangleMesh back;
     {
@@ -152,7 +158,7 @@ SHITSUKAN_BENCH(branch_mesh_vs_cgal) {
     }
     MeshQuality cq;
     Status cs = mesh_quality(back, cq);
-    const double tri = double(input.triangle_count());
+    const double tri = double(input.triangle_count()), ours = t.ours.median, peer = t.peer.median;
     bench::info("remesher triangles per second",
                 "shitsukan " + std::to_string(long(tri / (ours * 1e-9))) + ", CGAL " +
                     std::to_string(long(tri / (peer * 1e-9))) + " (input triangles / s); ours " +

@@ -23,14 +23,15 @@ SHITSUKAN_BENCH(ist_formula_vs_procedure) {
     std::vector<float> u(4096);
     for (float& x : u) x = rng.uniform();
     std::size_t i = 0, j = 0;
-    double formula = bench::ns_per_op([&] {
-        bench::sink(ist_forward(axis, u[i]));
-        i = (i + 1) & 4095u;
-    });
-    double procedure = bench::ns_per_op([&] {
-        bench::sink(ist_original_forward(original, double(u[j])));
-        j = (j + 1) & 4095u;
-    });
-    bench::report("IST fully-connected N=5 K=6 per coordinate (formula eq. 14)", formula,
-                  "step-by-step procedure §2.1", procedure);
+    const bench::Pair t = bench::in_turns(
+        [&] {
+            bench::sink(ist_forward(axis, u[i]));
+            i = (i + 1) & 4095u;
+        },
+        [&] {
+            bench::sink(ist_original_forward(original, double(u[j])));
+            j = (j + 1) & 4095u;
+        });
+    bench::report("IST fully-connected N=5 K=6 per coordinate (formula eq. 14)", t,
+                  "step-by-step procedure §2.1");
 }

@@ -58,18 +58,19 @@ struct BagShader {
 SHITSUKAN_BENCH(leather_tileable_pattern) {
     bool ok = true;
     ScalePattern plain, torus;
-    const double plain_ns = bench::ns_per_op([&] {
-        ok &= generate_scale_pattern(ScaleParams{}, plain).ok();
-        bench::sink(plain.polygon_count());
-    });
     TileParams tp;
-    const double tile_ns = bench::ns_per_op([&] {
-        ok &= generate_tileable_pattern(tp, torus).ok();
-        bench::sink(torus.polygon_count());
-    });
+    const bench::Pair t = bench::in_turns(
+        [&] {
+            ok &= generate_tileable_pattern(tp, torus).ok();
+            bench::sink(torus.polygon_count());
+        },
+        [&] {
+            ok &= generate_scale_pattern(ScaleParams{}, plain).ok();
+            bench::sink(plain.polygon_count());
+        });
     if (!bench::timed_calls_ok(ok, "tileable pattern")) return;
-    bench::report("tileable belly pattern (fig. 7 parameters, seamless along y)", tile_ns,
-                  "plain fig. 7 pattern", plain_ns);
+    bench::report("tileable belly pattern (fig. 7 parameters, seamless along y)", t,
+                  "plain fig. 7 pattern");
 }
 
 SHITSUKAN_BENCH(leather_maps) {
@@ -80,21 +81,23 @@ SHITSUKAN_BENCH(leather_maps) {
     LeatherMaps maps;
     const BezierChain section = table1_section(Table1Section::convex);
     bool ok = true;
-    double lookup = bench::ns_per_op([&] {
-        ok &= rasterize_scale_labels(pattern, size, size, labels.data()).ok();
-        bench::sink(labels[12345]);
-    });
-    double relief = bench::ns_per_op([&] {
-        ok &= make_leather_maps(pattern, labels.data(), size, size, section, ReliefOptions{}, maps)
-                  .ok();
-        bench::sink(maps.max_height);
-    });
+    if (!rasterize_scale_labels(pattern, size, size, labels.data()).ok()) ok = false;
+    const bench::Pair t = bench::in_turns(
+        [&] {
+            ok &= make_leather_maps(pattern, labels.data(), size, size, section, ReliefOptions{},
+                                    maps)
+                      .ok();
+            bench::sink(maps.max_height);
+        },
+        [&] {
+            ok &= rasterize_scale_labels(pattern, size, size, labels.data()).ok();
+            bench::sink(labels[12345]);
+        });
     if (!bench::timed_calls_ok(ok, "leather maps")) return;
-    const double pixels = double(size) * size;
     bench::report(
         "leather height + normal map 512x512 (fig. 7 pattern, fig. 13 section), per "
         "pixel",
-        relief / pixels, "polygon lookup alone (label image)", lookup / pixels);
+        bench::per(t, double(size) * size), "polygon lookup alone (label image)");
 
     // The fig. 18 frame.
     std::vector<std::int32_t> big(std::size_t(1536) * 1536);
@@ -141,9 +144,8 @@ SHITSUKAN_BENCH(leather_maps) {
         }
         bench::sink(color.at(256, 256).r);
     };
-    double bumped = bench::ns_per_op([&] { frame(true); });
-    double plain = bench::ns_per_op([&] { frame(false); });
+    const bench::Pair frames = bench::in_turns([&] { frame(true); }, [&] { frame(false); });
     if (!bench::timed_calls_ok(ok, "fig. 18 handbag frame")) return;
-    bench::report("fig. 18 handbag frame 512x512, bump-mapped Blinn 1977, per frame", bumped,
-                  "same frame without bump mapping", plain);
+    bench::report("fig. 18 handbag frame 512x512, bump-mapped Blinn 1977, per frame", frames,
+                  "same frame without bump mapping");
 }

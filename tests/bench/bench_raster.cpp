@@ -99,28 +99,18 @@ SHITSUKAN_BENCH(raster_frame_overhead) {
            },
            &rec, &stats);
 
-    // The machine is shared: measure the two back to back in each of five rounds and report
-    // the round with the median overhead, so a burst of other work that lands on one side
-    // of one round does not decide the result.
+    // Timed in turns (the machine is shared); the overhead is that of the medians.
     std::vector<Rgb8> out(rec.fragments.size());
-    struct Round {
-        double ours, baseline;
-    } rounds[5];
-    for (Round& r : rounds) {
-        r.ours = bench::ns_per_op([&] { render(noise_shader, &data, nullptr); });
-        r.baseline = bench::ns_per_op([&] {
-            for (std::size_t i = 0; i < rec.fragments.size(); ++i)
-                out[i] = noise_shader(rec.fragments[i], &data);
-            bench::sink(out[out.size() / 2].r);
-        });
-    }
-    std::sort(rounds, rounds + 5, [](const Round& a, const Round& b) {
-        return a.ours / a.baseline < b.ours / b.baseline;
-    });
+    const bench::Pair t = bench::in_turns([&] { render(noise_shader, &data, nullptr); },
+                                          [&] {
+                                              for (std::size_t i = 0; i < rec.fragments.size(); ++i)
+                                                  out[i] = noise_shader(rec.fragments[i], &data);
+                                              bench::sink(out[out.size() / 2].r);
+                                          });
     if (!bench::timed_calls_ok(ok, "raster overhead")) return;
-    double ours = rounds[2].ours, baseline = rounds[2].baseline;
-    bench::report("raster 512x512 frame, value-noise shader (sphere + torus)", ours,
-                  "same shader on the same fragments, no rasterizer", baseline);
+    const double ours = t.ours.median, baseline = t.peer.median;
+    bench::report("raster 512x512 frame, value-noise shader (sphere + torus)", t,
+                  "same shader on the same fragments, no rasterizer");
     char text[200];
     std::snprintf(text, sizeof text,
                   "overhead %.1f %% of the shader time (goal <= 15 %%); %ld fragments shaded, "

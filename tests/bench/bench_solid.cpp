@@ -39,14 +39,16 @@ std::vector<Vec3> slice_points() {
 
 float stb_fbm(Vec3 p) { return stb_perlin_fbm_noise3(p.x / 8, p.y / 8, p.z / 8, 2.0f, 0.5f, 6); }
 
-// Nanoseconds per point of sample(p), summed over every point (the sum keeps the work alive).
-template <class F> double ns_per_point(const std::vector<Vec3>& pts, F sample) {
-    return bench::ns_per_op([&] {
-               double s = 0;
-               for (const Vec3& p : pts) s += double(sample(p));
-               bench::sink(s);
-           }) /
-           double(pts.size());
+// ours(p) and peer(p) summed over every point (the sum keeps the work alive), timed in turns,
+// per point.
+template <class F, class G>
+bench::Pair points_in_turns(const std::vector<Vec3>& pts, F ours, G peer) {
+    auto sum = [&pts](auto& sample) {
+        double s = 0;
+        for (const Vec3& p : pts) s += double(sample(p));
+        bench::sink(s);
+    };
+    return bench::per(bench::in_turns([&] { sum(ours); }, [&] { sum(peer); }), double(pts.size()));
 }
 
 using bench::set_up;
@@ -64,13 +66,13 @@ SHITSUKAN_BENCH(solid_type1_sample) {
     const std::vector<Vec3> pts = scattered_points(4096);
     noise::module::Perlin perlin;
     perlin.SetOctaveCount(6);
-    double ours = ns_per_point(pts, [&](Vec3 p) { return turbulence(v, p); });
-    double stb = ns_per_point(pts, stb_fbm);
-    double libnoise =
-        ns_per_point(pts, [&](Vec3 p) { return perlin.GetValue(p.x / 8, p.y / 8, p.z / 8); });
-    bench::report("D(P) Type I per sample, scattered points (goal ratio >= 15)", ours,
-                  "stb_perlin fbm-6", stb);
-    bench::report("D(P) Type I per sample, scattered points", ours, "libnoise Perlin-6", libnoise);
+    auto ours = [&](Vec3 p) { return turbulence(v, p); };
+    bench::report("D(P) Type I per sample, scattered points", points_in_turns(pts, ours, stb_fbm),
+                  "stb_perlin fbm-6", 15.0);
+    bench::report("D(P) Type I per sample, scattered points",
+                  points_in_turns(pts, ours,
+                                  [&](Vec3 p) { return perlin.GetValue(p.x / 8, p.y / 8, p.z / 8); }),
+                  "libnoise Perlin-6");
 }
 
 namespace {
@@ -89,13 +91,15 @@ inline float raw_trilinear(const LatticeView& v, Vec3 p) {
 
 // The two loops timed against each other, each compiled on its own (not inlined into the
 // bench, whose register pressure would then weigh on one side), as a renderer's loop is.
-__attribute__((noinline)) double sum_of_turbulence(const LatticeView& v,
+// The view is passed by value, as a renderer holds it (a copy of three words): with a
+// reference the compiler must reload it after any call it cannot see into.
+__attribute__((noinline)) double sum_of_turbulence(const LatticeView v,
                                                    const std::vector<Vec3>& pts) {
     double s = 0;
     for (const Vec3& p : pts) s += double(turbulence(v, p));
     return s;
 }
-__attribute__((noinline)) double sum_of_raw_trilinear(const LatticeView& v,
+__attribute__((noinline)) double sum_of_raw_trilinear(const LatticeView v,
                                                       const std::vector<Vec3>& pts) {
     double s = 0;
     for (const Vec3& p : pts) s += double(raw_trilinear(v, p));
@@ -132,31 +136,21 @@ SHITSUKAN_BENCH(solid_type1_floor_and_row) {
     // Single samples at scattered points against the raw lookup (goal: within 1.15x, i.e.
     // ratio >= 0.87).
     const std::vector<Vec3> pts = scattered_points(4096);
-    // Timed in turns (bench::ns_per_op_interleaved): the ratio is near 1 and the machine shared.
-    double single = 0, floor = 0;
-    bench::ns_per_op_interleaved([&] { bench::sink(sum_of_turbulence(v, pts)); },
-                                 [&] { bench::sink(sum_of_raw_trilinear(v, pts)); }, &single,
-                                 &floor);
-    single /= double(pts.size());
-    floor /= double(pts.size());
-    bench::report("D(P) Type I single sample vs the raw trilinear floor (goal ratio >= 0.87)",
-                  single, "raw lookup", floor);
+    const bench::Pair single = bench::per(
+        bench::in_turns([&] { bench::sink(sum_of_turbulence(v, pts)); },
+                        [&] { bench::sink(sum_of_raw_trilinear(v, pts)); }),
+        double(pts.size()));
+    bench::report("D(P) Type I single sample vs the raw trilinear lookup (goal <= 1.15x)", single,
+                  "raw lookup", 1.0 / 1.15);
     // A 512 x 512 slice row by row (pixel (x, y) -> ((x + 0.5)/8, (y + 0.5)/8, 32.3)): the
-    // row API against single calls on the same points (goal ratio >= 4), timed in turns.
+    // row API against single calls on the same points (goal ratio >= 4).
     std::vector<float> row(512);
-    double batched = 0, singles = 0;
-    bench::ns_per_op_interleaved([&] { bench::sink(slice_by_rows(v, row.data())); },
-                                 [&] { bench::sink(slice_by_single_calls(v, row.data())); },
-                                 &batched, &singles);
-    batched /= 512.0 * 512.0;
-    singles /= 512.0 * 512.0;
-    bench::report("D(P) Type I per sample, 512x512 slice: turbulence_row (goal ratio >= 4)",
-                  batched, "single calls", singles);
-    char line[160];
-    std::snprintf(line, sizeof line,
-                  "single %.2f ns, floor %.2f ns, single/floor %.2f; row %.2f ns", single, floor,
-                  single / floor, batched);
-    bench::info("D(P) Type I ns/sample", line);
+    const bench::Pair rows = bench::per(
+        bench::in_turns([&] { bench::sink(slice_by_rows(v, row.data())); },
+                        [&] { bench::sink(slice_by_single_calls(v, row.data())); }),
+        512.0 * 512.0);
+    bench::report("D(P) Type I per sample, 512x512 slice: turbulence_row", rows, "single calls",
+                  4.0);
 }
 
 SHITSUKAN_BENCH(solid_type3_slice) {
@@ -172,20 +166,23 @@ SHITSUKAN_BENCH(solid_type3_slice) {
     noise::module::Perlin perlin;
     perlin.SetOctaveCount(6);
     const LatticeView v = bench_lattice().view();
-    double ours = ns_per_point(pts, [&](Vec3 p) { return t3.turbulence(p); });
-    double stb = ns_per_point(pts, stb_fbm);
-    double libnoise =
-        ns_per_point(pts, [&](Vec3 p) { return perlin.GetValue(p.x / 8, p.y / 8, p.z / 8); });
-    double type1 = ns_per_point(pts, [&](Vec3 p) { return turbulence(v, p); });
+    auto type3 = [&](Vec3 p) { return t3.turbulence(p); };
+    bench::report("D(P) Type I per sample, 512x512 slice",
+                  points_in_turns(pts, [&](Vec3 p) { return turbulence(v, p); }, stb_fbm),
+                  "stb_perlin fbm-6");
+    bench::report("D(P) Type III per sample, 512x512 slice", points_in_turns(pts, type3, stb_fbm),
+                  "stb_perlin fbm-6", 1.0);
+    bench::report(
+        "D(P) Type III per sample, 512x512 slice",
+        points_in_turns(pts, type3,
+                        [&](Vec3 p) { return perlin.GetValue(p.x / 8, p.y / 8, p.z / 8); }),
+        "libnoise Perlin-6");
     // The same slice, 1/8 cell per pixel, deep inside the 1,048,577^3 lattice.
     const Vec3 deep_offset{300000.0f, 200000.0f, 400000.0f};
-    double ours20 = ns_per_point(pts, [&](Vec3 p) { return t20.turbulence(p + deep_offset); });
-    bench::report("D(P) Type I per sample, 512x512 slice", type1, "stb_perlin fbm-6", stb);
-    bench::report("D(P) Type III per sample, 512x512 slice (goal ratio >= 1)", ours,
-                  "stb_perlin fbm-6", stb);
-    bench::report("D(P) Type III per sample, 512x512 slice", ours, "libnoise Perlin-6", libnoise);
-    bench::report("D(P) Type III R = 20 per sample, 512x512 slice", ours20, "stb_perlin fbm-6",
-                  stb);
+    bench::report("D(P) Type III R = 20 per sample, 512x512 slice",
+                  points_in_turns(pts, [&](Vec3 p) { return t20.turbulence(p + deep_offset); },
+                                  stb_fbm),
+                  "stb_perlin fbm-6");
 }
 
 SHITSUKAN_BENCH(solid_lattice_build) {
@@ -195,18 +192,18 @@ SHITSUKAN_BENCH(solid_lattice_build) {
     if (!set_up(build_fractal_lattice(params, values.data(), values.size() * sizeof(float), v),
                 "65^3 lattice build"))
         return;
-    double build = bench::ns_per_op([&] {
-        (void)build_fractal_lattice(params, values.data(), values.size() * sizeof(float), v);
-        bench::sink(values[1000]);
-    });
-    double draws = bench::ns_per_op([&] {
-        Pcg32 rng(params.seed, 0u);
-        float s = 0;
-        for (int i = 0; i < 65 * 65 * 65 - 8; ++i) s += rng.gaussian();
-        bench::sink(s);
-    });
-    bench::report("65^3 lattice build, whole (goal ratio >= 0.5)", build, "274617 Pcg32 Gaussians",
-                  draws);
+    const bench::Pair t = bench::in_turns(
+        [&] {
+            (void)build_fractal_lattice(params, values.data(), values.size() * sizeof(float), v);
+            bench::sink(values[1000]);
+        },
+        [&] {
+            Pcg32 rng(params.seed, 0u);
+            float s = 0;
+            for (int i = 0; i < 65 * 65 * 65 - 8; ++i) s += rng.gaussian();
+            bench::sink(s);
+        });
+    bench::report("65^3 lattice build, whole", t, "274617 Pcg32 Gaussians", 0.6);
 }
 
 SHITSUKAN_BENCH(solid_type3_memory) {

@@ -21,7 +21,6 @@
 
 #include "bench.hpp"
 #include "bench_voronoi_sites.hpp"
-#include "bench_voronoi_timing.hpp"
 #include "shitsukan/geom/delaunay.hpp"
 #include "shitsukan/geom/voronoi.hpp"
 
@@ -120,33 +119,34 @@ SHITSUKAN_BENCH(voronoi_vs_cgal) {
             for (const Vec2d& p : sites) pts.emplace_back(p.x, p.y);
             DelaunayTriangulation dt;
             bool ok = true;
-            const double ours_dt = voronoi_time_call(n, [&] {
-                Status s = build_delaunay(sites.data(), count, dt);
-                ok = ok && s.ok();
-                bench::sink(s.ok() ? dt.triangles.size() : 0);
-            });
-            const double cgal_dt = voronoi_time_call(n, [&] {
-                Triangulation t;
-                t.insert(pts.begin(), pts.end());
-                bench::sink(t.number_of_faces());
-            });
+            const bench::Pair dt_t = bench::in_turns(
+                [&] {
+                    Status s = build_delaunay(sites.data(), count, dt);
+                    ok = ok && s.ok();
+                    bench::sink(s.ok() ? dt.triangles.size() : 0);
+                },
+                [&] {
+                    Triangulation t;
+                    t.insert(pts.begin(), pts.end());
+                    bench::sink(t.number_of_faces());
+                });
             if (!bench::timed_calls_ok(ok, what.c_str())) continue;
-            bench::report("Delaunay, " + what, ours_dt, "CGAL Delaunay_triangulation_2 (Epick)",
-                          cgal_dt);
+            bench::report("Delaunay, " + what, dt_t, "CGAL Delaunay_triangulation_2 (Epick)");
             VoronoiCells cells;
-            const double ours_vc = voronoi_time_call(n, [&] {
-                Status s = voronoi_cells(sites.data(), count, square, 4, cells);
-                ok = ok && s.ok();
-                bench::sink(s.ok() ? cells.vertices.size() : 0);
-            });
             CgalCells cgal_cells;
-            const double cgal_vc = voronoi_time_call(n, [&] {
-                cgal_clipped_cells(pts, &cgal_cells, nullptr);
-                bench::sink(cgal_cells.out.size());
-            });
+            const bench::Pair vc_t = bench::in_turns(
+                [&] {
+                    Status s = voronoi_cells(sites.data(), count, square, 4, cells);
+                    ok = ok && s.ok();
+                    bench::sink(s.ok() ? cells.vertices.size() : 0);
+                },
+                [&] {
+                    cgal_clipped_cells(pts, &cgal_cells, nullptr);
+                    bench::sink(cgal_cells.out.size());
+                });
             if (!bench::timed_calls_ok(ok, what.c_str())) continue;
-            bench::report("Voronoi cells clipped to the square, " + what, ours_vc,
-                          "CGAL Delaunay_triangulation_2 + circumcenters + clip", cgal_vc);
+            bench::report("Voronoi cells clipped to the square, " + what, vc_t,
+                          "CGAL Delaunay_triangulation_2 + circumcenters + clip");
             std::size_t cgal_bytes = 0;
             cgal_clipped_cells(pts, &cgal_cells, &cgal_bytes);
             char text[200];

@@ -2,6 +2,7 @@
 // rendering fig. 21's superposed IST-B-spline terrain (eq. 20, 800 x 800) against the plain
 // B-spline surface at the same tessellation, measured in the same run; then the stages of the
 // superposed panel beside the paper's Origin2000 minutes (Table 2 (f)).
+#include <chrono>
 #include <cmath>
 
 #include "bench.hpp"
@@ -98,13 +99,13 @@ SHITSUKAN_BENCH(wrinkly_terrain) {
         }
         bench::sink(color.view().at(size / 2, size / 2).g);
     };
-    const double ours = bench::ns_per_op([&] { run(WrSurfaceForm::superposed, nullptr); });
-    const double peer = bench::ns_per_op([&] { run(WrSurfaceForm::plain, nullptr); });
+    const bench::Pair t = bench::in_turns([&] { run(WrSurfaceForm::superposed, nullptr); },
+                                          [&] { run(WrSurfaceForm::plain, nullptr); });
     if (!bench::timed_calls_ok(ok, "WR terrain")) return;
     bench::report("fig21 superposed terrain, tessellate + render 800x800 (" +
                       std::to_string(triangles) + " triangles, K = " + std::to_string(ho.levels) +
                       ")",
-                  ours, "plain B-spline, same tessellation", peer);
+                  t, "plain B-spline, same tessellation");
     double st[3];
     run(WrSurfaceForm::superposed, st);
     char text[200];

@@ -43,11 +43,15 @@ inline std::uint64_t hash_add(std::uint64_t h, std::uint64_t word) {
 
 // The coordinates' hash from a precomputed start = hash_start(seed, stream): callers drawing
 // millions of numbers with one seed (a lattice) compute the start once.
+// The words are added x, then y, then z: hash_coords_after_x(hash_add(start, x), y, z) is the
+// same hash, for callers that reuse one x's partial hash across many (y, z).
+inline std::uint64_t hash_coords_after_x(std::uint64_t hx, std::int32_t y, std::int32_t z) {
+    return hash_add(hash_add(hx, std::uint32_t(y)), std::uint32_t(z));
+}
+
 inline std::uint64_t hash_coords_from(std::uint64_t start, std::int32_t x, std::int32_t y = 0,
                                       std::int32_t z = 0) {
-    std::uint64_t h = hash_add(start, std::uint32_t(x));
-    h = hash_add(h, std::uint32_t(y));
-    return hash_add(h, std::uint32_t(z));
+    return hash_coords_after_x(hash_add(start, std::uint32_t(x)), y, z);
 }
 
 inline std::uint64_t hash_coords(std::uint32_t seed, std::uint32_t stream, std::int32_t x,

@@ -15,51 +15,61 @@ struct LevelStep {
     float* v;
     std::int64_t side;
     std::int64_t stride[3];  // index distance of one lattice step along x, y, z
-    int R;
     int h;                   // half spacing of this level: parents are h away
     float amplitude;         // L_r^(n), eq. (2)
-    const FractalParams* params;
-    Pcg32* rng;              // only for NoiseSource::sequential
-
-    std::int64_t index(int x, int y, int z) const { return (z * side + y) * side + x; }
+    NoiseSource noise;
+    Pcg32* rng;                // only for NoiseSource::sequential
     std::uint64_t hash_start;  // of (seed, kLatticeStream), computed once
-    float g(int x, int y, int z) const {
-        float gauss = params->noise == NoiseSource::hash ? node_gaussian_from(hash_start, x, y, z)
-                                                         : rng->gaussian();
-        return gauss * amplitude;
-    }
 };
 
-// Visits the nodes of this level that are odd multiples of h on exactly `odd_count` axes:
-// pattern by pattern (odd axes as a bit mask x = 1, y = 2, z = 4, in increasing order), each
-// scanning z, y, x upwards. An odd axis runs h, 3h, 5h, ...; an even one 0, 2h, 4h, ...
-template <class F>
-void for_each_new_node(const LevelStep& s, int odd_count, F&& visit) {
-    const int h = s.h, step = 2 * h, side = int(s.side);
-    for (int mask = 1; mask < 8; ++mask) {
-        if ((mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) != odd_count) continue;
-        const int x_start = (mask & 1) ? h : 0, y_start = (mask & 2) ? h : 0,
-                  z_start = (mask & 4) ? h : 0;
-        for (int z = z_start; z < side; z += step)
-            for (int y = y_start; y < side; y += step)
-                for (int x = x_start; x < side; x += step) visit(x, y, z, mask);
+// One pattern of one step (the nodes whose odd axes are `mask`), z, y, x upwards: each node
+// from its 2·OddCount parents (the parent rule of fractal_node.hpp, resolved into index
+// offsets once per pattern, not once per node) and g, eq. (1), (3) or (4).
+template <int OddCount>
+void compute_pattern(const LevelStep& s, int mask) {
+    std::int64_t offset[2 * OddCount];
+    for (int k = 0; k < 2 * OddCount; ++k) {
+        const ParentStep p = parent_step(mask, k);
+        offset[k] = p.sign * s.stride[p.axis] * s.h;
     }
+    const int h = s.h, step = 2 * h, side = int(s.side);
+    const int x_start = (mask & 1) ? h : 0, y_start = (mask & 2) ? h : 0,
+              z_start = (mask & 4) ? h : 0;
+    // Every row of the pattern has the same x: hash_add(start, x), the first third of a node's
+    // hash, is computed once per pattern for the first kCachedX of them (all of a row up to
+    // R = 7; chosen here: 512 bytes of stack).
+    constexpr int kCachedX = 64;
+    std::uint64_t hash_x[kCachedX];
+    int cached = 0;
+    for (int x = x_start; x < side && cached < kCachedX; x += step)
+        hash_x[cached++] = hash_add(s.hash_start, std::uint32_t(x));
+    const bool hashed = s.noise == NoiseSource::hash;
+    for (int z = z_start; z < side; z += step)
+        for (int y = y_start; y < side; y += step) {
+            float* row = s.v + (std::int64_t(z) * s.side + y) * s.side;
+            int column = 0;
+            for (int x = x_start; x < side; x += step, ++column) {
+                float* node = row + x;
+                float parents[2 * OddCount];
+                for (int k = 0; k < 2 * OddCount; ++k) parents[k] = node[offset[k]];
+                const std::uint64_t hx = column < cached
+                                             ? hash_x[column]
+                                             : hash_add(s.hash_start, std::uint32_t(x));
+                const float gauss = hashed ? node_gaussian_after_x(hx, y, z) : s.rng->gaussian();
+                *node = node_from_parents(OddCount, parents, gauss * s.amplitude);
+            }
+        }
 }
 
-// One step of okada1987 §2.2: every new node with `odd_count` odd axes from its parents (the
-// parent rule of fractal_node.hpp): step (1), eq. (1), the edge midpoints (1 odd axis); step
-// (2), eq. (3), the face centres from step (1)'s edge midpoints (2); step (3), eq. (4), the
-// cube centres from step (2)'s face centres (3).
-void compute_new_nodes(const LevelStep& s, int odd_count) {
-    for_each_new_node(s, odd_count, [&](int x, int y, int z, int mask) {
-        const std::int64_t i = s.index(x, y, z);
-        float parents[6];
-        for (int k = 0; k < 2 * odd_count; ++k) {
-            const ParentStep p = parent_step(mask, k);
-            parents[k] = s.v[i + p.sign * s.stride[p.axis] * s.h];
-        }
-        s.v[i] = node_from_parents(odd_count, parents, s.g(x, y, z));
-    });
+// One step of okada1987 §2.2: every new node with `OddCount` odd axes, pattern by pattern
+// (odd axes as a bit mask x = 1, y = 2, z = 4, in increasing order): step (1), eq. (1), the
+// edge midpoints (1 odd axis); step (2), eq. (3), the face centres from step (1)'s edge
+// midpoints (2); step (3), eq. (4), the cube centres from step (2)'s face centres (3).
+template <int OddCount>
+void compute_new_nodes(const LevelStep& s) {
+    for (int mask = 1; mask < 8; ++mask)
+        if ((mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) == OddCount)
+            compute_pattern<OddCount>(s, mask);
 }
 
 }  // namespace
@@ -96,12 +106,12 @@ Status build_fractal_lattice(const FractalParams& params, float* buffer, std::si
 
     Pcg32 rng(params.seed, kLatticeStream);
     for (int n = 1; n <= levels; ++n) {
-        LevelStep s{buffer, side, {1, side, side * side}, R, 1 << (R - n),
-                    level_amplitude(n, params.beta), &params, &rng,
-                    hash_start(params.seed, kLatticeStream)};
-        compute_new_nodes(s, 1);  // step (1), eq. (1): the 12 edge midpoints of every cell
-        compute_new_nodes(s, 2);  // step (2), eq. (3): the face centres
-        compute_new_nodes(s, 3);  // step (3), eq. (4): the cube centres
+        const LevelStep s{buffer, side, {1, side, side * side}, 1 << (R - n),
+                          level_amplitude(n, params.beta), params.noise, &rng,
+                          hash_start(params.seed, kLatticeStream)};
+        compute_new_nodes<1>(s);  // step (1), eq. (1): the 12 edge midpoints of every cell
+        compute_new_nodes<2>(s);  // step (2), eq. (3): the face centres
+        compute_new_nodes<3>(s);  // step (3), eq. (4): the cube centres
     }
     out.values = buffer;
     out.R = R;

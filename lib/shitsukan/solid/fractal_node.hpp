@@ -73,6 +73,13 @@ inline float node_gaussian_from(std::uint64_t start, std::int32_t x, std::int32_
     return gaussian_from_bits_float(hash_coords_from(start, x, y, z));
 }
 
+// The same number from hx = hash_add(start, x), for a caller that reuses one x across a
+// pattern's rows (the Type I build): node_gaussian_after_x(hash_add(start, x), y, z) ==
+// node_gaussian_from(start, x, y, z).
+inline float node_gaussian_after_x(std::uint64_t hx, std::int32_t y, std::int32_t z) {
+    return gaussian_from_bits_float(hash_coords_after_x(hx, y, z));
+}
+
 // The parent rule, written once (Types I, II and III, the tests and example 10 all use it):
 // a node that is an odd multiple of h on the axes in `odd_axes` (bit 0 x, bit 1 y, bit 2 z)
 // has 2·odd_count parents, the neighbours at distance h along its odd axes, in the canonical

@@ -2,6 +2,7 @@
 #include "shitsukan/solid/turbulence.hpp"
 
 #include <cstring>
+#include <limits>
 
 #include "shitsukan/core/assert.hpp"
 #include "shitsukan/core/scalar.hpp"
@@ -20,6 +21,12 @@ Status check_lattice_point(Vec3 p, int R) {
     return Status::success();
 }
 
+float detail::turbulence_outside(LatticeView lattice, float x, float y, float z) {
+    SHITSUKAN_REQUIRE_BUILT(lattice.values != nullptr && lattice.side >= 2,
+                            "build_fractal_lattice()", "turbulence() on an empty LatticeView");
+    return turbulence_clamped(lattice, Vec3{x, y, z});
+}
+
 Status turbulence_checked(const LatticeView& lattice, Vec3 p, float& out) {
     if (lattice.values == nullptr)
         return Status::error(StatusCode::invalid_argument,
@@ -35,7 +42,6 @@ namespace {
 // Four lanes of plain IEEE float arithmetic (GCC/Clang vector extension; on a target without
 // SIMD the compiler splits it into scalar operations). No contraction: -ffp-contract=off.
 typedef float Float4 __attribute__((vector_size(16)));
-typedef int Int4 __attribute__((vector_size(16)));
 
 inline Float4 splat(float v) { return Float4{v, v, v, v}; }
 #else
@@ -47,137 +53,110 @@ inline Float4 splat(float v) { return v; }
 struct CellCorners4 {
     Float4 d[8];
 };
-inline void load_corners4(const float* base, std::size_t side, std::size_t plane,
-                          CellCorners4* c) {
-    const float v[8] = {base[0],     base[1],         base[side],         base[side + 1],
-                        base[plane], base[plane + 1], base[plane + side], base[plane + side + 1]};
-    for (int k = 0; k < 8; ++k) c->d[k] = splat(v[k]);
+// The four lattice rows along x that hold a row's cells' nodes: (y0, z0), (y1, z0), (y0, z1),
+// (y1, z1).
+struct RowEdges {
+    const float* r[4];
+};
+inline void load_corners4(const RowEdges& e, std::size_t c, CellCorners4* out) {
+    out->d[0] = splat(e.r[0][c]), out->d[1] = splat(e.r[0][c + 1]);
+    out->d[2] = splat(e.r[1][c]), out->d[3] = splat(e.r[1][c + 1]);
+    out->d[4] = splat(e.r[2][c]), out->d[5] = splat(e.r[2][c + 1]);
+    out->d[6] = splat(e.r[3][c]), out->d[7] = splat(e.r[3][c + 1]);
 }
 
 #if defined(__GNUC__) || defined(__clang__)
+// detail::lerp on four fractions at once, with the same operations: u = 1 - t, u·a + t·b.
+inline Float4 lerp4(Float4 a, Float4 b, Float4 t, Float4 u) { return u * a + t * b; }
 
-// detail::lerp on four fractions at once, with the same operation order.
-inline Float4 lerp4(Float4 a, Float4 b, Float4 t) { return (splat(1.0f) - t) * a + t * b; }
-
-// trilinear_corners for four samples of one cell (the same eight nodes, four x fractions).
-inline void trilinear_corners4(const CellCorners4& c, const float* fx, Float4 ty, Float4 tz,
-                               float* out) {
-    Float4 t;
-    std::memcpy(&t, fx, sizeof t);
-    const Float4 edge_y0z0 = lerp4(c.d[0], c.d[1], t), edge_y1z0 = lerp4(c.d[2], c.d[3], t);
-    const Float4 edge_y0z1 = lerp4(c.d[4], c.d[5], t), edge_y1z1 = lerp4(c.d[6], c.d[7], t);
-    const Float4 face_z0 = lerp4(edge_y0z0, edge_y1z0, ty);
-    const Float4 face_z1 = lerp4(edge_y0z1, edge_y1z1, ty);
-    const Float4 r = lerp4(face_z0, face_z1, tz);
-    std::memcpy(out, &r, sizeof r);
+// trilinear_corners for four samples of one cell (the same eight nodes, four x fractions; the
+// row's y and z fractions with their 1 - t computed once).
+inline Float4 trilinear_corners4(const CellCorners4& c, Float4 tx, Float4 ty, Float4 uy,
+                                 Float4 tz, Float4 uz) {
+    const Float4 ux = splat(1.0f) - tx;
+    const Float4 edge_y0z0 = lerp4(c.d[0], c.d[1], tx, ux);
+    const Float4 edge_y1z0 = lerp4(c.d[2], c.d[3], tx, ux);
+    const Float4 edge_y0z1 = lerp4(c.d[4], c.d[5], tx, ux);
+    const Float4 edge_y1z1 = lerp4(c.d[6], c.d[7], tx, ux);
+    const Float4 face_z0 = lerp4(edge_y0z0, edge_y1z0, ty, uy);
+    const Float4 face_z1 = lerp4(edge_y0z1, edge_y1z1, ty, uy);
+    return lerp4(face_z0, face_z1, tz, uz);
 }
-
-// The four coordinates start + float(i + l)·step, l = 0..3 (the single call's expression).
-inline Float4 row_coordinates4(float start, float step, int i) {
-    const Float4 index = {float(i), float(i + 1), float(i + 2), float(i + 3)};
-    return splat(start) + index * splat(step);
-}
-
-// split_lattice_coordinate on four samples: the same comparisons and conversions lane by lane
-// (masks instead of branches), so the same cells and fractions.
-void split_row4(float start, float step, int i, int cells, int* cell, float* fraction) {
-    const Float4 x = row_coordinates4(start, step, i);
-    const Float4 hi = splat(float(cells));
-    Int4 bits = (Int4)x & (x > splat(0.0f));  // !(t > 0) (NaN too) -> +0
-    Float4 t = (Float4)bits;
-    const Int4 over = t > hi;
-    t = (Float4)((bits & ~over) | ((Int4)hi & over));
-    Int4 c = __builtin_convertvector(t, Int4);
-    c += c >= Int4{cells, cells, cells, cells};  // the last node belongs to the last cell
-    const Float4 f = t - __builtin_convertvector(c, Float4);
-    std::memcpy(cell, &c, sizeof c);
-    std::memcpy(fraction, &f, sizeof f);
-}
-
-// The same for four samples strictly inside (0, cells), where no clamp applies (as in
-// turbulence()'s inside path): the integer part and the rest.
-void split_row4_inside(float start, float step, int i, int* cell, float* fraction) {
-    const Float4 x = row_coordinates4(start, step, i);
-    const Int4 c = __builtin_convertvector(x, Int4);
-    const Float4 f = x - __builtin_convertvector(c, Float4);
-    std::memcpy(cell, &c, sizeof c);
-    std::memcpy(fraction, &f, sizeof f);
-}
+inline float first_lane(Float4 v) { return v[0]; }
+inline float last_lane(Float4 v) { return v[3]; }
+inline void store4(float* out, Float4 v) { std::memcpy(out, &v, sizeof v); }
 #else
-void trilinear_corners4(const CellCorners4& c, const float* fx, float fy, float fz, float* out) {
-    for (int k = 0; k < 4; ++k) out[k] = trilinear_corners(c.d, fx[k], fy, fz);
+inline Float4 trilinear_corners4(const CellCorners4& c, Float4 tx, Float4 ty, Float4,
+                                 Float4 tz, Float4) {
+    return trilinear_corners(c.d, tx, ty, tz);
 }
-void split_row4(float start, float step, int i, int cells, int* cell, float* fraction) {
-    for (int k = 0; k < 4; ++k)
-        split_lattice_coordinate(start + float(i + k) * step, cells, &cell[k], &fraction[k]);
-}
-void split_row4_inside(float start, float step, int i, int* cell, float* fraction) {
-    for (int k = 0; k < 4; ++k) {
-        const float x = start + float(i + k) * step;
-        cell[k] = int(x);
-        fraction[k] = x - float(cell[k]);
-    }
-}
+inline float first_lane(Float4 v) { return v; }
+inline float last_lane(Float4 v) { return v; }
+inline void store4(float* out, Float4 v) { *out = v; }
 #endif
+// Lanes per Float4: four with the vector extension, one without.
+constexpr int kLanes = int(sizeof(Float4) / sizeof(float));
 
-// Is every coordinate start + float(i)·step, i in [0, n), strictly inside (0, cells)? The
-// coordinates are monotone in i (a product and a sum of floats round monotonically), so the
-// two ends decide.
-bool row_inside(float start, float step, int n, int cells) {
-    const float first = start, last = start + float(n - 1) * step, top = float(cells);
-    return first > 0.0f && first < top && last > 0.0f && last < top;
+// float(i + l) for the lanes l = 0 .. kLanes - 1, exact while i + l < 2^24.
+inline Float4 lane_indices(int i) {
+#if defined(__GNUC__) || defined(__clang__)
+    return splat(float(i)) + Float4{0.0f, 1.0f, 2.0f, 3.0f};
+#else
+    return float(i);
+#endif
 }
 
 }  // namespace
 
+// Four samples at a time: their coordinates start + float(i)·step (the single call's
+// expression; float(i) formed by adding 4, exact while i < 2^24). When all four lie in one
+// cell with x > 0 they go through eq. (6) as one vector with that cell's eight nodes, loaded
+// and splatted once per cell: the same operations in the same order as single calls, so the
+// same bits. x grows with i when step_x > 0: once a group has been found in cell c (first
+// lane > c), every later group's first lane is too, so its last lane below c + 1 is the whole
+// test. Any other group, the last n % 4 samples, and every sample when step_x <= 0, are
+// single calls.
 void turbulence_row(const LatticeView& lattice, Vec3 start, float step_x, int n, float* out) {
     SHITSUKAN_REQUIRE_BUILT(lattice.values != nullptr && lattice.side >= 2,
                             "build_fractal_lattice()", "turbulence_row() on an empty LatticeView");
-    const int cells = lattice.side - 1;
-    int iy, iz;
-    float fy, fz;
-    split_lattice_coordinate(start.y, cells, &iy, &fy);
-    split_lattice_coordinate(start.z, cells, &iz, &fz);
-    const std::size_t side = std::size_t(lattice.side), plane = side * side;
-    const float* row = lattice.values + (std::size_t(iz) * side + std::size_t(iy)) * side;
-    const bool inside = n > 0 && row_inside(start.x, step_x, n, cells);
-    const Float4 ty = splat(fy), tz = splat(fz);
-    constexpr int kChunk = 64;  // samples split at once (stack: 512 bytes)
-    int cell[kChunk];
-    float fx[kChunk];
-    CellCorners4 corners;
-    int corners_of = -1;  // the cell whose nodes `corners` holds
-    for (int i0 = 0; i0 < n; i0 += kChunk) {
-        const int m = n - i0 < kChunk ? n - i0 : kChunk;
-        int k0 = 0;
-        for (; k0 + 4 <= m; k0 += 4) {
-            if (inside)
-                split_row4_inside(start.x, step_x, i0 + k0, cell + k0, fx + k0);
-            else
-                split_row4(start.x, step_x, i0 + k0, cells, cell + k0, fx + k0);
-        }
-        for (; k0 < m; ++k0)
-            split_lattice_coordinate(start.x + float(i0 + k0) * step_x, cells, &cell[k0], &fx[k0]);
-        // Four samples at a time: in one cell (the usual case when the step is below a
-        // quarter of a cell) they share its eight nodes, loaded once per cell, and go through
-        // eq. (6) as one vector; otherwise, and for the last few, one by one.
-        auto single = [&](int l) {
-            out[i0 + l] = detail::cell_trilinear(lattice, cell[l], iy, iz, fx[l], fy, fz);
-        };
-        int k = 0;
-        for (; k + 4 <= m; k += 4) {
-            if (cell[k] == cell[k + 1] && cell[k + 2] == cell[k + 3] && cell[k] == cell[k + 3]) {
-                if (cell[k] != corners_of) {
-                    load_corners4(row + std::size_t(cell[k]), side, plane, &corners);
-                    corners_of = cell[k];
+    int i = 0;
+    if (step_x > 0.0f && n <= (1 << 24)) {
+        const int cells = lattice.side - 1;
+        int iy, iz;
+        float fy, fz;
+        split_lattice_coordinate(start.y, cells, &iy, &fy);
+        split_lattice_coordinate(start.z, cells, &iz, &fz);
+        const std::size_t side = std::size_t(lattice.side), plane = side * side;
+        const float* row = lattice.values + (std::size_t(iz) * side + std::size_t(iy)) * side;
+        const RowEdges edges{{row, row + side, row + plane, row + plane + side}};
+        const Float4 ty = splat(fy), tz = splat(fz), x0 = splat(start.x), dx = splat(step_x);
+        const Float4 uy = splat(1.0f - fy), uz = splat(1.0f - fz);
+        const Float4 lanes = splat(float(kLanes));
+        CellCorners4 corners{};
+        float cell_high = std::numeric_limits<float>::quiet_NaN();  // no cell yet: x < NaN fails
+        Float4 low = splat(0.0f), index = lane_indices(0);
+        for (; i + kLanes <= n; i += kLanes, index += lanes) {
+            const Float4 xs = x0 + index * dx;
+            const float last = last_lane(xs);
+            if (!(last < cell_high)) {
+                const float first = first_lane(xs);
+                const int c = first > 0.0f && first < float(cells) ? int(first) : -1;
+                if (!(c >= 0 && last < float(c + 1))) {
+                    for (int l = 0; l < kLanes; ++l)
+                        out[i + l] =
+                            turbulence(lattice, Vec3{start.x + float(i + l) * step_x, start.y,
+                                                     start.z});
+                    continue;
                 }
-                trilinear_corners4(corners, fx + k, ty, tz, out + i0 + k);
-            } else {
-                for (int l = k; l < k + 4; ++l) single(l);
+                load_corners4(edges, std::size_t(c), &corners);
+                cell_high = float(c + 1);
+                low = splat(float(c));
             }
+            store4(out + i, trilinear_corners4(corners, xs - low, ty, uy, tz, uz));
         }
-        for (; k < m; ++k) single(k);
     }
+    for (; i < n; ++i)
+        out[i] = turbulence(lattice, Vec3{start.x + float(i) * step_x, start.y, start.z});
 }
 
 void turbulence_points(const LatticeView& lattice, const Vec3* points, std::size_t n, float* out) {
