@@ -135,5 +135,16 @@ printf 'v 0 0 0\nf 1 2 3\n' > broken.obj
 rc=$?
 if [ $rc = 1 ] && grep -q 'broken.obj:2:' err.txt; then ok; else bad "broken.obj: rc $rc $(cat err.txt)"; fi
 
+# a height map with a NaN, an infinity or slopes past a float's range: exit 1, the reason named
+printf 'Pf\n3 1\n-1.0\n\0\0\0\0\0\0\300\177\0\0\0\0' > nan.pfm
+printf 'Pf\n3 1\n-1.0\n\0\0\0\0\0\0\200\177\0\0\0\0' > inf.pfm
+printf 'Pf\n3 1\n-1.0\n\346\261\141\177\0\0\0\0\346\261\141\377' > huge.pfm
+for f in nan inf huge; do
+    "$BIN" normals $f.pfm -o ${f}_n.png > out.txt 2> err.txt
+    rc=$?
+    if [ $rc = 1 ] && grep -q 'height_map_normals' err.txt && [ ! -e ${f}_n.png ]; then ok
+    else bad "normals of $f.pfm: rc $rc $(cat err.txt)"; fi
+done
+
 echo "cli tests: $pass passed, $fail failed"
 [ $fail = 0 ]
