@@ -146,5 +146,14 @@ for f in nan inf huge; do
     else bad "normals of $f.pfm: rc $rc $(cat err.txt)"; fi
 done
 
+# bark flags in range whose grown trunk makes a crack map past the memory budget: exit 1 with
+# the budget's message, no crash, no map
+for args in "--N_R 8 --N_H 4 --T 1000000" "--N_R 32 --N_H 16 --L0 100"; do
+    "$BIN" bark $args -o big --quiet > out.txt 2> err.txt
+    rc=$?
+    if [ $rc = 1 ] && grep -q 'crack map of .* over the memory budget' err.txt && [ ! -e big_cracks.png ]; then ok
+    else bad "bark $args: rc $rc $(cat err.txt)"; fi
+done
+
 echo "cli tests: $pass passed, $fail failed"
 [ $fail = 0 ]
