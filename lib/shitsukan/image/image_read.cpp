@@ -3,6 +3,7 @@
 #include "shitsukan/image/image_read.hpp"
 
 #include <cstdint>
+#include <cstdio>
 
 #include "shitsukan/core/memory_budget.hpp"
 
@@ -32,6 +33,20 @@
 
 namespace shitsukan {
 
+#ifdef SHITSUKAN_USE_STB_IMAGE
+namespace {
+// The file's size in bytes, -1 when it cannot be measured (a pipe).
+long long file_size(const char* path) {
+    std::FILE* f = std::fopen(path, "rb");
+    if (!f) return -1;
+    long n = -1;
+    if (std::fseek(f, 0, SEEK_END) == 0) n = std::ftell(f);
+    std::fclose(f);
+    return n;
+}
+}  // namespace
+#endif
+
 bool image_reading_available() {
 #ifdef SHITSUKAN_USE_STB_IMAGE
     return true;
@@ -51,7 +66,20 @@ Status read_image(const char* path, LoadedImage& out) {
     if (stbi_info(path, &w, &h, &c)) {
         const std::uint64_t samples =
             budget_mul(budget_mul(std::uint64_t(w), std::uint64_t(h)), std::uint64_t(c));
-        const std::uint64_t per = stbi_is_16_bit(path) ? 2 + 2 : 1 + 2;
+        const bool wide = stbi_is_16_bit(path) != 0;
+        const std::uint64_t per = wide ? 2 + 2 : 1 + 2;
+        // The header's size against the file's: no supported format packs more than
+        // kImageMaxExpansion decoded bytes into one byte of file, so a 100-byte file claiming
+        // 30000 x 30000 pixels is refused before stb_image allocates for it.
+        const long long size = file_size(path);
+        const std::uint64_t decoded = budget_mul(samples, wide ? 2 : 1);
+        if (size >= 0 && decoded > budget_mul(std::uint64_t(size) + 64, kImageMaxExpansion))
+            return Status::error(StatusCode::invalid_argument,
+                                 "%s: the header claims %d x %d x %d samples (%llu bytes), more "
+                                 "than its %lld bytes can hold (at most %llu decoded bytes a "
+                                 "byte)",
+                                 path, w, h, c, (unsigned long long)decoded, size,
+                                 (unsigned long long)kImageMaxExpansion);
         SHITSUKAN_TRY(check_memory_budget(budget_mul(samples, per), "read_image: the image"));
     }
     if (stbi_is_16_bit(path)) {
