@@ -92,6 +92,7 @@ refused "--k must be a number in [0, 1000]" marble --k abc
 refused "--k must be a number in [0, 1000]" marble --k 1e9
 refused "--R must be an integer in [1, 8]" marble --R 12
 refused "--size must be an integer in [8, 16384]" marble --size 3
+refused "--size must be an integer in [8, 8192]" leather --size 16384
 refused "--size must be an integer" wood --size 1.5
 refused "--seed must be an integer in [0, 4294967295]" marble --seed -4
 refused "--beta must be a number" marble --beta nan
@@ -154,6 +155,20 @@ for args in "--N_R 8 --N_H 4 --T 1000000" "--N_R 32 --N_H 16 --L0 100"; do
     if [ $rc = 1 ] && grep -q 'crack map of .* over the memory budget' err.txt && [ ! -e big_cracks.png ]; then ok
     else bad "bark $args: rc $rc $(cat err.txt)"; fi
 done
+
+# readers stop at once on an endless or binary input, and refuse out-of-range colours and
+# over-long lines with the line number
+timeout 20 "$BIN" marble --obj /dev/zero -o z.png > out.txt 2> err.txt
+rc=$?
+if [ $rc = 1 ] && grep -q '/dev/zero:1: NUL byte' err.txt; then ok; else bad "--obj /dev/zero: rc $rc $(cat err.txt)"; fi
+printf '1 1\n0 0 0 0 1.5 0 0\n' > colour.mesh
+"$BIN" wrinkly --mesh colour.mesh > out.txt 2> err.txt
+rc=$?
+if [ $rc = 1 ] && grep -q 'colour.mesh:2: the colour' err.txt; then ok; else bad "colour.mesh: rc $rc $(cat err.txt)"; fi
+{ printf '2 1\n0 0 0 0'; head -c 1100 /dev/zero | tr '\0' ' '; printf '0 0 0 0\n'; } > long.mesh
+"$BIN" wrinkly --mesh long.mesh > out.txt 2> err.txt
+rc=$?
+if [ $rc = 1 ] && grep -q 'long.mesh:2: line longer than 1024 bytes' err.txt; then ok; else bad "long.mesh: rc $rc $(cat err.txt)"; fi
 
 echo "cli tests: $pass passed, $fail failed"
 [ $fail = 0 ]
