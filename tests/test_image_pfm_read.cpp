@@ -231,5 +231,8 @@ TEST_CASE("read_image: a header claiming more samples than the file can hold is 
     const Status s = read_image(path.c_str(), img);
     CHECK(s.code() == StatusCode::invalid_argument);
     CHECK(std::string(s.message()).find("more than its") != std::string::npos);
+    // fuzz_readers: stb_image read a PPM of height 0 as an ok image of no pixels.
+    write_bytes(path, "P6 \n\n21255\n\1\2\3\4\5\6", 18);
+    CHECK(read_image(path.c_str(), img).code() == StatusCode::invalid_argument);
     std::remove(path.c_str());
 }

@@ -99,6 +99,13 @@ Status read_image(const char* path, LoadedImage& out) {
         stbi_image_free(p);
         img.bits = 8;
     }
+    // stb_image's PNM reader accepts a size of 0 (fuzz_readers: "P6 21255 0 255" read as an
+    // ok image of no pixels); an image has at least one.
+    if (w < 1 || h < 1 || c < 1 || c > 4)
+        return Status::error(StatusCode::invalid_argument,
+                             "%s: an image of %d x %d pixels and %d channels (each must be >= 1, "
+                             "at most 4 channels)",
+                             path, w, h, c);
     img.width = w, img.height = h, img.channels = c;
     out = std::move(img);
     return Status::success();
