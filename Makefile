@@ -158,10 +158,11 @@ FUZZ_SEED    ?= 1
 FUZZ_STRICT  ?= 1
 # Per-input timeout in seconds, for the replay and the exploration. libFuzzer's is wall-clock
 # time, so a loaded machine stretches it: a committed input needing 0.20 s of CPU took 1.43 s
-# under load and failed the replay at the old 1 s. Chosen here: 60 s, over 500 times the
-# slowest committed input's CPU time (0.11 s for a whole process, measured), so load cannot
-# trip it, while a real hang (an endless loop) still fails the run after a minute.
-FUZZ_TIMEOUT ?= 60
+# under load and failed the replay at the old 1 s; at nice 19 under a load of 12 on 2 cores,
+# inputs of 0.04-0.19 s of CPU took 10-31 s of wall clock. Chosen here: 120 s, about 600
+# times the slowest committed input's CPU time (0.11-0.19 s for a whole process, measured),
+# so load cannot trip it, while a real hang (an endless loop) still fails the run.
+FUZZ_TIMEOUT ?= 120
 FUZZ_FLAGS   := -std=c++17 -O1 -g -fno-omit-frame-pointer -ffp-contract=off \
                 -fsanitize=address,undefined -fno-sanitize-recover=all
 FUZZ_SRCS    := $(sort $(wildcard fuzz/fuzz_*.cpp))
