@@ -36,6 +36,9 @@ TEST_CASE("control mesh text: sizes, points, comments, optional colour and delta
     CHECK(message(read("1 1\n0 0 0 0\n0 0 0 0\n", mesh)) == "m:3: more than 1 x 1 points");
     CHECK(message(read("300 300\n", mesh)).rfind("m:1: the first line", 0) == 0);
     CHECK(message(read("1 1\n0 0 0 0 1 1 1 1\n", mesh)).rfind("m:2: delta must be", 0) == 0);
+    // fuzz_readers: a number finite as a double but not as a float became an infinite position.
+    CHECK(message(read("1 1\n1e115 0 0 0\n", mesh)).rfind("m:2: a point is", 0) == 0);
+    CHECK(read("1 1\n3e38 0 0 0\n", mesh).ok());
 }
 
 // The CLI's reader accepted colours outside [0, 1] and split a line over 1023 bytes in two

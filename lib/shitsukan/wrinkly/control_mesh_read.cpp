@@ -1,6 +1,7 @@
 // Host side: the control-mesh text format (control_mesh_read.hpp).
 #include "shitsukan/wrinkly/control_mesh_read.hpp"
 
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -31,7 +32,8 @@ int line_numbers(char* p, double v[8]) {
         if (!*p) return n;
         char* end = nullptr;
         const double d = std::strtod(p, &end);
-        if (end == p || !std::isfinite(d) || n == 8) return -1;
+        // finite as the float it is stored in (fuzz_readers: 1e115 became an infinite position)
+        if (end == p || !(std::fabs(d) <= double(FLT_MAX)) || n == 8) return -1;
         v[n++] = d;
         p = end;
     }

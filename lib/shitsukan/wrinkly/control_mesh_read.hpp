@@ -11,7 +11,7 @@
 // Format: '#' starts a comment; blank lines are skipped; the first line is "cols rows"
 // (integers, cols·rows <= kControlMeshMaxPoints), then cols·rows points row by row, one a
 // line: "x y z h [r g b [delta]]": position x_i, height h_i, colour c_i with every component in
-// [0, 1], the ratio value delta_i of eq. (19) in (0, 1). Every number finite.
+// [0, 1], the ratio value delta_i of eq. (19) in (0, 1). Every number finite as a float.
 // Errors (invalid_argument, "name:line: what"): a line that is not such numbers, a colour
 // outside [0, 1], delta outside (0, 1), too many or too few points, a NUL byte. A line
 // longer than kControlMeshMaxLine or a file longer than kControlMeshMaxBytes -> too_large
