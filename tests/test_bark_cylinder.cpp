@@ -202,3 +202,23 @@ TEST_CASE("build_cylinder refuses springs float cannot solve against their shear
     p.tolerance = 9.46e-41f;
     CHECK(build_cylinder(p, bark).code() == StatusCode::invalid_argument);
 }
+
+// fuzz_bark: delta_h = 3.7e19 cm/s overflowed the displacement field; grow_and_crack returned
+// ok with NaN W.
+TEST_CASE("grow_and_crack refuses a displacement field that overflows a float") {
+    CylinderParams p;
+    p.species = species_preset(Species::chinese_tallow);
+    p.N_R = 8, p.N_H = 4;
+    p.species.L0 *= std::exp2(0.5f);
+    p.species.G *= std::exp2(15.875f);
+    p.species.kappa1 = 1.0f + (p.species.kappa1 - 1.0f) * std::exp2(4.375f);
+    p.species.kappa2 = 1.0f + (p.species.kappa2 - 1.0f) * std::exp2(12.0f);
+    p.delta_h = 3.693296501290277e+19f;
+    p.seed = 1625620480u;
+    BarkCylinder bark;
+    REQUIRE(build_cylinder(p, bark).ok());
+    CrackRun run;
+    const Status s = grow_and_crack(bark, CrackRunOptions{}, run);
+    CHECK(s.code() == StatusCode::out_of_range);
+    CHECK(std::string(s.message()).find("overflowed a float") != std::string::npos);
+}
