@@ -44,6 +44,35 @@ long long file_size(const char* path) {
     std::fclose(f);
     return n;
 }
+
+// stb_image's PNM header reader (P5, P6) accumulates each number in an int without a bound,
+// undefined behaviour past INT_MAX (fuzz_readers: "P5 42 421111...1"). The header is read here
+// first, the way stb_image reads it (blanks and '#' comments between the numbers), and a
+// number past INT_MAX is refused before stb_image sees it.
+bool pnm_header_fits_int(const char* path) {
+    std::FILE* f = std::fopen(path, "rb");
+    if (!f) return true;  // stb_image reports the missing file
+    const int p = std::fgetc(f), t = std::fgetc(f);
+    bool fits = true;
+    if (p == 'P' && (t == '5' || t == '6')) {
+        int c = std::fgetc(f);
+        for (int number = 0; number < 3 && fits; ++number) {
+            for (;;) {  // blanks, then a comment to the end of its line, again
+                while (c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r')
+                    c = std::fgetc(f);
+                if (c != '#') break;
+                while (c != EOF && c != '\n' && c != '\r') c = std::fgetc(f);
+            }
+            long long value = 0;
+            for (; c >= '0' && c <= '9' && fits; c = std::fgetc(f)) {
+                value = value * 10 + (c - '0');
+                fits = value <= 2147483647LL;
+            }
+        }
+    }
+    std::fclose(f);
+    return fits;
+}
 }  // namespace
 #endif
 
@@ -61,6 +90,9 @@ Status read_image(const char* path, LoadedImage& out) {
 #ifdef SHITSUKAN_USE_STB_IMAGE
     int w = 0, h = 0, c = 0;
     LoadedImage img;
+    if (!pnm_header_fits_int(path))
+        return Status::error(StatusCode::invalid_argument,
+                             "%s: a PNM header number past %d", path, 2147483647);
     // The decoded buffer (stb's) and our copy must fit the memory budget before decoding:
     // a 100-byte PNG can announce 65535 x 65535 pixels.
     if (stbi_info(path, &w, &h, &c)) {
