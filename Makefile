@@ -201,6 +201,11 @@ $(BUILD)/fuzz/%: fuzz/%.cpp fuzz/fuzz_input.hpp $(FUZZ_OBJS)
 	@mkdir -p $(@D)
 	$(FUZZ_CXX) $(CPPFLAGS) $(FUZZ_FLAGS) -fsanitize=fuzzer -o $@ $< $(FUZZ_OBJS)
 
+# stb_image (compiled inside image_read.cpp) hands memcpy a null pointer for an empty IDAT chunk
+# (0 bytes: harmless, but UBSan's nonnull-attribute check stops there; found by fuzz_readers).
+# That one check is off for that one file; every other check stays on, in it too.
+$(BUILD)/fuzzobj/lib/shitsukan/image/image_read.o: FUZZ_FLAGS += -fno-sanitize=nonnull-attribute
+
 $(BUILD)/fuzzobj/%.o: %.cpp $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(FUZZ_CXX) $(CPPFLAGS) $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link -MMD -MP -c $< -o $@
