@@ -24,15 +24,13 @@ void bark_progress(float fraction, void* user) { static_cast<Progress*>(user)->r
 // shows), wrapped around the seam, in the figures' colours.
 Status draw_cracks(const BarkCylinder& bark, float t, const Vec3* W, float px_per_cm,
                    RgbImage* out) {
-    const float C = bark.circumference * (1.0f + hoop_strain(bark.params, t));
-    const float H = initial_height(bark.params) * (1.0f + axial_strain(bark.params, t));
-    const int w = std::max(8, int(std::ceil(C * px_per_cm))),
-              h = std::max(8, int(std::ceil(H * px_per_cm)));
+    int w = 0, h = 0;
+    SHITSUKAN_TRY(crack_map_size(bark, t, px_per_cm, w, h));  // checked against the budget
     CrackMapStyle style;
     style.origin = {0.0f, float(h)};
     style.px_per_cm = px_per_cm;
     style.min_width_cm = 1.0f / px_per_cm;
-    out->resize(w, h, style.plate);
+    SHITSUKAN_TRY(out->try_resize(w, h, style.plate));
     RasterCanvas canvas(out->view());
     return draw_crack_map(canvas, bark, t, W, style);
 }

@@ -137,7 +137,10 @@ int run_leather(int argc, char** argv) {
            "your own section: r0,z0,r1,z1,r2,z2,r3,z3[;next segment] (eq. (2) control points)");
     f.number("edge-r", &relief.edge_r, 0.01, 10, "§3.2: r at the scale's edge (chosen 1)");
     f.number("height-scale", &relief.height_scale, 0.001, 1000, "§3.2: heights times this");
-    f.integer("size", &size, 8, 16384, "map side in pixels (W x H mapped to size x size·H/W)");
+    // 8192 at most: the maps are held whole (make_leather_maps: 20 bytes a pixel, labels,
+    // heights and normals), so 16384 x 16384 needs 5.4 GB, over the default memory budget of
+    // 4 GiB, and was refused after being offered; 8192 needs 1.3 GB plus 0.6 GB of PNG rows.
+    f.integer("size", &size, 8, 8192, "map side in pixels (W x H mapped to size x size·H/W)");
     f.text("o", &out, "output prefix");
     f.toggle("pfm", &pfm, "also <o>_height.pfm: the heights as floats (pattern units)");
     f.integer("obj-step", &mesh_step, 0, 4096,

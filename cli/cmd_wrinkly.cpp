@@ -12,6 +12,7 @@
 #include "shitsukan/image/image_io.hpp"
 #include "shitsukan/raster/camera.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
+#include "shitsukan/wrinkly/control_mesh_read.hpp"
 #include "shitsukan/wrinkly/wr_ist_axis.hpp"
 #include "shitsukan/wrinkly/wr_tessellation.hpp"
 
@@ -27,74 +28,6 @@ struct ProgressPart {
 void report_part(float fraction, void* user) {
     const auto* part = static_cast<const ProgressPart*>(user);
     part->whole.report(part->lo + (part->hi - part->lo) * fraction);
-}
-
-// The control-mesh file: '#' comments, then "cols rows", then cols·rows points row by row,
-// one a line: "x y z h [r g b [delta]]" (position x_i, height h_i, colour c_i in [0, 1],
-// ratio value delta_i of eq. (19)). Errors name the file and line.
-Status read_control_mesh(const char* path, WrControlMesh* out) {
-    std::FILE* f = std::fopen(path, "rb");
-    if (!f) return Status::error(StatusCode::io_error, "cannot open %s for reading", path);
-    char line[1024];
-    int number = 0, cols = 0, rows = 0, filled = 0;
-    WrControlMesh mesh;
-    Status s;
-    while (std::fgets(line, sizeof line, f)) {
-        ++number;
-        if (char* hash = std::strchr(line, '#')) *hash = '\0';
-        double v[8];
-        int n = 0;
-        char* p = line;
-        bool bad = false;
-        while (true) {
-            while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n') ++p;
-            if (!*p) break;
-            char* end = nullptr;
-            const double d = std::strtod(p, &end);
-            if (end == p || !std::isfinite(d) || n == 8) {
-                bad = true;
-                break;
-            }
-            v[n++] = d;
-            p = end;
-        }
-        if (n == 0 && !bad) continue;
-        if (cols == 0) {
-            if (bad || n != 2 || v[0] < 1 || v[1] < 1 || v[0] * v[1] > 65536 ||
-                v[0] != std::floor(v[0]) || v[1] != std::floor(v[1])) {
-                s = Status::error(StatusCode::invalid_argument,
-                                  "%s:%d: the first line must be \"cols rows\" (integers, at "
-                                  "most 65536 points)", path, number);
-                break;
-            }
-            cols = int(v[0]), rows = int(v[1]);
-            mesh = make_control_mesh(cols, rows);
-            continue;
-        }
-        if (bad || (n != 4 && n != 7 && n != 8)) {
-            s = Status::error(StatusCode::invalid_argument,
-                              "%s:%d: a point is \"x y z h [r g b [delta]]\" (4, 7 or 8 finite "
-                              "numbers)", path, number);
-            break;
-        }
-        if (filled == cols * rows) {
-            s = Status::error(StatusCode::invalid_argument, "%s:%d: more than %d x %d points",
-                              path, number, cols, rows);
-            break;
-        }
-        WrControlPoint& q = mesh.points[std::size_t(filled++)];
-        q.position = {float(v[0]), float(v[1]), float(v[2])};
-        q.height = float(v[3]);
-        if (n >= 7) q.color = {float(v[4]), float(v[5]), float(v[6])};
-        if (n == 8) q.delta = float(v[7]);
-    }
-    std::fclose(f);
-    if (!s) return s;
-    if (cols == 0 || filled != cols * rows)
-        return Status::error(StatusCode::invalid_argument, "%s: %d of %d x %d points given", path,
-                             filled, cols, rows);
-    *out = std::move(mesh);
-    return Status::success();
 }
 
 }  // namespace
@@ -135,7 +68,7 @@ int run_wrinkly(int argc, char** argv) {
         return f.fail("--delta must be in (0, 1) or -1 (got %g)", double(delta));
 
     WrControlMesh mesh;
-    Status s = read_control_mesh(mesh_path.c_str(), &mesh);
+    Status s = read_control_mesh(mesh_path.c_str(), mesh);
     if (!s) return f.fail_status(s);
     if (delta > 0.0f)
         for (WrControlPoint& q : mesh.points) q.delta = delta;

@@ -175,3 +175,50 @@ TEST_CASE("the shear-lag spacing estimate (reconstructed) reproduces Table 3's o
     CHECK(crack_spacing_estimate(a_h, ratio, 0.023f, 0.0252f) > 3.0f);  // pine: wider
     CHECK(std::isnan(crack_spacing_estimate(-1.0f, ratio, 0.01f, 0.02f)));
 }
+
+// fuzz_bark: E2 = 4.8e12 on L0 = 2.2e-4 cm (a spring 2.6e7 times stiffer than its shear
+// spring) gave NaN displacements with an ok Status; a tolerance of 9.5e-41 ran 21 s.
+TEST_CASE("build_cylinder refuses springs float cannot solve against their shear springs") {
+    CylinderParams p;
+    p.species = species_preset(Species::camphor);
+    p.N_R = 8, p.N_H = 6;
+    p.species.L0 *= std::exp2(-10.5f);
+    p.species.E2 *= std::exp2(12.0f);
+    p.sigma *= std::exp2(3.375f);
+    p.delta_h *= std::exp2(6.25f);
+    p.seed = 16777472u;
+    BarkCylinder bark;
+    const Status s = build_cylinder(p, bark);
+    CHECK(s.code() == StatusCode::out_of_range);
+    CHECK(std::string(s.message()).find("times the shear spring") != std::string::npos);
+    // The bark tool's smallest L0 with Table 2's values stays solvable, and solves finite.
+    p = CylinderParams{};
+    p.N_R = 16, p.N_H = 12;
+    p.species.L0 = 0.001f;
+    REQUIRE(build_cylinder(p, bark).ok());
+    CrackRun run;
+    REQUIRE(grow_and_crack(bark, CrackRunOptions{}, run).ok());
+    for (const Vec3& w : bark.net.W) REQUIRE((std::isfinite(w.x) && std::isfinite(w.y)));
+    p.tolerance = 9.46e-41f;
+    CHECK(build_cylinder(p, bark).code() == StatusCode::invalid_argument);
+}
+
+// fuzz_bark: delta_h = 3.7e19 cm/s overflowed the displacement field; grow_and_crack returned
+// ok with NaN W.
+TEST_CASE("grow_and_crack refuses a displacement field that overflows a float") {
+    CylinderParams p;
+    p.species = species_preset(Species::chinese_tallow);
+    p.N_R = 8, p.N_H = 4;
+    p.species.L0 *= std::exp2(0.5f);
+    p.species.G *= std::exp2(15.875f);
+    p.species.kappa1 = 1.0f + (p.species.kappa1 - 1.0f) * std::exp2(4.375f);
+    p.species.kappa2 = 1.0f + (p.species.kappa2 - 1.0f) * std::exp2(12.0f);
+    p.delta_h = 3.693296501290277e+19f;
+    p.seed = 1625620480u;
+    BarkCylinder bark;
+    REQUIRE(build_cylinder(p, bark).ok());
+    CrackRun run;
+    const Status s = grow_and_crack(bark, CrackRunOptions{}, run);
+    CHECK(s.code() == StatusCode::out_of_range);
+    CHECK(std::string(s.message()).find("overflowed a float") != std::string::npos);
+}

@@ -172,3 +172,19 @@ TEST_CASE("layered bark: bad Table 4 values and sizes get a Status") {
     const FrameRequest late[] = {{1e6f, false}};
     CHECK(bark.run(late, 1).code() == StatusCode::invalid_argument);
 }
+
+// eta is any finite value >= 0: eta / L0 past INT_MAX was converted to int (undefined) and the
+// window loops ran over billions of cells; the window is now the lattice at most.
+TEST_CASE("drying: an eta wider than the patch dries every node, at once") {
+    for (float eta : {1e3f, 1e30f}) {
+        LayeredParams p = small_params();
+        p.peeling.eta = eta;
+        LayeredBark bark;
+        REQUIRE(bark.build(p).ok());
+        const int s = bark.lattice().spring(8, 6, 0);
+        REQUIRE(s >= 0);
+        bark.break_surface_spring(s, 0.0f);
+        bark.update_drying_zone();
+        for (int q = 0; q < bark.lattice().net.node_count(); ++q) CHECK(bark.in_drying_zone(q));
+    }
+}

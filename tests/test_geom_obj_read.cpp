@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "shitsukan/core/memory_budget.hpp"
 #include "shitsukan/core/prng.hpp"
 #include "shitsukan/geom/mesh_builders.hpp"
 #include "shitsukan/geom/obj.hpp"
@@ -158,4 +159,28 @@ TEST_CASE("read_obj: random bytes and mutated OBJ text never crash") {
     TriangleMesh m;
     CHECK(read_obj("/nonexistent/dir/x.obj", m).code() == StatusCode::io_error);
     CHECK(read_obj_text(nullptr, 0, "empty", m).code() == StatusCode::degenerate);
+}
+
+// read_obj read a whole file into memory with no cap: `--obj /dev/zero` grew until killed.
+// Now a NUL byte stops the read at its 64 KiB chunk, and the text is capped (kObjMaxBytes)
+// and held to the memory budget as it grows.
+TEST_CASE("read_obj: /dev/zero stops at once, the text is held to the memory budget") {
+    TriangleMesh m;
+    Status s = read_obj("/dev/zero", m);
+    CHECK(s.code() == StatusCode::invalid_argument);
+    CHECK(std::string(s.message()).find("NUL byte") != std::string::npos);
+    const std::string path = temp_path("long.obj");
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    REQUIRE(f != nullptr);
+    for (int i = 0; i < 20000; ++i) std::fputs("v 0.125 0.25 0.5\n", f);
+    std::fputs("f 1 2 3\n", f);
+    REQUIRE(std::fclose(f) == 0);
+    REQUIRE(read_obj(path.c_str(), m).ok());
+    set_memory_budget(100000);  // the file is 360,008 bytes
+    s = read_obj(path.c_str(), m);
+    set_memory_budget(0);
+    CHECK(s.code() == StatusCode::too_large);
+    CHECK(std::string(s.message()).find("read_obj: the text") != std::string::npos);
+    std::remove(path.c_str());
+    CHECK(kObjMaxBytes >= std::size_t(kObjMaxLine) * 1024);
 }

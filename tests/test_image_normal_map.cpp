@@ -2,6 +2,7 @@
 // a height map, its axes (y up the image), borders, wrap and the RGB encoding.
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <doctest/doctest.h>
@@ -73,4 +74,36 @@ TEST_CASE("height_map_normals: bad input and the RGB encoding") {
     CHECK(rgb[2] == 255);
     CHECK(rgb[3] == 0);
     CHECK(rgb[4] == 255);
+}
+
+TEST_CASE("height_map_normals: non-finite heights and overflowing slopes are refused, steep "
+          "finite slopes give unit normals") {
+    const int w = 4, h = 3;
+    HeightNormalOptions o;
+    o.strength = 8.0f;
+    std::vector<Vec3> n(w * h);
+    const float bad_heights[] = {std::nanf(""), INFINITY, -INFINITY};
+    for (float bad : bad_heights) {
+        std::vector<float> height(w * h, 0.5f);
+        height[1 * w + 2] = bad;
+        const Status s = height_map_normals(height.data(), w, h, o, n.data());
+        CHECK(s.code() == StatusCode::invalid_argument);
+        CHECK(std::string(s.message()).find("(2, 1)") != std::string::npos);
+    }
+    // +-3e38 next to each other: the difference overflows a float.
+    std::vector<float> height(w * h, 0.0f);
+    height[1] = 3e38f, height[3] = -3e38f;
+    const Status s = height_map_normals(height.data(), w, h, o, n.data());
+    CHECK(s.code() == StatusCode::out_of_range);
+    CHECK(std::string(s.message()).find("overflows") != std::string::npos);
+    // A steep but finite slope (1e30 per pixel, squares past FLT_MAX): a unit normal along -x.
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) height[y * w + x] = 1e30f * float(x);
+    REQUIRE(height_map_normals(height.data(), w, h, o, n.data()).ok());
+    for (const Vec3& v : n) {
+        CHECK(v.x == doctest::Approx(-1.0f).epsilon(1e-6));
+        CHECK(std::fabs(v.y) < 1e-6f);
+        CHECK(v.z >= 0.0f);
+        CHECK(std::isfinite(v.z));
+    }
 }

@@ -15,6 +15,7 @@
 
 #include "shitsukan/core/prng.hpp"
 #include "shitsukan/image/deflate.hpp"
+#include "shitsukan/image/image.hpp"
 #include "shitsukan/image/image_io.hpp"
 #include "shitsukan/image/image_read.hpp"
 #include "shitsukan/image/pfm.hpp"
@@ -165,4 +166,88 @@ TEST_CASE("zlib_deflate: streams inflate back (stb_image) for empty, tiny, runs,
     REQUIRE(zlib_deflate(nullptr, 0, z).ok());
     CHECK(z.size() >= 2 + 1 + 4);
     CHECK(zlib_deflate(nullptr, 5, z).code() == StatusCode::invalid_argument);
+}
+
+namespace {
+void write_bytes(const std::string& path, const void* data, std::size_t n) {
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    REQUIRE(f != nullptr);
+    REQUIRE(std::fwrite(data, 1, n, f) == n);
+    REQUIRE(std::fclose(f) == 0);
+}
+}  // namespace
+
+// A 36-byte PFM whose header claims 30000 x 30000 made read_pfm allocate and zero 3.6 GB
+// before it found the data missing; an oversized width went through fscanf's %d (undefined).
+TEST_CASE("read_pfm: the header's size is checked against the file's before allocating") {
+    const std::string path = temp_path("claims.pfm");
+    const char claims[] = "Pf\n30000 30000\n-1.0\n0123456789abcdef";  // 36 bytes
+    write_bytes(path, claims, sizeof claims - 1);
+    PfmImage back;
+    Status s = read_pfm(path.c_str(), back);
+    CHECK(s.code() == StatusCode::invalid_argument);
+    CHECK(std::string(s.message()).find("the file holds 16") != std::string::npos);
+    // A width of more digits than an int holds: refused as a header, no overflow.
+    const char wide[] = "PF\n99999999999999999999 1\n-1.0\n0000";
+    write_bytes(path, wide, sizeof wide - 1);
+    CHECK(read_pfm(path.c_str(), back).code() == StatusCode::invalid_argument);
+    const char big[] = "PF\n70000 1\n-1.0\n0000";
+    write_bytes(path, big, sizeof big - 1);
+    CHECK(read_pfm(path.c_str(), back).code() == StatusCode::too_large);
+    for (const char* bad : {"Pf\n2 1\n0\n01234567", "Pf\n2 1\nnan\n01234567",
+                            "Pf\n-2 1\n-1\n01234567", "Pf\n2 1\n-1", "Pf2 1\n-1\n01234567"}) {
+        CAPTURE(bad);
+        write_bytes(path, bad, std::strlen(bad));
+        CHECK(read_pfm(path.c_str(), back).code() == StatusCode::invalid_argument);
+    }
+    // Exactly enough data, blanks of any kind between the fields: read, top row first.
+    const char good[] = "Pf \t2\r\n2\n-1.0\n\0\0\x80\x3f\0\0\0\x40\0\0\x40\x40\0\0\x80\x40";
+    write_bytes(path, good, sizeof good - 1);
+    REQUIRE(read_pfm(path.c_str(), back).ok());
+    REQUIRE(back.data.size() == 4);
+    CHECK(back.data[0] == 3.0f);  // the file's second row is the top row
+    CHECK(back.data[1] == 4.0f);
+    CHECK(back.data[2] == 1.0f);
+    CHECK(back.data[3] == 2.0f);
+    std::remove(path.c_str());
+}
+
+// A PNG is a few bytes of header: one claiming more pixels than its deflate stream can hold
+// is refused before stb_image allocates for it.
+TEST_CASE("read_image: a header claiming more samples than the file can hold is refused") {
+    if (!image_reading_available()) return;
+    GrayImage g(64, 64, 7);
+    const std::string path = temp_path("claims.png");
+    REQUIRE(write_png(path.c_str(), g.view()).ok());
+    LoadedImage img;
+    REQUIRE(read_image(path.c_str(), img).ok());
+    // IHDR's width and height at bytes 16..23 (big-endian): 30000 x 30000, CRC left stale
+    // (stbi_info does not check it).
+    std::FILE* f = std::fopen(path.c_str(), "r+b");
+    REQUIRE(f != nullptr);
+    const unsigned char size[8] = {0, 0, 0x75, 0x30, 0, 0, 0x75, 0x30};
+    REQUIRE(std::fseek(f, 16, SEEK_SET) == 0);
+    REQUIRE(std::fwrite(size, 1, 8, f) == 8);
+    REQUIRE(std::fclose(f) == 0);
+    const Status s = read_image(path.c_str(), img);
+    CHECK(s.code() == StatusCode::invalid_argument);
+    CHECK(std::string(s.message()).find("more than its") != std::string::npos);
+    // fuzz_readers: stb_image read a PPM of height 0 as an ok image of no pixels.
+    write_bytes(path, "P6 \n\n21255\n\1\2\3\4\5\6", 18);
+    CHECK(read_image(path.c_str(), img).code() == StatusCode::invalid_argument);
+    // fuzz_readers: stb_image's PNM reader overflows an int on a long number (undefined); such
+    // a header is refused first, after a comment too. A number at INT_MAX is stb_image's to
+    // judge (it refuses the size).
+    const char* long_numbers[] = {"P5 42\n\v4211111111111111111 1 255\n\1",
+                                  "P6\n# c\n2147483648 1 255\n\1\2\3"};
+    for (const char* header : long_numbers) {
+        CAPTURE(header);
+        write_bytes(path, header, std::strlen(header));
+        const Status s2 = read_image(path.c_str(), img);
+        CHECK(s2.code() == StatusCode::invalid_argument);
+        CHECK(std::string(s2.message()).find("PNM header number") != std::string::npos);
+    }
+    write_bytes(path, "P5 2147483647 1 255\n\1", 22);
+    CHECK_FALSE(read_image(path.c_str(), img).ok());
+    std::remove(path.c_str());
 }

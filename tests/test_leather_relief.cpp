@@ -411,3 +411,37 @@ TEST_CASE("relief: convex scales slope outwards over their inner part, concave i
     CHECK(convex > 0.02);
     CHECK(concave < -0.02);
 }
+
+// fuzz_maps: edge_r = 3.5e-43 made every height infinite (NaN with height_scale 0) under an
+// ok Status; a huge height_scale made the normals' squared length overflow.
+TEST_CASE("leather maps: heights past kMaxReliefHeight are refused, steep normals stay unit") {
+    ScaleParams prm;
+    prm.D = prm.d = 0.25f;
+    ScalePattern pattern;
+    REQUIRE(generate_scale_pattern(prm, pattern).ok());
+    const BezierChain section = table1_section(Table1Section::convex);
+    LeatherMaps maps;
+    ReliefOptions o;
+    o.edge_r = 3.4892e-43f;
+    o.height_scale = 0.0f;
+    Status s = make_leather_maps(pattern, 32, 32, section, o, maps);
+    CHECK(s.code() == StatusCode::out_of_range);
+    CHECK(std::string(s.message()).find("edge_r") != std::string::npos);
+    o.edge_r = 1.0f;
+    o.height_scale = 3e38f;
+    CHECK(make_leather_maps(pattern, 32, 32, section, o, maps).code() ==
+          StatusCode::out_of_range);
+    // Heights within the bound, normals whose components pass 1.8e19: unit, finite.
+    for (ReliefNormal rule : {ReliefNormal::eq4, ReliefNormal::height_gradient}) {
+        o.height_scale = 1e25f;
+        o.normal_rule = rule;
+        REQUIRE(make_leather_maps(pattern, 32, 32, section, o, maps).ok());
+        for (const Vec3& n : maps.normals) {
+            REQUIRE(std::isfinite(n.x));
+            REQUIRE(std::isfinite(n.y));
+            REQUIRE(std::isfinite(n.z));
+            CHECK(std::fabs(length(n) - 1.0f) < 1e-5f);
+        }
+        for (float h : maps.heights) REQUIRE(std::isfinite(h));
+    }
+}

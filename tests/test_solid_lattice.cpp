@@ -387,3 +387,29 @@ TEST_CASE("Type II's container memory counts the hash map, not only the payload"
     CHECK(t2.container_bytes() >= t2.list_size() * 32);  // one heap node of >= 32 bytes each
     CHECK(t2.container_bytes() > 2 * t2.list_bytes());
 }
+
+// fuzz_geometry: corners of -3.4e38 built a quadtree lattice full of -inf with an ok Status
+// (the sums of the means overflowed); the 3D lattice sums the same way.
+TEST_CASE("fractal lattices refuse corners beyond kMaxFractalCorner, build finite ones there") {
+    QuadtreeParams q;
+    q.R = 3;
+    q.beta = 0.0f;
+    q.corners[0] = 127.0f;
+    q.corners[2] = -3.3895e38f;
+    std::vector<float> buffer(9 * 9);
+    int side = 0;
+    const Status s = build_quadtree_lattice(q, buffer.data(), buffer.size() * 4, side);
+    CHECK(s.code() == StatusCode::invalid_argument);
+    CHECK(std::string(s.message()).find("corner value 2") != std::string::npos);
+    for (float c : {kMaxFractalCorner, -kMaxFractalCorner}) {
+        for (float& v : q.corners) v = c;
+        REQUIRE(build_quadtree_lattice(q, buffer.data(), buffer.size() * 4, side).ok());
+        for (float v : buffer) CHECK(std::isfinite(v));
+    }
+    FractalParams p;
+    p.R = 2;
+    p.corners[5] = 1e31f;
+    CHECK(validate_fractal_params(p, 12).code() == StatusCode::invalid_argument);
+    p.corners[5] = -kMaxFractalCorner;
+    CHECK(validate_fractal_params(p, 12).ok());
+}

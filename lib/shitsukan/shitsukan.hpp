@@ -128,6 +128,7 @@
 
 // wrinkly
 #include "shitsukan/wrinkly/control_mesh.hpp"
+#include "shitsukan/wrinkly/control_mesh_read.hpp"
 #include "shitsukan/wrinkly/hierarchical_sampling.hpp"
 #include "shitsukan/wrinkly/ist.hpp"
 #include "shitsukan/wrinkly/ist_axis.hpp"

@@ -92,6 +92,7 @@ refused "--k must be a number in [0, 1000]" marble --k abc
 refused "--k must be a number in [0, 1000]" marble --k 1e9
 refused "--R must be an integer in [1, 8]" marble --R 12
 refused "--size must be an integer in [8, 16384]" marble --size 3
+refused "--size must be an integer in [8, 8192]" leather --size 16384
 refused "--size must be an integer" wood --size 1.5
 refused "--seed must be an integer in [0, 4294967295]" marble --seed -4
 refused "--beta must be a number" marble --beta nan
@@ -145,6 +146,40 @@ printf 'v 0 0 0\nf 1 2 3\n' > broken.obj
 "$BIN" marble --obj broken.obj > out.txt 2> err.txt
 rc=$?
 if [ $rc = 1 ] && grep -q 'broken.obj:2:' err.txt; then ok; else bad "broken.obj: rc $rc $(cat err.txt)"; fi
+
+# a height map with a NaN, an infinity or slopes past a float's range: exit 1, the reason named
+printf 'Pf\n3 1\n-1.0\n\0\0\0\0\0\0\300\177\0\0\0\0' > nan.pfm
+printf 'Pf\n3 1\n-1.0\n\0\0\0\0\0\0\200\177\0\0\0\0' > inf.pfm
+printf 'Pf\n3 1\n-1.0\n\346\261\141\177\0\0\0\0\346\261\141\377' > huge.pfm
+for f in nan inf huge; do
+    "$BIN" normals $f.pfm -o ${f}_n.png > out.txt 2> err.txt
+    rc=$?
+    if [ $rc = 1 ] && grep -q 'height_map_normals' err.txt && [ ! -e ${f}_n.png ]; then ok
+    else bad "normals of $f.pfm: rc $rc $(cat err.txt)"; fi
+done
+
+# bark flags in range whose grown trunk makes a crack map past the memory budget: exit 1 with
+# the budget's message, no crash, no map
+for args in "--N_R 8 --N_H 4 --T 1000000" "--N_R 32 --N_H 16 --L0 100"; do
+    "$BIN" bark $args -o big --quiet > out.txt 2> err.txt
+    rc=$?
+    if [ $rc = 1 ] && grep -q 'crack map of .* over the memory budget' err.txt && [ ! -e big_cracks.png ]; then ok
+    else bad "bark $args: rc $rc $(cat err.txt)"; fi
+done
+
+# readers stop at once on an endless or binary input, and refuse out-of-range colours and
+# over-long lines with the line number
+timeout 20 "$BIN" marble --obj /dev/zero -o z.png > out.txt 2> err.txt
+rc=$?
+if [ $rc = 1 ] && grep -q '/dev/zero:1: NUL byte' err.txt; then ok; else bad "--obj /dev/zero: rc $rc $(cat err.txt)"; fi
+printf '1 1\n0 0 0 0 1.5 0 0\n' > colour.mesh
+"$BIN" wrinkly --mesh colour.mesh > out.txt 2> err.txt
+rc=$?
+if [ $rc = 1 ] && grep -q 'colour.mesh:2: the colour' err.txt; then ok; else bad "colour.mesh: rc $rc $(cat err.txt)"; fi
+{ printf '2 1\n0 0 0 0'; head -c 1100 /dev/zero | tr '\0' ' '; printf '0 0 0 0\n'; } > long.mesh
+"$BIN" wrinkly --mesh long.mesh > out.txt 2> err.txt
+rc=$?
+if [ $rc = 1 ] && grep -q 'long.mesh:2: line longer than 1024 bytes' err.txt; then ok; else bad "long.mesh: rc $rc $(cat err.txt)"; fi
 
 echo "cli tests: $pass passed, $fail failed"
 [ $fail = 0 ]

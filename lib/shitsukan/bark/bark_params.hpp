@@ -21,7 +21,7 @@
 //
 // Ranges (validate): N_R even in [4, 4096], N_H in [2, 4096], N_R·N_H·bytes per node within
 // kMaxBarkBytes; L0, D > 0; E1, E2, G > 0; kappa > 1; 0 <= sigma < 0.3; T > 0; delta_r,
-// delta_h >= 0 and finite (not both 0); tolerance in (0, 0.1].
+// delta_h >= 0 and finite (not both 0); tolerance in [1e-7, 0.1].
 #pragma once
 
 #include <cstdint>

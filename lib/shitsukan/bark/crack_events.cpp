@@ -33,6 +33,20 @@ void record_snapshot(const SpringNetwork& net, float t, int breaks, CrackRun* ou
 
 }  // namespace
 
+namespace {
+// The solver works in float: growth rates or moduli far beyond the bark's (fuzz_bark: delta_h =
+// 3.7e19 cm/s) overflow the displacement field; that is refused, not returned as a result.
+Status check_field(const std::vector<Vec3>& W, float t) {
+    for (std::size_t p = 0; p < W.size(); ++p)
+        if (!is_finite(W[p]))
+            return Status::error(StatusCode::out_of_range,
+                                 "run_cracking: the displacement of node %zu at t = %g overflowed "
+                                 "a float (growth rates or moduli too large)",
+                                 p, double(t));
+    return Status::success();
+}
+}  // namespace
+
 Status run_cracking(SpringNetwork& net, float T, float tol, const CrackRunOptions& options,
                     CrackRun& out) {
     if (!(is_finite(T) && T > 0.0f) || !(is_finite(tol) && tol > 0.0f))
@@ -115,6 +129,8 @@ Status run_cracking(SpringNetwork& net, float T, float tol, const CrackRunOption
                         &out);
     if (options.progress) options.progress(1.0f, options.progress_user);
     out.node_updates = net.updates - updates0;
+    SHITSUKAN_TRY(check_field(net.W, T));
+    for (const CrackSnapshot& snap : out.snapshots) SHITSUKAN_TRY(check_field(snap.W, snap.t));
     return Status::success();
 }
 

@@ -65,6 +65,8 @@ struct CrackRun {
 Status run_cracking(SpringNetwork& net, float T, float tol, const CrackRunOptions& options,
                     CrackRun& out);
 
+// Both return out_of_range when the displacement field (at T or at a snapshot) overflows a
+// float: growth rates or moduli far beyond the bark's; never a non-finite W with an ok Status.
 // The two-layer cylinder from t = 0 to params.T, tolerance tau·L0·max g_s.
 Status grow_and_crack(BarkCylinder& bark, const CrackRunOptions& options, CrackRun& out);
 

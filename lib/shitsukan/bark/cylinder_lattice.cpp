@@ -165,6 +165,17 @@ Status set_constants(BarkCylinder& b) {
     for (int i = 0; i < n; ++i)
         net.k_anchor[std::size_t(i)] =
             shear_spring_constant(sp.G, b.node_area[std::size_t(i)], b.params.D);
+    for (std::size_t s = 0; s < net.springs.size(); ++s) {
+        const BarkSpring& spring = net.springs[s];
+        const float a = std::min(net.k_anchor[spring.i], net.k_anchor[spring.j]);
+        if (!(double(spring.k) <= kMaxSpringAnchorRatio * double(a)))
+            return Status::error(StatusCode::out_of_range,
+                                 "bark: a spring's k = %g is %g times the shear spring's k = %g "
+                                 "at its node, over %g: float cannot solve the node (raise G or "
+                                 "D, lower E1, E2 or raise L0)",
+                                 double(spring.k), double(spring.k) / double(a), double(a),
+                                 kMaxSpringAnchorRatio);
+    }
     return Status::success();
 }
 

@@ -66,6 +66,15 @@ struct BarkCylinder {
 
 // Builds the lattice, the constants and the thresholds. reverse_springs numbers the springs in
 // reverse (tests: the results must not depend on it).
+// Largest spring stiffness k = E·S/l0 over the shear spring k_sh = G·A/D of either of its
+// nodes (chosen here: 2^21 = 2.1e6). The solver (spring_network.hpp) solves each node's block
+// K_p = k_sh·I + sum k n n^T in float, whose 24-bit significand keeps k_sh in a sum with k
+// only while k / k_sh < 2^24: past that K_p turns singular (fuzz_bark: E2 = 4.8e12 on
+// L0 = 2.2e-4 cm, a ratio of 2.6e7, gave NaN displacements under an ok Status). 2^21 leaves
+// 3 bits; the ratio grows as (D / L0)^2, and the bark tool's smallest L0, 0.001 cm, reaches
+// 1.4e6 with Table 2's values. build_cylinder refuses a stiffer spring (out_of_range).
+constexpr double kMaxSpringAnchorRatio = 2097152.0;
+
 Status build_cylinder(const CylinderParams& params, BarkCylinder& out,
                       bool reverse_springs = false);
 

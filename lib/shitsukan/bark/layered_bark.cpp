@@ -289,7 +289,11 @@ void LayeredBark::update_drying_zone() {
     const float eta = params_.peeling.eta;
     const float a_h = lattice_.a_h, L0 = params_.species.L0;
     const float period = float(params_.N_R) * a_h;
-    const int wc = int(std::ceil(eta / a_h)) + 1, wr = int(std::ceil(eta / L0)) + 1;
+    // The window in cells, at most the lattice (a wider one adds no node; eta is any finite
+    // value >= 0, and eta / L0 past INT_MAX would be undefined as an int).
+    const float cells_c = std::ceil(eta / a_h) + 1.0f, cells_r = std::ceil(eta / L0) + 1.0f;
+    const int wc = cells_c < float(params_.N_R) ? int(cells_c) : params_.N_R;
+    const int wr = cells_r < float(params_.N_H) ? int(cells_r) : params_.N_H;
     auto spread = [&](Vec3 source, int c0, int r0) {
         for (int dc = -wc; dc <= wc; ++dc)
             for (int dr = -wr; dr <= wr; ++dr) {

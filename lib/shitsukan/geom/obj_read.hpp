@@ -23,8 +23,10 @@
 // wrong count of numbers, an index 0 or out of range (an index refers to the elements defined
 // ABOVE it), a face with fewer than 3 corners, a corner that is not v, v/t, v//n or v/t/n.
 // A file without faces -> degenerate. A line longer than kObjMaxLine, more than
-// kObjMaxElements elements -> too_large. A missing file -> io_error. No input crashes the
-// reader (tests/data/obj_malformed, and the sanitizer run).
+// kObjMaxElements elements, a file longer than kObjMaxBytes (read_obj holds the text whole;
+// it stops reading there, and at the memory budget) -> too_large. A NUL byte (a binary file,
+// /dev/zero: refused at the first 64 KiB read) -> invalid_argument. A missing file ->
+// io_error. No input crashes the reader (tests/data/obj_malformed, and the sanitizer run).
 // Host side (std::vector, std::unordered_map).
 #pragma once
 
@@ -37,6 +39,9 @@ namespace shitsukan {
 
 constexpr std::size_t kObjMaxLine = 1u << 16;      // 64 KiB per line
 constexpr std::size_t kObjMaxElements = 1u << 26;  // 67 M vertices / corners
+// chosen here: 1 GiB of text, about 30 M lines of "v x y z": far above any mesh the figures,
+// the tool or a teacher's model need, and a fixed stop for an endless stream (a pipe).
+constexpr std::size_t kObjMaxBytes = std::size_t(1) << 30;
 
 Status read_obj(const char* path, TriangleMesh& out);
 // `name` is used in the messages in place of a path.

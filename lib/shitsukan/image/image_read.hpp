@@ -15,8 +15,10 @@
 //   #include "shitsukan/image/image_io.hpp"
 //
 // 16-bit PNGs keep their 16 bits (bits = 16); every other file is read as 8-bit.
-// Errors: a missing or undecodable file -> io_error with stb_image's reason; a build without
-// the stb_image header -> not_supported. Host side.
+// Errors: a missing or undecodable file -> io_error with stb_image's reason; a header that
+// claims more samples than kImageMaxExpansion times the file's size -> invalid_argument,
+// and more than the memory budget -> too_large, both before decoding; a build without the
+// stb_image header -> not_supported. Host side.
 #pragma once
 
 #include <cstdint>
@@ -35,6 +37,11 @@ struct LoadedImage {
                        std::size_t(c)];
     }
 };
+
+// Decoded bytes one byte of file can hold, at most (chosen here: deflate's limit, 1032:1, as in
+// a PNG of one colour, rounded up; JPEG and the RLE formats pack less). An LZW GIF can pack
+// more; no height map needs such a GIF.
+constexpr std::uint64_t kImageMaxExpansion = 1100;
 
 Status read_image(const char* path, LoadedImage& out);
 bool image_reading_available();

@@ -23,6 +23,21 @@ template <class At> float difference(int i, int n, bool wrap, At at) {
     return (at(hi) - at(lo)) / span;
 }
 
+// Every height finite: a NaN or infinite height has no slope (a normal from it would be made
+// up), so the map is refused, naming the first one.
+Status check_heights(const float* heights, int width, int height) {
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const float h = heights[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+            if (!std::isfinite(h))
+                return Status::error(StatusCode::invalid_argument,
+                                     "height_map_normals: the height at (%d, %d) is %g: heights "
+                                     "must be finite",
+                                     x, y, double(h));
+        }
+    return Status::success();
+}
+
 }  // namespace
 
 Status height_map_normals(const float* heights, int width, int height,
@@ -38,6 +53,7 @@ Status height_map_normals(const float* heights, int width, int height,
                              "height_map_normals: strength must be finite (got %g)",
                              double(options.strength));
     const std::size_t w = std::size_t(width);
+    SHITSUKAN_TRY(check_heights(heights, width, height));
     for (int y = 0; y < height; ++y) {
         const float* row = heights + std::size_t(y) * w;
         for (int x = 0; x < width; ++x) {
@@ -46,10 +62,20 @@ Status height_map_normals(const float* heights, int width, int height,
             const float dy = -difference(y, height, options.wrap, [&](int k) {
                 return heights[std::size_t(k) * w + std::size_t(x)];
             });
-            Vec3 n{-options.strength * dx, -options.strength * dy, 1.0f};
+            const float gx = -options.strength * dx, gy = -options.strength * dy;
+            if (!std::isfinite(gx) || !std::isfinite(gy))
+                return Status::error(StatusCode::out_of_range,
+                                     "height_map_normals: the slope at (%d, %d) overflows a "
+                                     "float (dh/dx %g, dh/dy %g, strength %g): scale the "
+                                     "heights down",
+                                     x, y, double(dx), double(dy), double(options.strength));
+            // (gx, gy, 1) / |.| through (gx, gy, 1) / m, m = max(|gx|, |gy|, 1): the squares
+            // stay below 3 however steep the slope, so the length never overflows.
+            float m = std::fabs(gx) > std::fabs(gy) ? std::fabs(gx) : std::fabs(gy);
+            if (m < 1.0f) m = 1.0f;
+            const Vec3 n{gx / m, gy / m, 1.0f / m};
             const float len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-            out[std::size_t(y) * w + std::size_t(x)] =
-                std::isfinite(len) && len > 0.0f ? n * (1.0f / len) : Vec3{0.0f, 0.0f, 1.0f};
+            out[std::size_t(y) * w + std::size_t(x)] = n * (1.0f / len);
         }
     }
     return Status::success();

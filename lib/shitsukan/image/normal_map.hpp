@@ -21,7 +21,10 @@
 // (h(x + 1) - h(x - 1)) / 2; at the border one-sided ones, or, with wrap, differences across
 // the opposite border, so a tileable height map gives a tileable normal map. strength: the
 // height, in pixels, of a height difference of 1 (the full range of a 16-bit or 8-bit map).
-// Errors: null pointers, sizes below 1, a strength that is not finite -> invalid_argument.
+// Errors: null pointers, sizes below 1, a strength that is not finite, a height that is not
+// finite (NaN, inf: named with its pixel) -> invalid_argument; a slope s·dh that overflows a
+// float (heights near ±3e38, or a huge strength) -> out_of_range. Any finite slope gives a
+// unit normal (nearly horizontal for a steep one).
 // Host or device: allocates nothing, float only.
 #pragma once
 

@@ -16,8 +16,11 @@
 // row up (the format's convention; the functions here take and give the top row first).
 // Errors: empty image, channels other than 1 or 3, non-finite samples are allowed (PFM
 // stores any float); unreadable or malformed files -> io_error / invalid_argument with the
-// path; sizes above 65536 a side -> too_large. Written through core/output_file.hpp (a failed
-// write names the reason and leaves no part of a file). Host side.
+// path; sizes above 65536 a side -> too_large. read_pfm parses the header with bounds (a
+// size of more than 6 digits is malformed) and checks its size against the bytes the file
+// holds before allocating (a short file is refused at once; a pipe is read a row at a time).
+// Written through core/output_file.hpp (a failed write names the reason and leaves no part of
+// a file). Host side.
 #pragma once
 
 #include <vector>

@@ -12,6 +12,36 @@ namespace shitsukan {
 
 namespace {
 
+// The largest height the relief can reach: |z| <= the section's largest |control point z|
+// (a Bezier curve lies in its control polygon's hull), times S / edge_r · height_scale
+// (relief.hpp step 3), S the largest scale size. Past kMaxReliefHeight the heights (and the
+// 16-bit encoding's unit) would overflow a float: fuzz_maps found edge_r = 3.5e-43 giving
+// infinite heights, and NaN with height_scale = 0, under an ok Status.
+Status check_height_range(const ScalePattern& pattern, const BezierChain& section,
+                          const ReliefOptions& options) {
+    double z = 0.0, size = 0.0;
+    for (int k = 0; k < section.count; ++k)
+        for (const Vec2& p : section.segments[k].p) z = std::fabs(p.y) > z ? std::fabs(p.y) : z;
+    for (int i = 0; i < pattern.polygon_count(); ++i) {
+        int n = 0;
+        const Vec2* poly = pattern.polygon(i, &n);
+        const double s = double(scale_size(poly, n));
+        size = s > size ? s : size;
+    }
+    // (both factors: the relief forms z·S / edge_r first, so an overflow there is NaN after
+    // a height_scale of 0)
+    const double unscaled = z * size / double(options.edge_r);
+    const double top = unscaled * double(options.height_scale);
+    if (!(unscaled <= double(kMaxReliefHeight) && top <= double(kMaxReliefHeight)))
+        return Status::error(StatusCode::out_of_range,
+                             "leather maps: heights could reach %g (section |z| %g x scale size "
+                             "%g / edge_r %g x height_scale %g), past %g: raise edge_r or lower "
+                             "height_scale",
+                             top, z, size, double(options.edge_r), double(options.height_scale),
+                             double(kMaxReliefHeight));
+    return Status::success();
+}
+
 // The public boundary: sizes, labels, the pattern's plain data (a caller may fill it by hand),
 // the section and the options.
 Status check_leather_map_inputs(const ScalePattern& pattern, const int* labels, int width,
@@ -59,6 +89,7 @@ Status check_leather_map_inputs(const ScalePattern& pattern, const int* labels, 
             return Status::error(StatusCode::invalid_argument,
                                  "leather maps: polygon %d has %d vertices (need >= 3)", i, n);
     }
+    SHITSUKAN_TRY(check_height_range(pattern, section, options));
     std::size_t count = std::size_t(width) * std::size_t(height);
     for (std::size_t k = 0; k < count; ++k)
         if (labels[k] < -1 || labels[k] >= polygons)

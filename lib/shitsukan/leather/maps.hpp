@@ -69,9 +69,15 @@ struct LeatherMaps {
 // Builds the maps: for every pixel, scale_relief of its polygon at the pixel centre (with
 // S and the angular edge index of relief.hpp computed once per polygon).
 // invalid_argument for sizes outside 1..16384, a label outside -1..polygon_count-1 (the
-// message gives the pixel), an invalid section or options, or a pattern without polygons.
+// message gives the pixel), an invalid section or options, or a pattern without polygons;
+// out_of_range when the heights could pass kMaxReliefHeight (a tiny edge_r or a huge
+// height_scale).
 // `progress` (core/progress.hpp) hears the share of rows done, about 100 times. For a tileable
 // (wrapped) pattern pass its torus_cover (tileable.hpp) and that cover's labels.
+// Largest height a map may hold (chosen here: 1e30, far above any relief, far below a
+// float's 3.4e38 so the encodings' sums and units stay finite).
+constexpr float kMaxReliefHeight = 1e30f;
+
 Status make_leather_maps(const ScalePattern& pattern, const int* labels, int width, int height,
                          const BezierChain& section, const ReliefOptions& options,
                          LeatherMaps& out, Progress progress = {});

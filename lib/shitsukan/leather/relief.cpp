@@ -194,6 +194,23 @@ float scale_size(const Vec2* polygon, int n) {
     return perimeter > 0.0f ? std::fabs(area2) / perimeter : 0.0f;  // 2·area / perimeter
 }
 
+// normalize(n), also for a slope so steep that the squared length overflows a float (a
+// component past 1.8e19, or infinite: a tiny edge distance or a huge height_scale). Such an
+// n is first scaled by its largest component, an infinite one standing for the limit of the
+// normal as the slope grows: the horizontal direction of the infinite components.
+namespace {
+Vec3 steep_normalize(Vec3 n) {
+    if (is_finite(n.x * n.x + n.y * n.y + n.z * n.z)) return normalize(n);
+    if (!is_finite(n.x) || !is_finite(n.y) || !is_finite(n.z)) {
+        for (int c = 0; c < 3; ++c) n[c] = is_finite(n[c]) ? 0.0f : (n[c] > 0.0f ? 1.0f : -1.0f);
+        return normalize(n);
+    }
+    float m = std::fabs(n.x) > std::fabs(n.y) ? std::fabs(n.x) : std::fabs(n.y);
+    m = std::fabs(n.z) > m ? std::fabs(n.z) : m;
+    return normalize(n * (1.0f / m));
+}
+}  // namespace
+
 void relief_along_ray(float rho, Vec2 m, const EdgeHit& hit, float size, const BezierChain& section,
                       const ReliefOptions& options, ReliefSample* out) {
     SHITSUKAN_ASSERT(section.count >= 1 && options.edge_r > 0.0f);
@@ -218,13 +235,14 @@ void relief_along_ray(float rho, Vec2 m, const EdgeHit& hit, float size, const B
     if (options.normal_rule == ReliefNormal::height_gradient && hit.edge_distance > 0.0f) {
         // Exact gradient of the height field in the fan triangle: rho = n_e·(x - m)/d_e.
         float g = k * size / hit.edge_distance;
-        n = {-g * q.dz * hit.edge_normal.x, -g * q.dz * hit.edge_normal.y, q.dr};
+        const float gz = q.dz == 0.0f ? 0.0f : g * q.dz;  // a flat top stays flat at g = inf
+        n = {-gz * hit.edge_normal.x, -gz * hit.edge_normal.y, q.dr};
     } else {
         // Step 4, eq. (4) multiplied by -dz/n_r: n = (-dz·u, dr), u = (p - m)/|p - m|.
         Vec2 u = mp / n_r;
         n = {-k * q.dz * u.x, -k * q.dz * u.y, q.dr};
     }
-    out->normal = normalize(n);
+    out->normal = steep_normalize(n);
 }
 
 void scale_relief(const Vec2* polygon, int n, Vec2 m, Vec2 x, const BezierChain& section,

@@ -1,10 +1,14 @@
 // The unrolled crack map (see bark_crack_map.hpp).
 #include "shitsukan/render/bark_crack_map.hpp"
 
+#include <climits>
+#include <cstdio>
+#include <cmath>
 #include <vector>
 
 #include "shitsukan/bark/crack_drawing.hpp"
 #include "shitsukan/core/hash.hpp"
+#include "shitsukan/core/memory_budget.hpp"
 #include "shitsukan/image/raster_canvas.hpp"
 
 namespace shitsukan {
@@ -77,6 +81,34 @@ Status draw_crack_map(Canvas& canvas, const BarkCylinder& bark, float t, const V
             }
         }
     }
+    return Status::success();
+}
+
+Status crack_map_size(const BarkCylinder& bark, float t, float px_per_cm, int& width,
+                      int& height) {
+    if (!(px_per_cm > 0.0f) || !std::isfinite(px_per_cm))
+        return Status::error(StatusCode::invalid_argument,
+                             "crack_map_size: px_per_cm must be finite and > 0 (got %g)",
+                             double(px_per_cm));
+    // In double: a float product past 3.4e38 would be inf, and int(ceil(x)) past INT_MAX is
+    // undefined.
+    const double C = double(bark.circumference) * (1.0 + double(hoop_strain(bark.params, t)));
+    const double H =
+        double(initial_height(bark.params)) * (1.0 + double(axial_strain(bark.params, t)));
+    const double w = std::ceil(C * double(px_per_cm)), h = std::ceil(H * double(px_per_cm));
+    if (!std::isfinite(w) || !std::isfinite(h) || w > double(INT_MAX) || h > double(INT_MAX))
+        return Status::error(StatusCode::out_of_range,
+                             "crack map: the grown trunk (%g x %g cm at t = %g s) is %g x %g "
+                             "pixels at %g px/cm, past the largest image side %d",
+                             C, H, double(t), w, h, double(px_per_cm), INT_MAX);
+    const int wi = w > 8.0 ? int(w) : 8, hi = h > 8.0 ? int(h) : 8;
+    char what[96];
+    std::snprintf(what, sizeof what, "crack map of %d x %d pixels (the trunk grown to t = %g s)",
+                  wi, hi, double(t));
+    SHITSUKAN_TRY(check_memory_budget(
+        budget_mul(budget_mul(std::uint64_t(wi), std::uint64_t(hi)), 3), what));
+    width = wi;
+    height = hi;
     return Status::success();
 }
 

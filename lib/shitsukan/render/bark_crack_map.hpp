@@ -10,6 +10,8 @@
 //   Status s = build_cylinder(p, bark);
 //   if (s) s = grow_and_crack(bark, CrackRunOptions{}, run);
 //   if (!s) return s;
+//   int w = 0, h = 0;
+//   if (!(s = crack_map_size(bark, p.T, 24.0f, w, h))) return s;   // checked, budgeted
 //   RgbImage map(200, 120, Rgb8{250, 250, 248});
 //   RasterCanvas canvas(map.view());
 //   CrackMapStyle style;  style.origin = {0.0f, 120.0f};  style.px_per_cm = 24.0f;
@@ -49,5 +51,14 @@ struct CrackMapStyle {
 // the cracks cannot be listed (crack_ribbons' Status).
 Status draw_crack_map(Canvas& canvas, const BarkCylinder& bark, float t, const Vec3* W,
                       const CrackMapStyle& style);
+
+// The size, in pixels, of the whole unrolled map at t: ceil(C(t)·px_per_cm) x
+// ceil(H(t)·px_per_cm), at least 8 x 8, with C(t), H(t) the grown circumference and height
+// (Table 1's strains). The size grows with the inputs (L0, N_R, N_H, T, the growth rates), so
+// it is checked here, before anyone allocates it: a side past INT_MAX, a side that is not
+// finite or px_per_cm not > 0 -> invalid_argument / out_of_range; width·height·3 bytes (an
+// 8-bit RGB map) over the memory budget (core/memory_budget.hpp) -> too_large.
+Status crack_map_size(const BarkCylinder& bark, float t, float px_per_cm, int& width,
+                      int& height);
 
 }  // namespace shitsukan

@@ -68,7 +68,15 @@ inline std::uint64_t lattice_bytes(int R) {
 // det_exp so every platform and every lattice type uses the same float.
 float level_amplitude(int n, float beta);
 
-// Checks R against [0, max_depth], beta >= 0 and finite, corners finite.
+// Largest |corner value| (chosen here: 1e30; the paper's corners are 0). Every point is a mean
+// of at most eight earlier points plus the level's random value (|g| < 7, times e^{-(n-1)
+// beta} <= 1, at most 13 levels), so with corners within 1e30 no sum leaves a float; nearer
+// FLT_MAX the sums of the means overflowed to inf (fuzz_geometry: corners of -3.4e38 built an
+// infinite quadtree lattice with an ok Status).
+constexpr float kMaxFractalCorner = 1e30f;
+
+// Checks R against [0, max_depth], beta >= 0 and finite, corners finite and within
+// +-kMaxFractalCorner.
 Status validate_fractal_params(const FractalParams& params, int max_depth);
 // The same three rules for any random fractal of okada1987 §2 (the 3D lattice above, the 2D
 // quadtree of fig. 1): `what` names it in the message.

@@ -15,7 +15,8 @@
 // centre the mean of the four vertices, each plus g·e^{-(n-1)·beta}. g is
 // hash_gaussian(seed, 1, x, y, 0) (the lattice's hash, stream 1). Points of later levels
 // hold NaN. Layout: x fastest, index y·side + x. Ranges as FractalParams: 0 <= R <= 12,
-// beta >= 0, corners finite (index i + 2j for the vertex (i, j)), default 0.
+// beta >= 0, corners finite within +-kMaxFractalCorner (index i + 2j for the vertex (i, j)),
+// default 0.
 // small-device: yes (caller buffer, no allocation)
 #pragma once
 

@@ -18,20 +18,34 @@ double width(const IstAxis& axis, const double* edges, int b) {
     return edge(axis, edges, b + 1) - edge(axis, edges, b);
 }
 
-int base_holding(const IstAxis& axis, const double* edges, double u) {
-    const int count = axis.base_intervals;
-    if (edges == nullptr) {
-        int b = int(std::floor(u * double(count)));
-        return b < 0 ? 0 : (b >= count ? count - 1 : b);
-    }
-    int b = 0;
-    while (b + 1 < count && u >= edges[b + 1]) ++b;  // [x_b, x_{b+1}); u = 1 in the last
-    return b;
+// Which end of a sub-interval a point on it belongs to: fujimoto2000 §2.3.1 (below eq. 9)
+// says a sub-interval with ends u_a, u_b holds u_a <= u < u_b, and u = 1 the last one; the
+// division of §2.2.1(1) 1) produces exactly such half-open parts, and eq. (7) / eq. (12) map
+// the left end of a part (offset Δu = 0) to the left end of its image. The procedure computes
+// the ends by rounding (x_b + g w_b / N, start + g part, ...), so a point that lies on an end
+// u_b may be computed a few ulps short of it; it still belongs to the part starting at u_b.
+// kEndSlack is how short (chosen here: 64 ulps of 1, far above the rounding of K <= 8
+// steps and far below a sub-interval of B N^K <= 2^32: 2.3e-10).
+constexpr double kEndSlack = 64.0 * 2.220446049250313e-16;
+
+// The part [start + g part, start + (g + 1) part) holding u, g in 0 .. n - 1 (a point at the
+// far end, u = 1, stays in the last part).
+int part_holding(double u, double start, double part, int n) {
+    const double q = (u - start) / part;
+    int g = int(std::floor(q));
+    if ((start + double(g + 1) * part) - u <= kEndSlack) ++g;  // on the end: the next part
+    return g < 0 ? 0 : (g >= n ? n - 1 : g);
 }
 
-int part_holding(double u, double start, double part, int n) {
-    int g = int(std::floor((u - start) / part));
-    return g < 0 ? 0 : (g >= n ? n - 1 : g);
+// The offset of u in its part, 0 for a point on the left end.
+double offset_in(double u, double left) { return u - left > 0.0 ? u - left : 0.0; }
+
+int base_holding(const IstAxis& axis, const double* edges, double u) {
+    const int count = axis.base_intervals;
+    if (edges == nullptr) return part_holding(u, 0.0, 1.0 / double(count), count);
+    int b = 0;
+    while (b + 1 < count && u >= edges[b + 1] - kEndSlack) ++b;  // [x_b, x_{b+1}); 1 the last
+    return b;
 }
 
 // Destination of group g of base b: (base, slot); a move past a translation end is skipped.
@@ -117,7 +131,7 @@ void ist_divide_and_shuffle_internally(const IstAxis& axis, const double* edges,
     // 1) div: the sub-interval [start, end) into N parts; g = the part holding u.
     const double part = (point->end - point->start) / double(n);
     const int g = part_holding(point->u, point->start, part, n);
-    const double inside = point->u - (point->start + double(g) * part);
+    const double inside = offset_in(point->u, point->start + double(g) * part);
     // 2) in-shf: group g (the g-th part of every parent, in parent order) is placed g-th;
     //    the parent's part keeps the parent's rank: offset (start - x_b) / N in the group.
     const double new_start = x_b + double(g) * w_b / double(n) + (point->start - x_b) / double(n);
@@ -175,16 +189,17 @@ double ist_procedure_inverse(const IstAxis& axis, double u, const double* edges)
         int t = part_holding(u, x_b, w_b / double(n), n);
         int from = 0, g = 0;
         source(axis, b, t, &from, &g);
-        double in_slot = u - (x_b + double(t) * w_b / double(n));
+        double in_slot = offset_in(u, x_b + double(t) * w_b / double(n));
         double x_from = edge(axis, edges, from);
         double w_from = width(axis, edges, from);
         in_slot *= w_from / w_b;
         // Undo 2) in-shf: the rank of the part in group g is the rank of its parent.
         double part = w_from / (parents * double(n));
         double rank_d = std::floor(in_slot / part);
+        if ((rank_d + 1.0) * part - in_slot <= kEndSlack) rank_d += 1.0;  // on the end
         if (rank_d < 0.0) rank_d = 0.0;
         if (rank_d > parents - 1.0) rank_d = parents - 1.0;
-        double inside = in_slot - rank_d * part;
+        double inside = offset_in(in_slot, rank_d * part);
         // Undo 1) div: part g of parent number rank_d.
         u = x_from + rank_d * (w_from / parents) + double(g) * part + inside;
         b = from;

@@ -20,7 +20,11 @@
 //   }
 //
 // The point carries the sub-interval of the current axis that holds it ([start, end), the
-// paper's rule; u = 1 stays in the last one). One iteration:
+// paper's rule below eq. (9); u = 1 stays in the last one). A point on an end belongs to the
+// part that starts there; since the procedure computes the ends by rounding, a point within
+// 64 ulps of 1 (1.4e-14) short of an end is read as on it (the formulas, exact, read such a
+// point in the part before; the two agree at every end of the grid, as computed by eq. 9,
+// for B N^K up to 2^32). One iteration:
 //   1) div      the sub-interval is cut into N equal parts; g = the part holding u.
 //   2) in-shf   the parts at position g of all parents of the base interval form group g,
 //               in parent order, placed g-th: the part of a parent starting at a moves to
