@@ -79,6 +79,13 @@ const std::map<std::string, Call>& functions() {
          }},
         {"sk_tokai1994_maps", [](const Args& a) { return sk_tokai1994_maps(int(a[0])); }},
         {"sk_tokai1994_patch", [](const Args& a) { return sk_tokai1994_patch(float(a[0]), float(a[1]), int(a[2])); }},
+        {"sk_fujimoto2000_axis",
+         [](const Args& a) { return sk_fujimoto2000_axis(int(a[0]), int(a[1]), int(a[2]), int(a[3]), int(a[4])); }},
+        {"sk_fujimoto2000_diagram",
+         [](const Args& a) { return sk_fujimoto2000_diagram(int(a[0]), a[1], int(a[2]), int(a[3]), int(a[4])); }},
+        {"sk_fujimoto2000_follow", [](const Args& a) { return sk_fujimoto2000_follow(a[0]); }},
+        {"sk_fujimoto2000_table", [](const Args& a) { return sk_fujimoto2000_table(int(a[0]), int(a[1])); }},
+        {"sk_fujimoto2000_ratio", [](const Args& a) { return sk_fujimoto2000_ratio(int(a[0])); }},
     };
     return f;
 }
@@ -138,6 +145,23 @@ const std::vector<Case>& cases() {
         {"tokai1994 section move refused", "sk_tokai1994_section_move", {0, 1, 2.5, 0.9}, "status"},
         {"tokai1994 Table 1 two-segment section", "sk_tokai1994_section_load", {2}, "status"},
         {"tokai1994 two-segment relief", "sk_tokai1994_scale_relief", {128, 1, -0.4, 0.2, 0.9}, "picture"},
+        {"fujimoto2000 IST N = 4 refused (fully)", "sk_fujimoto2000_axis", {1, 4, 2, 5, 0}, "status"},
+        {"fujimoto2000 fig. 3 unit N = 5, K = 3", "sk_fujimoto2000_axis", {0, 5, 3, 1, 0}, "text"},
+        {"fujimoto2000 fig. 3 diagram", "sk_fujimoto2000_diagram", {0, 0.37, 0, 0, 1000}, "picture"},
+        {"fujimoto2000 fig. 3 u = 0.37 followed", "sk_fujimoto2000_follow", {0.37}, "floats text"},
+        {"fujimoto2000 fig. 3 table (eq. 7)", "sk_fujimoto2000_table", {0, 1000}, "text"},
+        {"fujimoto2000 fig. 6a fully N = 5, K = 3", "sk_fujimoto2000_axis", {1, 5, 3, 13, 0}, "text"},
+        {"fujimoto2000 fig. 6a diagram", "sk_fujimoto2000_diagram", {1, 0.5, 0, 5, 1200}, "picture"},
+        {"fujimoto2000 fig. 6a u = 0.5 followed", "sk_fujimoto2000_follow", {0.5}, "floats text"},
+        {"fujimoto2000 fig. 6a table too large", "sk_fujimoto2000_table", {0, 100}, "status"},
+        {"fujimoto2000 fig. 6b connected", "sk_fujimoto2000_axis", {2, 5, 3, 13, 0}, "text"},
+        {"fujimoto2000 fig. 6b diagram", "sk_fujimoto2000_diagram", {0, 0.5, 0, 5, 1200}, "picture"},
+        {"fujimoto2000 fig. 9 translation N = 3", "sk_fujimoto2000_axis", {1, 3, 3, 5, 1}, "text"},
+        {"fujimoto2000 fig. 9 diagram", "sk_fujimoto2000_diagram", {1, 0.05, 0, 0, 1000}, "picture"},
+        {"fujimoto2000 fig. 9 u = 0.05 followed", "sk_fujimoto2000_follow", {0.05}, "floats text"},
+        {"fujimoto2000 fig. 9 table (eq. 12)", "sk_fujimoto2000_table", {0, 1000}, "text"},
+        {"fujimoto2000 diagram too large", "sk_fujimoto2000_axis", {0, 7, 6, 1, 0}, "status"},
+        {"fujimoto2000 diagram refused", "sk_fujimoto2000_diagram", {0, 0.5, 0, 0, 1000}, "status"},
     };
     return c;
 }

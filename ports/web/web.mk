@@ -22,6 +22,9 @@ EMXX         ?= em++
 EM_ENV       := NODE_PATH=/usr/share/nodejs$(if $(NODE_PATH),:$(NODE_PATH))
 # The papers whose figure parameter tables the page shows (paper_figures' own records).
 WEB_PAPERS   := okada1987 okada1989 tokai1994
+# fujimoto2000: the IST figures and Table 1 only (the surfaces' figures take minutes).
+WEB_PAPERS   += fujimoto2000/fig03 fujimoto2000/fig04 fujimoto2000/fig06a fujimoto2000/fig06b \
+                fujimoto2000/fig07 fujimoto2000/fig08 fujimoto2000/fig09 fujimoto2000/table01
 # Same flags as the native build (docs/DESIGN.md: same inputs, same bits). stb's headers come
 # from Debian's libstb-dev through a directory of their own (not all of /usr/include: the WASM
 # build must not see glibc's headers), as system headers like the native build's; the page never reads or writes image files, so the
@@ -29,6 +32,8 @@ WEB_PAPERS   := okada1987 okada1989 tokai1994
 WEB_CXXFLAGS := -std=c++17 -O2 $(WARN) -ffp-contract=off
 WEB_CPPFLAGS := -Ilib -Ipaper_figures -Iports/web -isystem $(WEB_DIR)/include
 WEB_API_SRCS := $(sort $(wildcard ports/web/api/*.cpp))
+# The figures' drawing code the panels share with paper_figures (the IST diagrams of figs. 3-9).
+WEB_API_SRCS += paper_figures/fujimoto2000/ist_diagram.cpp
 WEB_LIB_OBJS := $(LIB_SRCS:%.cpp=$(WEB_DIR)/obj/%.o)
 WEB_API_OBJS := $(WEB_API_SRCS:%.cpp=$(WEB_DIR)/obj/%.o)
 WEB_TEST_OBJS := $(TEST_SRCS:%.cpp=$(WEB_DIR)/obj/%.o)
