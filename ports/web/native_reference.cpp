@@ -85,6 +85,12 @@ const std::map<std::string, Call>& functions() {
          [](const Args& a) { return sk_fujimoto2000_diagram(int(a[0]), a[1], int(a[2]), int(a[3]), int(a[4])); }},
         {"sk_fujimoto2000_follow", [](const Args& a) { return sk_fujimoto2000_follow(a[0]); }},
         {"sk_fujimoto2000_table", [](const Args& a) { return sk_fujimoto2000_table(int(a[0]), int(a[1])); }},
+        {"sk_hirota1998_species", [](const Args& a) { return sk_hirota1998_species(int(a[0])); }},
+        {"sk_hirota1998_run",
+         [](const Args& a) {
+             return sk_hirota1998_run(int(a[0]), float(a[1]), float(a[2]), float(a[3]), int(a[4]), int(a[5]));
+         }},
+        {"sk_hirota1998_frame", [](const Args& a) { return sk_hirota1998_frame(int(a[0]), float(a[1])); }},
         {"sk_fujimoto2000_ratio", [](const Args& a) { return sk_fujimoto2000_ratio(int(a[0])); }},
     };
     return f;
@@ -162,6 +168,20 @@ const std::vector<Case>& cases() {
         {"fujimoto2000 fig. 9 table (eq. 12)", "sk_fujimoto2000_table", {0, 1000}, "text"},
         {"fujimoto2000 diagram too large", "sk_fujimoto2000_axis", {0, 7, 6, 1, 0}, "status"},
         {"fujimoto2000 diagram refused", "sk_fujimoto2000_diagram", {0, 0.5, 0, 0, 1000}, "status"},
+        {"hirota1998 frame before a run refused", "sk_hirota1998_frame", {0, 40}, "status"},
+        {"hirota1998 Table 2 camphor", "sk_hirota1998_species", {0}, "text"},
+        {"hirota1998 sigma refused", "sk_hirota1998_run", {0, 0.5, 1.04, 1.015, 32, 24}, "status"},
+        {"hirota1998 camphor run: events, hash", "sk_hirota1998_run", {0, 0.0175, 1.04, 1.015, 32, 24}, "floats text"},
+        {"hirota1998 camphor at event 0", "sk_hirota1998_frame", {0, 40}, "picture text"},
+        {"hirota1998 camphor after 300 events", "sk_hirota1998_frame", {300, 40}, "picture text"},
+        {"hirota1998 camphor all 1068 events", "sk_hirota1998_frame", {1068, 40}, "picture text"},
+        {"hirota1998 event past the run refused", "sk_hirota1998_frame", {1069, 40}, "status"},
+        {"hirota1998 Table 2 Chinese tallow", "sk_hirota1998_species", {1}, "text"},
+        {"hirota1998 tallow run: events, hash", "sk_hirota1998_run", {1, 0.0175, 1.033, 1.015, 32, 24}, "floats text"},
+        {"hirota1998 tallow after 300 events", "sk_hirota1998_frame", {300, 40}, "picture"},
+        {"hirota1998 Table 2 pine", "sk_hirota1998_species", {2}, "text"},
+        {"hirota1998 pine run: events, hash", "sk_hirota1998_run", {2, 0.0175, 1.038, 1.023, 32, 24}, "floats text"},
+        {"hirota1998 pine all 912 events", "sk_hirota1998_frame", {912, 40}, "picture text"},
     };
     return c;
 }

@@ -63,6 +63,11 @@ int sk_fujimoto2000_follow(double u);
 int sk_fujimoto2000_table(int first_label, int max_lines);
 int sk_fujimoto2000_ratio(int coordinates);
 
+/* api_hirota1998.cpp */
+int sk_hirota1998_species(int species);
+int sk_hirota1998_run(int species, float sigma, float kappa1, float kappa2, int n_r, int n_h);
+int sk_hirota1998_frame(int event, float px_per_cm);
+
 #ifdef __cplusplus
 }
 #endif
