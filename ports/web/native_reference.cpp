@@ -91,6 +91,11 @@ const std::map<std::string, Call>& functions() {
              return sk_hirota1998_run(int(a[0]), float(a[1]), float(a[2]), float(a[3]), int(a[4]), int(a[5]));
          }},
         {"sk_hirota1998_frame", [](const Args& a) { return sk_hirota1998_frame(int(a[0]), float(a[1])); }},
+        {"sk_fujimoto2000_wr",
+         [](const Args& a) {
+             return sk_fujimoto2000_wr(int(a[0]), int(a[1]), float(a[2]), int(a[3]), unsigned(a[4]), float(a[5]),
+                                       float(a[6]), int(a[7]));
+         }},
         {"sk_fujimoto2000_ratio", [](const Args& a) { return sk_fujimoto2000_ratio(int(a[0])); }},
     };
     return f;
@@ -168,6 +173,12 @@ const std::vector<Case>& cases() {
         {"fujimoto2000 fig. 9 table (eq. 12)", "sk_fujimoto2000_table", {0, 1000}, "text"},
         {"fujimoto2000 diagram too large", "sk_fujimoto2000_axis", {0, 7, 6, 1, 0}, "status"},
         {"fujimoto2000 diagram refused", "sk_fujimoto2000_diagram", {0, 0.5, 0, 0, 1000}, "status"},
+        {"fujimoto2000 fig. 14 conventional Bezier", "sk_fujimoto2000_wr", {0, 0, 0.35, 2, 14, 0, 0, 256}, "picture"},
+        {"fujimoto2000 fig. 14 WR eq. (15), K = 3", "sk_fujimoto2000_wr", {0, 1, 0.35, 3, 14, 0, 0, 256}, "picture"},
+        {"fujimoto2000 fig. 17 superposed delta 0.35", "sk_fujimoto2000_wr", {0, 2, 0.35, 3, 14, 0.5, 0.2, 256}, "picture"},
+        {"fujimoto2000 fig. 17 superposed delta 0.65", "sk_fujimoto2000_wr", {0, 2, 0.65, 3, 14, 0.5, 0.2, 256}, "picture"},
+        {"fujimoto2000 fig. 18 B-spline WR, K = 2", "sk_fujimoto2000_wr", {1, 1, 0.5, 2, 18, 0, 0, 256}, "picture"},
+        {"fujimoto2000 WR delta = 1 refused", "sk_fujimoto2000_wr", {1, 2, 1, 2, 18, 0, 0, 256}, "status"},
         {"hirota1998 frame before a run refused", "sk_hirota1998_frame", {0, 40}, "status"},
         {"hirota1998 Table 2 camphor", "sk_hirota1998_species", {0}, "text"},
         {"hirota1998 sigma refused", "sk_hirota1998_run", {0, 0.5, 1.04, 1.015, 32, 24}, "status"},

@@ -27,6 +27,8 @@ WEB_PAPERS   += fujimoto2000/fig03 fujimoto2000/fig04 fujimoto2000/fig06a fujimo
                 fujimoto2000/fig07 fujimoto2000/fig08 fujimoto2000/fig09 fujimoto2000/table01
 # hirota1998: the two-layer model's figures (the species runs at the quick size).
 WEB_PAPERS   += hirota1998/fig04 hirota1998/fig05
+# fujimoto2000 WR surfaces: one panel each of figs. 14, 17, 18 for their parameter tables.
+WEB_PAPERS   += fujimoto2000/fig14b fujimoto2000/fig17a4 fujimoto2000/fig18a5
 # Same flags as the native build (docs/DESIGN.md: same inputs, same bits). stb's headers come
 # from Debian's libstb-dev through a directory of their own (not all of /usr/include: the WASM
 # build must not see glibc's headers), as system headers like the native build's; the page never reads or writes image files, so the

@@ -13,9 +13,16 @@
 
 #include "api_common.hpp"
 #include "fujimoto2000/ist_diagram.hpp"
+#include "shitsukan/core/hash.hpp"
 #include "shitsukan/core/prng.hpp"
+#include "shitsukan/raster/camera.hpp"
+#include "shitsukan/raster/rasterizer.hpp"
+#include "shitsukan/raster/shading.hpp"
 #include "shitsukan/image/raster_canvas.hpp"
 #include "shitsukan/wrinkly/ist.hpp"
+#include "shitsukan/wrinkly/hierarchical_sampling.hpp"
+#include "shitsukan/wrinkly/wr_ist_axis.hpp"
+#include "shitsukan/wrinkly/wr_tessellation.hpp"
 
 using namespace shitsukan;
 using namespace shitsukan::figures;
@@ -268,5 +275,140 @@ SK_API int sk_fujimoto2000_ratio(int coordinates) {
     t = "{\"coordinates\":" + std::to_string(coordinates) + ",\"procedure_us\":" + number(t_proc * us) +
         ",\"formula_us\":" + number(t_form * us) + ",\"ratio\":" + number(t_form > 0 ? t_proc / t_form : 0.0) +
         ",\"max_difference\":" + number(worst) + "}";
+    return skweb::finish(Status::success());
+}
+
+// ---- WR surfaces (§3, §4: eqs. 15, 16, 19, 20; figs. 14-18) ----
+namespace {
+
+// Chosen here (the panel's own meshes, in the spirit of figs. 14/17 and 15/18): a 4 x 4 Bezier
+// patch (IST-Bezier, unit-IST N = 3) or an 11 x 11 uniform cubic B-spline (IST-B-spline,
+// fully-connected IST N = 3, translation ends: 8 spans = 8 base intervals) over [-1.2, 1.2]^2
+// in the x-z plane; heights h_i = 0.05 + 0.9 hash_uniform(seed, 15, c, r) (0.45 of that for the
+// B-spline's denser points), coloured green (low) to pale (high).
+struct WrScene {
+    WrControlMesh mesh;
+    WrSurface surface;
+    WrIstAxis u, v;
+};
+WrScene g_wr;
+bool g_have_wr = false;
+int g_wr_figure = -1;
+unsigned g_wr_seed = 0;
+float g_wr_delta = 0.0f;
+WrMesh g_wr_mesh;     // the last tessellation, redrawn while only the view turns
+int g_mesh_form = -1, g_mesh_k = -1;
+
+Status make_scene(int figure, unsigned seed, float delta, WrScene* out) {
+    const int n = figure == 0 ? 4 : 11;
+    const float hmax = figure == 0 ? 0.95f : 0.5f;
+    out->mesh = make_control_mesh(n, n);
+    for (int r = 0; r < n; ++r)
+        for (int c = 0; c < n; ++c) {
+            WrControlPoint& p = out->mesh.at(c, r);
+            p.position = {-1.2f + 2.4f * float(c) / float(n - 1), 0.0f, 1.2f - 2.4f * float(r) / float(n - 1)};
+            p.height = 0.05f + (hmax - 0.05f) * hash_uniform(seed, 15, c, r, 0);
+            const float t = p.height / hmax;
+            p.color = Vec3{0.50f + 0.38f * t, 0.58f + 0.26f * t, 0.34f + 0.44f * t};
+            p.delta = delta;
+        }
+    Status s = make_wr_surface(out->mesh, figure == 0 ? SurfaceBasis::bezier : SurfaceBasis::bspline, 3,
+                               out->surface);
+    IstAxis iu, iv;
+    if (s && figure == 0) s = ist_unit_axis(3, 1, out->surface.spans_u(), iu);
+    if (s && figure == 0) s = ist_unit_axis(3, 1, out->surface.spans_v(), iv);
+    if (s && figure == 1) s = ist_fully_connected_axis(3, 1, out->surface.spans_u(), IstEnds::translation, iu);
+    if (s && figure == 1) s = ist_fully_connected_axis(3, 1, out->surface.spans_v(), IstEnds::translation, iv);
+    if (s) s = make_wr_ist_axis(iu, kMaxWrLevel, out->u);
+    if (s) s = make_wr_ist_axis(iv, kMaxWrLevel, out->v);
+    if (s) s = out->surface.set_axes(out->u.axis(), out->v.axis());
+    return s;
+}
+
+}  // namespace
+
+// A WR surface tessellated by the library (tessellate_wr_surface) and drawn by its rasterizer
+// (draw_mesh, Z-buffer, two-sided Lambert on the vertex colours), turned by yaw and pitch.
+// figure 0: IST-Bezier (unit-IST, figs. 14, 17), 1: IST-B-spline (fully-connected, figs. 15, 18).
+// form 0: the conventional surface P + H N; 1: the WR surface of eq. (15) with F^K; 2: the
+// superposed WR surface of eq. (20) to K with the ratio delta (eq. 19) and the hierarchical
+// Hermite sampling of §4.2. The tessellation is kept while only yaw and pitch change (the
+// mouse turns the view). Text: vertices, triangles, grid, levels used, milliseconds.
+SK_API int sk_fujimoto2000_wr(int figure, int form, float delta, int K, unsigned seed, float yaw, float pitch,
+                              int size) {
+    Status s = Status::success();
+    if (figure < 0 || figure > 1)
+        s = Status::error(StatusCode::invalid_argument, "figure must be 0 (IST-Bezier) or 1 (IST-B-spline) (got %d)", figure);
+    if (s && (form < 0 || form > 2))
+        s = Status::error(StatusCode::invalid_argument, "form must be 0 (conventional), 1 (WR) or 2 (superposed) (got %d)", form);
+    if (s && (size < 64 || size > 1024))
+        s = Status::error(StatusCode::invalid_argument, "size must be in 64..1024 px (got %d)", size);
+    if (s && (K < 0 || K > 5))  // chosen here: K = 5 on the B-spline is 1945^2 vertices' worth of work
+        s = Status::error(StatusCode::out_of_range, "K must be in 0..5 in the browser (got %d)", K);
+    if (s && !(delta > 0.0f && delta < 1.0f))
+        s = Status::error(StatusCode::out_of_range, "delta must be in (0, 1) (eq. 19) (got %g)", double(delta));
+    if (!s) return skweb::finish(s);
+    const double t0 = skweb::now_ms();
+    if (!g_have_wr || figure != g_wr_figure || seed != g_wr_seed || delta != g_wr_delta) {
+        g_have_wr = false;
+        g_mesh_form = -1;
+        s = make_scene(figure, seed, delta, &g_wr);
+        if (!s) return skweb::finish(s);
+        g_have_wr = true;
+        g_wr_figure = figure, g_wr_seed = seed, g_wr_delta = delta;
+    }
+    const bool again = form != g_mesh_form || K != g_mesh_k;
+    WrTessellationOptions o;
+    HierarchicalSampling hs;
+    o.progress = skweb::progress();
+    o.levels = K;
+    o.grid_level = K;
+    o.subdivisions = figure == 0 ? 8 : 2;  // chosen here: about 3^K x 8 cells along an axis
+    if (form == 0) {
+        o.form = WrSurfaceForm::plain;
+        o.grid_level = 2;
+    } else if (form == 1) {
+        o.form = WrSurfaceForm::wr;
+    } else if (again) {
+        HierarchicalOptions ho;
+        ho.levels = std::max(K, 1);
+        ho.interpolation = SampleInterpolation::hermite;
+        s = sample_hierarchy(g_wr.surface, ho, hs);
+        o.form = WrSurfaceForm::superposed;
+        o.levels = ho.levels;
+        o.grid_level = ho.levels;
+    }
+    if (s && again) {
+        g_mesh_form = -1;
+        s = tessellate_wr_surface(g_wr.surface, form == 2 ? &hs : nullptr, o, g_wr_mesh);
+    }
+    if (!s) return skweb::finish(s);
+    g_mesh_form = form, g_mesh_k = K;
+    const WrMesh& m = g_wr_mesh;
+    const double t1 = skweb::now_ms();
+    Camera cam;
+    s = make_perspective_camera(Vec3{3.6f, 3.2f, 3.6f}, Vec3{0, 0.2f, 0}, Vec3{0, 1, 0}, 36.0f, size, size, 0.05f,
+                                100.0f, cam);
+    if (!s) return skweb::finish(s);
+    RgbImage img(size, size);
+    FloatImage depth(size, size);
+    FrameBand band = full_frame_band(img.view(), depth.view());
+    clear_band(band, Rgb8{255, 255, 255});
+    const Vec3 light = normalize(Vec3{-0.6f, 0.55f, 0.35f});  // the figures' light (wr_figure_common.hpp)
+    auto shader = [&](const Fragment& f) {
+        const float lambert = std::fabs(dot(f.normal, light));  // two-sided: spikes flip
+        return to_rgb8(f.color * (0.28f + 0.72f * lambert));
+    };
+    DrawOptions opt;
+    opt.cull = CullMode::none;
+    opt.model = Mat4::rotate_x(pitch) * Mat4::rotate_y(yaw);
+    s = draw_mesh(cam, band, m.mesh.view(), opt, shader);
+    if (!s) return skweb::finish(s);
+    skweb::set_picture(img);
+    skweb::text() = "{\"vertices\":" + std::to_string(m.mesh.positions.size()) +
+                    ",\"triangles\":" + std::to_string(m.mesh.triangle_count()) +
+                    ",\"grid\":[" + std::to_string(m.grid_u) + "," + std::to_string(m.grid_v) + "]" +
+                    ",\"levels_used\":" + std::to_string(m.max_levels_used) +
+                    ",\"tessellate_ms\":" + number(t1 - t0) + ",\"draw_ms\":" + number(skweb::now_ms() - t1) + "}";
     return skweb::finish(Status::success());
 }
