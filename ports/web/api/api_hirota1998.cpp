@@ -69,7 +69,9 @@ SK_API int sk_hirota1998_species(int species) {
 // deterministic model: the first lists the breaks, the second keeps W at the frames' times
 // (run_cracking's snapshots); their break sequences must hash the same.
 // Floats: the time of every break, in order. Text: {events, hash (break_sequence_hash of all
-// events, hex), cascade, frames, T, circumference and height at T}.
+// events, hex), cascade, frames, T, circumference and height at T, and Table 3's measure at T:
+// regions bounded by cracks (measure_regions), how many span the full height, their mean and
+// largest width x height in cm}.
 SK_API int sk_hirota1998_run(int species, float sigma, float kappa1, float kappa2, int n_r, int n_h) {
     g_have_run = false;
     Species sp = Species::camphor;
@@ -121,6 +123,10 @@ SK_API int sk_hirota1998_run(int species, float sigma, float kappa1, float kappa
     std::vector<float>& out = skweb::floats();
     out.clear();
     for (const BreakEvent& e : g_run.breaks) out.push_back(e.t);
+    // Table 3's measure on the result at T: the regions bounded by cracks (measure_regions).
+    RegionReport regions;
+    s = measure_regions(g_bark, p.T, g_bark.net.W.data(), regions);
+    if (!s) return skweb::finish(s);
     char hex[20];
     std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
     const float T = p.T;
@@ -128,7 +134,11 @@ SK_API int sk_hirota1998_run(int species, float sigma, float kappa1, float kappa
                     std::to_string(g_run.cascade_breaks) + ",\"frames\":" + std::to_string(times.size()) +
                     ",\"T\":" + number(T) +
                     ",\"C_T\":" + number(g_bark.circumference * (1.0f + hoop_strain(p, T))) +
-                    ",\"H_T\":" + number(g_bark.H0 * (1.0f + axial_strain(p, T))) + "}";
+                    ",\"H_T\":" + number(g_bark.H0 * (1.0f + axial_strain(p, T))) +
+                    ",\"regions\":" + std::to_string(regions.regions.size()) +
+                    ",\"full_height\":" + std::to_string(regions.full_height) +
+                    ",\"mean_w\":" + number(regions.mean_width) + ",\"mean_h\":" + number(regions.mean_height) +
+                    ",\"max_w\":" + number(regions.max_width) + ",\"max_h\":" + number(regions.max_height) + "}";
     return skweb::finish(Status::success());
 }
 

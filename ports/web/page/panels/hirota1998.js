@@ -9,6 +9,14 @@
   const SPECIES = [[0, 'camphor (Table 2, col. 1)'], [1, 'Chinese tallow (col. 2)'], [2, 'pine (col. 3)']];
   const GRIDS = [[0, '32 x 24 nodes (the figures\' quick size)'], [1, '64 x 48 nodes'], [2, '128 x 64 nodes (the paper\'s size)']];
   const GRID = [[32, 24, 40], [64, 48, 20], [128, 64, 12]];  // N_R, N_H, px per cm
+  // hirota1998 Table 3 (given): region width x height in cm, observed and the paper's simulated
+  // mean and max; -1 = "(>20)".
+  const TABLE3 = [
+    { observed: [1.5, -1], mean: [1.58, 11.6], max: [2.06, -1] },
+    { observed: [1.5, 3.0], mean: [1.70, 3.02], max: [2.08, 3.96] },
+    { observed: [3.0, 7.0], mean: [2.34, 4.28], max: [3.24, 6.48] },
+  ];
+  const cm = (p) => p.map((x) => (x < 0 ? '(>20)' : x.toFixed(2))).join(' x ');
 
   SK.register({
     id: 'hirota1998-growth', paper: P, order: 120,
@@ -36,6 +44,7 @@
       const step = SK.el('button', { type: 'button' }, bar, 'step one event');
       const back = SK.el('button', { type: 'button' }, bar, 'back one');
       const frameInfo = SK.el('div', { class: 'sk-readout' }, box);
+      const table3 = SK.el('table', { class: 'sk-table' }, box);
       const f = SK.figure(figs, 'the unrolled bark', 480, 300);
       f.canvas.classList.add('sk-bark');
       const timeline = SK.figure(figs, 'breaks over time: cumulative count (blue) against t / T; the red line is the event shown', 480, 120);
@@ -81,6 +90,13 @@
         run = { events: t.events, T: t.T, times: r.floats.data };
         runInfo.textContent = 'native-identical run: ' + t.events + ' breaks (' + t.cascade + ' in cascades), event-sequence hash ' + t.hash +
           '\n' + t.frames + ' frames kept; trunk at T: ' + t.C_T.toFixed(2) + ' x ' + t.H_T.toFixed(2) + ' cm\ngrown in ' + r.ms.toFixed(0) + ' ms (WASM, in the worker)';
+        const p3 = TABLE3[c.species.value];
+        table3.innerHTML = '<caption>Table 3 at T: regions bounded by cracks (cm, width x height)</caption>' +
+          '<tr><th></th><th>mean</th><th>max</th></tr>' +
+          '<tr><th>paper, observed</th><td colspan="2">' + cm(p3.observed) + '</td></tr>' +
+          '<tr><th>paper, simulated</th><td>' + cm(p3.mean) + '</td><td>' + cm(p3.max) + '</td></tr>' +
+          '<tr><th>this run (' + t.regions + ' regions, ' + t.full_height + ' full height)</th><td>' + cm([t.mean_w, t.mean_h]) + '</td><td>' + cm([t.max_w, t.max_h]) + '</td></tr>' +
+          (c.grid.value === 2 ? '' : '<tr><td colspan="3">the trunk is ' + t.H_T.toFixed(1) + ' cm high at this lattice: choose 128 x 64 (the paper\'s size) to compare</td></tr>');
         ev.range.max = t.events;
         ev.box.max = t.events;
         ev.set(Math.min(Number(ev.value), t.events));
