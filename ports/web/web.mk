@@ -22,6 +22,13 @@ EMXX         ?= em++
 EM_ENV       := NODE_PATH=/usr/share/nodejs$(if $(NODE_PATH),:$(NODE_PATH))
 # The papers whose figure parameter tables the page shows (paper_figures' own records).
 WEB_PAPERS   := okada1987 okada1989 tokai1994
+# fujimoto2000: the IST figures and Table 1 only (the surfaces' figures take minutes).
+WEB_PAPERS   += fujimoto2000/fig03 fujimoto2000/fig04 fujimoto2000/fig06a fujimoto2000/fig06b \
+                fujimoto2000/fig07 fujimoto2000/fig08 fujimoto2000/fig09 fujimoto2000/table01
+# hirota1998: the two-layer model's figures (the species runs at the quick size).
+WEB_PAPERS   += hirota1998/fig04 hirota1998/fig05
+# fujimoto2000 WR surfaces: one panel each of figs. 14, 17, 18 for their parameter tables.
+WEB_PAPERS   += fujimoto2000/fig14b fujimoto2000/fig17a4 fujimoto2000/fig18a5
 # Same flags as the native build (docs/DESIGN.md: same inputs, same bits). stb's headers come
 # from Debian's libstb-dev through a directory of their own (not all of /usr/include: the WASM
 # build must not see glibc's headers), as system headers like the native build's; the page never reads or writes image files, so the
@@ -29,6 +36,8 @@ WEB_PAPERS   := okada1987 okada1989 tokai1994
 WEB_CXXFLAGS := -std=c++17 -O2 $(WARN) -ffp-contract=off
 WEB_CPPFLAGS := -Ilib -Ipaper_figures -Iports/web -isystem $(WEB_DIR)/include
 WEB_API_SRCS := $(sort $(wildcard ports/web/api/*.cpp))
+# The figures' drawing code the panels share with paper_figures (the IST diagrams of figs. 3-9).
+WEB_API_SRCS += paper_figures/fujimoto2000/ist_diagram.cpp
 WEB_LIB_OBJS := $(LIB_SRCS:%.cpp=$(WEB_DIR)/obj/%.o)
 WEB_API_OBJS := $(WEB_API_SRCS:%.cpp=$(WEB_DIR)/obj/%.o)
 WEB_TEST_OBJS := $(TEST_SRCS:%.cpp=$(WEB_DIR)/obj/%.o)
@@ -90,7 +99,7 @@ $(WEB_DIR)/single/shitsukan_web.js: $(WEB_LIB_OBJS) $(WEB_API_OBJS)
 	$(EM_ENV) $(EMXX) $(WEB_LINK) -sSINGLE_FILE=1 -o $@ $(WEB_API_OBJS) $(WEB_LIB_OBJS)
 
 # The figures' parameter tables, as paper_figures records them (never retyped).
-$(WEB_DIR)/figures/index.md: $(BUILD)/paper_figures
+$(WEB_DIR)/figures/index.md: $(BUILD)/paper_figures ports/web/web.mk
 	@rm -rf $(WEB_DIR)/figures
 	$(BUILD)/paper_figures --quick --jobs $(JOBS) $(WEB_PAPERS:%=--only %) --out $(WEB_DIR)/figures > /dev/null
 

@@ -56,6 +56,19 @@ int sk_tokai1994_scale_relief(int size, float height_scale, float lx, float ly, 
 int sk_tokai1994_maps(int size);
 int sk_tokai1994_patch(float azimuth, float elevation, int size);
 
+/* api_fujimoto2000.cpp */
+int sk_fujimoto2000_axis(int kind, int n, int k, int b, int ends);
+int sk_fujimoto2000_diagram(int half_axes, double u, int first_label, int window_bases, int width);
+int sk_fujimoto2000_follow(double u);
+int sk_fujimoto2000_table(int first_label, int max_lines);
+int sk_fujimoto2000_ratio(int coordinates);
+int sk_fujimoto2000_wr(int figure, int form, float delta, int K, unsigned seed, float yaw, float pitch, int size);
+
+/* api_hirota1998.cpp */
+int sk_hirota1998_species(int species);
+int sk_hirota1998_run(int species, float sigma, float kappa1, float kappa2, int n_r, int n_h);
+int sk_hirota1998_frame(int event, float px_per_cm);
+
 #ifdef __cplusplus
 }
 #endif

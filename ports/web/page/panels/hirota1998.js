@@ -1,0 +1,136 @@
+// ports/web/page/panels/hirota1998.js — hirota1998 (growing tree bark), §3: the two-layer
+// model animated in time. The worker grows and cracks the trunk once (the library's
+// event-driven run); the page then replays exactly that run's breaks, one event at a time, in
+// order: play / pause, step one event, scrub. Wiring and drawing only (api_hirota1998.cpp).
+/* global SK */
+'use strict';
+(function () {
+  const P = 'hirota1998 — Hirota, Tanoue, Kaneko';
+  const SPECIES = [[0, 'camphor (Table 2, col. 1)'], [1, 'Chinese tallow (col. 2)'], [2, 'pine (col. 3)']];
+  const GRIDS = [[0, '32 x 24 nodes (the figures\' quick size)'], [1, '64 x 48 nodes'], [2, '128 x 64 nodes (the paper\'s size)']];
+  const GRID = [[32, 24, 40], [64, 48, 20], [128, 64, 12]];  // N_R, N_H, px per cm
+  // hirota1998 Table 3 (given): region width x height in cm, observed and the paper's simulated
+  // mean and max; -1 = "(>20)".
+  const TABLE3 = [
+    { observed: [1.5, -1], mean: [1.58, 11.6], max: [2.06, -1] },
+    { observed: [1.5, 3.0], mean: [1.70, 3.02], max: [2.08, 3.96] },
+    { observed: [3.0, 7.0], mean: [2.34, 4.28], max: [3.24, 6.48] },
+  ];
+  const cm = (p) => p.map((x) => (x < 0 ? '(>20)' : x.toFixed(2))).join(' x ');
+
+  SK.register({
+    id: 'hirota1998-growth', paper: P, order: 120,
+    title: 'The two-layer model: the trunk grows, springs break one event at a time',
+    cite: 'hirota1998 §3.1 the two-layer model (Fig. 3): the inner layer grows (delta_r, delta_h), a spring of the surface layer breaks when its elongation passes kappa (spread sigma), a broken spring stays broken; Fig. 4 a crack drawn at the middle of the broken spring, width l - l0; Table 2 the species',
+    source: 'lib/shitsukan/bark/crack_events.cpp grow_and_crack() / run_cracking(), cylinder_lattice.cpp build_cylinder(), bark_params.cpp species_preset(); lib/shitsukan/render/bark_crack_map.cpp draw_crack_map()',
+    figures: ['hirota1998/fig04', 'hirota1998/fig05'],
+    interaction: { control: 'bark-event', value: 200, canvas: 'canvas.sk-bark' },
+    async open(body, panel) {
+      const box = SK.el('div', { class: 'sk-controls' }, body);
+      const figs = SK.el('div', { class: 'sk-figs' }, body);
+      const c = {
+        species: SK.select(box, { label: 'species', value: 0, options: SPECIES }),
+        grid: SK.select(box, { label: 'lattice', value: 0, options: GRIDS }),
+        sigma: SK.slider(box, { label: 'sigma', min: 0, max: 0.1, step: 0.0005, value: 0.0175, key: 'bark-sigma' }),
+        kappa1: SK.slider(box, { label: 'kappa1 (axial)', min: 1.001, max: 1.1, step: 0.001, value: 1.04, key: 'bark-kappa1' }),
+        kappa2: SK.slider(box, { label: 'kappa2 (around)', min: 1.001, max: 1.1, step: 0.001, value: 1.015, key: 'bark-kappa2' }),
+      };
+      const runInfo = SK.el('div', { class: 'sk-readout' }, box);
+      SK.el('h4', {}, box, 'Replay of the run\'s breaks');
+      const ev = SK.slider(box, { label: 'event', min: 0, max: 1, step: 1, value: 0, key: 'bark-event' });
+      const speed = SK.slider(box, { label: 'events / frame', min: 1, max: 50, step: 1, value: 2, key: 'bark-speed' });
+      const bar = SK.el('div', { class: 'sk-control' }, box);
+      const play = SK.el('button', { type: 'button' }, bar, 'play');
+      const step = SK.el('button', { type: 'button' }, bar, 'step one event');
+      const back = SK.el('button', { type: 'button' }, bar, 'back one');
+      const frameInfo = SK.el('div', { class: 'sk-readout' }, box);
+      const table3 = SK.el('table', { class: 'sk-table' }, box);
+      const f = SK.figure(figs, 'the unrolled bark', 480, 300);
+      f.canvas.classList.add('sk-bark');
+      const timeline = SK.figure(figs, 'breaks over time: cumulative count (blue) against t / T; the red line is the event shown', 480, 120);
+      let run = null, playing = false, timer = 0;
+
+      const drawTimeline = (event) => {
+        const g = timeline.canvas.getContext('2d'), w = 480, h = 120;
+        g.fillStyle = '#fff'; g.fillRect(0, 0, w, h);
+        g.strokeStyle = '#ccc'; g.strokeRect(0.5, 0.5, w - 1, h - 1);
+        if (!run || !run.times.length) return;
+        const n = run.times.length;
+        g.strokeStyle = '#1f5f99'; g.beginPath();
+        for (let i = 0; i < n; i++) {
+          const x = 4 + (run.times[i] / run.T) * (w - 8), y = h - 4 - ((i + 1) / n) * (h - 8);
+          i ? g.lineTo(x, y) : g.moveTo(x, y);
+        }
+        g.stroke();
+        const t = event ? run.times[event - 1] : 0;
+        g.strokeStyle = '#cc0000'; g.beginPath();
+        g.moveTo(4 + (t / run.T) * (w - 8), 2); g.lineTo(4 + (t / run.T) * (w - 8), h - 2); g.stroke();
+      };
+      const showFrame = SK.coalesce(async () => {
+        if (!run) return;
+        const e = Math.max(0, Math.min(run.events, Math.round(ev.value)));
+        const r = await SK.call('sk_hirota1998_frame', [e, GRID[c.grid.value][2]], ['picture', 'text']);
+        if (!SK.report(ev, r)) return;
+        SK.draw(f.canvas, r.picture);
+        const t = JSON.parse(r.text);
+        frameInfo.textContent = 'event ' + e + ' of ' + run.events + ' at t = ' + t.t.toFixed(3) + ' s (' + (100 * t.t / run.T).toFixed(1) + '% of T)\n' +
+          t.drawn + ' springs broken by then (a cascade breaks several at one t)\n' +
+          'trunk unrolled: ' + t.C.toFixed(2) + ' x ' + t.H.toFixed(2) + ' cm' + (t.exact ? '' : '\n(widths from the latest kept field before t)');
+        f.cap.textContent = 'The unrolled surface layer at t: plates (lattice triangles) and each broken spring as Fig. 4\'s crack, width l - l0; red square: the spring of this event. The canvas is the trunk at T: watch it fill as the trunk grows.';
+        drawTimeline(e);
+      });
+      const rerun = SK.coalesce(async () => {
+        stop();
+        const g = GRID[c.grid.value];
+        const r = await SK.call('sk_hirota1998_run', [c.species.value, c.sigma.value, c.kappa1.value, c.kappa2.value, g[0], g[1]], ['floats', 'text']);
+        const bad = /sigma/.test(r.message) ? c.sigma : /kappa1|kappa_1/.test(r.message) ? c.kappa1 : /kappa/.test(r.message) ? c.kappa2 : /N_R|N_H|node/.test(r.message) ? c.grid : c.species;
+        [c.sigma, c.kappa1, c.kappa2, c.grid, c.species].forEach((x) => SK.clearReport(x));
+        if (!SK.report(bad, r)) { run = null; return; }
+        const t = JSON.parse(r.text);
+        run = { events: t.events, T: t.T, times: r.floats.data };
+        runInfo.textContent = 'native-identical run: ' + t.events + ' breaks (' + t.cascade + ' in cascades), event-sequence hash ' + t.hash +
+          '\n' + t.frames + ' frames kept; trunk at T: ' + t.C_T.toFixed(2) + ' x ' + t.H_T.toFixed(2) + ' cm\ngrown in ' + r.ms.toFixed(0) + ' ms (WASM, in the worker)';
+        const p3 = TABLE3[c.species.value];
+        table3.innerHTML = '<caption>Table 3 at T: regions bounded by cracks (cm, width x height)</caption>' +
+          '<tr><th></th><th>mean</th><th>max</th></tr>' +
+          '<tr><th>paper, observed</th><td colspan="2">' + cm(p3.observed) + '</td></tr>' +
+          '<tr><th>paper, simulated</th><td>' + cm(p3.mean) + '</td><td>' + cm(p3.max) + '</td></tr>' +
+          '<tr><th>this run (' + t.regions + ' regions, ' + t.full_height + ' full height)</th><td>' + cm([t.mean_w, t.mean_h]) + '</td><td>' + cm([t.max_w, t.max_h]) + '</td></tr>' +
+          (c.grid.value === 2 ? '' : '<tr><td colspan="3">the trunk is ' + t.H_T.toFixed(1) + ' cm high at this lattice: choose 128 x 64 (the paper\'s size) to compare</td></tr>');
+        ev.range.max = t.events;
+        ev.box.max = t.events;
+        ev.set(Math.min(Number(ev.value), t.events));
+        await showFrame();
+      });
+      const speciesDefaults = async () => {
+        const r = await SK.call('sk_hirota1998_species', [c.species.value], ['text']);
+        if (!SK.report(c.species, r)) return;
+        const t = JSON.parse(r.text);
+        c.sigma.set(t.sigma); c.kappa1.set(t.kappa1.toFixed(3)); c.kappa2.set(t.kappa2.toFixed(3));
+        await rerun();
+      };
+      function stop() { playing = false; play.textContent = 'play'; if (timer) cancelAnimationFrame(timer); timer = 0; }
+      const tick = async () => {
+        if (!playing || !run) return;
+        const next = Math.min(run.events, Number(ev.value) + speed.value);
+        ev.set(next);
+        await showFrame();
+        if (next >= run.events) { stop(); return; }
+        if (playing) timer = requestAnimationFrame(tick);
+      };
+      play.addEventListener('click', () => {
+        if (playing) { stop(); return; }
+        if (run && Number(ev.value) >= run.events) ev.set(0);
+        playing = true; play.textContent = 'pause';
+        timer = requestAnimationFrame(tick);
+      });
+      step.addEventListener('click', () => { stop(); if (run) { ev.set(Math.min(run.events, Number(ev.value) + 1)); showFrame(); } });
+      back.addEventListener('click', () => { stop(); if (run) { ev.set(Math.max(0, Number(ev.value) - 1)); showFrame(); } });
+      c.species.onchange = speciesDefaults;
+      [c.grid, c.sigma, c.kappa1, c.kappa2].forEach((x) => { x.onchange = rerun; });
+      ev.onchange = () => { stop(); showFrame(); };
+      panel.stop = stop;
+      await speciesDefaults();
+    },
+  });
+})();
