@@ -26,8 +26,6 @@ float value(fuzz::Input& in) {
     return float(in.take<std::int16_t>()) / float(1 << (mode >> 4));
 }
 float unit(fuzz::Input& in) { return float(in.take<std::uint16_t>()) / 65535.0f; }
-bool finite3(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 void section(fuzz::Input& in) {
     BezierChain chain;
     chain.count = int(in.take<std::uint8_t>() % (kMaxChainSegments + 2));
@@ -74,7 +72,7 @@ void patch(fuzz::Input& in) {
         for (int i = 0; i < 3; ++i) p.p[i][3] = p.p[3][3];
     bool finite = true;
     for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) finite = finite && finite3(p.p[i][j]);
+        for (int j = 0; j < 4; ++j) finite = finite && fuzz::finite3(p.p[i][j]);
     const Status s = validate_patch(p);
     if (!finite) {
         FUZZ_REQUIRE(!s.ok());
@@ -91,8 +89,8 @@ void patch(fuzz::Input& in) {
     for (int k = 0; k < 6 && !in.empty(); ++k) {
         const float u = unit(in), v = unit(in);
         const PatchPoint q = patch_point(p, u, v);
-        FUZZ_REQUIRE(finite3(q.position) && finite3(q.du) && finite3(q.dv));
-        FUZZ_REQUIRE(finite3(q.normal));
+        FUZZ_REQUIRE(fuzz::finite3(q.position) && fuzz::finite3(q.du) && fuzz::finite3(q.dv));
+        FUZZ_REQUIRE(fuzz::finite3(q.normal));
         if (s.ok()) FUZZ_REQUIRE(std::fabs(length(q.normal) - 1.0f) < 1e-4f);
     }
 }

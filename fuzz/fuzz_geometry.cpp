@@ -24,20 +24,12 @@ using namespace shitsukan;
 
 namespace {
 
-float value(fuzz::Input& in) {
-    const std::uint8_t mode = in.take<std::uint8_t>();
-    if ((mode & 7) == 7) return in.take<float>();
-    return float(in.take<std::int16_t>()) / float(1 << (mode >> 4));
-}
-
-bool finite3(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 void fuzz_triangulate(fuzz::Input& in) {
     std::vector<std::vector<Vec2>> rings(1 + in.take<std::uint8_t>() % 4);
     std::size_t total = 0;
     for (std::vector<Vec2>& ring : rings) {
         ring.resize(in.take<std::uint8_t>() % 25);
-        for (Vec2& p : ring) p = {value(in), value(in)};
+        for (Vec2& p : ring) p = {in.value(), in.value()};
         total += ring.size();
     }
     std::vector<Vec2> points;
@@ -75,9 +67,9 @@ void check_surface(const TriangleMesh& m, bool closed_or_open) {
     const std::size_t n = m.positions.size();
     FUZZ_REQUIRE(m.indices.size() % 3 == 0);
     for (std::uint32_t i : m.indices) FUZZ_REQUIRE(i < n);
-    for (const Vec3& p : m.positions) FUZZ_REQUIRE(finite3(p));
+    for (const Vec3& p : m.positions) FUZZ_REQUIRE(fuzz::finite3(p));
     for (const Vec3& v : m.normals) {
-        FUZZ_REQUIRE(finite3(v));
+        FUZZ_REQUIRE(fuzz::finite3(v));
         const float l = length(v);
         FUZZ_REQUIRE(l == 0.0f || std::fabs(l - 1.0f) < 1e-3f);
     }
@@ -90,15 +82,15 @@ void check_surface(const TriangleMesh& m, bool closed_or_open) {
 bool marching_setup(fuzz::Input& in, Blobs* b, MarchingTetrahedraOptions* o) {
     b->count = 1 + in.take<std::uint8_t>() % 3;
     for (int i = 0; i < 3; ++i) {
-        b->centre[i] = {value(in), value(in), value(in)};
-        b->radius[i] = value(in);
+        b->centre[i] = {in.value(), in.value(), in.value()};
+        b->radius[i] = in.value();
     }
     b->plane = in.take<std::uint8_t>() & 1;
-    b->plane_normal = {value(in), value(in), value(in)};
-    b->plane_offset = value(in);
-    o->box_min = {value(in), value(in), value(in)};
-    o->box_max = {value(in), value(in), value(in)};
-    o->spacing = value(in);
+    b->plane_normal = {in.value(), in.value(), in.value()};
+    b->plane_offset = in.value();
+    o->box_min = {in.value(), in.value(), in.value()};
+    o->box_max = {in.value(), in.value(), in.value()};
+    o->spacing = in.value();
     const std::uint8_t flags = in.take<std::uint8_t>();
     o->cut_z_min = flags & 1, o->cut_z_max = flags & 2, o->compute_normals = flags & 4;
     // Keep one input cheap: at most 24 cubes an axis (time, not correctness).
@@ -135,10 +127,10 @@ void fuzz_remesh(fuzz::Input& in) {
     TriangleMesh m;
     FUZZ_REQUIRE(marching_tetrahedra(blobs, &b, o, m).ok());
     IsotropicRemeshOptions r;
-    r.target_edge_length = value(in);
+    r.target_edge_length = in.value();
     r.passes = int(in.take<std::uint8_t>() % 5) - 1;
     r.newton_steps = int(in.take<std::uint8_t>() % 23) - 1;
-    r.smoothing = value(in);
+    r.smoothing = in.value();
     r.surface = blobs;
     r.user = &b;
     // Keep one input cheap: the sphere's area over L^2 at most ~2000 triangles.
@@ -151,11 +143,11 @@ void fuzz_remesh(fuzz::Input& in) {
 void fuzz_quadtree(fuzz::Input& in) {
     QuadtreeParams q;
     q.R = int(in.take<std::uint8_t>() % 15) - 1;
-    q.beta = value(in);
+    q.beta = in.value();
     q.seed = in.take<std::uint32_t>();
     bool finite = true;
     for (float& c : q.corners) {
-        c = value(in);
+        c = in.value();
         finite = finite && std::isfinite(c);
     }
     const int levels = int(in.take<std::uint8_t>() % 16) - 2;

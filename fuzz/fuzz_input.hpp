@@ -2,6 +2,7 @@
 // check every harness uses. (Not part of the library: `make fuzz` only.)
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -30,6 +31,13 @@ public:
         std::int16_t k = take<std::int16_t>();
         return double(k) / double(1 << (mode >> 4));
     }
+    // A "nice" float seven times in eight (a small integer over a power of two), raw bits
+    // (NaN, inf, huge) otherwise.
+    float value() {
+        const std::uint8_t mode = take<std::uint8_t>();
+        if ((mode & 7) == 7) return take<float>();
+        return float(take<std::int16_t>()) / float(1 << (mode >> 4));
+    }
 
 private:
     const std::uint8_t* data_;
@@ -41,6 +49,10 @@ private:
 [[noreturn]] inline void fail(const char* what) {
     std::fprintf(stderr, "fuzz contract broken: %s\n", what);
     std::abort();
+}
+// All three components finite (the library's Vec3, or any type with x, y, z).
+template <class V> bool finite3(const V& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 #define FUZZ_REQUIRE(cond) \
     do {                   \

@@ -21,12 +21,6 @@ using namespace shitsukan;
 
 namespace {
 
-float value(fuzz::Input& in) {
-    const std::uint8_t mode = in.take<std::uint8_t>();
-    if ((mode & 7) == 7) return in.take<float>();
-    return float(in.take<std::int16_t>()) / float(1 << (mode >> 4));
-}
-
 bool unit(Vec3 n) {
     const double l = std::sqrt(double(n.x) * n.x + double(n.y) * n.y + double(n.z) * n.z);
     return std::isfinite(l) && std::fabs(l - 1.0) < 1e-4;
@@ -37,11 +31,11 @@ void fuzz_normals(fuzz::Input& in) {
     std::vector<float> heights(std::size_t(w) * std::size_t(h));
     bool tame = true;
     for (float& v : heights) {
-        v = value(in);
+        v = in.value();
         tame = tame && std::fabs(v) <= 1e30f;
     }
     HeightNormalOptions o;
-    o.strength = value(in);
+    o.strength = in.value();
     o.wrap = in.take<std::uint8_t>() & 1;
     tame = tame && std::fabs(o.strength) <= 1e6f;
     std::vector<Vec3> n(heights.size());
@@ -69,12 +63,12 @@ void fuzz_leather(fuzz::Input& in) {
     if (in.take<std::uint8_t>() & 1) {  // any chain
         section.count = int(in.take<std::uint8_t>() % 6);
         for (CubicBezier2& seg : section.segments)
-            for (Vec2& p : seg.p) p = {value(in), value(in)};
+            for (Vec2& p : seg.p) p = {in.value(), in.value()};
     }
     ReliefOptions o;
     if (in.take<std::uint8_t>() & 1) {
-        o.edge_r = value(in);
-        o.height_scale = value(in);
+        o.edge_r = in.value();
+        o.height_scale = in.value();
     }
     o.normal_rule = (in.take<std::uint8_t>() & 1) ? ReliefNormal::height_gradient : ReliefNormal::eq4;
     LeatherMaps maps;

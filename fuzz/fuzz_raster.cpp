@@ -30,20 +30,18 @@ struct Check {
     bool attributes_finite;  // normals finite and not 0, uvs and colours within +-1e30
 };
 
-bool finite3(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 Rgb8 shader(const Fragment& f, void* user) {
     const Check& c = *static_cast<const Check*>(user);
     FUZZ_REQUIRE(f.x >= 0 && f.x < c.frame_w && f.y >= c.y0 && f.y < c.y0 + c.rows);
     FUZZ_REQUIRE(f.y < c.frame_h);
     FUZZ_REQUIRE(f.depth >= 0.0f && f.depth <= 1.0f);
-    FUZZ_REQUIRE(finite3(f.object_position) && finite3(f.world_position));
+    FUZZ_REQUIRE(fuzz::finite3(f.object_position) && fuzz::finite3(f.world_position));
     // Attributes are interpolated as given: NaN colours give NaN fragments (garbage in), so
     // their finiteness is only required of meshes whose attributes are finite.
     if (c.attributes_finite) {
-        FUZZ_REQUIRE(finite3(f.color));
+        FUZZ_REQUIRE(fuzz::finite3(f.color));
         FUZZ_REQUIRE(std::isfinite(f.uv.x) && std::isfinite(f.uv.y));
-        FUZZ_REQUIRE(finite3(f.normal) && finite3(f.object_normal));
+        FUZZ_REQUIRE(fuzz::finite3(f.normal) && fuzz::finite3(f.object_normal));
         FUZZ_REQUIRE(std::fabs(length(f.normal) - 1.0f) < 1e-3f);
         FUZZ_REQUIRE(std::fabs(length(f.object_normal) - 1.0f) < 1e-3f);
     }
@@ -123,7 +121,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // +-1e30 (finding_raster_colour_overflow: colours of +-3e38 overflow q - p).
     auto bounded = [](float v) { return std::fabs(v) <= 1e30f; };
     bool attributes_finite = true;
-    for (const Vec3& n : normals) attributes_finite = attributes_finite && finite3(n) && length(n) > 1e-3f;
+    for (const Vec3& n : normals) attributes_finite = attributes_finite && fuzz::finite3(n) && length(n) > 1e-3f;
     for (const Vec2& t : uvs) attributes_finite = attributes_finite && bounded(t.x) && bounded(t.y);
     for (const Vec3& c : colors)
         attributes_finite = attributes_finite && bounded(c.x) && bounded(c.y) && bounded(c.z);

@@ -18,15 +18,6 @@
 
 using namespace shitsukan;
 
-namespace {
-float value(fuzz::Input& in) {
-    const std::uint8_t mode = in.take<std::uint8_t>();
-    if ((mode & 7) == 7) return in.take<float>();
-    return float(in.take<std::int16_t>()) / float(1 << (mode >> 4));
-}
-bool finite3(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-}  // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     fuzz::Input in(data, size);
     const SurfaceBasis basis = (in.take<std::uint8_t>() & 1) ? SurfaceBasis::bezier
@@ -35,13 +26,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const int cols = int(in.take<std::uint8_t>() % 10) - 1, rows = int(in.take<std::uint8_t>() % 10) - 1;
     WrControlMesh mesh = make_control_mesh(cols, rows);
     for (WrControlPoint& p : mesh.points) {
-        p.position = {value(in), value(in), value(in)};
-        p.height = value(in);
+        p.position = {in.value(), in.value(), in.value()};
+        p.height = in.value();
         if (in.take<std::uint8_t>() & 1) {
-            p.color = {value(in), value(in), value(in)};
-            p.transparency = value(in);
-            p.delta = value(in);
-            p.direction = {value(in), value(in), value(in)};
+            p.color = {in.value(), in.value(), in.value()};
+            p.transparency = in.value();
+            p.delta = in.value();
+            p.direction = {in.value(), in.value(), in.value()};
         }
     }
     // validate_control_mesh refuses coordinates beyond kMaxWrCoordinate (finding_nonfinite_mesh,
@@ -65,16 +56,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     o.grid_level = int(in.take<std::uint8_t>() % 4);
     o.subdivisions = 1 + in.take<std::uint8_t>() % 4;
     if (in.take<std::uint8_t>() & 1) {
-        o.u0 = value(in), o.u1 = value(in), o.v0 = value(in), o.v1 = value(in);
+        o.u0 = in.value(), o.u1 = in.value(), o.v0 = in.value(), o.v1 = in.value();
     }
-    o.tail_tolerance = value(in);
+    o.tail_tolerance = in.value();
     HierarchicalSampling hs;
     const HierarchicalSampling* sampling = nullptr;
     if (o.form == WrSurfaceForm::superposed) {
         HierarchicalOptions ho;
         ho.levels = int(in.take<std::uint8_t>() % 5);
         ho.interpolation = SampleInterpolation(in.take<std::uint8_t>() & 1);
-        ho.jitter_height = value(in);
+        ho.jitter_height = in.value();
         ho.seed = in.take<std::uint32_t>();
         // sample_hierarchy refuses jitter_height above kMaxJitterHeight
         // (finding_jitter_height_overflow, in the corpus: 3.4e38 gave infinite positions).
@@ -121,7 +112,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FUZZ_REQUIRE(m.indices.size() % 3 == 0);
     for (std::uint32_t i : m.indices) FUZZ_REQUIRE(i < nv);
     for (std::size_t i = 0; i < nv; ++i) {
-        FUZZ_REQUIRE(finite3(m.positions[i]) && finite3(m.normals[i]) && finite3(m.colors[i]));
+        FUZZ_REQUIRE(fuzz::finite3(m.positions[i]) && fuzz::finite3(m.normals[i]) && fuzz::finite3(m.colors[i]));
         FUZZ_REQUIRE(std::isfinite(wm.transparency[i]));
         const Vec2 uv = m.uvs[i];
         FUZZ_REQUIRE(uv.x >= o.u0 && uv.x <= o.u1 && uv.y >= o.v0 && uv.y <= o.v1);
