@@ -34,6 +34,7 @@
 #include "shitsukan/core/format_number.hpp"
 #include "shitsukan/core/gaussian.hpp"
 #include "shitsukan/core/hash.hpp"
+#include "shitsukan/core/input_file.hpp"
 #include "shitsukan/core/memory_budget.hpp"
 #include "shitsukan/core/output_file.hpp"
 #include "shitsukan/core/prng.hpp"

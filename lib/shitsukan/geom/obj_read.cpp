@@ -11,7 +11,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "shitsukan/core/memory_budget.hpp"
+#include "shitsukan/core/input_file.hpp"
 #include "shitsukan/geom/mesh_builders.hpp"
 
 namespace shitsukan {
@@ -272,32 +272,10 @@ Status read_obj_text(const char* text, std::size_t length, const char* name, Tri
 Status read_obj(const char* path, TriangleMesh& out) {
     if (path == nullptr || !path[0])
         return Status::error(StatusCode::invalid_argument, "read_obj: empty path");
-    std::FILE* f = std::fopen(path, "rb");
-    if (!f) return Status::error(StatusCode::io_error, "cannot open %s for reading", path);
     // The text is held whole: capped at kObjMaxBytes and the memory budget as it grows, and a
     // NUL byte (not text: /dev/zero, a binary file) stops the read at its chunk.
     std::string text;
-    char buf[1 << 16];
-    std::size_t got;
-    Status s = Status::success();
-    while (s && (got = std::fread(buf, 1, sizeof buf, f)) > 0) {
-        if (const void* nul = std::memchr(buf, '\0', got)) {
-            const std::size_t at = std::size_t(static_cast<const char*>(nul) - buf);
-            const long line = 1 + long(std::count(text.begin(), text.end(), '\n') +
-                                       std::count(buf, buf + at, '\n'));
-            s = Status::error(StatusCode::invalid_argument, "%s:%ld: NUL byte in the text", path,
-                              line);
-        }
-        else if (text.size() + got > kObjMaxBytes)
-            s = Status::error(StatusCode::too_large, "%s: longer than %zu bytes (kObjMaxBytes)",
-                              path, kObjMaxBytes);
-        else if ((s = check_memory_budget(text.size() + got, "read_obj: the text")))
-            text.append(buf, got);
-    }
-    const bool bad = s && std::ferror(f) != 0;
-    std::fclose(f);
-    if (!s) return s;
-    if (bad) return Status::error(StatusCode::io_error, "reading %s failed", path);
+    SHITSUKAN_TRY(read_text_file(path, kObjMaxBytes, "read_obj: the text", text));
     return read_obj_text(text.data(), text.size(), path, out);
 }
 

@@ -8,6 +8,8 @@
 #include <cstring>
 #include <string>
 
+#include "shitsukan/core/input_file.hpp"
+
 namespace shitsukan {
 namespace {
 
@@ -110,27 +112,9 @@ Status read_control_mesh_text(const char* text, std::size_t length, const char* 
 Status read_control_mesh(const char* path, WrControlMesh& out) {
     if (path == nullptr || !path[0])
         return Status::error(StatusCode::invalid_argument, "read_control_mesh: empty path");
-    std::FILE* f = std::fopen(path, "rb");
-    if (!f) return Status::error(StatusCode::io_error, "cannot open %s for reading", path);
     std::string text;
-    char buf[1 << 16];
-    std::size_t got;
-    Status s = Status::success();
-    while (s && (got = std::fread(buf, 1, sizeof buf, f)) > 0) {
-        if (std::memchr(buf, '\0', got) != nullptr)
-            s = Status::error(StatusCode::invalid_argument,
-                              "%s: a NUL byte near byte %zu: not a control-mesh text file", path,
-                              text.size());
-        else if (text.size() + got > kControlMeshMaxBytes)
-            s = Status::error(StatusCode::too_large, "%s: longer than %zu bytes", path,
-                              kControlMeshMaxBytes);
-        else
-            text.append(buf, got);
-    }
-    const bool bad = s && std::ferror(f) != 0;
-    std::fclose(f);
-    if (!s) return s;
-    if (bad) return Status::error(StatusCode::io_error, "reading %s failed", path);
+    SHITSUKAN_TRY(
+        read_text_file(path, kControlMeshMaxBytes, "read_control_mesh: the text", text));
     return read_control_mesh_text(text.data(), text.size(), path, out);
 }
 
