@@ -20,8 +20,7 @@ Status validate_fractal_levels(const char* what, int R, int max_depth, float bet
         return Status::error(StatusCode::invalid_argument,
                              "%s: beta must be finite and >= 0 (got %g)", what, double(beta));
     for (int i = 0; i < corner_count; ++i)
-        if (!is_finite(corners[i]) || !(corners[i] >= -kMaxFractalCorner &&
-                                        corners[i] <= kMaxFractalCorner))
+        if (!(corners[i] >= -kMaxFractalCorner && corners[i] <= kMaxFractalCorner))  // NaN too
             return Status::error(StatusCode::invalid_argument,
                                  "%s: corner value %d must be finite and within +-%g (got %g)",
                                  what, i, double(kMaxFractalCorner), double(corners[i]));
