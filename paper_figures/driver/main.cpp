@@ -174,6 +174,20 @@ private:
         return name;
     }
 
+    // The counters count figures, as the summary line does: a figure with parts is announced
+    // when its first part starts ("(N parts)"), its parts' times follow indented, and it is
+    // counted as finished once its assembling job is.
+    void announce(const Job& job) {
+        const FigureSpec& s = figures_[job.figure];
+        if (started_figure_[job.figure]) return;
+        started_figure_[job.figure] = true;
+        ++started_;
+        std::string name = std::string(s.paper) + "/" + s.id;
+        if (s.parts > 1) name += fmt(" (%d parts)", s.parts);
+        std::printf("[%zu/%zu] %s ...\n", started_, figures_.size(), name.c_str());
+        std::fflush(stdout);
+    }
+
     // The next job to run, or jobs_.size() when none is left.
     std::size_t next() {
         std::unique_lock<std::mutex> lock(mutex_);
@@ -184,10 +198,7 @@ private:
                 pending = true;
                 if (ready(jobs_[k], k)) {
                     state_[k] = State::running;
-                    ++started_;
-                    std::printf("[%zu/%zu] %s ...\n", started_, jobs_.size(),
-                                job_name(jobs_[k]).c_str());
-                    std::fflush(stdout);
+                    announce(jobs_[k]);
                     return k;
                 }
             }
@@ -222,14 +233,14 @@ private:
         Cost& cost = cost_[job.figure];
         cost.seconds += secs;
         cost.cpu += cpu;
-        ++finished_;
+        std::string counter = "     ";  // a part: indented under its figure, not counted
+        if (job.part < 0) counter = fmt("[%zu/%zu]", ++finished_, figures_.size());
         if (st.ok())
-            std::printf("[%zu/%zu] %s ... %.2f s (CPU %.2f s)\n", finished_, jobs_.size(),
-                        job_name(job).c_str(), job.part < 0 ? cost.seconds : secs,
-                        job.part < 0 ? cost.cpu : cpu);
+            std::printf("%s %s ... %.2f s (CPU %.2f s)\n", counter.c_str(), job_name(job).c_str(),
+                        job.part < 0 ? cost.seconds : secs, job.part < 0 ? cost.cpu : cpu);
         else
-            std::printf("[%zu/%zu] %s ... FAILED (%s)\n", finished_, jobs_.size(),
-                        job_name(job).c_str(), st.message());
+            std::printf("%s %s ... FAILED (%s)\n", counter.c_str(), job_name(job).c_str(),
+                        st.message());
         std::fflush(stdout);
         if (job.part >= 0) {
             kept_[job.figure][std::size_t(job.part)] = ctx.take_kept();
@@ -252,6 +263,7 @@ private:
     std::string out_;
     bool quick_, full_;
     std::vector<bool> done_;  // per figure
+    std::vector<bool> started_figure_ = std::vector<bool>(figures_.size(), false);
     std::vector<std::vector<std::vector<std::string>>> kept_;  // per figure, per part
     std::vector<Cost> cost_;                                   // per figure
     std::vector<Job> jobs_;                                    // in the order they start
