@@ -649,7 +649,7 @@ TEST_CASE("perturbation ceiling (fig. 10): beyond p = 0.03 the tiling allows no 
         rms[k++] = steps.perturbation.realised_rms;
         CHECK(count_not_star(pat) == 0);
     }
-    MESSAGE("realised RMS at p = 0.03: " << rms[0] << ", at p = 0.12: " << rms[1]);
+    MEASURED("realised RMS at p = 0.03: " << rms[0] << ", at p = 0.12: " << rms[1]);
     CHECK(rms[1] >= rms[0]);
     CHECK(rms[1] <= 1.05 * rms[0]);
 }
