@@ -10,6 +10,8 @@
 #   5. a C++20 project through pkg-config stays C++20 (std::span; the .pc carries no -std)
 #   6. add_subdirectory from a parent that set no build type still compiles the library with
 #      -O (and a parent's own build type is left alone)
+# and the small-device core alone (SHITSUKAN_SMALL_CORE_ONLY) for a Cortex-M0 without an FPU:
+#   7. cmake/small-core-toolchain.cmake builds the listed sources, nothing allocates or throws
 # Work happens in build/consumers/. Needs cmake, pkg-config, git and a compiler.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -115,6 +117,25 @@ if library_flags "$work/subdirectory_debug" | grep -q -- ' -O'; then
 fi
 echo "  a parent's Debug build type is kept (no -O added)"
 
+echo "-- 7. the small-device core alone for an FPU-less core (cmake/small-core-toolchain.cmake)"
+if command -v arm-none-eabi-g++ >/dev/null 2>&1; then
+  cmake -S "$root" -B "$work/small-m0" -DCMAKE_TOOLCHAIN_FILE="$root/cmake/small-core-toolchain.cmake" \
+    -DSHITSUKAN_SMALL_CORE_ONLY=ON -DCMAKE_BUILD_TYPE=MinSizeRel \
+    "-DSHITSUKAN_CPU_FLAGS=-mcpu=cortex-m0 -mthumb -mfloat-abi=soft" -Wno-dev >/dev/null
+  cmake --build "$work/small-m0" -j "$jobs" >/dev/null
+  n_small="$(grep -c '^lib/.*\.cpp$' "$root/lib/shitsukan/small_device_sources.txt")"
+  n_members="$(arm-none-eabi-ar t "$work/small-m0/libshitsukan.a" | wc -l)"
+  if [ "$n_members" -ne "$n_small" ]; then
+    echo "test-consumers: the small core holds $n_members objects, the list names $n_small"; exit 1
+  fi
+  if arm-none-eabi-nm -C "$work/small-m0/libshitsukan.a" | grep -E ' U (operator new|malloc|__cxa_throw)'; then
+    echo "test-consumers: the small core for Cortex-M0 allocates or throws"; exit 1
+  fi
+  echo "  Cortex-M0 (soft float): the $n_small small-device sources build into libshitsukan.a"
+else
+  echo "  skipped: no arm-none-eabi-g++ (make test-mcu installs it)"
+fi
+
 for h in "${hashes[@]}"; do
   if [ "$h" != "${hashes[0]}" ]; then
     echo "test-consumers: image hashes differ between the ways of building: ${hashes[*]}"
@@ -123,4 +144,4 @@ for h in "${hashes[@]}"; do
 done
 echo "test-consumers: ${#hashes[@]} builds (Makefile, add_subdirectory, FetchContent," \
      "find_package x2, pkg-config) ran; same version $version, same image bits;" \
-     "C++20 through pkg-config and add_subdirectory's -O checked"
+     "C++20 through pkg-config, add_subdirectory's -O and the small core alone checked"
