@@ -32,7 +32,7 @@
 // Ranges: 1 <= B <= kIstMaxBase, 0 <= M_i <= 15, 0 <= K <= kIstMaxIterations; double
 // precision resolves the sub-intervals while prod (2 M + 1) stays below about 2^45, and
 // ist_original_check refuses K, M and edges whose finest sub-interval would be narrower than
-// 2^-45 (there the inverse used to divide 0 by 0). forward() returns values in [0, 1), and 1
+// 2^-45 (there the inverse would divide 0 by 0). forward() returns values in [0, 1), and 1
 // only for u = 1 (the paper's rule: u = 1 belongs to the last sub-interval).
 // Round trips: a sub-interval of u^0 with parts g_1..g_K (a mixed-radix fraction I / D of its
 // base) has the left end x_b + w_b I / D; forward and inverse map left ends to left ends
