@@ -12,6 +12,12 @@
 
 namespace shitsukan::figures::bark {
 
+namespace {
+// Chosen here: 0.02 cm toward the eye; at the figure's 37 cm the depth buffer resolves
+// about 0.001 cm, and the offset is far below any gap between the bark's front and back.
+constexpr float kCrackOffset = 0.02f;
+}  // namespace
+
 BranchScene branch_scene(const BranchBark& b, float t, const Vec3* W, float min_width) {
     BranchScene out;
     const int n = b.mesh.vertex_count();
@@ -32,15 +38,15 @@ BranchScene branch_scene(const BranchBark& b, float t, const Vec3* W, float min_
         const Vec3 xi = out.grown.positions[sp.i], xj = out.grown.positions[sp.j];
         const float l = length(xj - xi), w = std::max(l - sp.l0, min_width);
         const Vec3 along = (xj - xi) * (1.0f / l), m = (xi + xj) * 0.5f;
-        const Vec3 lift = normalize(b.mesh.normals[sp.i] + b.mesh.normals[sp.j]) * 0.01f;
+        const Vec3 nrm = normalize(b.mesh.normals[sp.i] + b.mesh.normals[sp.j]);
         const std::int32_t* tr = &b.spring_triangles[2 * s];
         for (int k = 0; k < 2 && tr[k] >= 0; ++k) {
             const Vec3 end = centroid[std::size_t(tr[k])];
             const Vec3 h = along * (0.5f * w);
-            const std::uint32_t a = out.cracks.add_vertex(end - h + lift, lift);
-            const std::uint32_t bb = out.cracks.add_vertex(m - h + lift, lift);
-            const std::uint32_t cc = out.cracks.add_vertex(m + h + lift, lift);
-            const std::uint32_t d = out.cracks.add_vertex(end + h + lift, lift);
+            const std::uint32_t a = out.cracks.add_vertex(end - h, nrm);
+            const std::uint32_t bb = out.cracks.add_vertex(m - h, nrm);
+            const std::uint32_t cc = out.cracks.add_vertex(m + h, nrm);
+            const std::uint32_t d = out.cracks.add_vertex(end + h, nrm);
             out.cracks.add_triangle(a, bb, cc), out.cracks.add_triangle(a, cc, d);
         }
     }
@@ -73,7 +79,26 @@ Status draw_branch_view(const BranchScene& scene, const Camera& cam, const Mat4&
     auto bark_shader = shade(bark_colour);
     auto crack_shader = shade(crack_colour);
     SHITSUKAN_TRY(draw_mesh(cam, band, scene.grown.view(), opt, bark_shader));
-    return draw_mesh(cam, band, scene.cracks.view(), opt, crack_shader);
+    // The ribbons lie in the planes of the bark's own triangles. Each vertex is moved
+    // kCrackOffset toward the eye, along its line of sight: its projection stays where it was
+    // and it wins the depth test against the triangle it lies on, so no ribbon shows past a
+    // silhouette or a cut end (a lift along the normal stuck out there as black ticks). A
+    // ribbon whose outer side faces away is on the inside of an open end: not drawn (the
+    // cracks are on the bark's outer face).
+    TriangleMesh cracks;
+    const TriangleMesh& ribbons = scene.cracks;
+    for (std::size_t i = 0; i < ribbons.positions.size(); ++i) {
+        const Vec3 w = transform_point(opt.model, ribbons.positions[i]);
+        const Vec3 to_eye = normalize(cam.eye - w);
+        cracks.add_vertex(w + to_eye * kCrackOffset, transform_vector(opt.model, ribbons.normals[i]));
+    }
+    for (std::size_t k = 0; k + 2 < ribbons.indices.size(); k += 3) {
+        const std::uint32_t a = ribbons.indices[k], b = ribbons.indices[k + 1], c = ribbons.indices[k + 2];
+        if (dot(cracks.normals[a], cam.eye - cracks.positions[a]) > 0.0f) cracks.add_triangle(a, b, c);
+    }
+    DrawOptions world = opt;
+    world.model = Mat4::identity();
+    return draw_mesh(cam, band, cracks.view(), world, crack_shader);
 }
 
 }  // namespace shitsukan::figures::bark

@@ -20,7 +20,7 @@ namespace shitsukan::figures::bark {
 
 struct BranchScene {
     TriangleMesh grown;   // the mesh with every node at its position at t (W of the run)
-    TriangleMesh cracks;  // one ribbon per cracked spring, lifted 0.01 cm off the surface
+    TriangleMesh cracks;  // one ribbon per cracked spring, in its triangles' planes
     int broken = 0;       // broken springs among the cracked ones
 };
 
@@ -35,7 +35,8 @@ BranchScene branch_scene(const BranchBark& bark, float t, const Vec3* W, float m
 Camera fig11_camera(int view, int size);
 // The shape is z-up, the rasterizer's world y-up: the model turns it by -90 degrees about x
 // first, then `turn` (about the crotch's point (2, 8, 0), y up). Bark brown and dark cracks,
-// Lambert lit from the figure's light, on the figure's grey.
+// Lambert lit from the figure's light, on the figure's grey; the cracks are drawn a hair
+// toward the eye (branch_scene.cpp), never past the bark's outline.
 Status draw_branch_view(const BranchScene& scene, const Camera& camera, const Mat4& turn, RgbView target);
 
 }  // namespace shitsukan::figures::bark
