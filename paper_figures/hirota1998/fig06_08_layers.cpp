@@ -175,6 +175,52 @@ void draw_frame(RasterCanvas& c, const LayeredBark& bark, const LayerFrame& f, V
     }
 }
 
+// ΔR (§4.1: the growth of the inner layer's radius during T), marked on every cycle: the
+// inner radius at the cycle's start carried across (dotted), the rise to its end bracketed.
+void mark_delta_r(RasterCanvas& c, const Axes& axes, const LayerSchedule& s, int cycles) {
+    for (int k = 0; k < cycles; ++k) {
+        const double r0 = double(layer_radii(s, s.T * float(k)).inner - s.R_in0);
+        const double r1 = double(layer_radii(s, s.T * float(k + 1), true).inner - s.R_in0);
+        const Vec2 from = axes.to_pixel(double(k), r0), to = axes.to_pixel(double(k + 1), r0);
+        for (float x = from.x; x < to.x; x += 6) c.line({x, from.y}, {std::min(x + 2, to.x), from.y}, Rgb8{60, 60, 60}, 1.0f);
+        const Vec2 top = axes.to_pixel(double(k + 1) - 0.04, r1), bot = axes.to_pixel(double(k + 1) - 0.04, r0);
+        c.line(top, bot, Rgb8{20, 20, 20}, 1.5f);
+        c.line({top.x - 3, top.y}, {top.x + 3, top.y}, Rgb8{20, 20, 20}, 1.5f);
+        c.line({bot.x - 3, bot.y}, {bot.x + 3, bot.y}, Rgb8{20, 20, 20}, 1.5f);
+        c.text({top.x - 20, 0.5f * (top.y + bot.y) + 4}, "ΔR", Rgb8{20, 20, 20}, 1);
+    }
+}
+
+// Fig. 6's section to scale: (u around the trunk, radius) -> pixels.
+struct SectionPx {
+    int left = 0, top = 0;
+    float scale = 0, r_hi = 0;
+    Vec2 operator()(float u, float radius) const {
+        return Vec2{float(left) + u * scale, float(top) + (r_hi - radius) * scale};
+    }
+};
+
+// Bands: inner, middle (2) half grown, middle (1) (the surface is drawn per column).
+void fill_layer_bands(RasterCanvas& c, const SectionPx& px, const LayerRadii& r, float D,
+                      float width_cm) {
+    const Rgb8 inner{170, 170, 170}, m2{236, 212, 140}, m1{214, 150, 90};
+    c.fill_rect(px(0, r.inner_boundary), px(width_cm, r.inner_boundary - D) - px(0, r.inner_boundary), inner);
+    c.fill_rect(px(0, r.inner_boundary + r.middle2_thickness),
+                px(width_cm, r.inner_boundary) - px(0, r.inner_boundary + r.middle2_thickness), m2);
+    const float m1_lo = r.inner_boundary + r.middle2_thickness;
+    c.fill_rect(px(0, m1_lo + D), px(width_cm, m1_lo) - px(0, m1_lo + D), m1);
+}
+
+void label_layers(RasterCanvas& c, const SectionPx& px, float lx, const LayerRadii& r) {
+    c.text({lx, px(0, r.surface).y - 4}, "surface: cracks, peels", Rgb8{20, 20, 20}, 1);
+    c.text({lx, px(0, r.middle1).y - 4}, "middle (1): exposed when", Rgb8{20, 20, 20}, 1);
+    c.text({lx, px(0, r.middle1).y + 6}, "the surface peels", Rgb8{20, 20, 20}, 1);
+    c.text({lx, px(0, r.middle2).y - 8}, fmt("middle (2): new cork, %.3f cm", double(r.middle2_thickness)),
+           Rgb8{20, 20, 20}, 1);
+    c.text({lx, px(0, r.middle2).y + 2}, "(grows to D in a cycle)", Rgb8{20, 20, 20}, 1);
+    c.text({lx, px(0, r.inner).y - 4}, "inner: moves out with the wood", Rgb8{20, 20, 20}, 1);
+}
+
 }  // namespace
 
 SHITSUKAN_FIGURE(hirota_fig07, "hirota1998", "fig07",
@@ -237,19 +283,7 @@ SHITSUKAN_FIGURE(hirota_fig07, "hirota1998", "fig07",
             c.marker(e1, MarkerShape::circle, 7.0f, Rgb8{200, 90, 30});
         }
     }
-    // ΔR (§4.1: the growth of the inner layer's radius during T), marked on every cycle: the
-    // inner radius at the cycle's start carried across (dotted), the rise to its end bracketed.
-    for (int k = 0; k < p.cycles; ++k) {
-        const double r0 = double(layer_radii(s, s.T * float(k)).inner - s.R_in0);
-        const double r1 = double(layer_radii(s, s.T * float(k + 1), true).inner - s.R_in0);
-        const Vec2 from = axes.to_pixel(double(k), r0), to = axes.to_pixel(double(k + 1), r0);
-        for (float x = from.x; x < to.x; x += 6) c.line({x, from.y}, {std::min(x + 2, to.x), from.y}, Rgb8{60, 60, 60}, 1.0f);
-        const Vec2 top = axes.to_pixel(double(k + 1) - 0.04, r1), bot = axes.to_pixel(double(k + 1) - 0.04, r0);
-        c.line(top, bot, Rgb8{20, 20, 20}, 1.5f);
-        c.line({top.x - 3, top.y}, {top.x + 3, top.y}, Rgb8{20, 20, 20}, 1.5f);
-        c.line({bot.x - 3, bot.y}, {bot.x + 3, bot.y}, Rgb8{20, 20, 20}, 1.5f);
-        c.text({top.x - 20, 0.5f * (top.y + bot.y) + 4}, "ΔR", Rgb8{20, 20, 20}, 1);
-    }
+    mark_delta_r(c, axes, s, p.cycles);
     for (int i = 0; i < 4; ++i) {
         const float y = axes.corner.y + 12.0f + 16.0f * float(i);
         const float x = axes.corner.x + axes.size.x + 12.0f;
@@ -404,9 +438,8 @@ SHITSUKAN_FIGURE(hirota_fig06, "hirota1998", "fig06",
     const int W = left + int(width_cm * scale) + right, H = top + int((r_hi - r_lo) * scale) + bottom;
     RgbImage img(W, H, Rgb8{252, 252, 250});
     RasterCanvas c(img.view());
-    auto px = [&](float u, float radius) {
-        return Vec2{float(left) + u * scale, float(top) + (r_hi - radius) * scale};
-    };
+    SectionPx px;
+    px.left = left, px.top = top, px.scale = scale, px.r_hi = r_hi;
     // Find a window with a crack and a peeled place if there is one (the first column where
     // the surface is gone, minus a few).
     int c0 = 0;
@@ -416,13 +449,9 @@ SHITSUKAN_FIGURE(hirota_fig06, "hirota1998", "fig06",
             break;
         }
     auto node = [&](int k) { return lat.node((c0 + k) % p.N_R, row); };
-    // Bands: inner, middle (2) half grown, middle (1), surface (where still on).
-    const Rgb8 inner{170, 170, 170}, m2{236, 212, 140}, m1{214, 150, 90}, surf{120, 88, 62};
-    c.fill_rect(px(0, r.inner_boundary), px(width_cm, r.inner_boundary - s.D) - px(0, r.inner_boundary), inner);
-    c.fill_rect(px(0, r.inner_boundary + r.middle2_thickness),
-                px(width_cm, r.inner_boundary) - px(0, r.inner_boundary + r.middle2_thickness), m2);
+    fill_layer_bands(c, px, r, s.D, width_cm);
+    const Rgb8 surf{120, 88, 62};
     const float m1_lo = r.inner_boundary + r.middle2_thickness;
-    c.fill_rect(px(0, m1_lo + s.D), px(width_cm, m1_lo) - px(0, m1_lo + s.D), m1);
     // Per column: the surface cell, gaps where the ring's springs broke.
     for (int k = 0; k < columns; ++k) {
         const float u0 = float(k) * lat.a_h, u1 = u0 + lat.a_h;
@@ -473,14 +502,7 @@ SHITSUKAN_FIGURE(hirota_fig06, "hirota1998", "fig06",
         c.marker(px(u, r.middle2), MarkerShape::dot, 5.0f, Rgb8{90, 90, 90});
         c.marker(px(u, r.inner), MarkerShape::dot, 5.0f, Rgb8{90, 90, 90});
     }
-    const float lx = float(left) + width_cm * scale + 12.0f;
-    c.text({lx, px(0, r.surface).y - 4}, "surface: cracks, peels", Rgb8{20, 20, 20}, 1);
-    c.text({lx, px(0, r.middle1).y - 4}, "middle (1): exposed when", Rgb8{20, 20, 20}, 1);
-    c.text({lx, px(0, r.middle1).y + 6}, "the surface peels", Rgb8{20, 20, 20}, 1);
-    c.text({lx, px(0, r.middle2).y - 8}, fmt("middle (2): new cork, %.3f cm", double(r.middle2_thickness)),
-           Rgb8{20, 20, 20}, 1);
-    c.text({lx, px(0, r.middle2).y + 2}, "(grows to D in a cycle)", Rgb8{20, 20, 20}, 1);
-    c.text({lx, px(0, r.inner).y - 4}, "inner: moves out with the wood", Rgb8{20, 20, 20}, 1);
+    label_layers(c, px, float(left) + width_cm * scale + 12.0f, r);
     c.text({10, 10}, fmt("Fig. 6: four layers at t/T = %.1f (mid-cycle), radial section, to scale "
                          "(%.0f px/cm), unrolled around the trunk",
                          double(t / s.T), double(scale)),

@@ -69,15 +69,9 @@ void record_branch(FigureContext& ctx, const BranchBarkParams& p) {
                "paper's images");
 }
 
-}  // namespace
-
-SHITSUKAN_FIGURE(hirota_fig09, "hirota1998", "fig09",
-                 "Connection areas on an irregular mesh: a spring's (a) and a shear spring's (b)") {
-    const BranchRun* run;
-    SHITSUKAN_TRY(branch_run(ctx.quick(), &run));
-    const BranchBark& b = run->bark;
-    record_branch(ctx, run->params);
-    // N1: an interior node near the crotch (both limbs' surfaces about as near).
+// N1 of fig. 9: an interior node near the crotch (both limbs' surfaces about as near), with
+// at least five triangles; -1 when there is none.
+int crotch_node(const BranchBark& b) {
     int n1 = -1;
     float best = 1e30f;
     std::vector<int> ring_count(std::size_t(b.mesh.vertex_count()), 0);
@@ -90,73 +84,78 @@ SHITSUKAN_FIGURE(hirota_fig09, "hirota1998", "fig09",
         const float score = std::fabs(d.f_trunk) + std::fabs(d.f_branch);
         if (score < best && ring_count[std::size_t(i)] >= 5) best = score, n1 = i;
     }
-    if (n1 < 0) return Status::error(StatusCode::not_supported, "fig09: no crotch node");
-    // The one-ring, flattened onto N1's tangent plane.
-    const Vec3 o = b.mesh.positions[std::size_t(n1)], nrm = b.mesh.normals[std::size_t(n1)];
-    const Vec3 t1 = normalize(cross(nrm, std::fabs(nrm.z) < 0.9f ? Vec3{0, 0, 1} : Vec3{1, 0, 0}));
-    const Vec3 t2 = cross(nrm, t1);
-    auto flat = [&](Vec3 p) { return Vec2{dot(p - o, t1), dot(p - o, t2)}; };
+    return n1;
+}
+
+// N1's one-ring flattened onto its tangent plane: its triangles, the element boundary (edge
+// midpoints and triangle centroids in angular order) and its neighbours.
+struct OneRing {
     struct Corner {
         float angle;
         Vec2 p;
         bool centroid;
         int spring;  // for a midpoint: its spring
     };
+    Vec3 o, t1, t2;
     std::vector<Corner> boundary;
     std::vector<std::array<Vec2, 3>> tris;
     std::vector<int> neighbours;
+    Vec2 flat(Vec3 p) const { return Vec2{dot(p - o, t1), dot(p - o, t2)}; }
+};
+
+OneRing flatten_one_ring(const BranchBark& b, int n1) {
+    OneRing r;
+    r.o = b.mesh.positions[std::size_t(n1)];
+    const Vec3 nrm = b.mesh.normals[std::size_t(n1)];
+    r.t1 = normalize(cross(nrm, std::fabs(nrm.z) < 0.9f ? Vec3{0, 0, 1} : Vec3{1, 0, 0}));
+    r.t2 = cross(nrm, r.t1);
     for (const ConnectionTriangle& t : b.triangles) {
         int k = -1;
         for (int j = 0; j < 3; ++j)
             if (int(t.node[j]) == n1) k = j;
         if (k < 0) continue;
-        tris.push_back({flat(t.corner[0]), flat(t.corner[1]), flat(t.corner[2])});
-        const Vec2 c = flat((t.corner[0] + t.corner[1] + t.corner[2]) * (1.0f / 3.0f));
-        boundary.push_back({det_atan2(c.y, c.x), c, true, -1});
+        r.tris.push_back({r.flat(t.corner[0]), r.flat(t.corner[1]), r.flat(t.corner[2])});
+        const Vec2 c = r.flat((t.corner[0] + t.corner[1] + t.corner[2]) * (1.0f / 3.0f));
+        r.boundary.push_back({det_atan2(c.y, c.x), c, true, -1});
         for (int j : {k, (k + 2) % 3}) {  // the two edges at N1: (k, k+1) and (k+2, k)
             const int s = int(t.spring[j]);
-            const Vec2 mid = flat((t.corner[j] + t.corner[(j + 1) % 3]) * 0.5f);
+            const Vec2 mid = r.flat((t.corner[j] + t.corner[(j + 1) % 3]) * 0.5f);
             bool seen = false;
-            for (const Corner& q : boundary) seen = seen || (!q.centroid && q.spring == s);
-            if (!seen) boundary.push_back({det_atan2(mid.y, mid.x), mid, false, s});
+            for (const OneRing::Corner& q : r.boundary) seen = seen || (!q.centroid && q.spring == s);
+            if (!seen) r.boundary.push_back({det_atan2(mid.y, mid.x), mid, false, s});
             const int other = int(t.node[j]) == n1 ? int(t.node[(j + 1) % 3]) : int(t.node[j]);
-            if (std::find(neighbours.begin(), neighbours.end(), other) == neighbours.end())
-                neighbours.push_back(other);
+            if (std::find(r.neighbours.begin(), r.neighbours.end(), other) == r.neighbours.end())
+                r.neighbours.push_back(other);
         }
     }
-    std::sort(boundary.begin(), boundary.end(),
-              [](const Corner& a, const Corner& c) { return a.angle < c.angle; });
-    // The spring N1-N3 to highlight: the first midpoint in angular order.
-    int hi = 0;
-    while (boundary[std::size_t(hi)].centroid) ++hi;
-    const int nb = int(boundary.size());
-    const Corner& P = boundary[std::size_t(hi)];
-    const Corner& C1 = boundary[std::size_t((hi + nb - 1) % nb)];
-    const Corner& C2 = boundary[std::size_t((hi + 1) % nb)];
-    const float seg = length(P.p - C1.p) + length(C2.p - P.p);
+    std::sort(r.boundary.begin(), r.boundary.end(),
+              [](const OneRing::Corner& a, const OneRing::Corner& c) { return a.angle < c.angle; });
+    return r;
+}
+
+// Fig. 9's two panels: (a) the spring N1-N3's face C1-P-C2, (b) N1's element (hi: the index
+// of P in the boundary).
+void draw_connection_panels(RasterCanvas& c, const BranchBark& b, const OneRing& ring, int n1,
+                            int hi, int panel, int H) {
+    const int nb = int(ring.boundary.size());
+    const OneRing::Corner& P = ring.boundary[std::size_t(hi)];
+    const OneRing::Corner& C1 = ring.boundary[std::size_t((hi + nb - 1) % nb)];
+    const OneRing::Corner& C2 = ring.boundary[std::size_t((hi + 1) % nb)];
     const float face = b.spring_face[std::size_t(P.spring)];
     const float area = b.node_area[std::size_t(n1)];
     const BarkSpring& sp = b.net.springs[std::size_t(P.spring)];
     const int n3 = int(sp.i) == n1 ? int(sp.j) : int(sp.i);
-    double total = 0, mesh_area = 0;
-    for (float a : b.node_area) total += a;
-    for (const ConnectionTriangle& t : b.triangles)
-        mesh_area += 0.5 * double(length(cross(t.corner[1] - t.corner[0], t.corner[2] - t.corner[0])));
-
-    const int panel = ctx.quick() ? 360 : 520, H = panel + 90;
-    RgbImage img(2 * panel, H, Rgb8{252, 252, 250});
-    RasterCanvas c(img.view());
     float extent = 0;
-    for (const auto& t : tris)
+    for (const auto& t : ring.tris)
         for (const Vec2& v : t) extent = std::max({extent, std::fabs(v.x), std::fabs(v.y)});
     const float scale = 0.42f * float(panel) / extent;
     for (int pnl = 0; pnl < 2; ++pnl) {
         const Vec2 centre{float(pnl * panel) + 0.5f * float(panel), 40.0f + 0.5f * float(panel)};
         auto px = [&](Vec2 v) { return Vec2{centre.x + v.x * scale, centre.y - v.y * scale}; };
         std::vector<Vec2> poly;
-        for (const Corner& q : boundary) poly.push_back(px(q.p));
+        for (const OneRing::Corner& q : ring.boundary) poly.push_back(px(q.p));
         if (pnl == 1) c.fill_polygon(poly.data(), int(poly.size()), Rgb8{250, 214, 160});
-        for (const auto& t : tris) {
+        for (const auto& t : ring.tris) {
             const Vec2 pts[3] = {px(t[0]), px(t[1]), px(t[2])};
             c.polygon_outline(pts, 3, Rgb8{150, 150, 150}, 1.2f);
         }
@@ -164,16 +163,16 @@ SHITSUKAN_FIGURE(hirota_fig09, "hirota1998", "fig09",
         if (pnl == 0) {
             const Vec2 seg_pts[3] = {px(C1.p), px(P.p), px(C2.p)};
             c.polyline(seg_pts, 3, Rgb8{220, 40, 30}, 4.0f);
-            c.line(px({0, 0}), px(flat(b.mesh.positions[std::size_t(n3)])), Rgb8{20, 20, 20}, 2.0f);
+            c.line(px({0, 0}), px(ring.flat(b.mesh.positions[std::size_t(n3)])), Rgb8{20, 20, 20}, 2.0f);
             c.text(px(C1.p) + Vec2{6, -4}, "C1", Rgb8{20, 20, 20}, 1);
             c.text(px(C2.p) + Vec2{6, -4}, "C2", Rgb8{20, 20, 20}, 1);
             c.text(px(P.p) + Vec2{6, 4}, "P", Rgb8{20, 20, 20}, 1);
-            c.text(px(flat(b.mesh.positions[std::size_t(n3)])) + Vec2{6, 0}, "N3", Rgb8{20, 20, 20}, 1);
+            c.text(px(ring.flat(b.mesh.positions[std::size_t(n3)])) + Vec2{6, 0}, "N3", Rgb8{20, 20, 20}, 1);
         }
-        for (const Corner& q : boundary)
+        for (const OneRing::Corner& q : ring.boundary)
             c.marker(px(q.p), q.centroid ? MarkerShape::square : MarkerShape::dot, 6.0f, Rgb8{40, 90, 200});
-        for (int nb_i : neighbours)
-            c.marker(px(flat(b.mesh.positions[std::size_t(nb_i)])), MarkerShape::dot, 9.0f, Rgb8{30, 30, 30});
+        for (int nb_i : ring.neighbours)
+            c.marker(px(ring.flat(b.mesh.positions[std::size_t(nb_i)])), MarkerShape::dot, 9.0f, Rgb8{30, 30, 30});
         c.marker(px({0, 0}), MarkerShape::dot, 12.0f, Rgb8{200, 30, 30});
         c.text(px({0, 0}) + Vec2{8, 6}, "N1", Rgb8{20, 20, 20}, 1);
         c.text({float(pnl * panel) + 10, 10},
@@ -182,19 +181,49 @@ SHITSUKAN_FIGURE(hirota_fig09, "hirota1998", "fig09",
         c.text({float(pnl * panel) + 10, float(H - 40)},
                pnl == 0 ? fmt("|C1-P-C2| = %.4f cm, S = |C1-P-C2| x D = %.4f cm^2", double(face),
                               double(face * b.params.D))
-                        : fmt("A = %.4f cm^2 (sum of %zu triangle areas / 3)", double(area), tris.size()),
+                        : fmt("A = %.4f cm^2 (sum of %zu triangle areas / 3)", double(area), ring.tris.size()),
                Rgb8{20, 20, 20}, 1);
         c.text({float(pnl * panel) + 10, float(H - 24)},
                pnl == 0 ? fmt("k = E S / l0 = %.3g dyn/cm (l0 = %.3f cm)", double(sp.k), double(sp.l0))
                         : fmt("k_sh = G A / D = %.3g dyn/cm", double(b.net.k_anchor[std::size_t(n1)])),
                Rgb8{60, 60, 60}, 1);
     }
+}
+
+}  // namespace
+
+SHITSUKAN_FIGURE(hirota_fig09, "hirota1998", "fig09",
+                 "Connection areas on an irregular mesh: a spring's (a) and a shear spring's (b)") {
+    const BranchRun* run;
+    SHITSUKAN_TRY(branch_run(ctx.quick(), &run));
+    const BranchBark& b = run->bark;
+    record_branch(ctx, run->params);
+    const int n1 = crotch_node(b);
+    if (n1 < 0) return Status::error(StatusCode::not_supported, "fig09: no crotch node");
+    const OneRing ring = flatten_one_ring(b, n1);
+    // The spring N1-N3 to highlight: the first midpoint in angular order.
+    int hi = 0;
+    while (ring.boundary[std::size_t(hi)].centroid) ++hi;
+    const int nb = int(ring.boundary.size());
+    const OneRing::Corner& P = ring.boundary[std::size_t(hi)];
+    const OneRing::Corner& C1 = ring.boundary[std::size_t((hi + nb - 1) % nb)];
+    const OneRing::Corner& C2 = ring.boundary[std::size_t((hi + 1) % nb)];
+    const float seg = length(P.p - C1.p) + length(C2.p - P.p);
+    const float face = b.spring_face[std::size_t(P.spring)];
+    double total = 0, mesh_area = 0;
+    for (float a : b.node_area) total += a;
+    for (const ConnectionTriangle& t : b.triangles)
+        mesh_area += 0.5 * double(length(cross(t.corner[1] - t.corner[0], t.corner[2] - t.corner[0])));
+    const int panel = ctx.quick() ? 360 : 520, H = panel + 90;
+    RgbImage img(2 * panel, H, Rgb8{252, 252, 250});
+    RasterCanvas c(img.view());
+    draw_connection_panels(c, b, ring, n1, hi, panel, H);
     ctx.note(fmt("Node N1 near the crotch with its %zu triangles flattened onto its tangent plane "
                  "(blue: the element boundary through the edge midpoints P and the triangle "
                  "centroids C). The drawn C1-P-C2 is %.4f cm long in the plane; connection_areas "
                  "gives %.4f cm (in 3D). Sum of all element areas %.4f cm^2 = mesh area %.4f cm^2 "
                  "(relative difference %.1e). Mesh: %d nodes, %zu springs.",
-                 tris.size(), double(seg), double(face), total, mesh_area,
+                 ring.tris.size(), double(seg), double(face), total, mesh_area,
                  std::fabs(total - mesh_area) / mesh_area, b.mesh.vertex_count(),
                  b.net.springs.size()));
     return ctx.save_png(img.view());
