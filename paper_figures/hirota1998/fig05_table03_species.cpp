@@ -366,9 +366,12 @@ Status table03_checks(FigureContext& ctx, const SpeciesRun* const runs[3],
                "column); only tallow's lower kappa1 adds horizontal cracks (first axial break at "
                "%.2f T, camphor's at %.2f T), and the narrowing comes with them. With both "
                "strains growing in proportion (Table 1's constant delta_r and delta_h) the "
-               "vertical cracks always come first; a sweep of the shared chosen values (D, sigma, "
-               "the two final strains, the tolerance) over five seeds did not reverse the order, "
-               "so it is reported, not tuned in.\n",
+               "vertical cracks always come first. A sweep of the shared chosen values (sigma, "
+               "D, the two final strains, a common scale on every kappa - 1, the tolerance; "
+               "tools/bark_table3_sweep.cpp, its numbers in docs/papers/hirota1998.md §4) "
+               "reverses the order in no setting: tallow nears camphor's width only where "
+               "camphor's strips break into blocks (against *1), so it is reported, not tuned "
+               "in.\n",
                double(first_break(*runs[0], 2)), double(first_break(*runs[1], 2)),
                double(first_break(*runs[1], 1)), double(first_break(*runs[0], 1)));
     *md += "\nThe max row: each run's largest region, averaged over the seeds. Widths match; "
