@@ -129,98 +129,92 @@ SHITSUKAN_FIGURE(hirota_fig03, "hirota1998", "fig03",
     return ctx.save_png(img.view());
 }
 
-SHITSUKAN_FIGURE(hirota_fig04, "hirota1998", "fig04",
-                 "How a crack is drawn: at the middle of the broken spring, width l - l0") {
-    const SpeciesRun* run;
-    SHITSUKAN_TRY(species_run(Species::camphor, ctx.quick(), &run));
-    const BarkCylinder& bark = run->bark;
-    const float T = run->params.T;
-    const Vec3* W = bark.net.W.data();
-    ctx.given("crack", "at the middle of the connection, width = l - l0", "§3.1, Fig. 4");
-    ctx.chosen("window", "7 x 6 cells of the camphor run at t = T around the widest crack of a "
-                         "vertical crack (a broken diagonal)",
-               "the paper's Fig. 4 is a sketch; this one is measured");
-    // The widest broken diagonal away from the free edges that separates two large regions
-    // (a crack between two strips, not a crumb).
-    std::uint32_t pick = 0;
-    float widest = -1;
-    const RegionReport& regions = run->regions;
+namespace {
+
+// The widest broken diagonal away from the free edges that separates two large regions (a
+// crack between two strips, not a crumb); quick mode's small cylinder may have no such pair:
+// then any broken diagonal will do. Returns false when there is none.
+bool widest_vertical_crack(const SpeciesRun& run, std::uint32_t* pick) {
+    const BarkCylinder& bark = run.bark;
+    const RegionReport& regions = run.regions;
     auto big = [&](std::uint32_t node) {
         const std::int32_t l = regions.label[node];
         return l >= 0 && regions.regions[std::size_t(l)].nodes >= 40;
     };
-    // (Quick mode's small cylinder may have no such pair: then any broken diagonal will do.)
+    float widest = -1;
     for (int pass = 0; pass < 2 && widest < 0; ++pass)
-        for (const BreakEvent& e : run->run.breaks) {
+        for (const BreakEvent& e : run.run.breaks) {
             const BarkSpring& s = bark.net.springs[e.spring];
             const int r = bark.row_of(int(s.i));
-            if (s.family != 2 || r < 3 || r > run->params.N_H - 4) continue;
+            if (s.family != 2 || r < 3 || r > run.params.N_H - 4) continue;
             if (pass == 0 &&
                 (!big(s.i) || !big(s.j) || regions.label[s.i] == regions.label[s.j]))
                 continue;
-            const float w = crack_ribbon(bark, e.spring, T, W).width;
-            if (w > widest) widest = w, pick = e.spring;
+            const float w = crack_ribbon(bark, e.spring, run.params.T, bark.net.W.data()).width;
+            if (w > widest) widest = w, *pick = e.spring;
         }
-    if (widest < 0)
-        return Status::error(StatusCode::not_supported, "fig04: no broken diagonal to show");
-    const CrackRibbon focus = crack_ribbon(bark, pick, T, W);
-    const float C = bark.circumference * (1.0f + hoop_strain(run->params, T));
-    const float scale = ctx.quick() ? 200.0f : 400.0f;  // px per cm (chosen here)
-    const float half_w = 3.5f * bark.a_h, half_h = 3.0f * 0.33f;
-    const int margin = int(scale * 0.25f), side_w = int(2 * half_w * scale) + 2 * margin;
-    const int side_h = int(2 * half_h * scale) + margin + 80;
-    const Vec2 centre_px{float(side_w) * 0.5f, float(margin) + half_h * scale};
-    auto near = [&](Vec3 x) {  // the periodic copy next to the focus
+    return widest >= 0;
+}
+
+// Fig. 4's window: 7 x 6 cells around the focus crack, in pixels.
+struct CrackWindow {
+    CrackRibbon focus;
+    float C = 0, scale = 0, half_w = 0, half_h = 0;
+    int side_w = 0, side_h = 0;
+    Vec2 centre_px;
+    Vec3 near(Vec3 x) const {  // the periodic copy next to the focus
         while (x.x - focus.midpoint.x > 0.5f * C) x.x -= C;
         while (focus.midpoint.x - x.x > 0.5f * C) x.x += C;
         return x;
-    };
-    auto px = [&](Vec3 x) {
+    }
+    Vec2 px(Vec3 x) const {
         x = near(x);
         return Vec2{centre_px.x + (x.x - focus.midpoint.x) * scale,
                     centre_px.y - (x.y - focus.midpoint.y) * scale};
-    };
-    auto inside = [&](Vec3 x) {
+    }
+    bool inside(Vec3 x) const {
         x = near(x);
         return std::fabs(x.x - focus.midpoint.x) < half_w + 0.4f &&
                std::fabs(x.y - focus.midpoint.y) < half_h + 0.4f;
-    };
-    RgbImage img(side_w, side_h, Rgb8{252, 252, 250});
-    RasterCanvas c(img.view());
-    // Plates: the lattice triangles at their positions at T.
+    }
+};
+
+// Plates (the lattice triangles at T), cracks (ribbons), springs (broken ones dashed red) and
+// nodes inside the window.
+Status draw_crack_window(RasterCanvas& c, const BarkCylinder& bark, float T, const Vec3* W,
+                         const CrackWindow& win) {
     for (const ConnectionTriangle& tri : bark.triangles) {
         Vec3 x[3];
         bool any = false;
         for (int k = 0; k < 3; ++k) {
             x[k] = corner_position(bark, tri.corner[k], tri.node[k], T, W);
-            any = any || inside(x[k]);
+            any = any || win.inside(x[k]);
         }
         if (!any) continue;
         // Keep a seam triangle together: move every corner by the first one's period shift.
-        const Vec3 shift = near(x[0]) - x[0];
-        const Vec2 pts[3] = {px(x[0] + shift), px(x[1] + shift), px(x[2] + shift)};
+        const Vec3 shift = win.near(x[0]) - x[0];
+        const Vec2 pts[3] = {win.px(x[0] + shift), win.px(x[1] + shift), win.px(x[2] + shift)};
         c.fill_polygon(pts, 3, Rgb8{205, 186, 160});
     }
-    // Cracks (ribbons), then springs, then nodes.
     std::vector<CrackRibbon> cracks;
     SHITSUKAN_TRY(crack_ribbons(bark, T, W, cracks));
     for (const CrackRibbon& r : cracks) {
-        if (!inside(r.midpoint)) continue;
+        if (!win.inside(r.midpoint)) continue;
         Vec3 q[2][4];
         ribbon_quads(r, q);
-        const Vec3 shift = near(r.midpoint) - r.midpoint;
+        const Vec3 shift = win.near(r.midpoint) - r.midpoint;
         for (auto& quad : q) {
-            const Vec2 pts[4] = {px(quad[0] + shift), px(quad[1] + shift), px(quad[2] + shift),
-                                 px(quad[3] + shift)};
+            const Vec2 pts[4] = {win.px(quad[0] + shift), win.px(quad[1] + shift),
+                                 win.px(quad[2] + shift), win.px(quad[3] + shift)};
             c.fill_polygon(pts, 4, kCrack);
         }
     }
     for (std::size_t s = 0; s < bark.net.springs.size(); ++s) {
         const BarkSpring& sp = bark.net.springs[s];
         const CrackRibbon r = crack_ribbon(bark, std::uint32_t(s), T, W);
-        if (!inside(r.midpoint)) continue;
-        const Vec3 shift = near(r.midpoint) - r.midpoint;
-        const Vec2 a = px(r.node[0] + shift), b = px(r.node[1] + shift);
+        if (!win.inside(r.midpoint)) continue;
+        const Vec3 shift = win.near(r.midpoint) - r.midpoint;
+        const Vec2 a = win.px(r.node[0] + shift), b = win.px(r.node[1] + shift);
         if (intact_at(sp, T)) {
             c.line(a, b, Rgb8{120, 110, 100}, 1.0f);
         } else {  // dashed red
@@ -232,20 +226,27 @@ SHITSUKAN_FIGURE(hirota_fig04, "hirota1998", "fig04",
     }
     for (int q = 0; q < bark.net.node_count(); ++q) {
         const Vec3 x = node_position(bark, std::uint32_t(q), T, W);
-        if (inside(x)) c.marker(px(x), MarkerShape::dot, 6.0f, Rgb8{40, 40, 40});
+        if (win.inside(x)) c.marker(win.px(x), MarkerShape::dot, 6.0f, Rgb8{40, 40, 40});
     }
-    // The window's frame: blank the margins and the text band.
+    return Status::success();
+}
+
+// The window's frame (the margins and the text band blanked), the focus spring annotated, and
+// l, l0 and w printed below.
+void annotate_crack_window(RasterCanvas& c, const CrackWindow& win) {
     const Rgb8 paper{252, 252, 250};
-    const float wx0 = centre_px.x - half_w * scale, wx1 = centre_px.x + half_w * scale;
-    const float wy0 = centre_px.y - half_h * scale, wy1 = centre_px.y + half_h * scale;
-    c.fill_rect({0, 0}, {float(side_w), wy0}, paper);
-    c.fill_rect({0, wy1}, {float(side_w), float(side_h) - wy1}, paper);
-    c.fill_rect({0, 0}, {wx0, float(side_h)}, paper);
-    c.fill_rect({wx1, 0}, {float(side_w) - wx1, float(side_h)}, paper);
+    const float wx0 = win.centre_px.x - win.half_w * win.scale,
+                wx1 = win.centre_px.x + win.half_w * win.scale;
+    const float wy0 = win.centre_px.y - win.half_h * win.scale,
+                wy1 = win.centre_px.y + win.half_h * win.scale;
+    c.fill_rect({0, 0}, {float(win.side_w), wy0}, paper);
+    c.fill_rect({0, wy1}, {float(win.side_w), float(win.side_h) - wy1}, paper);
+    c.fill_rect({0, 0}, {wx0, float(win.side_h)}, paper);
+    c.fill_rect({wx1, 0}, {float(win.side_w) - wx1, float(win.side_h)}, paper);
     c.rect_outline({wx0, wy0}, {wx1 - wx0, wy1 - wy0}, Rgb8{60, 60, 60}, 1.0f);
     c.text({wx0, 8}, "camphor at t = T: 7 x 6 cells around a vertical crack", Rgb8{20, 20, 20}, 2);
-    // Annotation of the focus spring.
-    const Vec2 a = px(focus.node[0]), b = px(focus.node[1]), m = px(focus.midpoint);
+    const CrackRibbon& focus = win.focus;
+    const Vec2 a = win.px(focus.node[0]), b = win.px(focus.node[1]), m = win.px(focus.midpoint);
     c.marker(a, MarkerShape::circle, 16.0f, Rgb8{220, 40, 30});
     c.marker(b, MarkerShape::circle, 16.0f, Rgb8{220, 40, 30});
     c.line(m, m + Vec2{60, -70}, Rgb8{20, 20, 20}, 1.2f);
@@ -255,8 +256,40 @@ SHITSUKAN_FIGURE(hirota_fig04, "hirota1998", "fig04",
     c.text({12, ty + 18}, fmt("l0 = %.4f cm  (natural length)", double(focus.l0)), Rgb8{20, 20, 20},
            2);
     c.text({12, ty + 36}, fmt("w  = l - l0 = %.4f cm = %.1f px", double(focus.width),
-                              double(focus.width * scale)),
+                              double(focus.width * win.scale)),
            Rgb8{20, 20, 20}, 2);
+}
+
+}  // namespace
+
+SHITSUKAN_FIGURE(hirota_fig04, "hirota1998", "fig04",
+                 "How a crack is drawn: at the middle of the broken spring, width l - l0") {
+    const SpeciesRun* run;
+    SHITSUKAN_TRY(species_run(Species::camphor, ctx.quick(), &run));
+    const BarkCylinder& bark = run->bark;
+    const float T = run->params.T;
+    const Vec3* W = bark.net.W.data();
+    ctx.given("crack", "at the middle of the connection, width = l - l0", "§3.1, Fig. 4");
+    ctx.chosen("window", "7 x 6 cells of the camphor run at t = T around the widest crack of a "
+                         "vertical crack (a broken diagonal)",
+               "the paper's Fig. 4 is a sketch; this one is measured");
+    std::uint32_t pick = 0;
+    if (!widest_vertical_crack(*run, &pick))
+        return Status::error(StatusCode::not_supported, "fig04: no broken diagonal to show");
+    CrackWindow win;
+    win.focus = crack_ribbon(bark, pick, T, W);
+    win.C = bark.circumference * (1.0f + hoop_strain(run->params, T));
+    win.scale = ctx.quick() ? 200.0f : 400.0f;  // px per cm (chosen here)
+    win.half_w = 3.5f * bark.a_h, win.half_h = 3.0f * 0.33f;
+    const int margin = int(win.scale * 0.25f);
+    win.side_w = int(2 * win.half_w * win.scale) + 2 * margin;
+    win.side_h = int(2 * win.half_h * win.scale) + margin + 80;
+    win.centre_px = Vec2{float(win.side_w) * 0.5f, float(margin) + win.half_h * win.scale};
+    RgbImage img(win.side_w, win.side_h, Rgb8{252, 252, 250});
+    RasterCanvas c(img.view());
+    SHITSUKAN_TRY(draw_crack_window(c, bark, T, W, win));
+    annotate_crack_window(c, win);
+    const CrackRibbon& focus = win.focus;
     Vec3 q[2][4];
     ribbon_quads(focus, q);
     ctx.note(fmt("The widest crack of a vertical camphor crack at T: l = %.4f cm, l0 = %.4f cm, "
@@ -267,6 +300,6 @@ SHITSUKAN_FIGURE(hirota_fig04, "hirota1998", "fig04",
                  double(focus.l), double(focus.l0), double(length(q[0][2] - q[0][1])),
                  double(focus.l - focus.l0),
                  double(length(focus.midpoint - (focus.node[0] + focus.node[1]) * 0.5f)),
-                 double(scale)));
+                 double(win.scale)));
     return ctx.save_png(img.view());
 }

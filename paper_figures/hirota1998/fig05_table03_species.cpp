@@ -81,96 +81,81 @@ Status render_trunk(const SpeciesRun& s, const RgbImage& map, float px_per_cm, R
 
 }  // namespace
 
-SHITSUKAN_FIGURE(hirota_fig05, "hirota1998", "fig05",
-                 "Bark patterns of camphor, Chinese tallow and pine (Table 2), grown to T") {
-    const SpeciesRun* runs[3];
-    for (int i = 0; i < 3; ++i) {
-        ctx.progress("growing %s", species_name(kSpecies[i]));
-        SHITSUKAN_TRY(species_run(kSpecies[i], ctx.quick(), &runs[i]));
+namespace {
+
+constexpr float kMapPxPerCm = 24.0f;  // chosen here: a 0.33 cm cell is 8 px
+
+// fig05's layout: three columns of the trunk rendered (render_h) over a 13 cm window of its
+// unrolled map (map_h), a title band (header) and two lines of text below (footer).
+struct Fig05Layout {
+    int col = 360, render_h = 480, header = 24, gap = 12, footer = 40, map_h = 0;
+    float window_cm = 13.0f;
+};
+
+// Column i of fig05: the trunk with its crack map as texture, the map's window with Table 3's
+// section marked, the species' numbers; and the run's SVG, CSV and OBJ files.
+Status draw_species_column(FigureContext& ctx, const SpeciesRun& s, int i, const Fig05Layout& L,
+                           RgbImage& out, RasterCanvas& page) {
+    const float T = s.params.T, px_per_cm = kMapPxPerCm;
+    const float C = s.bark.circumference * (1.0f + hoop_strain(s.params, T));
+    const float H = s.bark.H0 * (1.0f + axial_strain(s.params, T));
+    RgbImage map(int(std::ceil(C * px_per_cm)), int(std::ceil(H * px_per_cm)),
+                 Rgb8{250, 250, 248});
+    RasterCanvas mc(map.view());
+    CrackMapStyle style;
+    style.origin = {0.0f, float(map.height())};
+    style.px_per_cm = px_per_cm;
+    style.min_width_cm = 1.0f / px_per_cm;
+    style.plate = kBarkPlate;
+    style.crack = kCrack;
+    // The trunk's texture shades the regions of the whole cylinder; the window below
+    // shades those of Table 3's section (the end bands flat).
+    style.regions = &s.whole;
+    SHITSUKAN_TRY(draw_crack_map(mc, s.bark, T, s.bark.net.W.data(), style));
+    RgbImage render(L.col, L.render_h);
+    SHITSUKAN_TRY(render_trunk(s, map, px_per_cm, render.view()));
+    style.regions = &s.regions;
+    SHITSUKAN_TRY(draw_crack_map(mc, s.bark, T, s.bark.net.W.data(), style));
+    for (int y = 0; y < L.render_h; ++y)
+        for (int x = 0; x < L.col; ++x) out.at(i * L.col + x, L.header + y) = render.at(x, y);
+    // The window: 13 cm of the map (its middle), full height.
+    const int ww = std::min(int(L.window_cm * px_per_cm), map.width());  // quick: whole map
+    const int x0 = (map.width() - ww) / 2;
+    const int ox = i * L.col + (L.col - ww) / 2, oy = L.header + L.render_h + L.gap;
+    for (int y = 0; y < map.height() && oy + y < out.height(); ++y)
+        for (int x = 0; x < ww; ++x) out.at(ox + x, oy + y) = map.at(x0 + x, y);
+    // Table 3's section: marks beside the window at its two ends (the bands outside it
+    // are shaded flat, their regions not counted).
+    const int end_rows = s.regions.label.empty() ? 0 : table3_section(ctx.quick()).end_rows;
+    for (int e = 0; e < 2; ++e) {
+        const float row = e == 0 ? float(end_rows) - 0.5f : float(s.params.N_H - end_rows) - 0.5f;
+        const float y = float(oy + map.height()) -
+                        row * s.params.species.L0 * (1.0f + axial_strain(s.params, T)) * px_per_cm;
+        page.line({float(ox - 14), y}, {float(ox - 3), y}, Rgb8{200, 40, 30}, 2.0f);
+        page.line({float(ox + ww + 2), y}, {float(ox + ww + 13), y}, Rgb8{200, 40, 30}, 2.0f);
     }
-    record_parameters(ctx, runs[0]->params);
-    const float px_per_cm = 24.0f;  // chosen here: a 0.33 cm cell is 8 px
-    const float min_crack = 1.0f / px_per_cm;
-    ctx.chosen("crack map", fmt("%.0f px/cm; cracks are Fig. 4 ribbons (width l - l0), at least "
-                                "1 px; intact springs in no intact triangle (a crack opened by "
-                                "sliding) drawn 1 px",
-                                double(px_per_cm)),
-               "cracks of 0.01-0.05 cm would vanish at this scale");
-    ctx.chosen("plate shading", "each region's plates x0.88-1.12 (hash of the region)",
-               "so the crack-bounded regions Table 3 measures can be seen");
-    ctx.chosen("view", "top: the trunk rendered with the rasterizer, the crack map as texture, "
-                       "Lambert light from the upper left; bottom: a 13 cm wide window of the "
-                       "unrolled map, full height; red marks bound the section Table 3 measures "
-                       "(the end bands, shaded flat, are left out)",
-               "the paper's photograph row cannot be reproduced");
-    const int col = 360, render_h = 480;
-    const float window_cm = 13.0f;
-    const BarkCylinder& b0 = runs[0]->bark;
-    const float Hmax = b0.H0 * (1.0f + axial_strain(runs[0]->params, runs[0]->params.T));
-    const int map_h = int(std::ceil(Hmax * px_per_cm));
-    const int header = 24, gap = 12, footer = 40;
-    RgbImage out(3 * col, header + render_h + gap + map_h + footer, Rgb8{250, 250, 248});
-    RasterCanvas page(out.view());
-    for (int i = 0; i < 3; ++i) {
-        const SpeciesRun& s = *runs[i];
-        const float T = s.params.T;
-        const float C = s.bark.circumference * (1.0f + hoop_strain(s.params, T));
-        const float H = s.bark.H0 * (1.0f + axial_strain(s.params, T));
-        RgbImage map(int(std::ceil(C * px_per_cm)), int(std::ceil(H * px_per_cm)),
-                     Rgb8{250, 250, 248});
-        RasterCanvas mc(map.view());
-        CrackMapStyle style;
-        style.origin = {0.0f, float(map.height())};
-        style.px_per_cm = px_per_cm;
-        style.min_width_cm = min_crack;
-        style.plate = kBarkPlate;
-        style.crack = kCrack;
-        // The trunk's texture shades the regions of the whole cylinder; the window below
-        // shades those of Table 3's section (the end bands flat).
-        style.regions = &s.whole;
-        SHITSUKAN_TRY(draw_crack_map(mc, s.bark, T, s.bark.net.W.data(), style));
-        RgbImage render(col, render_h);
-        SHITSUKAN_TRY(render_trunk(s, map, px_per_cm, render.view()));
-        style.regions = &s.regions;
-        SHITSUKAN_TRY(draw_crack_map(mc, s.bark, T, s.bark.net.W.data(), style));
-        for (int y = 0; y < render_h; ++y)
-            for (int x = 0; x < col; ++x) out.at(i * col + x, header + y) = render.at(x, y);
-        // The window: 13 cm of the map (its middle), full height.
-        const int ww = std::min(int(window_cm * px_per_cm), map.width());  // quick: whole map
-        const int x0 = (map.width() - ww) / 2;
-        const int ox = i * col + (col - ww) / 2, oy = header + render_h + gap;
-        for (int y = 0; y < map.height() && oy + y < out.height(); ++y)
-            for (int x = 0; x < ww; ++x) out.at(ox + x, oy + y) = map.at(x0 + x, y);
-        // Table 3's section: marks beside the window at its two ends (the bands outside it
-        // are shaded flat, their regions not counted).
-        const int end_rows = s.regions.label.empty() ? 0 : table3_section(ctx.quick()).end_rows;
-        for (int e = 0; e < 2; ++e) {
-            const float row = e == 0 ? float(end_rows) - 0.5f : float(s.params.N_H - end_rows) - 0.5f;
-            const float y = float(oy + map.height()) -
-                            row * s.params.species.L0 * (1.0f + axial_strain(s.params, T)) * px_per_cm;
-            page.line({float(ox - 14), y}, {float(ox - 3), y}, Rgb8{200, 40, 30}, 2.0f);
-            page.line({float(ox + ww + 2), y}, {float(ox + ww + 13), y}, Rgb8{200, 40, 30}, 2.0f);
-        }
-        page.text({float(i * col + 8), 6.0f}, fmt("(%d) %s", i + 1, s.params.species.name),
-                  Rgb8{20, 20, 20}, 2);
-        page.text({float(i * col + 8), float(oy + map.height() + 6)},
-                  fmt("regions %.2f x %.2f cm (mean, section)", double(s.regions.mean_width),
-                      double(s.regions.mean_height)),
-                  Rgb8{20, 20, 20}, 1);
-        page.text({float(i * col + 8), float(oy + map.height() + 20)},
-                  fmt("%zu breaks, %zu regions", s.run.breaks.size(), s.regions.regions.size()),
-                  Rgb8{90, 90, 90}, 1);
-        SHITSUKAN_TRY(write_crack_svg(s.bark, T, s.bark.net.W.data(),
-                                      ctx.path(fmt("_%d.svg", i + 1)).c_str(), px_per_cm));
-        SHITSUKAN_TRY(write_bark_csv(s.bark, T, s.bark.net.W.data(),
-                                     ctx.path(fmt("_%d", i + 1)).c_str()));
-        TriangleMesh trunk;
-        SHITSUKAN_TRY(make_trunk_mesh(s.bark, T, s.bark.net.W.data(), trunk));
-        SHITSUKAN_TRY(write_obj(ctx.path(fmt("_%d.obj", i + 1)).c_str(), trunk));
-    }
-    // The width of Fig. 4 over time: the cracks present at the first snapshot that has any
-    // (pine cracks late: its first break comes after 0.75 T), measured at that and every later
-    // snapshot.
+    page.text({float(i * L.col + 8), 6.0f}, fmt("(%d) %s", i + 1, s.params.species.name),
+              Rgb8{20, 20, 20}, 2);
+    page.text({float(i * L.col + 8), float(oy + map.height() + 6)},
+              fmt("regions %.2f x %.2f cm (mean, section)", double(s.regions.mean_width),
+                  double(s.regions.mean_height)),
+              Rgb8{20, 20, 20}, 1);
+    page.text({float(i * L.col + 8), float(oy + map.height() + 20)},
+              fmt("%zu breaks, %zu regions", s.run.breaks.size(), s.regions.regions.size()),
+              Rgb8{90, 90, 90}, 1);
+    SHITSUKAN_TRY(write_crack_svg(s.bark, T, s.bark.net.W.data(),
+                                  ctx.path(fmt("_%d.svg", i + 1)).c_str(), px_per_cm));
+    SHITSUKAN_TRY(write_bark_csv(s.bark, T, s.bark.net.W.data(),
+                                 ctx.path(fmt("_%d", i + 1)).c_str()));
+    TriangleMesh trunk;
+    SHITSUKAN_TRY(make_trunk_mesh(s.bark, T, s.bark.net.W.data(), trunk));
+    return write_obj(ctx.path(fmt("_%d.obj", i + 1)).c_str(), trunk);
+}
+
+// The width of Fig. 4 over time: the cracks present at the first snapshot that has any
+// (pine cracks late: its first break comes after 0.75 T), measured at that and every later
+// snapshot.
+std::string crack_widening(const SpeciesRun* const runs[3]) {
     std::string widen;
     for (int i = 0; i < 3; ++i) {
         const SpeciesRun& s = *runs[i];
@@ -197,6 +182,40 @@ SHITSUKAN_FIGURE(hirota_fig05, "hirota1998", "fig05",
         }
         widen += widening ? ", widening" : ", not widening throughout";
     }
+    return widen;
+}
+
+}  // namespace
+
+SHITSUKAN_FIGURE(hirota_fig05, "hirota1998", "fig05",
+                 "Bark patterns of camphor, Chinese tallow and pine (Table 2), grown to T") {
+    const SpeciesRun* runs[3];
+    for (int i = 0; i < 3; ++i) {
+        ctx.progress("growing %s", species_name(kSpecies[i]));
+        SHITSUKAN_TRY(species_run(kSpecies[i], ctx.quick(), &runs[i]));
+    }
+    record_parameters(ctx, runs[0]->params);
+    ctx.chosen("crack map", fmt("%.0f px/cm; cracks are Fig. 4 ribbons (width l - l0), at least "
+                                "1 px; intact springs in no intact triangle (a crack opened by "
+                                "sliding) drawn 1 px",
+                                double(kMapPxPerCm)),
+               "cracks of 0.01-0.05 cm would vanish at this scale");
+    ctx.chosen("plate shading", "each region's plates x0.88-1.12 (hash of the region)",
+               "so the crack-bounded regions Table 3 measures can be seen");
+    ctx.chosen("view", "top: the trunk rendered with the rasterizer, the crack map as texture, "
+                       "Lambert light from the upper left; bottom: a 13 cm wide window of the "
+                       "unrolled map, full height; red marks bound the section Table 3 measures "
+                       "(the end bands, shaded flat, are left out)",
+               "the paper's photograph row cannot be reproduced");
+    Fig05Layout L;
+    const BarkCylinder& b0 = runs[0]->bark;
+    const float Hmax = b0.H0 * (1.0f + axial_strain(runs[0]->params, runs[0]->params.T));
+    L.map_h = int(std::ceil(Hmax * kMapPxPerCm));
+    RgbImage out(3 * L.col, L.header + L.render_h + L.gap + L.map_h + L.footer,
+                 Rgb8{250, 250, 248});
+    RasterCanvas page(out.view());
+    for (int i = 0; i < 3; ++i) SHITSUKAN_TRY(draw_species_column(ctx, *runs[i], i, L, out, page));
+    const std::string widen = crack_widening(runs);
     ctx.note(fmt("What to see: camphor in long vertical strips, many reaching the full height "
                  "(Table 3 *1); Chinese tallow in small closed blocks (*2); pine in larger blocks "
                  "(*3). Mean width (cm, Fig. 4: l - l0) of the cracks present at each species' "
@@ -347,9 +366,12 @@ Status table03_checks(FigureContext& ctx, const SpeciesRun* const runs[3],
                "column); only tallow's lower kappa1 adds horizontal cracks (first axial break at "
                "%.2f T, camphor's at %.2f T), and the narrowing comes with them. With both "
                "strains growing in proportion (Table 1's constant delta_r and delta_h) the "
-               "vertical cracks always come first; a sweep of the shared chosen values (D, sigma, "
-               "the two final strains, the tolerance) over five seeds did not reverse the order, "
-               "so it is reported, not tuned in.\n",
+               "vertical cracks always come first. A sweep of the shared chosen values (sigma, "
+               "D, the two final strains, a common scale on every kappa - 1, the tolerance; "
+               "tools/bark_table3_sweep.cpp, its numbers in docs/papers/hirota1998.md §4) "
+               "reverses the order in no setting: tallow nears camphor's width only where "
+               "camphor's strips break into blocks (against *1), so it is reported, not tuned "
+               "in.\n",
                double(first_break(*runs[0], 2)), double(first_break(*runs[1], 2)),
                double(first_break(*runs[1], 1)), double(first_break(*runs[0], 1)));
     *md += "\nThe max row: each run's largest region, averaged over the seeds. Widths match; "

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "hirota1998/bark_common.hpp"
+#include "hirota1998/layer_frame_draw.hpp"
 #include "shitsukan/image/image.hpp"
 #include "shitsukan/image/plot.hpp"
 #include "shitsukan/image/raster_canvas.hpp"
@@ -110,69 +111,50 @@ void record_layered(FigureContext& ctx, const LayeredParams& p) {
                "the first cycles are transitional");
 }
 
-// Seam-correct x next to ref (the patch is periodic around with period P).
-Vec3 near_x(Vec3 x, float ref, float P) {
-    while (x.x - ref > 0.5f * P) x.x -= P;
-    while (ref - x.x > 0.5f * P) x.x += P;
-    return x;
+// ΔR (§4.1: the growth of the inner layer's radius during T), marked on every cycle: the
+// inner radius at the cycle's start carried across (dotted), the rise to its end bracketed.
+void mark_delta_r(RasterCanvas& c, const Axes& axes, const LayerSchedule& s, int cycles) {
+    for (int k = 0; k < cycles; ++k) {
+        const double r0 = double(layer_radii(s, s.T * float(k)).inner - s.R_in0);
+        const double r1 = double(layer_radii(s, s.T * float(k + 1), true).inner - s.R_in0);
+        const Vec2 from = axes.to_pixel(double(k), r0), to = axes.to_pixel(double(k + 1), r0);
+        for (float x = from.x; x < to.x; x += 6) c.line({x, from.y}, {std::min(x + 2, to.x), from.y}, Rgb8{60, 60, 60}, 1.0f);
+        const Vec2 top = axes.to_pixel(double(k + 1) - 0.04, r1), bot = axes.to_pixel(double(k + 1) - 0.04, r0);
+        c.line(top, bot, Rgb8{20, 20, 20}, 1.5f);
+        c.line({top.x - 3, top.y}, {top.x + 3, top.y}, Rgb8{20, 20, 20}, 1.5f);
+        c.line({bot.x - 3, bot.y}, {bot.x + 3, bot.y}, Rgb8{20, 20, 20}, 1.5f);
+        c.text({top.x - 20, 0.5f * (top.y + bot.y) + 4}, "ΔR", Rgb8{20, 20, 20}, 1);
+    }
 }
 
-// One frame of fig. 8: the visible layer per triangle, with its cracks.
-void draw_frame(RasterCanvas& c, const LayeredBark& bark, const LayerFrame& f, Vec2 origin,
-                float scale) {
-    const BarkCylinder& lat = bark.lattice();
-    const LayeredParams& p = bark.params();
-    const float Ps = f.surface_period, Pm = f.middle1_period;
-    const Rgb8 bonded{92, 70, 52}, lifted{150, 124, 98}, exposed{196, 120, 62};
-    const float height_px = float(p.N_H) * p.species.L0 * 1.1f * scale;
-    auto px = [&](Vec3 x) { return Vec2{origin.x + x.x * scale, origin.y + height_px - x.y * scale}; };
-    // Painter's order: middle (1) everywhere (it shows where the surface has fallen), then the
-    // surface where it is still on the trunk; each layer with its own cracks.
-    for (int layer = 0; layer < 2; ++layer) {
-        const bool surface = layer == 1;
-        const std::vector<Vec3>& pos = surface ? f.surface_position : f.middle1_position;
-        const std::vector<std::uint8_t>& broken_springs = surface ? f.surface_broken : f.middle1_broken;
-        const float Pl = surface ? Ps : Pm;
-        c.set_antialias(false);
-        for (const ConnectionTriangle& tri : lat.triangles) {
-            const bool on = f.surface_alive[tri.node[0]] && f.surface_alive[tri.node[1]] &&
-                            f.surface_alive[tri.node[2]];
-            if (surface && !on) continue;
-            Vec3 x[3];
-            for (int k = 0; k < 3; ++k) x[k] = near_x(pos[tri.node[k]], pos[tri.node[0]].x, Pl);
-            Rgb8 col = exposed;
-            if (surface)
-                col = f.surface_bonded[tri.node[0]] && f.surface_bonded[tri.node[1]] &&
-                              f.surface_bonded[tri.node[2]]
-                          ? bonded
-                          : lifted;
-            for (float shift : {0.0f, -Pl, Pl}) {
-                const Vec2 pts[3] = {px(x[0] + Vec3{shift, 0, 0}), px(x[1] + Vec3{shift, 0, 0}),
-                                     px(x[2] + Vec3{shift, 0, 0})};
-                c.fill_polygon(pts, 3, col);
-            }
-        }
-        c.set_antialias(true);
-        // Cracks: the broken spring's face, width l - l0 (at least 1 px).
-        for (int s = 0; s < lat.net.spring_count(); ++s) {
-            const BarkSpring& sp = lat.net.springs[std::size_t(s)];
-            if (!broken_springs[std::size_t(s)]) continue;
-            if (surface && !(f.surface_alive[sp.i] && f.surface_alive[sp.j])) continue;  // fell off
-            const Vec3 a = pos[sp.i], b = near_x(pos[sp.j], a.x, Pl);
-            const float l = length(b - a), w = std::max(l - sp.l0, 1.0f / scale);
-            const Vec3 m = (a + b) * 0.5f, along = (b - a) * (1.0f / l);
-            const Vec3 face{-along.y, along.x, 0.0f};
-            const float half = 0.5f * lat.spring_face[std::size_t(s)] * 1.05f;
-            for (float shift : {0.0f, -Pl, Pl}) {
-                const Vec3 sh{shift, 0, 0};
-                const Vec2 q[4] = {px(m + sh + face * half - along * (0.5f * w)),
-                                   px(m + sh + face * half + along * (0.5f * w)),
-                                   px(m + sh - face * half + along * (0.5f * w)),
-                                   px(m + sh - face * half - along * (0.5f * w))};
-                c.fill_polygon(q, 4, Rgb8{24, 16, 10});
-            }
-        }
+// Fig. 6's section to scale: (u around the trunk, radius) -> pixels.
+struct SectionPx {
+    int left = 0, top = 0;
+    float scale = 0, r_hi = 0;
+    Vec2 operator()(float u, float radius) const {
+        return Vec2{float(left) + u * scale, float(top) + (r_hi - radius) * scale};
     }
+};
+
+// Bands: inner, middle (2) half grown, middle (1) (the surface is drawn per column).
+void fill_layer_bands(RasterCanvas& c, const SectionPx& px, const LayerRadii& r, float D,
+                      float width_cm) {
+    const Rgb8 inner{170, 170, 170}, m2{236, 212, 140}, m1{214, 150, 90};
+    c.fill_rect(px(0, r.inner_boundary), px(width_cm, r.inner_boundary - D) - px(0, r.inner_boundary), inner);
+    c.fill_rect(px(0, r.inner_boundary + r.middle2_thickness),
+                px(width_cm, r.inner_boundary) - px(0, r.inner_boundary + r.middle2_thickness), m2);
+    const float m1_lo = r.inner_boundary + r.middle2_thickness;
+    c.fill_rect(px(0, m1_lo + D), px(width_cm, m1_lo) - px(0, m1_lo + D), m1);
+}
+
+void label_layers(RasterCanvas& c, const SectionPx& px, float lx, const LayerRadii& r) {
+    c.text({lx, px(0, r.surface).y - 4}, "surface: cracks, peels", Rgb8{20, 20, 20}, 1);
+    c.text({lx, px(0, r.middle1).y - 4}, "middle (1): exposed when", Rgb8{20, 20, 20}, 1);
+    c.text({lx, px(0, r.middle1).y + 6}, "the surface peels", Rgb8{20, 20, 20}, 1);
+    c.text({lx, px(0, r.middle2).y - 8}, fmt("middle (2): new cork, %.3f cm", double(r.middle2_thickness)),
+           Rgb8{20, 20, 20}, 1);
+    c.text({lx, px(0, r.middle2).y + 2}, "(grows to D in a cycle)", Rgb8{20, 20, 20}, 1);
+    c.text({lx, px(0, r.inner).y - 4}, "inner: moves out with the wood", Rgb8{20, 20, 20}, 1);
 }
 
 }  // namespace
@@ -237,19 +219,7 @@ SHITSUKAN_FIGURE(hirota_fig07, "hirota1998", "fig07",
             c.marker(e1, MarkerShape::circle, 7.0f, Rgb8{200, 90, 30});
         }
     }
-    // ΔR (§4.1: the growth of the inner layer's radius during T), marked on every cycle: the
-    // inner radius at the cycle's start carried across (dotted), the rise to its end bracketed.
-    for (int k = 0; k < p.cycles; ++k) {
-        const double r0 = double(layer_radii(s, s.T * float(k)).inner - s.R_in0);
-        const double r1 = double(layer_radii(s, s.T * float(k + 1), true).inner - s.R_in0);
-        const Vec2 from = axes.to_pixel(double(k), r0), to = axes.to_pixel(double(k + 1), r0);
-        for (float x = from.x; x < to.x; x += 6) c.line({x, from.y}, {std::min(x + 2, to.x), from.y}, Rgb8{60, 60, 60}, 1.0f);
-        const Vec2 top = axes.to_pixel(double(k + 1) - 0.04, r1), bot = axes.to_pixel(double(k + 1) - 0.04, r0);
-        c.line(top, bot, Rgb8{20, 20, 20}, 1.5f);
-        c.line({top.x - 3, top.y}, {top.x + 3, top.y}, Rgb8{20, 20, 20}, 1.5f);
-        c.line({bot.x - 3, bot.y}, {bot.x + 3, bot.y}, Rgb8{20, 20, 20}, 1.5f);
-        c.text({top.x - 20, 0.5f * (top.y + bot.y) + 4}, "ΔR", Rgb8{20, 20, 20}, 1);
-    }
+    mark_delta_r(c, axes, s, p.cycles);
     for (int i = 0; i < 4; ++i) {
         const float y = axes.corner.y + 12.0f + 16.0f * float(i);
         const float x = axes.corner.x + axes.size.x + 12.0f;
@@ -307,7 +277,7 @@ SHITSUKAN_FIGURE(hirota_fig08, "hirota1998", "fig08",
         // Each frame in its own image (the periodic copies must not spill into the next one).
         RgbImage panel(int(pw), int(ph), Rgb8{252, 252, 250});
         RasterCanvas pcanvas(panel.view());
-        draw_frame(pcanvas, bark, f, {0.02f * pw, 0.0f}, scale);
+        draw_layer_frame(pcanvas, bark, f, {0.02f * pw, 0.0f}, scale);
         for (int y = 0; y < panel.height(); ++y)
             for (int x = 0; x < panel.width(); ++x) img.at(int(o.x) + x, int(o.y) + y) = panel.at(x, y);
         c.text({o.x, o.y - 14}, fmt("t/T = %.1f%s", double(base + kFrameOffsets[i]), kFrameLabel[i]),
@@ -404,9 +374,8 @@ SHITSUKAN_FIGURE(hirota_fig06, "hirota1998", "fig06",
     const int W = left + int(width_cm * scale) + right, H = top + int((r_hi - r_lo) * scale) + bottom;
     RgbImage img(W, H, Rgb8{252, 252, 250});
     RasterCanvas c(img.view());
-    auto px = [&](float u, float radius) {
-        return Vec2{float(left) + u * scale, float(top) + (r_hi - radius) * scale};
-    };
+    SectionPx px;
+    px.left = left, px.top = top, px.scale = scale, px.r_hi = r_hi;
     // Find a window with a crack and a peeled place if there is one (the first column where
     // the surface is gone, minus a few).
     int c0 = 0;
@@ -416,13 +385,9 @@ SHITSUKAN_FIGURE(hirota_fig06, "hirota1998", "fig06",
             break;
         }
     auto node = [&](int k) { return lat.node((c0 + k) % p.N_R, row); };
-    // Bands: inner, middle (2) half grown, middle (1), surface (where still on).
-    const Rgb8 inner{170, 170, 170}, m2{236, 212, 140}, m1{214, 150, 90}, surf{120, 88, 62};
-    c.fill_rect(px(0, r.inner_boundary), px(width_cm, r.inner_boundary - s.D) - px(0, r.inner_boundary), inner);
-    c.fill_rect(px(0, r.inner_boundary + r.middle2_thickness),
-                px(width_cm, r.inner_boundary) - px(0, r.inner_boundary + r.middle2_thickness), m2);
+    fill_layer_bands(c, px, r, s.D, width_cm);
+    const Rgb8 surf{120, 88, 62};
     const float m1_lo = r.inner_boundary + r.middle2_thickness;
-    c.fill_rect(px(0, m1_lo + s.D), px(width_cm, m1_lo) - px(0, m1_lo + s.D), m1);
     // Per column: the surface cell, gaps where the ring's springs broke.
     for (int k = 0; k < columns; ++k) {
         const float u0 = float(k) * lat.a_h, u1 = u0 + lat.a_h;
@@ -473,14 +438,7 @@ SHITSUKAN_FIGURE(hirota_fig06, "hirota1998", "fig06",
         c.marker(px(u, r.middle2), MarkerShape::dot, 5.0f, Rgb8{90, 90, 90});
         c.marker(px(u, r.inner), MarkerShape::dot, 5.0f, Rgb8{90, 90, 90});
     }
-    const float lx = float(left) + width_cm * scale + 12.0f;
-    c.text({lx, px(0, r.surface).y - 4}, "surface: cracks, peels", Rgb8{20, 20, 20}, 1);
-    c.text({lx, px(0, r.middle1).y - 4}, "middle (1): exposed when", Rgb8{20, 20, 20}, 1);
-    c.text({lx, px(0, r.middle1).y + 6}, "the surface peels", Rgb8{20, 20, 20}, 1);
-    c.text({lx, px(0, r.middle2).y - 8}, fmt("middle (2): new cork, %.3f cm", double(r.middle2_thickness)),
-           Rgb8{20, 20, 20}, 1);
-    c.text({lx, px(0, r.middle2).y + 2}, "(grows to D in a cycle)", Rgb8{20, 20, 20}, 1);
-    c.text({lx, px(0, r.inner).y - 4}, "inner: moves out with the wood", Rgb8{20, 20, 20}, 1);
+    label_layers(c, px, float(left) + width_cm * scale + 12.0f, r);
     c.text({10, 10}, fmt("Fig. 6: four layers at t/T = %.1f (mid-cycle), radial section, to scale "
                          "(%.0f px/cm), unrolled around the trunk",
                          double(t / s.T), double(scale)),

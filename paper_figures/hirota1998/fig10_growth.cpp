@@ -103,14 +103,9 @@ Status edge_rates(const TriangleMesh& mesh, const AnisotropicGrowth& g, EdgeRate
 const Rgb8 kOutlineColors[4] = {{0, 0, 0}, {40, 90, 220}, {20, 150, 60}, {210, 40, 30}};
 const char* const kOutlineNames[4] = {"original", "scaling only (s = 1.25)",
                                       "offset only (d = 0.6 cm)", "both"};
+constexpr int kW = 1350, kH = 620;  // the figure's size [px]
 
-}  // namespace
-
-SHITSUKAN_FIGURE(hirota1998_fig10, "hirota1998", "fig10",
-                 "Anisotropic growth of trunk and branch: isotropic scaling + normal offset "
-                 "(section y = 0), and the per-edge growth rate on the branch mesh") {
-    const BranchShapeParams shape;
-    const float L0 = ctx.quick() ? 0.6f : 0.33f;
+void record_fig10(FigureContext& ctx, const BranchShapeParams& shape, float L0) {
     ctx.given("growth",
               "isotropic enlargement of the whole (length) + enlargement along the "
               "normal (thickness), Fig. 10",
@@ -136,22 +131,38 @@ SHITSUKAN_FIGURE(hirota1998_fig10, "hirota1998", "fig10",
                    "r_h) R_t = %.3f cm",
                    double(kRh), double(kRr), double(kT), double((kRr - kRh) * shape.trunk_radius)),
                "the fig11 values (docs/papers/hirota1998.md §6)");
+}
 
-    auto t0 = std::chrono::steady_clock::now();
-    TriangleMesh mesh;
-    BranchMeshStats ms;
-    SHITSUKAN_TRY(make_branch_mesh(shape, L0, mesh, &ms));
-    const double mesh_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const MeshQuality& q = ms.remesh.after;
+// Panel (a): the four outlines and what is measured on them.
+struct Outlines {
+    std::vector<Segment> outline[4];
+    int folded_shown = 0, folded_fig11 = 0;          // triangles the offset turns over
+    float width[4], width_expect[4], width_err = 0;  // the trunk's width at z = 3
+    float height_iso = 0, height_both = 0;           // the trunk's top: scaling only, both
+};
 
-    // ---- (a) the four outlines ----
+// Triangles whose normal turns around when every vertex moves d along its normal (where the
+// offset exceeds the radius of a concave fold: the crotch).
+int folded_triangles(const TriangleMesh& mesh, float d) {
+    int n = 0;
+    for (int t = 0; t < mesh.triangle_count(); ++t) {
+        Vec3 p[3], q[3];
+        for (int k = 0; k < 3; ++k) {
+            std::uint32_t v = mesh.indices[3 * t + k];
+            p[k] = mesh.positions[v];
+            q[k] = p[k] + mesh.normals[v] * d;
+        }
+        n += dot(cross(p[1] - p[0], p[2] - p[0]), cross(q[1] - q[0], q[2] - q[0])) <= 0.0f;
+    }
+    return n;
+}
+
+void measure_outlines(const TriangleMesh& mesh, const BranchShapeParams& shape, Outlines* out) {
     AnisotropicGrowth show;
     show.r_h = kShowScale - 1.0f;
     show.r_n = kShowOffset;
     show.duration = 1.0f;
     show.centre = branch_base_centre(shape);
-    std::vector<Segment> outline[4];
     std::vector<Vec3> pos(mesh.positions.size());
     for (int k = 0; k < 4; ++k) {
         AnisotropicGrowth g = show;
@@ -159,86 +170,93 @@ SHITSUKAN_FIGURE(hirota1998_fig10, "hirota1998", "fig10",
         if (k == 0 || k == 1) g.r_n = 0.0f;  // no offset
         for (std::size_t v = 0; v < pos.size(); ++v)
             pos[v] = anisotropic_growth_anchor(g, mesh.positions[v], mesh.normals[v], 1.0f);
-        outline[k] = section_y0(mesh, pos);
+        out->outline[k] = section_y0(mesh, pos);
     }
-    // Where the offset exceeds the radius of a concave fold (the crotch), the offset surface
-    // folds over: count the triangles whose normal turns around, for the shown d and fig11's.
-    auto folded = [&](float d) {
-        int n = 0;
-        for (int t = 0; t < mesh.triangle_count(); ++t) {
-            Vec3 p[3], q[3];
-            for (int k = 0; k < 3; ++k) {
-                std::uint32_t v = mesh.indices[3 * t + k];
-                p[k] = mesh.positions[v];
-                q[k] = p[k] + mesh.normals[v] * d;
-            }
-            n += dot(cross(p[1] - p[0], p[2] - p[0]), cross(q[1] - q[0], q[2] - q[0])) <= 0.0f;
-        }
-        return n;
-    };
-    const int folded_shown = folded(kShowOffset);
-    const int folded_fig11 = folded((kRr - kRh) * shape.trunk_radius);
+    out->folded_shown = folded_triangles(mesh, kShowOffset);  // the shown d and fig11's
+    out->folded_fig11 = folded_triangles(mesh, (kRr - kRh) * shape.trunk_radius);
     const float Rt = shape.trunk_radius, z_probe = 3.0f;
-    const float width_expect[4] = {2 * Rt, 2 * kShowScale * Rt, 2 * (Rt + kShowOffset),
-                                   2 * (kShowScale * Rt + kShowOffset)};
-    float width[4], width_err = 0;
+    const float expect[4] = {2 * Rt, 2 * kShowScale * Rt, 2 * (Rt + kShowOffset),
+                             2 * (kShowScale * Rt + kShowOffset)};
     for (int k = 0; k < 4; ++k) {
-        width[k] = trunk_width(outline[k], z_probe, 6.0f);  // the branch is x > 6 at z = 3
-        width_err = std::fmax(width_err, std::fabs(width[k] / width_expect[k] - 1.0f));
+        out->width_expect[k] = expect[k];
+        out->width[k] = trunk_width(out->outline[k], z_probe, 6.0f);  // the branch: x > 6 at z = 3
+        out->width_err = std::fmax(out->width_err, std::fabs(out->width[k] / expect[k] - 1.0f));
     }
     // The trunk's normals are horizontal, so only the scaling lifts its top: 16 s. (The branch's
     // rim, tilted, rises by d sin 40° more.)
-    const float height_iso = trunk_top(outline[1], 6.0f), height_both = trunk_top(outline[3], 6.0f);
+    out->height_iso = trunk_top(out->outline[1], 6.0f);
+    out->height_both = trunk_top(out->outline[3], 6.0f);
+}
 
-    const int W = 1350, H = 620;
-    RgbImage img(W, H, Rgb8{255, 255, 255});
-    RasterCanvas canvas(img.view());
-    canvas.text({12, 8},
-                "hirota1998 fig. 10 - anisotropic growth = isotropic scaling + "
-                "normal offset",
-                Rgb8{0, 0, 0}, 2);
-    {
-        RasterCanvas pa(img.view().subview(0, 30, 470, H - 30));
-        // Equal scales on x and z: 18 cm x 22 cm in a 380 x 464 px data area.
-        PlotMargins mg;
-        mg.left = 46;
-        mg.right = 470 - 46 - 380;
-        mg.top = 36;
-        mg.bottom = float(H - 30) - 36 - 464;
-        Axes ax = axes_in(pa, -4.5, 13.5, -0.5, 21.5, mg);
-        AxesStyle st;
-        st.title_scale = 1;
-        SHITSUKAN_TRY(draw_axes(pa, ax, {"(a) section y = 0 (cm)", "x", "z"}, st));
-        for (int k = 0; k < 4; ++k)
-            for (const Segment& s : outline[k])
-                pa.line(ax.to_pixel(s.a.x, s.a.y), ax.to_pixel(s.b.x, s.b.y), kOutlineColors[k],
-                        k == 0 ? 1.6f : 1.3f);
-        // The scaling centre c.
-        pa.marker(ax.to_pixel(0, 0), MarkerShape::plus, 9, Rgb8{0, 0, 0});
-        pa.text(ax.to_pixel(0.3, 0.3) + Vec2{0, -12}, "c", Rgb8{0, 0, 0});
-        // Legend and measured widths in the empty lower right corner.
-        for (int k = 0; k < 4; ++k) {
-            Vec2 p = ax.to_pixel(5.2, 5.2) + Vec2{0.0f, 12.0f * float(k)};
-            pa.fill_rect(p + Vec2{0, 3}, {14, 3}, kOutlineColors[k]);
-            pa.text(p + Vec2{18, 0}, kOutlineNames[k], Rgb8{0, 0, 0});
-        }
-        pa.text(ax.to_pixel(5.2, 2.0),
-                fmt("trunk width at z = 3 (cm):\n%.2f / %.2f / %.2f / %.2f", double(width[0]),
-                    double(width[1]), double(width[2]), double(width[3])),
-                Rgb8{0, 0, 0});
+Status draw_outlines(RgbImage& img, const Outlines& o) {
+    RasterCanvas pa(img.view().subview(0, 30, 470, kH - 30));
+    // Equal scales on x and z: 18 cm x 22 cm in a 380 x 464 px data area.
+    PlotMargins mg;
+    mg.left = 46;
+    mg.right = 470 - 46 - 380;
+    mg.top = 36;
+    mg.bottom = float(kH - 30) - 36 - 464;
+    Axes ax = axes_in(pa, -4.5, 13.5, -0.5, 21.5, mg);
+    AxesStyle st;
+    st.title_scale = 1;
+    SHITSUKAN_TRY(draw_axes(pa, ax, {"(a) section y = 0 (cm)", "x", "z"}, st));
+    for (int k = 0; k < 4; ++k)
+        for (const Segment& s : o.outline[k])
+            pa.line(ax.to_pixel(s.a.x, s.a.y), ax.to_pixel(s.b.x, s.b.y), kOutlineColors[k],
+                    k == 0 ? 1.6f : 1.3f);
+    // The scaling centre c.
+    pa.marker(ax.to_pixel(0, 0), MarkerShape::plus, 9, Rgb8{0, 0, 0});
+    pa.text(ax.to_pixel(0.3, 0.3) + Vec2{0, -12}, "c", Rgb8{0, 0, 0});
+    // Legend and measured widths in the empty lower right corner.
+    for (int k = 0; k < 4; ++k) {
+        Vec2 p = ax.to_pixel(5.2, 5.2) + Vec2{0.0f, 12.0f * float(k)};
+        pa.fill_rect(p + Vec2{0, 3}, {14, 3}, kOutlineColors[k]);
+        pa.text(p + Vec2{18, 0}, kOutlineNames[k], Rgb8{0, 0, 0});
     }
+    pa.text(ax.to_pixel(5.2, 2.0),
+            fmt("trunk width at z = 3 (cm):\n%.2f / %.2f / %.2f / %.2f", double(o.width[0]),
+                double(o.width[1]), double(o.width[2]), double(o.width[3])),
+            Rgb8{0, 0, 0});
+    return Status::success();
+}
 
-    // ---- (b), (c): the fig11 growth rate ----
-    AnisotropicGrowth g;
-    g.r_h = kRh;
-    g.r_n = (kRr - kRh) * shape.trunk_radius;
-    g.duration = kT;
-    g.centre = branch_base_centre(shape);
-    SHITSUKAN_TRY(validate_growth(g));
-    EdgeRates er;
-    SHITSUKAN_TRY(edge_rates(mesh, g, &er));
-    const ValueRange range{kRh, kRh + g.r_n / shape.branch_radius + 0.004f};
-    // Per vertex: the mean of its edges' ε̂·T.
+// Panels (b, c): the mean rate of the trunk's hoop and axial edges below the crotch and of the
+// branch's hoop edges (checked against r_h + r_n/R and r_h).
+struct RateChecks {
+    double hoop_t = 0, axial_t = 0, hoop_b = 0;
+    int n_hoop_t = 0, n_axial_t = 0, n_hoop_b = 0;
+};
+
+RateChecks measure_rates(const TriangleMesh& mesh, const BranchShapeParams& shape,
+                         const EdgeRates& er) {
+    RateChecks r;
+    const Vec3 u = branch_axis_direction(shape);
+    for (std::size_t e = 0; e < er.edges.size(); ++e) {
+        Vec3 a = mesh.positions[er.edges[e].a], b = mesh.positions[er.edges[e].b];
+        Vec3 d = normalize(b - a), m = (a + b) * 0.5f;
+        LimbDistances ld = limb_distances(shape, m);
+        if (m.z < 4.0f && ld.f_trunk < ld.f_branch - 0.5f) {  // trunk below the crotch
+            if (std::fabs(d.z) < 0.15f) {
+                r.hoop_t += er.rate[e];
+                ++r.n_hoop_t;
+            } else if (std::fabs(d.z) > 0.97f) {
+                r.axial_t += er.rate[e];
+                ++r.n_axial_t;
+            }
+        }
+        if (m.z > 11.0f && ld.f_branch < ld.f_trunk - 0.5f && std::fabs(dot(d, u)) < 0.15f) {
+            r.hoop_b += er.rate[e];
+            ++r.n_hoop_b;
+        }
+    }
+    r.hoop_t /= r.n_hoop_t > 0 ? r.n_hoop_t : 1;
+    r.axial_t /= r.n_axial_t > 0 ? r.n_axial_t : 1;
+    r.hoop_b /= r.n_hoop_b > 0 ? r.n_hoop_b : 1;
+    return r;
+}
+
+// Per vertex: the mean of its edges' rate, through the colour map.
+TriangleMesh coloured_by_rate(const TriangleMesh& mesh, const EdgeRates& er, ValueRange range) {
     std::vector<float> vsum(mesh.positions.size(), 0.0f);
     std::vector<int> vcount(mesh.positions.size(), 0);
     for (std::size_t e = 0; e < er.edges.size(); ++e)
@@ -253,104 +271,127 @@ SHITSUKAN_FIGURE(hirota1998_fig10, "hirota1998", "fig10",
         Rgb8 c = colormap(ColorMap::perceptual, t);
         colored.colors[v] = Vec3{c.r / 255.0f, c.g / 255.0f, c.b / 255.0f};
     }
-    // Measured checks: trunk hoop / axial edges away from the crotch, branch hoop edges.
-    const Vec3 u = branch_axis_direction(shape);
-    double hoop_t = 0, axial_t = 0, hoop_b = 0;
-    int n_hoop_t = 0, n_axial_t = 0, n_hoop_b = 0;
-    for (std::size_t e = 0; e < er.edges.size(); ++e) {
-        Vec3 a = mesh.positions[er.edges[e].a], b = mesh.positions[er.edges[e].b];
-        Vec3 d = normalize(b - a), m = (a + b) * 0.5f;
-        LimbDistances ld = limb_distances(shape, m);
-        if (m.z < 4.0f && ld.f_trunk < ld.f_branch - 0.5f) {  // trunk below the crotch
-            if (std::fabs(d.z) < 0.15f) {
-                hoop_t += er.rate[e];
-                ++n_hoop_t;
-            } else if (std::fabs(d.z) > 0.97f) {
-                axial_t += er.rate[e];
-                ++n_axial_t;
-            }
-        }
-        if (m.z > 11.0f && ld.f_branch < ld.f_trunk - 0.5f && std::fabs(dot(d, u)) < 0.15f) {
-            hoop_b += er.rate[e];
-            ++n_hoop_b;
-        }
-    }
-    hoop_t /= n_hoop_t > 0 ? n_hoop_t : 1;
-    axial_t /= n_axial_t > 0 ? n_axial_t : 1;
-    hoop_b /= n_hoop_b > 0 ? n_hoop_b : 1;
-    const double hoop_t_expect = double(g.r_h + g.r_n / shape.trunk_radius);
-    const double hoop_b_expect = double(g.r_h + g.r_n / shape.branch_radius);
+    return colored;
+}
 
-    Light lights[2] = {directional_light({-0.4f, -1.0f, 0.6f}, {1, 1, 1}, 0.75f),
-                       directional_light({1.0f, -0.3f, 0.4f}, {1, 1, 1}, 0.3f)};
+// The mesh Lambert-lit by two lights, in its own colours or light grey, both sides.
+Status render_mesh(const TriangleMesh& m, const Camera& cam, const RgbView& view,
+                   bool colored_faces, FloatImage* depth_out) {
+    const Light lights[2] = {directional_light({-0.4f, -1.0f, 0.6f}, {1, 1, 1}, 0.75f),
+                             directional_light({1.0f, -0.3f, 0.4f}, {1, 1, 1}, 0.3f)};
     Material mat;
     mat.ambient = 0.35f;
     mat.diffuse = 0.75f;
-    auto render = [&](const TriangleMesh& m, const Camera& cam, const RgbView& view,
-                      bool colored_faces, FloatImage* depth_out) -> Status {
-        FloatImage depth(view.width, view.height);
-        FrameBand band = full_frame_band(view, depth.view());
-        clear_band(band, Rgb8{255, 255, 255});
-        auto shader = [&](const Fragment& f) {
-            Vec3 n = face_forward(f.normal, f.world_position, cam.eye);
-            Vec3 base = colored_faces ? f.color : Vec3{0.93f, 0.93f, 0.93f};
-            return to_rgb8(shade_lambert(mat, base, f.world_position, n, lights, 2));
-        };
-        DrawOptions opt;
-        opt.cull = CullMode::none;  // open ends: the inside shows through them
-        SHITSUKAN_TRY(draw_mesh(cam, band, m.view(), opt, shader));
-        if (depth_out) *depth_out = std::move(depth);
-        return Status::success();
+    FloatImage depth(view.width, view.height);
+    FrameBand band = full_frame_band(view, depth.view());
+    clear_band(band, Rgb8{255, 255, 255});
+    auto shader = [&](const Fragment& f) {
+        Vec3 n = face_forward(f.normal, f.world_position, cam.eye);
+        Vec3 base = colored_faces ? f.color : Vec3{0.93f, 0.93f, 0.93f};
+        return to_rgb8(shade_lambert(mat, base, f.world_position, n, lights, 2));
     };
+    DrawOptions opt;
+    opt.cull = CullMode::none;  // open ends: the inside shows through them
+    SHITSUKAN_TRY(draw_mesh(cam, band, m.view(), opt, shader));
+    if (depth_out) *depth_out = std::move(depth);
+    return Status::success();
+}
+
+// (b) the coloured mesh; (c) the crotch with every edge in its own rate: one draw_edges call
+// per colour bin, depth-tested against the surface.
+Status draw_rate_panels(RgbImage& img, RasterCanvas& canvas, const TriangleMesh& mesh,
+                        const TriangleMesh& colored, const EdgeRates& er, ValueRange range) {
     const int PW = 390, PH = 540;
     {
         RgbView vb = img.view().subview(475, 50, PW, PH);
         Camera cam =
             perspective_camera({8.0f, -38.0f, 15.0f}, {4.0f, 0.0f, 8.3f}, {0, 0, 1}, 32.0f, PW, PH);
-        SHITSUKAN_TRY(render(colored, cam, vb, true, nullptr));
+        SHITSUKAN_TRY(render_mesh(colored, cam, vb, true, nullptr));
         canvas.text({480, 36}, "(b) vertex mean of edge rates (fig11 growth)", Rgb8{0, 0, 0});
     }
-    {
-        RgbView vc = img.view().subview(475 + PW + 5, 50, PW, PH);
-        Camera cam =
-            perspective_camera({6.5f, -19.0f, 11.0f}, {3.0f, 0.0f, 8.2f}, {0, 0, 1}, 36.0f, PW, PH);
-        FloatImage depth;
-        SHITSUKAN_TRY(render(mesh, cam, vc, false, &depth));
-        FrameBand band = full_frame_band(vc, depth.view());
-        // One draw_edges call per colour bin, depth-tested against the surface.
-        constexpr int kBins = 48;
-        std::vector<WireEdge> bin;
-        for (int b = 0; b < kBins; ++b) {
-            bin.clear();
-            for (std::size_t e = 0; e < er.edges.size(); ++e) {
-                float t = (er.rate[e] - range.lo) / (range.hi - range.lo);
-                int k = int(std::floor(t * kBins));
-                k = k < 0 ? 0 : (k >= kBins ? kBins - 1 : k);
-                if (k == b) bin.push_back(er.edges[e]);
-            }
-            if (bin.empty()) continue;
-            WireOptions w;
-            w.depth_test = true;
-            w.color = colormap(ColorMap::perceptual, (float(b) + 0.5f) / kBins);
-            SHITSUKAN_TRY(draw_edges(cam, band, mesh.view(), bin.data(), int(bin.size()), w));
+    RgbView vc = img.view().subview(475 + PW + 5, 50, PW, PH);
+    Camera cam =
+        perspective_camera({6.5f, -19.0f, 11.0f}, {3.0f, 0.0f, 8.2f}, {0, 0, 1}, 36.0f, PW, PH);
+    FloatImage depth;
+    SHITSUKAN_TRY(render_mesh(mesh, cam, vc, false, &depth));
+    FrameBand band = full_frame_band(vc, depth.view());
+    constexpr int kBins = 48;
+    std::vector<WireEdge> bin;
+    for (int b = 0; b < kBins; ++b) {
+        bin.clear();
+        for (std::size_t e = 0; e < er.edges.size(); ++e) {
+            float t = (er.rate[e] - range.lo) / (range.hi - range.lo);
+            int k = int(std::floor(t * kBins));
+            k = k < 0 ? 0 : (k >= kBins ? kBins - 1 : k);
+            if (k == b) bin.push_back(er.edges[e]);
         }
-        canvas.text({480 + PW + 5, 36}, "(c) crotch: every edge in its own rate", Rgb8{0, 0, 0});
+        if (bin.empty()) continue;
+        WireOptions w;
+        w.depth_test = true;
+        w.color = colormap(ColorMap::perceptual, (float(b) + 0.5f) / kBins);
+        SHITSUKAN_TRY(draw_edges(cam, band, mesh.view(), bin.data(), int(bin.size()), w));
     }
-    SHITSUKAN_TRY(draw_colorbar(canvas, {float(W - 80), 70.0f}, {16.0f, 380.0f},
+    canvas.text({480 + PW + 5, 36}, "(c) crotch: every edge in its own rate", Rgb8{0, 0, 0});
+    return Status::success();
+}
+
+}  // namespace
+
+SHITSUKAN_FIGURE(hirota1998_fig10, "hirota1998", "fig10",
+                 "Anisotropic growth of trunk and branch: isotropic scaling + normal offset "
+                 "(section y = 0), and the per-edge growth rate on the branch mesh") {
+    const BranchShapeParams shape;
+    const float L0 = ctx.quick() ? 0.6f : 0.33f;
+    record_fig10(ctx, shape, L0);
+    auto t0 = std::chrono::steady_clock::now();
+    TriangleMesh mesh;
+    BranchMeshStats ms;
+    SHITSUKAN_TRY(make_branch_mesh(shape, L0, mesh, &ms));
+    const double mesh_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const MeshQuality& q = ms.remesh.after;
+
+    // ---- (a) the four outlines ----
+    Outlines o;
+    measure_outlines(mesh, shape, &o);
+    RgbImage img(kW, kH, Rgb8{255, 255, 255});
+    RasterCanvas canvas(img.view());
+    canvas.text({12, 8},
+                "hirota1998 fig. 10 - anisotropic growth = isotropic scaling + "
+                "normal offset",
+                Rgb8{0, 0, 0}, 2);
+    SHITSUKAN_TRY(draw_outlines(img, o));
+
+    // ---- (b), (c): the fig11 growth rate ----
+    AnisotropicGrowth g;
+    g.r_h = kRh;
+    g.r_n = (kRr - kRh) * shape.trunk_radius;
+    g.duration = kT;
+    g.centre = branch_base_centre(shape);
+    SHITSUKAN_TRY(validate_growth(g));
+    EdgeRates er;
+    SHITSUKAN_TRY(edge_rates(mesh, g, &er));
+    const ValueRange range{kRh, kRh + g.r_n / shape.branch_radius + 0.004f};
+    const TriangleMesh colored = coloured_by_rate(mesh, er, range);
+    const RateChecks r = measure_rates(mesh, shape, er);
+    const double hoop_t_expect = double(g.r_h + g.r_n / shape.trunk_radius);
+    const double hoop_b_expect = double(g.r_h + g.r_n / shape.branch_radius);
+    SHITSUKAN_TRY(draw_rate_panels(img, canvas, mesh, colored, er, range));
+    SHITSUKAN_TRY(draw_colorbar(canvas, {float(kW - 80), 70.0f}, {16.0f, 380.0f},
                                 ColorMap::perceptual, range));
-    canvas.text({float(W - 84), 52.0f}, "eps*T", Rgb8{0, 0, 0});
-    canvas.text({480, float(H - 26)},
+    canvas.text({float(kW - 84), 52.0f}, "eps*T", Rgb8{0, 0, 0});
+    canvas.text({480, float(kH - 26)},
                 fmt("trunk hoop edges %.4f (r_h + r_n/R_t = %.4f), axial %.4f (r_h = %.3f); "
                     "branch hoop %.4f (r_h + r_n/R_b = %.4f)",
-                    hoop_t, hoop_t_expect, axial_t, double(g.r_h), hoop_b, hoop_b_expect),
+                    r.hoop_t, hoop_t_expect, r.axial_t, double(g.r_h), r.hoop_b, hoop_b_expect),
                 Rgb8{0, 0, 0});
 
-    const bool widths_ok = width_err < 0.01f;
-    const bool height_ok = std::fabs(height_iso / (kShowScale * shape.height) - 1.0f) < 1e-4f &&
-                           std::fabs(height_both / (kShowScale * shape.height) - 1.0f) < 1e-4f;
-    const bool hoop_ok = std::fabs(hoop_t / hoop_t_expect - 1.0) < 0.05;
-    const bool axial_ok = std::fabs(axial_t / double(g.r_h) - 1.0) < 0.05;
-    const bool branch_ok = std::fabs(hoop_b / hoop_b_expect - 1.0) < 0.05;
+    const bool widths_ok = o.width_err < 0.01f;
+    const bool height_ok = std::fabs(o.height_iso / (kShowScale * shape.height) - 1.0f) < 1e-4f &&
+                           std::fabs(o.height_both / (kShowScale * shape.height) - 1.0f) < 1e-4f;
+    const bool hoop_ok = std::fabs(r.hoop_t / hoop_t_expect - 1.0) < 0.05;
+    const bool axial_ok = std::fabs(r.axial_t / double(g.r_h) - 1.0) < 0.05;
+    const bool branch_ok = std::fabs(r.hoop_b / hoop_b_expect - 1.0) < 0.05;
     ctx.note(fmt(
         "Mesh: %d nodes, %d triangles (marching tetrahedra gave %d / %d), edge mean "
         "%.3f cm, CV %.3f, min angle %.1f deg, %.2f %% of triangles above 25 deg; "
@@ -362,23 +403,25 @@ SHITSUKAN_FIGURE(hirota1998_fig10, "hirota1998", "fig10",
         fmt("(a) trunk width at z = 3 cm: %.3f / %.3f / %.3f / %.3f cm, expected 2R, 2sR, "
             "2(R + d), 2(sR + d) = %.3f / %.3f / %.3f / %.3f (largest error %.2f %%, %s); "
             "trunk height %.3f (scaling only) and %.3f (both) = s x 16 = %.1f (%s).",
-            double(width[0]), double(width[1]), double(width[2]), double(width[3]),
-            double(width_expect[0]), double(width_expect[1]), double(width_expect[2]),
-            double(width_expect[3]), 100.0 * double(width_err), widths_ok ? "ok" : "FAIL",
-            double(height_iso), double(height_both), double(kShowScale * shape.height),
+            double(o.width[0]), double(o.width[1]), double(o.width[2]), double(o.width[3]),
+            double(o.width_expect[0]), double(o.width_expect[1]), double(o.width_expect[2]),
+            double(o.width_expect[3]), 100.0 * double(o.width_err), widths_ok ? "ok" : "FAIL",
+            double(o.height_iso), double(o.height_both), double(kShowScale * shape.height),
             height_ok ? "ok" : "FAIL"));
     ctx.note(fmt(
         "(b, c) eps*T on the trunk below the crotch: hoop edges (|e.z| < 0.15, %d) "
         "%.4f vs r_h + r_n/R_t = %.4f (%s), axial edges (|e.z| > 0.97, %d) %.4f vs "
         "r_h = %.4f (%s); branch hoop edges (|e.u| < 0.15, %d) %.4f vs r_h + r_n/R_b "
         "= %.4f (%s): the thinner limb grows faster around (sec. 5.2's drawback).",
-        n_hoop_t, hoop_t, hoop_t_expect, hoop_ok ? "ok" : "FAIL", n_axial_t, axial_t, double(g.r_h),
-        axial_ok ? "ok" : "FAIL", n_hoop_b, hoop_b, hoop_b_expect, branch_ok ? "ok" : "FAIL"));
+        r.n_hoop_t, r.hoop_t, hoop_t_expect, hoop_ok ? "ok" : "FAIL", r.n_axial_t, r.axial_t,
+        double(g.r_h), axial_ok ? "ok" : "FAIL", r.n_hoop_b, r.hoop_b, hoop_b_expect,
+        branch_ok ? "ok" : "FAIL"));
     ctx.note(fmt(
         "The magnified offset d = %.1f cm exceeds the concave radius of curvature in the "
         "upper crotch, where the offset outline folds into a small swallowtail (%d "
         "triangles turn over); at fig11's d(T) = %.2f cm %d do.",
-        double(kShowOffset), folded_shown, double((kRr - kRh) * shape.trunk_radius), folded_fig11));
+        double(kShowOffset), o.folded_shown, double((kRr - kRh) * shape.trunk_radius),
+        o.folded_fig11));
     ctx.note(
         "Look for: (a) scaling alone stretches the whole shape away from c (taller and "
         "wider), the normal offset alone thickens both limbs by the same distance, both "

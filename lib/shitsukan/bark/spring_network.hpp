@@ -43,6 +43,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "shitsukan/core/status.hpp"
@@ -71,6 +72,13 @@ struct NetworkEntry {
     float load = 0;  // k·l0·g: the spring's pull per unit time on the anchored layout
 };
 
+// Solver scratch: a node's stiffness block K_p, kept while k_anchor (the value it was made
+// with; NaN = stale) and the node's springs do not change (spring_network.cpp, node_block).
+struct NodeBlock {
+    float m[7] = {0, 0, 0, 0, 0, 0, 0};
+    float k_anchor = std::numeric_limits<float>::quiet_NaN();
+};
+
 struct SpringNetwork {
     int dim = 2;                         // 2 (unwrapped cylinder) or 3 (a mesh in space)
     std::vector<Vec3> X;                 // reference positions
@@ -88,6 +96,7 @@ struct SpringNetwork {
     // Solver scratch (FIFO queue of nodes, in-queue flags, touched list).
     std::vector<std::uint32_t> queue;
     std::vector<std::uint8_t> flags;
+    std::vector<NodeBlock> blocks;
     std::uint64_t updates = 0;           // node updates so far (for the bench and tests)
 
     int node_count() const { return int(X.size()); }
@@ -124,7 +133,10 @@ Status relax(SpringNetwork& net, const std::uint32_t* seeds, int seed_count, flo
              std::vector<std::uint32_t>* touched, int max_updates_per_node = 200);
 
 // E_s: the strain rate of spring s under the current W (e_s(t) = t·E_s).
-float strain_rate(const SpringNetwork& net, std::uint32_t s);
+inline float strain_rate(const SpringNetwork& net, std::uint32_t s) {
+    const BarkSpring& sp = net.springs[s];
+    return sp.growth_rate + dot(sp.n, net.W[sp.j] - net.W[sp.i]) / sp.l0;
+}
 
 // Phi(W) in double (tests).
 double network_energy(const SpringNetwork& net);

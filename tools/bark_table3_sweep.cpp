@@ -1,0 +1,87 @@
+// tools/bark_table3_sweep.cpp — hirota1998 Table 3 under the shared chosen values: does any
+// setting shared by all three species put the widths in the paper's order (camphor < tallow <
+// pine)? Prints one Markdown row per setting: each species' mean width x height over the seeds,
+// on table03's trunk and section (128 x 80 nodes, 8 rows left out at each end).
+//
+//   make build/libshitsukan.a
+//   g++ -std=c++17 -O2 -ffp-contract=off -Ilib tools/bark_table3_sweep.cpp build/libshitsukan.a
+//       -o build/bark_table3_sweep  &&  build/bark_table3_sweep [seeds]
+//
+// Every setting changes one value for all three species at once (no per-species tuning):
+// sigma, D, the final hoop and axial strains, a common scale on every kappa - 1, the relaxation
+// tolerance. docs/papers/hirota1998.md §4 prints its output.
+#include <cstdio>
+#include <cstdlib>
+
+#include "shitsukan/bark/bark.hpp"
+
+using namespace shitsukan;
+
+namespace {
+
+struct Setting {
+    const char* name;
+    float sigma = 0.0175f, D = 0.55f, hoop = 1.0f, axial = 1.0f, kappa = 1.0f, tol = 1e-3f;
+};
+
+struct Cell {
+    double w = 0, h = 0, max_w = 0, max_h = 0;
+};
+
+Status species_cell(Species species, const Setting& s, int seeds, Cell* out) {
+    for (int k = 0; k < seeds; ++k) {
+        CylinderParams p;
+        p.species = species_preset(species);
+        p.species.kappa1 = 1.0f + s.kappa * (p.species.kappa1 - 1.0f);
+        p.species.kappa2 = 1.0f + s.kappa * (p.species.kappa2 - 1.0f);
+        const CylinderParams defaults;  // table03's trunk: 80 rows, the default final strains
+        p.N_H = 80;
+        p.delta_h = s.axial * axial_strain(defaults, defaults.T) * initial_height(p) / p.T;
+        p.delta_r = s.hoop * defaults.delta_r;
+        p.sigma = s.sigma, p.D = s.D, p.tolerance = s.tol;
+        p.seed = k == 0 ? 1998u : std::uint32_t(k);
+        BarkCylinder bark;
+        SHITSUKAN_TRY(build_cylinder(p, bark));
+        CrackRun run;
+        SHITSUKAN_TRY(grow_and_crack(bark, CrackRunOptions{}, run));
+        RegionOptions section;
+        section.end_rows = kSectionEndRows;
+        RegionReport r;
+        SHITSUKAN_TRY(measure_regions(bark, p.T, bark.net.W.data(), r, section));
+        out->w += r.mean_width / seeds, out->h += r.mean_height / seeds;
+        out->max_w += r.max_width / seeds, out->max_h += r.max_height / seeds;
+    }
+    return Status::success();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const int seeds = argc > 1 ? std::atoi(argv[1]) : 3;
+    Setting list[] = {{"as chosen"},      {"sigma 0.0125"},   {"sigma 0.025"},
+                      {"D 0.45"},         {"D 0.70"},         {"hoop strain x0.85"},
+                      {"hoop strain x1.15"}, {"axial strain x0.95"}, {"axial strain x1.05"},
+                      {"kappa - 1 x0.9"}, {"kappa - 1 x1.1"}, {"tolerance 1e-4"}};
+    list[1].sigma = 0.0125f, list[2].sigma = 0.025f, list[3].D = 0.45f, list[4].D = 0.70f;
+    list[5].hoop = 0.85f, list[6].hoop = 1.15f, list[7].axial = 0.95f, list[8].axial = 1.05f;
+    list[9].kappa = 0.9f, list[10].kappa = 1.1f, list[11].tol = 1e-4f;
+    const Species species[3] = {Species::camphor, Species::chinese_tallow, Species::pine};
+    std::printf("| shared setting (%d seeds) | camphor | Chinese tallow | pine | tallow / camphor "
+                "width | paper's width order |\n|---|---|---|---|---|---|\n",
+                seeds);
+    for (const Setting& s : list) {
+        Cell c[3];
+        for (int i = 0; i < 3; ++i) {
+            const Status st = species_cell(species[i], s, seeds, &c[i]);
+            if (!st) {
+                std::fprintf(stderr, "bark_table3_sweep: %s: %s\n", s.name, st.message());
+                return 1;
+            }
+        }
+        std::printf("| %s | %.2f x %.2f | %.2f x %.2f | %.2f x %.2f | %.2f | %s |\n", s.name,
+                    c[0].w, c[0].h, c[1].w, c[1].h, c[2].w, c[2].h, c[1].w / c[0].w,
+                    c[0].w < c[1].w && c[1].w < c[2].w ? "yes" : "no");
+        std::fflush(stdout);
+    }
+    return 0;
+}
