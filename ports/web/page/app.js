@@ -243,6 +243,21 @@
   // the library that computes it; `open` builds the panel and resolves once it has drawn
   // (after warming its code up on a small input).
   SK.register = function (panel) { SK.panels.push(panel); };
+  // The repository files a panel names: the paths in its `source` text (a bare file name is in
+  // the folder of the path before it), its C API file and its page file. ports/web/bundle.py
+  // reads the same text by the same rule and copies these files (as HTML) into sources/.
+  SK.sourceFiles = function (panel) {
+    const key = panel.id.split('-')[0];
+    const out = [];
+    let dir = '';
+    (panel.source.match(/[\w./-]+\.(?:cpp|hpp|h)\b/g) || []).forEach((t) => {
+      if (t.includes('/')) dir = t.slice(0, t.lastIndexOf('/') + 1);
+      else t = dir + t;
+      if (!out.includes(t)) out.push(t);
+    });
+    ['ports/web/api/api_' + key + '.cpp', 'ports/web/page/panels/' + key + '.js'].forEach((t) => { if (!out.includes(t)) out.push(t); });
+    return out;
+  };
   let current = null;
   SK.open = function (id) {
     const panel = SK.panels.find((p) => p.id === id);
@@ -256,6 +271,11 @@
       el('h2', {}, s, panel.title);
       const meta = el('p', { class: 'sk-cite' }, s);
       meta.innerHTML = '<b>' + panel.cite + '</b><br>Computed by <code>' + panel.source + '</code>';
+      const src = el('p', { class: 'sk-sources' }, s, 'Source (repository path; the classroom bundle carries a copy): ');
+      SK.sourceFiles(panel).forEach((f, i) => {
+        if (i) src.appendChild(document.createTextNode(' · '));
+        el('a', { href: 'sources/' + f + '.html', class: 'sk-source', target: '_blank' }, src, f);
+      });
       const bar = (panel.progress = el('progress', { max: 1, value: 0, class: 'sk-progress' }, s));
       bar.hidden = true;
       const body = el('div', { class: 'sk-body' }, s);
