@@ -97,6 +97,11 @@ const std::map<std::string, Call>& functions() {
                                        float(a[6]), int(a[7]));
          }},
         {"sk_fujimoto2000_ratio", [](const Args& a) { return sk_fujimoto2000_ratio(int(a[0])); }},
+        {"sk_fujimoto2000_terrain",
+         [](const Args& a) {
+             return sk_fujimoto2000_terrain(int(a[0]), float(a[1]), int(a[2]), float(a[3]), float(a[4]), unsigned(a[5]),
+                                            float(a[6]), float(a[7]), int(a[8]));
+         }},
     };
     return f;
 }
@@ -179,6 +184,12 @@ const std::vector<Case>& cases() {
         {"fujimoto2000 fig. 17 superposed delta 0.65", "sk_fujimoto2000_wr", {0, 2, 0.65, 3, 14, 0.5, 0.2, 256}, "picture"},
         {"fujimoto2000 fig. 18 B-spline WR, K = 2", "sk_fujimoto2000_wr", {1, 1, 0.5, 2, 18, 0, 0, 256}, "picture"},
         {"fujimoto2000 WR delta = 1 refused", "sk_fujimoto2000_wr", {1, 2, 1, 2, 18, 0, 0, 256}, "status"},
+        {"fujimoto2000 fig. 21c conventional terrain", "sk_fujimoto2000_terrain", {0, 0.55, 3, 0.12, 0.035, 21, 0, 0, 256}, "picture"},
+        {"fujimoto2000 fig. 21f superposed, jitter", "sk_fujimoto2000_terrain", {2, 0.55, 3, 0.12, 0.035, 21, 0, 0, 256}, "picture"},
+        {"fujimoto2000 fig. 21f jitter seed 22", "sk_fujimoto2000_terrain", {2, 0.55, 3, 0.12, 0.035, 22, 0, 0, 256}, "picture"},
+        {"fujimoto2000 fig. 21f no jitter, turned", "sk_fujimoto2000_terrain", {2, 0.55, 3, 0, 0, 21, 0.6, 0.2, 256}, "picture"},
+        {"fujimoto2000 fig. 21d WR terrain", "sk_fujimoto2000_terrain", {1, 0.55, 2, 0.12, 0.035, 21, 0, 0, 256}, "picture"},
+        {"fujimoto2000 terrain jitter refused", "sk_fujimoto2000_terrain", {2, 0.55, 2, 1000, 0.035, 21, 0, 0, 256}, "status"},
         {"hirota1998 frame before a run refused", "sk_hirota1998_frame", {0, 40}, "status"},
         {"hirota1998 Table 2 camphor", "sk_hirota1998_species", {0}, "text"},
         {"hirota1998 sigma refused", "sk_hirota1998_run", {0, 0.5, 1.04, 1.015, 32, 24}, "status"},

@@ -34,6 +34,8 @@ WEB_PAPERS   += fujimoto2000/fig03 fujimoto2000/fig04 fujimoto2000/fig06a fujimo
 WEB_PAPERS   += hirota1998/fig04 hirota1998/fig05
 # fujimoto2000 WR surfaces: one panel each of figs. 14, 17, 18 for their parameter tables.
 WEB_PAPERS   += fujimoto2000/fig14b fujimoto2000/fig17a4 fujimoto2000/fig18a5
+# fujimoto2000 fig. 21's superposed terrain (the jitter's record).
+WEB_PAPERS   += fujimoto2000/fig21f
 # Same flags as the native build (docs/DESIGN.md: same inputs, same bits). stb's headers come
 # from Debian's libstb-dev through a directory of their own (not all of /usr/include: the WASM
 # build must not see glibc's headers), as system headers like the native build's; the page never reads or writes image files, so the
@@ -41,8 +43,10 @@ WEB_PAPERS   += fujimoto2000/fig14b fujimoto2000/fig17a4 fujimoto2000/fig18a5
 WEB_CXXFLAGS := -std=c++17 -O2 $(WARN) -ffp-contract=off
 WEB_CPPFLAGS := -Ilib -Ipaper_figures -Iports/web -isystem $(WEB_DIR)/include
 WEB_API_SRCS := $(sort $(wildcard ports/web/api/*.cpp))
-# The figures' drawing code the panels share with paper_figures (the IST diagrams of figs. 3-9).
+# The figures' code the panels share with paper_figures (the IST diagrams of figs. 3-9).
 WEB_API_SRCS += paper_figures/fujimoto2000/ist_diagram.cpp
+# ... and fig. 21's terrain control mesh.
+WEB_API_SRCS += paper_figures/fujimoto2000/terrain_mesh.cpp
 WEB_LIB_OBJS := $(LIB_SRCS:%.cpp=$(WEB_DIR)/obj/%.o)
 WEB_API_OBJS := $(WEB_API_SRCS:%.cpp=$(WEB_DIR)/obj/%.o)
 WEB_TEST_OBJS := $(TEST_SRCS:%.cpp=$(WEB_DIR)/obj/%.o)

@@ -64,6 +64,10 @@ int sk_fujimoto2000_table(int first_label, int max_lines);
 int sk_fujimoto2000_ratio(int coordinates);
 int sk_fujimoto2000_wr(int figure, int form, float delta, int K, unsigned seed, float yaw, float pitch, int size);
 
+/* api_fujimoto2000_terrain.cpp */
+int sk_fujimoto2000_terrain(int form, float delta, int K, float jitter_height, float jitter_color, unsigned seed,
+                            float yaw, float pitch, int size);
+
 /* api_hirota1998.cpp */
 int sk_hirota1998_species(int species);
 int sk_hirota1998_run(int species, float sigma, float kappa1, float kappa2, int n_r, int n_h);

@@ -196,6 +196,20 @@
     sel.addEventListener('change', () => { if (c.onchange) c.onchange(); });
     return c;
   };
+  // A picture turned by the mouse (drag) and by two sliders (the keyboard's way: Tab to a
+  // slider, arrow keys): dragging moves the sliders, and either calls update().
+  SK.turnable = function (canvas, yaw, pitch, update) {
+    let drag = null;
+    canvas.addEventListener('pointerdown', (e) => { drag = { x: e.clientX, y: e.clientY, yaw: yaw.value, pitch: pitch.value }; canvas.setPointerCapture(e.pointerId); });
+    canvas.addEventListener('pointermove', (e) => {
+      if (!drag) return;
+      yaw.set((drag.yaw + (e.clientX - drag.x) * 0.01).toFixed(2));
+      pitch.set(Math.max(Number(pitch.range.min), Math.min(Number(pitch.range.max), drag.pitch + (e.clientY - drag.y) * 0.01)).toFixed(2));
+      update();
+    });
+    canvas.addEventListener('pointerup', () => { drag = null; });
+    canvas.style.cursor = 'grab';
+  };
   // Shows a reply's Status beside the control that caused it; true when the call succeeded.
   SK.report = function (control, reply) {
     if (!reply) return false;
