@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hirota1998/bark_common.hpp"
+#include "hirota1998/branch_scene.hpp"
 #include "shitsukan/bark/branch_bark.hpp"
 #include "shitsukan/image/image.hpp"
 #include "shitsukan/image/raster_canvas.hpp"
@@ -208,45 +209,11 @@ SHITSUKAN_FIGURE(hirota_fig11, "hirota1998", "fig11",
     const BranchBarkParams& p = run->params;
     record_branch(ctx, p);
     const float T = p.growth.duration;
-    const Vec3* W = b.net.W.data();
     const int n = b.mesh.vertex_count();
-    // The grown mesh at T.
-    TriangleMesh grown = b.mesh;
-    for (int i = 0; i < n; ++i)
-        grown.positions[std::size_t(i)] = branch_node_position(b, std::uint32_t(i), T, W);
-    // Crack ribbons (Fig. 4 on the mesh): C1-M-C2 widened by l - l0 along the spring, lifted
-    // 0.01 cm along the normal so they lie on the surface. Cracked = broken, or intact in no
-    // intact triangle (opened by sliding: drawn at the minimum width, as fig05's map does). A
-    // spring on a cut end has one triangle: its ribbon stops at M, on the cut.
+    // The grown mesh at T and the crack ribbons (branch_scene.hpp, shared with the explorer).
     const float min_width = ctx.quick() ? 0.12f : 0.065f;  // about 1.5 px (23 px/cm at 512 px)
-    const std::vector<std::uint8_t> cracked = cracked_springs(b, T);
-    TriangleMesh cracks;
-    std::vector<Vec3> centroid(b.triangles.size());
-    for (std::size_t t = 0; t < b.triangles.size(); ++t) {
-        const ConnectionTriangle& ct = b.triangles[t];
-        centroid[t] = (grown.positions[ct.node[0]] + grown.positions[ct.node[1]] +
-                       grown.positions[ct.node[2]]) * (1.0f / 3.0f);
-    }
-    int broken = 0;
-    for (std::size_t s = 0; s < b.net.springs.size(); ++s) {
-        const BarkSpring& sp = b.net.springs[s];
-        if (!cracked[s]) continue;
-        broken += !sp.intact();
-        const Vec3 xi = grown.positions[sp.i], xj = grown.positions[sp.j];
-        const float l = length(xj - xi), w = std::max(l - sp.l0, min_width);
-        const Vec3 along = (xj - xi) * (1.0f / l), m = (xi + xj) * 0.5f;
-        const Vec3 lift = normalize(b.mesh.normals[sp.i] + b.mesh.normals[sp.j]) * 0.01f;
-        const std::int32_t* tr = &b.spring_triangles[2 * s];
-        for (int k = 0; k < 2 && tr[k] >= 0; ++k) {
-            const Vec3 end = centroid[std::size_t(tr[k])];
-            const Vec3 h = along * (0.5f * w);
-            const std::uint32_t a = cracks.add_vertex(end - h + lift, lift);
-            const std::uint32_t bb = cracks.add_vertex(m - h + lift, lift);
-            const std::uint32_t cc = cracks.add_vertex(m + h + lift, lift);
-            const std::uint32_t d = cracks.add_vertex(end + h + lift, lift);
-            cracks.add_triangle(a, bb, cc), cracks.add_triangle(a, cc, d);
-        }
-    }
+    const BranchScene scene = branch_scene(b, T, b.net.W.data(), min_width);
+    const int broken = scene.broken;
     // Checks (docs/papers/hirota1998.md §6, "Result").
     int trunk_breaks = 0, trunk_hoop = 0, branch_breaks = 0;
     double trunk_area = 0, branch_area = 0;
@@ -278,35 +245,12 @@ SHITSUKAN_FIGURE(hirota_fig11, "hirota1998", "fig11",
     const double trunk_density = trunk_breaks / std::max(trunk_area, 1e-9);
     const double branch_density = branch_breaks / std::max(branch_area, 1e-9);
 
-    // Two views, 512 x 512 each: front, and 3/4 from above the crotch. The shape is z-up; the
-    // rasterizer's world is y-up: rotate -90 degrees about x.
+    // Two views, 512 x 512 each: front, and 3/4 from above the crotch.
     const int size = ctx.quick() ? 256 : 512;
     RgbImage img(2 * size, size + 40, Rgb8{236, 238, 240});
-    const Mat4 model = Mat4::rotate_x(-0.5f * kPi);
-    const Light light = directional_light({-0.5f, 0.6f, 0.8f});
-    Material mat;
-    mat.ambient = 0.25f, mat.diffuse = 0.8f;
-    const Vec3 bark_colour{0.60f, 0.50f, 0.40f}, crack_colour{0.10f, 0.07f, 0.05f};
-    const Vec3 eyes[2] = {{1.5f, 9.0f, 37.0f}, {26.0f, 21.0f, 22.0f}};
     for (int v = 0; v < 2; ++v) {
-        Camera cam = perspective_camera(eyes[v], {2.0f, 8.0f, 0.0f}, {0, 1, 0}, 34.0f, size, size);
         RgbImage color(size, size);
-        FloatImage depth(size, size);
-        FrameBand band = full_frame_band(color.view(), depth.view());
-        clear_band(band, Rgb8{236, 238, 240});
-        DrawOptions opt;
-        opt.model = model;
-        opt.cull = CullMode::none;
-        auto shade = [&](Vec3 base) {
-            return [&, base](const Fragment& f) {
-                const Vec3 nrm = face_forward(f.normal, f.world_position, cam.eye);
-                return to_rgb8(shade_lambert(mat, base, f.world_position, nrm, &light, 1));
-            };
-        };
-        auto bark_shader = shade(bark_colour);
-        auto crack_shader = shade(crack_colour);
-        SHITSUKAN_TRY(draw_mesh(cam, band, grown.view(), opt, bark_shader));
-        SHITSUKAN_TRY(draw_mesh(cam, band, cracks.view(), opt, crack_shader));
+        SHITSUKAN_TRY(draw_branch_view(scene, fig11_camera(v, size), Mat4::identity(), color.view()));
         for (int y = 0; y < size; ++y)
             for (int x = 0; x < size; ++x) img.at(v * size + x, 40 + y) = color.at(x, y);
     }

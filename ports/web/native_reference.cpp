@@ -97,6 +97,14 @@ const std::map<std::string, Call>& functions() {
                                        float(a[6]), int(a[7]));
          }},
         {"sk_fujimoto2000_ratio", [](const Args& a) { return sk_fujimoto2000_ratio(int(a[0])); }},
+        {"sk_hirota1998_branch_run",
+         [](const Args& a) {
+             return sk_hirota1998_branch_run(float(a[0]), float(a[1]), float(a[2]), float(a[3]), float(a[4]));
+         }},
+        {"sk_hirota1998_branch_view",
+         [](const Args& a) {
+             return sk_hirota1998_branch_view(int(a[0]), int(a[1]), float(a[2]), float(a[3]), int(a[4]));
+         }},
         {"sk_fujimoto2000_terrain",
          [](const Args& a) {
              return sk_fujimoto2000_terrain(int(a[0]), float(a[1]), int(a[2]), float(a[3]), float(a[4]), unsigned(a[5]),
@@ -204,6 +212,12 @@ const std::vector<Case>& cases() {
         {"hirota1998 Table 2 pine", "sk_hirota1998_species", {2}, "text"},
         {"hirota1998 pine run: events, hash", "sk_hirota1998_run", {2, 0.0175, 1.038, 1.023, 32, 24}, "floats text"},
         {"hirota1998 pine all 912 events", "sk_hirota1998_frame", {912, 40}, "picture text"},
+        {"hirota1998 branch view before a run refused", "sk_hirota1998_branch_view", {20, 0, 0, 0, 256}, "status"},
+        {"hirota1998 fig. 11 branch run (L0 0.6)", "sk_hirota1998_branch_run", {0.6, 0.01, 0.05, 1.015, 0.0175}, "floats text"},
+        {"hirota1998 fig. 11 branch at T, front", "sk_hirota1998_branch_view", {20, 0, 0, 0, 256}, "picture text"},
+        {"hirota1998 fig. 11 branch at T, above", "sk_hirota1998_branch_view", {20, 1, 0, 0, 256}, "picture text"},
+        {"hirota1998 fig. 11 branch at T/2, turned", "sk_hirota1998_branch_view", {10, 0, 0.8, 0.3, 256}, "picture text"},
+        {"hirota1998 branch frame past T refused", "sk_hirota1998_branch_view", {21, 0, 0, 0, 256}, "status"},
     };
     return c;
 }

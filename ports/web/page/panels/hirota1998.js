@@ -133,4 +133,77 @@
       await speciesDefaults();
     },
   });
+
+  SK.register({
+    id: 'hirota1998-branch', paper: P, order: 140,
+    title: 'The branch of fig. 11 in 3D: cracks on a branching trunk',
+    cite: 'hirota1998 §5.1-5.2: an irregular mesh of a branching trunk, spring and shear-spring constants from the connection areas of Fig. 9, growth = isotropic enlargement (r_h) + offset along the normal (r_n); §5.3, Fig. 11: the cracks run around the trunk, denser on the thinner branch, and connect across the crotch',
+    source: 'lib/shitsukan/bark/branch_bark.cpp build_branch_bark() / grow_branch_bark(), branch_shape.cpp, connection_area.cpp; paper_figures/hirota1998/branch_scene.cpp branch_scene() / draw_branch_view() (fig. 11\'s scene); lib/shitsukan/raster/rasterizer.cpp draw_mesh(); ports/web/api/api_hirota1998_branch.cpp',
+    figures: ['hirota1998/fig11'],
+    interaction: { control: 'branch-yaw', value: 1.2, canvas: 'canvas.sk-branch' },
+    async open(body, panel) {
+      const box = SK.el('div', { class: 'sk-controls' }, body);
+      const figs = SK.el('div', { class: 'sk-figs' }, body);
+      const c = {
+        L0: SK.select(box, { label: 'mesh L0', value: 0.6, options: [[0.6, '0.6 cm (the figures\' quick size)'], [0.45, '0.45 cm'], [0.33, '0.33 cm (Table 2\'s L0)']] }),
+        r_h: SK.slider(box, { label: 'r_h (length)', min: 0, max: 0.04, step: 0.001, value: 0.01, key: 'branch-rh' }),
+        r_n: SK.slider(box, { label: 'r_n (normal, cm)', min: -0.05, max: 0.15, step: 0.005, value: 0.05, key: 'branch-rn' }),
+        kappa: SK.slider(box, { label: 'kappa', min: 1.001, max: 1.05, step: 0.001, value: 1.015, key: 'branch-kappa' }),
+        sigma: SK.slider(box, { label: 'sigma', min: 0, max: 0.1, step: 0.0005, value: 0.0175, key: 'branch-sigma' }),
+      };
+      const runInfo = SK.el('div', { class: 'sk-readout' }, box);
+      const v = {
+        frame: SK.slider(box, { label: 'time t (T/20)', min: 0, max: 20, step: 1, value: 20, key: 'branch-frame' }),
+        view: SK.select(box, { label: 'camera', value: 0, options: [[0, 'front (fig. 11 left)'], [1, 'above the crotch (fig. 11 right)']] }),
+        yaw: SK.slider(box, { label: 'turn (yaw)', min: -3.14, max: 3.14, step: 0.01, value: 0, key: 'branch-yaw' }),
+        pitch: SK.slider(box, { label: 'tilt (pitch)', min: -1.2, max: 1.2, step: 0.01, value: 0, key: 'branch-pitch' }),
+      };
+      const bar = SK.el('div', { class: 'sk-control' }, box);
+      const play = SK.el('button', { type: 'button' }, bar, 'play the growth');
+      const frameInfo = SK.el('div', { class: 'sk-readout' }, box);
+      const f = SK.figure(figs, 'the grown branch at t with its cracks (dark ribbons, Fig. 4\'s width l - l0), drawn by the library\'s rasterizer; drag to turn', 512, 512);
+      f.canvas.classList.add('sk-branch');
+      let run = null, timer = 0;
+      const draw = SK.coalesce(async () => {
+        if (!run) return;
+        const r = await SK.call('sk_hirota1998_branch_view', [v.frame.value, v.view.value, v.yaw.value, v.pitch.value, 512], ['picture', 'text']);
+        if (!SK.report(v.frame, r)) return;
+        SK.draw(f.canvas, r.picture);
+        const t = JSON.parse(r.text);
+        frameInfo.textContent = 't = ' + t.t.toFixed(0) + ' of T = ' + run.T + ': ' + t.broken + ' springs broken, ' + t.ribbons + ' crack ribbons drawn';
+      });
+      const rerun = SK.coalesce(async () => {
+        stop();
+        const r = await SK.call('sk_hirota1998_branch_run', [c.L0.value, c.r_h.value, c.r_n.value, c.kappa.value, c.sigma.value], ['text']);
+        const bad = /r_h/.test(r.message) ? c.r_h : /r_n/.test(r.message) ? c.r_n : /kappa/.test(r.message) ? c.kappa : /sigma/.test(r.message) ? c.sigma : c.L0;
+        Object.values(c).forEach((x) => SK.clearReport(x));
+        if (!SK.report(bad, r)) { run = null; return; }
+        run = JSON.parse(r.text);
+        runInfo.textContent = 'native-identical run: ' + run.nodes + ' nodes, ' + run.springs + ' springs, ' + run.events +
+          ' breaks, event-sequence hash ' + run.hash + '\nmeshed, grown and cracked in ' + r.ms.toFixed(0) + ' ms (WASM, in the worker)';
+        await draw();
+      });
+      function stop() { if (timer) clearTimeout(timer); timer = 0; play.textContent = 'play the growth'; }
+      const tick = async () => {
+        if (!timer) return;
+        const next = Number(v.frame.value) + 1;
+        v.frame.set(next);
+        await draw();
+        if (next >= 20) { stop(); return; }
+        if (timer) timer = setTimeout(tick, 120);
+      };
+      play.addEventListener('click', () => {
+        if (timer) { stop(); return; }
+        if (Number(v.frame.value) >= 20) v.frame.set(0);
+        play.textContent = 'pause';
+        timer = setTimeout(tick, 0);
+      });
+      Object.values(c).forEach((x) => { x.onchange = rerun; });
+      v.frame.onchange = () => { stop(); draw(); };
+      [v.view, v.yaw, v.pitch].forEach((x) => { x.onchange = draw; });
+      SK.turnable(f.canvas, v.yaw, v.pitch, draw);
+      panel.stop = stop;
+      await rerun();
+    },
+  });
 })();
