@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "hirota1998/bark_common.hpp"
+#include "hirota1998/layer_frame_draw.hpp"
 #include "shitsukan/image/image.hpp"
 #include "shitsukan/image/plot.hpp"
 #include "shitsukan/image/raster_canvas.hpp"
@@ -108,71 +109,6 @@ void record_layered(FigureContext& ctx, const LayeredParams& p) {
                              p.cycles, p.spin_up_cycles, p.steps_per_cycle, double(p.tolerance)),
                "drying and area rules need steps; both layers are born stress-free at t = 0, so "
                "the first cycles are transitional");
-}
-
-// Seam-correct x next to ref (the patch is periodic around with period P).
-Vec3 near_x(Vec3 x, float ref, float P) {
-    while (x.x - ref > 0.5f * P) x.x -= P;
-    while (ref - x.x > 0.5f * P) x.x += P;
-    return x;
-}
-
-// One frame of fig. 8: the visible layer per triangle, with its cracks.
-void draw_frame(RasterCanvas& c, const LayeredBark& bark, const LayerFrame& f, Vec2 origin,
-                float scale) {
-    const BarkCylinder& lat = bark.lattice();
-    const LayeredParams& p = bark.params();
-    const float Ps = f.surface_period, Pm = f.middle1_period;
-    const Rgb8 bonded{92, 70, 52}, lifted{150, 124, 98}, exposed{196, 120, 62};
-    const float height_px = float(p.N_H) * p.species.L0 * 1.1f * scale;
-    auto px = [&](Vec3 x) { return Vec2{origin.x + x.x * scale, origin.y + height_px - x.y * scale}; };
-    // Painter's order: middle (1) everywhere (it shows where the surface has fallen), then the
-    // surface where it is still on the trunk; each layer with its own cracks.
-    for (int layer = 0; layer < 2; ++layer) {
-        const bool surface = layer == 1;
-        const std::vector<Vec3>& pos = surface ? f.surface_position : f.middle1_position;
-        const std::vector<std::uint8_t>& broken_springs = surface ? f.surface_broken : f.middle1_broken;
-        const float Pl = surface ? Ps : Pm;
-        c.set_antialias(false);
-        for (const ConnectionTriangle& tri : lat.triangles) {
-            const bool on = f.surface_alive[tri.node[0]] && f.surface_alive[tri.node[1]] &&
-                            f.surface_alive[tri.node[2]];
-            if (surface && !on) continue;
-            Vec3 x[3];
-            for (int k = 0; k < 3; ++k) x[k] = near_x(pos[tri.node[k]], pos[tri.node[0]].x, Pl);
-            Rgb8 col = exposed;
-            if (surface)
-                col = f.surface_bonded[tri.node[0]] && f.surface_bonded[tri.node[1]] &&
-                              f.surface_bonded[tri.node[2]]
-                          ? bonded
-                          : lifted;
-            for (float shift : {0.0f, -Pl, Pl}) {
-                const Vec2 pts[3] = {px(x[0] + Vec3{shift, 0, 0}), px(x[1] + Vec3{shift, 0, 0}),
-                                     px(x[2] + Vec3{shift, 0, 0})};
-                c.fill_polygon(pts, 3, col);
-            }
-        }
-        c.set_antialias(true);
-        // Cracks: the broken spring's face, width l - l0 (at least 1 px).
-        for (int s = 0; s < lat.net.spring_count(); ++s) {
-            const BarkSpring& sp = lat.net.springs[std::size_t(s)];
-            if (!broken_springs[std::size_t(s)]) continue;
-            if (surface && !(f.surface_alive[sp.i] && f.surface_alive[sp.j])) continue;  // fell off
-            const Vec3 a = pos[sp.i], b = near_x(pos[sp.j], a.x, Pl);
-            const float l = length(b - a), w = std::max(l - sp.l0, 1.0f / scale);
-            const Vec3 m = (a + b) * 0.5f, along = (b - a) * (1.0f / l);
-            const Vec3 face{-along.y, along.x, 0.0f};
-            const float half = 0.5f * lat.spring_face[std::size_t(s)] * 1.05f;
-            for (float shift : {0.0f, -Pl, Pl}) {
-                const Vec3 sh{shift, 0, 0};
-                const Vec2 q[4] = {px(m + sh + face * half - along * (0.5f * w)),
-                                   px(m + sh + face * half + along * (0.5f * w)),
-                                   px(m + sh - face * half + along * (0.5f * w)),
-                                   px(m + sh - face * half - along * (0.5f * w))};
-                c.fill_polygon(q, 4, Rgb8{24, 16, 10});
-            }
-        }
-    }
 }
 
 }  // namespace
@@ -307,7 +243,7 @@ SHITSUKAN_FIGURE(hirota_fig08, "hirota1998", "fig08",
         // Each frame in its own image (the periodic copies must not spill into the next one).
         RgbImage panel(int(pw), int(ph), Rgb8{252, 252, 250});
         RasterCanvas pcanvas(panel.view());
-        draw_frame(pcanvas, bark, f, {0.02f * pw, 0.0f}, scale);
+        draw_layer_frame(pcanvas, bark, f, {0.02f * pw, 0.0f}, scale);
         for (int y = 0; y < panel.height(); ++y)
             for (int x = 0; x < panel.width(); ++x) img.at(int(o.x) + x, int(o.y) + y) = panel.at(x, y);
         c.text({o.x, o.y - 14}, fmt("t/T = %.1f%s", double(base + kFrameOffsets[i]), kFrameLabel[i]),

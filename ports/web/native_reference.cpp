@@ -97,6 +97,10 @@ const std::map<std::string, Call>& functions() {
                                        float(a[6]), int(a[7]));
          }},
         {"sk_fujimoto2000_ratio", [](const Args& a) { return sk_fujimoto2000_ratio(int(a[0])); }},
+        {"sk_hirota1998_layers_run",
+         [](const Args& a) { return sk_hirota1998_layers_run(int(a[0]), int(a[1]), int(a[2]), float(a[3])); }},
+        {"sk_hirota1998_layers_frame",
+         [](const Args& a) { return sk_hirota1998_layers_frame(int(a[0]), float(a[1])); }},
         {"sk_hirota1998_branch_run",
          [](const Args& a) {
              return sk_hirota1998_branch_run(float(a[0]), float(a[1]), float(a[2]), float(a[3]), float(a[4]));
@@ -212,6 +216,14 @@ const std::vector<Case>& cases() {
         {"hirota1998 Table 2 pine", "sk_hirota1998_species", {2}, "text"},
         {"hirota1998 pine run: events, hash", "sk_hirota1998_run", {2, 0.0175, 1.038, 1.023, 32, 24}, "floats text"},
         {"hirota1998 pine all 912 events", "sk_hirota1998_frame", {912, 40}, "picture text"},
+        {"hirota1998 layers frame before a run refused", "sk_hirota1998_layers_frame", {0, 16}, "status"},
+        {"hirota1998 figs. 6-8 four layers 24 x 16, 4 cycles", "sk_hirota1998_layers_run", {24, 16, 4, 0.08}, "floats text"},
+        {"hirota1998 four layers, step 25", "sk_hirota1998_layers_frame", {24, 16}, "picture text"},
+        {"hirota1998 four layers, before role change 1", "sk_hirota1998_layers_frame", {49, 16}, "picture text"},
+        {"hirota1998 four layers, after role change 1", "sk_hirota1998_layers_frame", {50, 16}, "picture text"},
+        {"hirota1998 four layers, cycle 3 mid", "sk_hirota1998_layers_frame", {127, 16}, "picture text"},
+        {"hirota1998 four layers, the end", "sk_hirota1998_layers_frame", {202, 16}, "picture text"},
+        {"hirota1998 four layers frame past the end refused", "sk_hirota1998_layers_frame", {203, 16}, "status"},
         {"hirota1998 branch view before a run refused", "sk_hirota1998_branch_view", {20, 0, 0, 0, 256}, "status"},
         {"hirota1998 fig. 11 branch run (L0 0.6)", "sk_hirota1998_branch_run", {0.6, 0.01, 0.05, 1.015, 0.0175}, "floats text"},
         {"hirota1998 fig. 11 branch at T, front", "sk_hirota1998_branch_view", {20, 0, 0, 0, 256}, "picture text"},

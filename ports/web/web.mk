@@ -31,7 +31,7 @@ WEB_PAPERS   := okada1987 okada1989 tokai1994
 WEB_PAPERS   += fujimoto2000/fig03 fujimoto2000/fig04 fujimoto2000/fig06a fujimoto2000/fig06b \
                 fujimoto2000/fig07 fujimoto2000/fig08 fujimoto2000/fig09 fujimoto2000/table01
 # hirota1998: the two-layer model's figures (the species runs at the quick size).
-WEB_PAPERS   += hirota1998/fig04 hirota1998/fig05 hirota1998/fig11
+WEB_PAPERS   += hirota1998/fig04 hirota1998/fig05 hirota1998/fig08 hirota1998/fig11
 # fujimoto2000 WR surfaces: one panel each of figs. 14, 17, 18 for their parameter tables.
 WEB_PAPERS   += fujimoto2000/fig14b fujimoto2000/fig17a4 fujimoto2000/fig18a5
 # fujimoto2000 fig. 21's superposed terrain (the jitter's record).
@@ -45,8 +45,9 @@ WEB_CPPFLAGS := -Ilib -Ipaper_figures -Iports/web -isystem $(WEB_DIR)/include
 WEB_API_SRCS := $(sort $(wildcard ports/web/api/*.cpp))
 # The figures' code the panels share with paper_figures (the IST diagrams of figs. 3-9).
 WEB_API_SRCS += paper_figures/fujimoto2000/ist_diagram.cpp
-# ... fig. 21's terrain control mesh, fig. 11's 3D scene of the branch.
-WEB_API_SRCS += paper_figures/fujimoto2000/terrain_mesh.cpp paper_figures/hirota1998/branch_scene.cpp
+# ... fig. 21's terrain control mesh, fig. 11's 3D scene of the branch, fig. 8's frames.
+WEB_API_SRCS += paper_figures/fujimoto2000/terrain_mesh.cpp paper_figures/hirota1998/branch_scene.cpp \
+                paper_figures/hirota1998/layer_frame_draw.cpp
 WEB_LIB_OBJS := $(LIB_SRCS:%.cpp=$(WEB_DIR)/obj/%.o)
 WEB_API_OBJS := $(WEB_API_SRCS:%.cpp=$(WEB_DIR)/obj/%.o)
 WEB_TEST_OBJS := $(TEST_SRCS:%.cpp=$(WEB_DIR)/obj/%.o)

@@ -206,4 +206,100 @@
       await rerun();
     },
   });
+
+  SK.register({
+    id: 'hirota1998-layers', paper: P, order: 130,
+    title: 'The four-layer model: roles change cycle by cycle, plates peel',
+    cite: 'hirota1998 §4.1-4.2, figs. 6-8: surface, middle (1), middle (2), inner; middle (2) grows to middle (1)\'s thickness in one cycle T, then the roles shift outward (Fig. 7); the surface cracks, dries near its cracks and peels when the interlayer shear strain passes kappa_h (Table 4); a plate falls when its lifted area is large enough',
+    source: 'lib/shitsukan/bark/layered_bark.cpp LayeredBark::build() / run(), layer_schedule.cpp; paper_figures/hirota1998/layer_frame_draw.cpp draw_layer_frame() (fig. 8\'s frames); ports/web/api/api_hirota1998_layers.cpp',
+    figures: ['hirota1998/fig08'],
+    interaction: { control: 'layers-frame', value: 120, canvas: 'canvas.sk-layers' },
+    async open(body, panel) {
+      const box = SK.el('div', { class: 'sk-controls' }, body);
+      const figs = SK.el('div', { class: 'sk-figs' }, body);
+      const SIZES = [[24, 16, 4, 40], [64, 48, 5, 16]];  // N_R, N_H, cycles, px per cm
+      const c = {
+        size: SK.select(box, { label: 'patch', value: 0, options: [[0, '24 x 16 nodes, 4 cycles (the figures\' quick run)'], [1, '64 x 48 nodes, 5 cycles (fig. 8\'s run)']] }),
+        kappa_h: SK.slider(box, { label: 'kappa_h (Table 4)', min: 0.01, max: 0.2, step: 0.005, value: 0.08, key: 'layers-kappa-h' }),
+      };
+      const runInfo = SK.el('div', { class: 'sk-readout' }, box);
+      SK.el('h4', {}, box, 'The run, step by step (T / 50 a step)');
+      const fr = SK.slider(box, { label: 'time (step)', min: 0, max: 1, step: 1, value: 0, key: 'layers-frame' });
+      const bar = SK.el('div', { class: 'sk-control' }, box);
+      const play = SK.el('button', { type: 'button' }, bar, 'play');
+      const step = SK.el('button', { type: 'button' }, bar, 'step');
+      const back = SK.el('button', { type: 'button' }, bar, 'back');
+      const frameInfo = SK.el('div', { class: 'sk-readout' }, box);
+      const f = SK.figure(figs, 'the unrolled bark patch: surface bonded (dark brown), lifted (pale), middle (1) exposed where the surface fell off (orange); black: cracks of each layer', 480, 300);
+      f.canvas.classList.add('sk-layers');
+      const timeline = SK.figure(figs, 'over the run: surface still on the trunk (brown), of it still bonded (blue); grey lines: role changes; red: the step shown', 480, 110);
+      let run = null, timer = 0;
+      const row = (i) => Array.from(run.rec.slice(8 * i, 8 * i + 8));
+      const drawTimeline = (i) => {
+        const g = timeline.canvas.getContext('2d'), w = 480, h = 110;
+        g.fillStyle = '#fff'; g.fillRect(0, 0, w, h);
+        g.strokeStyle = '#ccc'; g.strokeRect(0.5, 0.5, w - 1, h - 1);
+        if (!run) return;
+        const tEnd = run.T * run.cycles, x = (t) => 4 + (t / tEnd) * (w - 8), y = (v) => h - 4 - v * (h - 8);
+        [[1, '#8b5a2b'], [2, '#1f5f99']].forEach(([col, color]) => {
+          g.strokeStyle = color; g.beginPath();
+          for (let k = 0; k < run.frames; k++) { const r = row(k); k ? g.lineTo(x(r[0]), y(r[col])) : g.moveTo(x(r[0]), y(r[col])); }
+          g.stroke();
+        });
+        g.strokeStyle = '#999';
+        for (let k = 0; k < run.frames; k++) if (row(k)[7]) { g.beginPath(); g.moveTo(x(row(k)[0]), 2); g.lineTo(x(row(k)[0]), h - 2); g.stroke(); }
+        g.strokeStyle = '#cc0000'; g.beginPath(); g.moveTo(x(row(i)[0]), 2); g.lineTo(x(row(i)[0]), h - 2); g.stroke();
+      };
+      const show = SK.coalesce(async () => {
+        if (!run) return;
+        const i = Math.max(0, Math.min(run.frames - 1, Math.round(fr.value)));
+        const r = await SK.call('sk_hirota1998_layers_frame', [i, SIZES[c.size.value][3]], ['picture', 'text']);
+        if (!SK.report(fr, r)) return;
+        SK.draw(f.canvas, r.picture);
+        const t = JSON.parse(r.text), q = row(i);
+        const cycle = Math.min(run.cycles, Math.floor(q[0] / run.T - 1e-6) + 1);
+        frameInfo.textContent = 'step ' + (i + 1) + ' of ' + run.frames + ': t = ' + q[0].toFixed(1) + ' (cycle ' + cycle + ' of ' + run.cycles + ')' +
+          (t.before_role_change ? ', just before the role change' : q[7] ? ', the roles have just shifted outward' : '') + '\n' +
+          'surface = layer born in cycle ' + t.generation_surface + ', middle (1) = layer born in cycle ' + t.generation_middle1 + '\n' +
+          'surface on the trunk ' + (100 * q[1]).toFixed(1) + ' %, of it bonded ' + (100 * q[2]).toFixed(1) + ' %\n' +
+          'broken springs: surface ' + q[3] + ', middle (1) ' + q[4] + '\nthis step: ' + q[5] + ' plates fell, ' + q[6] + ' shear springs debonded';
+        drawTimeline(i);
+      });
+      const rerun = SK.coalesce(async () => {
+        stop();
+        const z = SIZES[c.size.value];
+        const r = await SK.call('sk_hirota1998_layers_run', [z[0], z[1], z[2], c.kappa_h.value], ['floats', 'text']);
+        Object.values(c).forEach((x) => SK.clearReport(x));
+        if (!SK.report(/kappa_h/.test(r.message) ? c.kappa_h : c.size, r)) { run = null; return; }
+        run = Object.assign(JSON.parse(r.text), { rec: r.floats.data });
+        runInfo.textContent = 'native-identical run: ' + run.frames + ' steps kept (' + run.cycles + ' cycles of ' + run.steps + ', ' + run.role_changes +
+          ' role changes), ' + run.peeled + ' plates fell\nrun in ' + r.ms.toFixed(0) + ' ms (WASM, in the worker)';
+        fr.range.max = run.frames - 1; fr.box.max = run.frames - 1;
+        fr.set(Math.min(Number(fr.value), run.frames - 1));
+        await show();
+      });
+      function stop() { if (timer) clearTimeout(timer); timer = 0; play.textContent = 'play'; }
+      const tick = async () => {
+        if (!timer || !run) return;
+        const next = Math.min(run.frames - 1, Number(fr.value) + 1);
+        fr.set(next);
+        await show();
+        if (next >= run.frames - 1) { stop(); return; }
+        if (timer) timer = setTimeout(tick, 60);
+      };
+      play.addEventListener('click', () => {
+        if (timer) { stop(); return; }
+        if (run && Number(fr.value) >= run.frames - 1) fr.set(0);
+        play.textContent = 'pause';
+        timer = setTimeout(tick, 0);
+      });
+      step.addEventListener('click', () => { stop(); if (run) { fr.set(Math.min(run.frames - 1, Number(fr.value) + 1)); show(); } });
+      back.addEventListener('click', () => { stop(); if (run) { fr.set(Math.max(0, Number(fr.value) - 1)); show(); } });
+      Object.values(c).forEach((x) => { x.onchange = rerun; });
+      fr.onchange = () => { stop(); show(); };
+      panel.stop = stop;
+      fr.set(124);
+      await rerun();
+    },
+  });
 })();
