@@ -213,6 +213,7 @@ const std::vector<Case>& cases() {
         {"hirota1998 Table 2 Chinese tallow", "sk_hirota1998_species", {1}, "text"},
         {"hirota1998 tallow run: events, hash", "sk_hirota1998_run", {1, 0.0175, 1.033, 1.015, 32, 24}, "floats text"},
         {"hirota1998 tallow after 300 events", "sk_hirota1998_frame", {300, 40}, "picture"},
+        {"hirota1998 tallow all 1135 events", "sk_hirota1998_frame", {1135, 40}, "picture text"},
         {"hirota1998 Table 2 pine", "sk_hirota1998_species", {2}, "text"},
         {"hirota1998 pine run: events, hash", "sk_hirota1998_run", {2, 0.0175, 1.038, 1.023, 32, 24}, "floats text"},
         {"hirota1998 pine all 912 events", "sk_hirota1998_frame", {912, 40}, "picture text"},

@@ -15,8 +15,10 @@
 #   make web-dist   the classroom bundle: build/web-dist/ (index.html, sources/, a README for
 #                   teachers from ports/web/dist/README.md) and build/web-dist.zip of the same
 #                   (ports/web/dist/dist.py); opens from a USB stick (file://) or any static host
-#   make bench-web  bench: lines (first panel ready, slider -> new 512x512 marble frame, .wasm
-#                   size raw and gzip) against the goals of ports/web/README.md
+#   make bench-web  bench: lines (first panel ready, slider -> new 512x512 marble frame, an IST
+#                   diagram redraw, a WR surface at fig. 14's size re-tessellated and drawn, the
+#                   camphor run at 128 x 64 and its replay's frames per second, .wasm size raw
+#                   and gzip) against the goals of ports/web/README.md
 #
 # Debian's emscripten works offline as shipped. Its linker runs node scripts that need acorn
 # from Debian's node modules: NODE_PATH points there in case `node` is not Debian's.

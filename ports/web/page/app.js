@@ -398,12 +398,39 @@
     }
     const sorted = times.slice().sort((x, y) => x - y);
     const inWorker = compute.slice().sort((x, y) => x - y);
-    out.textContent = [
+    const lines = [
       'bench: first panel (' + b.id + ') ready ' + first.toFixed(0) + ' ms after navigation start (goal <= 1500 ms)',
       'bench: slider -> new ' + t.what + ' frame drawn: median ' + sorted[sorted.length >> 1].toFixed(1) + ' ms, best ' +
         sorted[0].toFixed(1) + ' ms over ' + times.length + ' moves (goal <= 33 ms)',
       'bench: of which ' + t.fn + ' in the worker (WASM): median ' + inWorker[inWorker.length >> 1].toFixed(1) + ' ms, best ' + inWorker[0].toFixed(1) + ' ms',
-    ].join('\n');
+    ];
+    // The panels' own benches (panel.benches, set by a panel's open()): {label, goal, prepare,
+    // control, values, fns} moves a slider and times each move to the next drawn frame and the
+    // named calls in the worker; {run} measures itself and returns its lines.
+    for (const p of SK.panels) {
+      await SK.open(p.id);
+      for (const bb of p.benches || []) {
+        if (bb.run) { lines.push(...(await bb.run())); continue; }
+        if (bb.prepare) await bb.prepare();
+        await SK.idle();
+        const range = p.section.querySelector('input[data-key="' + bb.control + '"]');
+        const wall = [], work = [];
+        for (const v of bb.values) {
+          const t0 = performance.now();
+          range.value = v;
+          range.dispatchEvent(new Event('input'));
+          await SK.idle();
+          wall.push(performance.now() - t0);
+          work.push(bb.fns.reduce((sum, fn) => sum + (SK.lastMs[fn] || 0), 0));
+        }
+        const med = (a) => a.slice().sort((x, y) => x - y)[a.length >> 1], best = (a) => Math.min(...a);
+        lines.push('bench: ' + bb.label + ': ' + bb.fns.join(' + ') + ' in the worker (WASM) median ' + med(work).toFixed(1) + ' ms, best ' +
+          best(work).toFixed(1) + ' ms; to the next drawn frame median ' + med(wall).toFixed(1) + ' ms, best ' + best(wall).toFixed(1) +
+          ' ms over ' + wall.length + ' moves (goal <= ' + bb.goal + ' ms)');
+      }
+      if (p.stop) p.stop();
+    }
+    out.textContent = lines.join('\n');
     document.body.dataset.bench = 'done';
   };
 

@@ -34,7 +34,7 @@
     source: 'lib/shitsukan/wrinkly/ist_axis.cpp ist_*_axis(), ist_procedure.cpp ist_divide_and_shuffle_internally() / ist_shuffle_externally(), ist_digits.cpp ist_scale_reverse_unit() / ist_scale_reverse_fully_connected(), ist_formula.cpp ist_forward(), ist_table.cpp ist_table(); diagrams by paper_figures/fujimoto2000/ist_diagram.cpp draw_ist_diagram()',
     figures: ['fujimoto2000/fig03', 'fujimoto2000/fig06a', 'fujimoto2000/fig09', 'fujimoto2000/table01'],
     interaction: { control: 'ist-u', value: 0.81, canvas: 'canvas.sk-ist' },
-    async open(body) {
+    async open(body, panel) {
       const box = SK.el('div', { class: 'sk-controls' }, body);
       const figs = SK.el('div', { class: 'sk-figs' }, body);
       const preset = SK.select(box, { label: 'figure', value: '', options: PRESETS.map(([n]) => [n, n || PRESETS[0][1]]) });
@@ -101,6 +101,12 @@
           '      formula       ' + t.back_formula;
       };
       const updateFollow = SK.coalesce(follow);
+      // make bench-web: fig. 6(a)'s diagram (N = 5, K = 3, B = 13, 5 bases shown) redrawn as u moves.
+      panel.benches = [{
+        label: 'IST diagram redraw (fig. 6(a), 1000 px, u moved)', goal: 16, control: 'ist-u',
+        values: Array.from({ length: 24 }, (_, i) => (0.02 + 0.04 * i).toFixed(3)), fns: ['sk_fujimoto2000_diagram'],
+        prepare: async () => { preset.sel.value = 'fig. 6(a)'; preset.sel.dispatchEvent(new Event('change')); },
+      }];
       Object.values(c).forEach((x) => { x.onchange = drawAxis; });
       Object.values(v).forEach((x) => { x.onchange = updateFollow; });
       preset.sel.addEventListener('change', () => {
@@ -131,7 +137,7 @@
     source: 'lib/shitsukan/wrinkly/wr_surface.cpp make_wr_surface(), wr_tessellation.cpp tessellate_wr_surface(), hierarchical_sampling.cpp sample_hierarchy(), superposition.cpp; lib/shitsukan/raster/rasterizer.cpp draw_mesh()',
     figures: ['fujimoto2000/fig14b', 'fujimoto2000/fig17a4', 'fujimoto2000/fig18a5'],
     interaction: { control: 'wr-delta', value: 0.7, canvas: 'canvas.sk-wr' },
-    async open(body) {
+    async open(body, panel) {
       const box = SK.el('div', { class: 'sk-controls' }, body);
       const figs = SK.el('div', { class: 'sk-figs' }, body);
       const c = {
@@ -159,6 +165,13 @@
           ' ms, drawn in ' + t.draw_ms.toFixed(0) + ' ms (WASM, wall clock)';
       });
       Object.values(c).forEach((x) => { x.onchange = update; });
+      // make bench-web: fig. 14(b)'s surface (IST-Bezier, unit-IST N = 3, WR eq. (15) at K = 2,
+      // 512 x 512): each new heights seed re-tessellates and redraws it.
+      panel.benches = [{
+        label: 'WR surface, fig. 14(b) size (K = 2, 512 x 512) re-tessellated and drawn', goal: 100, control: 'wr-seed',
+        values: Array.from({ length: 12 }, (_, i) => 100 + i), fns: ['sk_fujimoto2000_wr'],
+        prepare: async () => { c.figure.sel.value = 0; c.form.sel.value = 1; c.K.set(2); await update(); },
+      }];
       let drag = null;
       f.canvas.addEventListener('pointerdown', (e) => { drag = { x: e.clientX, y: e.clientY, yaw: view.yaw, pitch: view.pitch }; f.canvas.setPointerCapture(e.pointerId); });
       f.canvas.addEventListener('pointermove', (e) => {

@@ -126,6 +126,32 @@
       });
       step.addEventListener('click', () => { stop(); if (run) { ev.set(Math.min(run.events, Number(ev.value) + 1)); showFrame(); } });
       back.addEventListener('click', () => { stop(); if (run) { ev.set(Math.max(0, Number(ev.value) - 1)); showFrame(); } });
+      // make bench-web: the camphor run at the paper's 128 x 64 nodes, then its replay at the
+      // panel's pace (2 events a frame): frames per second drawn, and whether the run (computed
+      // once, before the replay starts) keeps up with the replay.
+      panel.benches = [{
+        run: async () => {
+          c.species.sel.value = 0; c.grid.sel.value = 2;
+          await speciesDefaults();
+          await SK.idle();
+          const runMs = SK.lastMs.sk_hirota1998_run, per = Number(speed.value);
+          const frame = [];
+          ev.set(0);
+          for (let i = 0; i < 60; i++) {
+            const t0 = performance.now();
+            ev.set(Math.min(run.events, (i + 1) * per));
+            await showFrame();
+            await new Promise((r) => requestAnimationFrame(r));
+            frame.push(performance.now() - t0);
+          }
+          const sorted = frame.slice().sort((x, y) => x - y), med = sorted[sorted.length >> 1];
+          const fps = 1000 / med, playS = run.events / per / Math.min(fps, 60);
+          return ['bench: camphor at 128 x 64 nodes: ' + run.events + ' events, grown and cracked in ' + runMs.toFixed(0) + ' ms (WASM, in the worker, once)',
+            'bench: camphor replay, ' + per + ' events a frame: median ' + med.toFixed(1) + ' ms a frame (best ' + sorted[0].toFixed(1) + ') = ' + fps.toFixed(1) +
+              ' frames per second (goal >= 30); the replay of all events lasts ' + playS.toFixed(1) + ' s against the run\'s ' + (runMs / 1000).toFixed(1) + ' s: ' +
+              (runMs / 1000 < playS ? 'the simulation keeps up' : 'the simulation does NOT keep up')];
+        },
+      }];
       c.species.onchange = speciesDefaults;
       [c.grid, c.sigma, c.kappa1, c.kappa2].forEach((x) => { x.onchange = rerun; });
       ev.onchange = () => { stop(); showFrame(); };
