@@ -1,4 +1,4 @@
-# ---- web: ports/web, the explorer (okada1987, okada1989, tokai1994 step by step in a browser;
+# ---- web: ports/web, the explorer (the five papers step by step in a browser, and a classroom bundle;
 # ports/web/README.md). Included from the Makefile; everything of the web port is in this file.
 #
 #   make web        installs Debian's emscripten if missing; builds build/web/: index.html (one
@@ -77,7 +77,7 @@ WASM_TEST_SKIPS := \
 # convert as printf does); clang's -Wformat names it, g++ does not.
 $(WEB_TEST_OBJS): WEB_EXTRA := -Wno-format
 
-.PHONY: web web-dist test-wasm test-web bench-web web-deps
+.PHONY: web web-dist web-screenshots test-wasm test-web bench-web web-deps
 
 web-deps:
 	$(call ensure_packages,$(WEB_REQUIRED) $(REQUIRED))
@@ -154,3 +154,7 @@ test-web: web-dist
 
 bench-web: web
 	bash ports/web/tests/bench_web.sh $(WEB_DIR)
+
+# Every panel at 1280x720 in Chromium and one in Firefox ESR, to look at (build/web/screenshots/).
+web-screenshots: web
+	bash ports/web/tests/screenshots.sh $(WEB_DIR) $(WEB_DIR)/screenshots

@@ -147,14 +147,17 @@
         K: SK.slider(box, { label: 'K (levels)', min: 0, max: 5, step: 1, value: 3, key: 'wr-K' }),
         seed: SK.slider(box, { label: 'heights seed', min: 0, max: 999, step: 1, value: 14, key: 'wr-seed' }),
       };
+      const view = {
+        yaw: SK.slider(box, { label: 'turn (yaw)', min: -3.14, max: 3.14, step: 0.01, value: 0, key: 'wr-yaw' }),
+        pitch: SK.slider(box, { label: 'tilt (pitch)', min: -1.2, max: 1.2, step: 0.01, value: 0, key: 'wr-pitch' }),
+      };
       const note = SK.el('p', { class: 'sk-note' }, box);
-      note.textContent = 'Drag the picture to turn the surface (the tessellation is kept; only the view is redrawn). The control heights h_i are chosen here (a hashed field), not the paper\'s meshes.';
+      note.textContent = 'Drag the picture (or use the turn / tilt sliders) to turn the surface (the tessellation is kept; only the view is redrawn). The control heights h_i are chosen here (a hashed field), not the paper\'s meshes.';
       const readout = SK.el('div', { class: 'sk-readout' }, box);
       const f = SK.figure(figs, 'the surface, Z-buffered and Lambert-lit by the library\'s rasterizer', 512, 512);
       f.canvas.classList.add('sk-wr');
-      const view = { yaw: 0, pitch: 0 };
       const update = SK.coalesce(async () => {
-        const r = await SK.call('sk_fujimoto2000_wr', [c.figure.value, c.form.value, c.delta.value, c.K.value, c.seed.value, view.yaw, view.pitch, 512], ['picture', 'text']);
+        const r = await SK.call('sk_fujimoto2000_wr', [c.figure.value, c.form.value, c.delta.value, c.K.value, c.seed.value, view.yaw.value, view.pitch.value, 512], ['picture', 'text']);
         const bad = /delta/.test(r.message) ? c.delta : /\bK\b|level/.test(r.message) ? c.K : /form/.test(r.message) ? c.form : c.figure;
         [c.delta, c.K, c.form, c.figure].forEach((x) => SK.clearReport(x));
         if (!SK.report(bad, r)) return;
@@ -172,15 +175,8 @@
         values: Array.from({ length: 12 }, (_, i) => 100 + i), fns: ['sk_fujimoto2000_wr'],
         prepare: async () => { c.figure.sel.value = 0; c.form.sel.value = 1; c.K.set(2); await update(); },
       }];
-      let drag = null;
-      f.canvas.addEventListener('pointerdown', (e) => { drag = { x: e.clientX, y: e.clientY, yaw: view.yaw, pitch: view.pitch }; f.canvas.setPointerCapture(e.pointerId); });
-      f.canvas.addEventListener('pointermove', (e) => {
-        if (!drag) return;
-        view.yaw = drag.yaw + (e.clientX - drag.x) * 0.01;
-        view.pitch = Math.max(-1.2, Math.min(1.2, drag.pitch + (e.clientY - drag.y) * 0.01));
-        update();
-      });
-      f.canvas.addEventListener('pointerup', () => { drag = null; });
+      Object.values(view).forEach((x) => { x.onchange = update; });
+      SK.turnable(f.canvas, view.yaw, view.pitch, update);
       await SK.call('sk_fujimoto2000_wr', [0, 0, 0.35, 1, 14, 0, 0, 64], []);  // warm-up
       await update();
     },
