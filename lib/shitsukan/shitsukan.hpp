@@ -151,6 +151,7 @@
 #include "shitsukan/bark/bark_params.hpp"
 #include "shitsukan/bark/branch_bark.hpp"
 #include "shitsukan/bark/branch_shape.hpp"
+#include "shitsukan/bark/break_loop.hpp"
 #include "shitsukan/bark/connection_area.hpp"
 #include "shitsukan/bark/crack_drawing.hpp"
 #include "shitsukan/bark/crack_events.hpp"

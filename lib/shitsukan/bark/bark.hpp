@@ -10,6 +10,8 @@
 //   §3.1, Fig. 3       cylinder_lattice.hpp  the two-layer cylinder: layout decoded from R0,
 //                                            families, thresholds, growth
 //   §3.1-3.2           crack_events.hpp      growth and cracking, one break at a time
+//                      break_loop.hpp        (the break-relax-update loop both models share,
+//                                            its observer)
 //                      event_tree.hpp        (its next-event tree, canonical ties)
 //   §3.1, Fig. 4       crack_drawing.hpp     a broken spring drawn as a crack of width l - l0
 //   Table 3            crack_regions.hpp     regions bounded by cracks, crack spacings
@@ -36,6 +38,7 @@
 #include "shitsukan/bark/bark_params.hpp"
 #include "shitsukan/bark/branch_bark.hpp"
 #include "shitsukan/bark/branch_shape.hpp"
+#include "shitsukan/bark/break_loop.hpp"
 #include "shitsukan/bark/connection_area.hpp"
 #include "shitsukan/bark/crack_drawing.hpp"
 #include "shitsukan/bark/crack_events.hpp"

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "shitsukan/bark/event_tree.hpp"
+#include "shitsukan/bark/break_loop.hpp"
 #include "shitsukan/core/hash.hpp"
 #include "shitsukan/core/scalar.hpp"
 
@@ -47,6 +47,47 @@ Status check_field(const std::vector<Vec3>& W, float t) {
 }
 }  // namespace
 
+namespace {
+// The two-layer cylinder as break_loop.hpp's model: items are the springs, a spring's value its
+// break time t_s; an event breaks it at max(t, t_s) (a cascade when t_s < t), after taking the
+// snapshots that come before it.
+struct CylinderEvents {
+    SpringNetwork* net;
+    float T;
+    const CrackRunOptions* options;
+    CrackRun* out;
+    float t = 0.0f, last_progress = 0.0f;
+    int next_snapshot = 0;
+
+    float value(std::uint32_t s) const { return break_time(*net, s); }
+    bool due(float ts) const { return ts <= T; }
+    float apply(std::uint32_t s, float ts, std::vector<std::uint32_t>& seeds) {
+        if (ts < t) ++out->cascade_breaks;  // already past its threshold: breaks now
+        t = std::max(t, ts);
+        while (next_snapshot < options->snapshot_count &&
+               options->snapshot_times[next_snapshot] < t)
+            record_snapshot(*net, options->snapshot_times[next_snapshot++],
+                            int(out->breaks.size()), out);
+        break_spring(*net, s, t);
+        out->breaks.push_back({s, t});
+        const BarkSpring& sp = net->springs[s];
+        seeds = {sp.i, sp.j};
+        canonical_order(*net, seeds.data(), 2);
+        if (options->progress && t - last_progress >= 0.05f * T) {
+            last_progress = t;
+            options->progress(t / T, options->progress_user);
+        }
+        return t;
+    }
+    // A moved node changes the break times of its intact springs.
+    void affected(const std::vector<std::uint32_t>& touched, AffectedItems& add) const {
+        for (std::uint32_t p : touched)
+            for (std::uint32_t e = net->adj_begin[p]; e < net->adj_begin[p + 1]; ++e)
+                if (net->adj[e].k > 0.0f) add(net->adj[e].s);
+    }
+};
+}  // namespace
+
 Status run_cracking(SpringNetwork& net, float T, float tol, const CrackRunOptions& options,
                     CrackRun& out) {
     if (!(is_finite(T) && T > 0.0f) || !(is_finite(tol) && tol > 0.0f))
@@ -73,57 +114,11 @@ Status run_cracking(SpringNetwork& net, float T, float tol, const CrackRunOption
     // The intact network's equilibrium at unit growth (free edges make W != 0 from the start).
     SHITSUKAN_TRY(solve_full(net, tol, 100000));
 
-    EventTree tree(net.springs.size(), [&](std::uint32_t s) { return net.springs[s].key; });
-    {
-        std::vector<float> times(net.springs.size());
-        for (std::size_t s = 0; s < times.size(); ++s)
-            times[s] = break_time(net, std::uint32_t(s));
-        tree.set_all(times.data());
-    }
-    std::vector<std::uint32_t> touched, dirty;
-    std::vector<float> dirty_times;
-    std::vector<std::uint8_t> is_dirty(net.springs.size(), 0);
-    int next_snapshot = 0;
-    float t = 0.0f, last_progress = 0.0f;
-    for (;;) {
-        const std::uint32_t s = tree.top();
-        const float ts = tree.time(s);
-        if (!(ts <= T)) break;
-        if (ts < t) ++out.cascade_breaks;  // already past its threshold: breaks now
-        t = std::max(t, ts);
-        while (next_snapshot < options.snapshot_count &&
-               options.snapshot_times[next_snapshot] < t)
-            record_snapshot(net, options.snapshot_times[next_snapshot++],
-                            int(out.breaks.size()), &out);
-
-        // Break it, re-solve the neighbourhood, update the events of the springs that moved.
-        break_spring(net, s, t);
-        out.breaks.push_back({s, t});
-        tree.set(s, kNever);
-        const BarkSpring& sp = net.springs[s];
-        std::uint32_t seeds[2] = {sp.i, sp.j};
-        canonical_order(net, seeds, 2);
-        touched.clear();
-        SHITSUKAN_TRY(relax(net, seeds, 2, tol, &touched));
-        dirty.clear();
-        dirty_times.clear();
-        for (std::uint32_t p : touched)
-            for (std::uint32_t e = net.adj_begin[p]; e < net.adj_begin[p + 1]; ++e) {
-                const std::uint32_t d = net.adj[e].s;
-                if (net.adj[e].k > 0.0f && !is_dirty[d]) {
-                    is_dirty[d] = 1;
-                    dirty.push_back(d);
-                    dirty_times.push_back(break_time(net, d));
-                }
-            }
-        for (std::uint32_t d : dirty) is_dirty[d] = 0;
-        tree.set_many(dirty, dirty_times);
-
-        if (options.progress && t - last_progress >= 0.05f * T) {
-            last_progress = t;
-            options.progress(t / T, options.progress_user);
-        }
-    }
+    CylinderEvents model{&net, T, &options, &out};
+    BreakLoop loop;
+    loop.load(net.spring_count(), [&net](std::uint32_t s) { return net.springs[s].key; }, model);
+    SHITSUKAN_TRY(loop.run(net, model, tol, options.observer));
+    int next_snapshot = model.next_snapshot;
     while (next_snapshot < options.snapshot_count)
         record_snapshot(net, options.snapshot_times[next_snapshot++], int(out.breaks.size()),
                         &out);

@@ -17,15 +17,19 @@
 // and there is no time step: jump to it, break it, re-solve around it (relax), update the t_s
 // of the springs that moved, repeat until T. A spring already past its threshold after a
 // re-solve breaks "now" (a cascade). Ties go to the smaller canonical key, never to storage
-// order. A min-tree over the springs gives the next event in O(log n).
+// order. The loop (next event, break, relax, update) is break_loop.hpp's, shared with the
+// four-layer bark; a min-tree over the springs gives the next event in O(log n).
 //
 // Snapshots: the displacement field W valid at each requested time (before the breaks that
-// come later), so a figure can draw the bark at 0.6 T, 0.75 T, ... from one run.
+// come later), so a figure can draw the bark at 0.6 T, 0.75 T, ... from one run. An observer
+// (break_loop.hpp) sees every break after its re-solve, in the order of `breaks`, one call
+// each (item = the spring, t = its time): W then is the field valid until the next break.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "shitsukan/bark/break_loop.hpp"
 #include "shitsukan/bark/cylinder_lattice.hpp"
 #include "shitsukan/bark/spring_network.hpp"
 
@@ -50,6 +54,7 @@ struct CrackRunOptions {
     int snapshot_count = 0;
     BarkProgress progress = nullptr;
     void* progress_user = nullptr;
+    BreakObserver observer;  // optional: each break, after its re-solve
 };
 
 struct CrackRun {

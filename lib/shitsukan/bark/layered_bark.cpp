@@ -6,7 +6,6 @@
 #include <cstring>
 #include <limits>
 
-#include "shitsukan/bark/event_tree.hpp"
 #include "shitsukan/core/detmath.hpp"
 #include "shitsukan/core/hash.hpp"
 #include "shitsukan/core/scalar.hpp"
@@ -80,7 +79,6 @@ Status LayeredBark::build(const LayeredParams& params) {
     cp.sigma = params.sigma;
     cp.seed = params.seed;
     SHITSUKAN_TRY(build_cylinder(cp, lattice_));
-    events_ = EventTree();  // break_until_stable builds it for this lattice
     n_ = lattice_.net.node_count();
     m_ = lattice_.net.spring_count();
 
@@ -208,80 +206,68 @@ void LayeredBark::break_surface_spring(int s, float t) {
     if (net_.springs[ns].intact()) break_spring(net_, ns, t);
 }
 
+// The four-layer bark as break_loop.hpp's model, within one step at time t: items are the
+// lattice springs of both layers, then one shear tie per node; an item's value is 1 / (its
+// strain over its threshold), due below 1, so the largest ratio goes first. A spring event
+// breaks that spring; a tie event debonds every surface node past its threshold together.
+struct LayeredBark::Events {
+    LayeredBark* bark;
+    float t;
+
+    float value(std::uint32_t i) const {
+        const int m2 = 2 * bark->m_;
+        const float ratio =
+            int(i) < m2 ? bark->tension_ratio(int(i)) : bark->shear_ratio(int(i) - m2);
+        return ratio > 0.0f ? 1.0f / ratio : kNever;
+    }
+    bool due(float v) const { return v < 1.0f; }  // some ratio > 1
+    float apply(std::uint32_t top, float, std::vector<std::uint32_t>& seeds) {
+        SpringNetwork& net = bark->net_;
+        if (top < std::uint32_t(2 * bark->m_)) {
+            const BarkSpring& sp = net.springs[top];
+            break_spring(net, top, t);
+            seeds = {std::min(sp.i, sp.j), std::max(sp.i, sp.j)};
+            return t;
+        }
+        for (int p = 0; p < bark->n_; ++p)
+            if (bark->shear_ratio(p) > 1.0f) {
+                bark->debond(p);
+                ++bark->step_debonded_;
+                seeds.push_back(std::uint32_t(bark->lattice_node(0, p)));
+                seeds.push_back(std::uint32_t(bark->lattice_node(1, p)));
+            }
+        std::sort(seeds.begin(), seeds.end());
+        return t;
+    }
+    // A moved node changes its tie's shear ratio and its lattice springs' tension ratios.
+    void affected(const std::vector<std::uint32_t>& touched, AffectedItems& add) const {
+        const SpringNetwork& net = bark->net_;
+        const std::uint32_t m2 = std::uint32_t(2 * bark->m_), n = std::uint32_t(bark->n_);
+        for (std::uint32_t q : touched) {
+            add(m2 + q % n);  // its tie
+            for (std::uint32_t e = net.adj_begin[q]; e < net.adj_begin[q + 1]; ++e)
+                if (net.adj[e].s < m2) add(net.adj[e].s);
+        }
+    }
+};
+
 // Springs past their threshold break one at a time, largest ratio first; shear springs past
-// theirs debond together.
+// theirs debond together (break_loop.hpp). Growth, drying and peeling since the last call
+// changed ratios anywhere: every value is reloaded first (only the changed leaves re-sorted).
 Status LayeredBark::break_until_stable(float t) {
     const int items = 2 * m_ + n_;  // lattice springs of both layers, then one tie per node
-    auto value = [&](int i) {
-        const float ratio = i < 2 * m_ ? tension_ratio(i) : shear_ratio(i - 2 * m_);
-        return ratio > 0.0f ? 1.0f / ratio : kNever;
-    };
-    std::vector<std::uint32_t> dirty;
-    std::vector<float> dirty_values;
-    if (events_.size() != items) {  // the first call: the whole tree, once per run
-        std::vector<std::uint64_t> keys(static_cast<std::size_t>(items));
+    Events model{this, t};
+    std::vector<std::uint64_t> keys;
+    if (loop_.tree().size() != items) {  // the first call: the tree's ties, once per run
+        keys.resize(std::size_t(items));
         for (int i = 0; i < items; ++i)
             keys[std::size_t(i)] = i < 2 * m_ ? net_.springs[std::size_t(i)].key
                                               : (std::uint64_t(3) << 60) | (std::uint64_t(i - 2 * m_) << 1);
-        events_ = EventTree(std::size_t(items), [keys](std::uint32_t i) { return keys[i]; });
-        std::vector<float> v(static_cast<std::size_t>(items));
-        for (int i = 0; i < items; ++i) v[std::size_t(i)] = value(i);
-        events_.set_all(v.data());
-    } else {
-        // Growth, drying and peeling since the last call changed ratios anywhere: every value
-        // is recomputed, but only the leaves whose value changed (bit for bit) are re-sorted,
-        // so the tree equals a fresh one without rebuilding its inner nodes.
-        for (int i = 0; i < items; ++i) {
-            const float v = value(i), old = events_.time(std::uint32_t(i));
-            if (std::memcmp(&v, &old, sizeof v) != 0)
-                dirty.push_back(std::uint32_t(i)), dirty_values.push_back(v);
-        }
-        events_.set_many(dirty, dirty_values);
     }
-    EventTree& tree = events_;
-    std::vector<std::uint8_t>& mark = event_mark_;
-    if (mark.size() != std::size_t(items)) mark.assign(std::size_t(items), 0);  // left all 0
-    auto refresh = [&]() {
-        dirty.clear();
-        dirty_values.clear();
-        auto add = [&](std::uint32_t i) {
-            if (mark[i]) return;
-            mark[i] = 1;
-            dirty.push_back(i);
-            dirty_values.push_back(value(int(i)));
-        };
-        for (std::uint32_t q : touched_) {
-            add(std::uint32_t(2 * m_) + q % std::uint32_t(n_));  // its tie
-            for (std::uint32_t e = net_.adj_begin[q]; e < net_.adj_begin[q + 1]; ++e)
-                if (net_.adj[e].s < std::uint32_t(2 * m_)) add(net_.adj[e].s);
-        }
-        for (std::uint32_t i : dirty) mark[i] = 0;
-        tree.set_many(dirty, dirty_values);
-    };
-    for (int guard = 0; guard <= items; ++guard) {
-        const std::uint32_t top = tree.top();
-        if (!(tree.time(top) < 1.0f)) return Status::success();  // every ratio <= 1
-        std::vector<std::uint32_t> seeds;
-        if (top < std::uint32_t(2 * m_)) {
-            const BarkSpring& sp = net_.springs[top];
-            break_spring(net_, top, t);
-            seeds = {std::min(sp.i, sp.j), std::max(sp.i, sp.j)};
-        } else {
-            for (int p = 0; p < n_; ++p)
-                if (shear_ratio(p) > 1.0f) {
-                    debond(p);
-                    ++step_debonded_;
-                    seeds.push_back(std::uint32_t(lattice_node(0, p)));
-                    seeds.push_back(std::uint32_t(lattice_node(1, p)));
-                }
-            std::sort(seeds.begin(), seeds.end());
-        }
-        touched_.clear();
-        SHITSUKAN_TRY(relax(net_, seeds.data(), int(seeds.size()), tol_, &touched_));
-        refresh();
-    }
-    return Status::error(StatusCode::not_supported, "layered bark: breaking did not settle at t = %g",
-                         double(t));
+    loop_.load(items, [keys](std::uint32_t i) { return keys[i]; }, model);
+    const Status s = loop_.run(net_, model, tol_, observer_);
+    if (!s) return Status::error(s.code(), "layered bark at t = %g: %s", double(t), s.message());
+    return s;
 }
 
 // §4.2: the drying zone is everything within eta of a crack or of a debonded or peeled place.

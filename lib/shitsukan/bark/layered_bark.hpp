@@ -43,14 +43,19 @@
 // Driver (chosen here): quasi-static in fixed steps of T/steps_per_cycle (drying, area rules
 // and role changes do not fit an event list); within a step, springs past their threshold
 // break one at a time (largest ratio first, the equilibrium re-solved around each), shear
-// springs past theirs debond together. Deterministic: hashed thresholds, canonical ties.
+// springs past theirs debond together: the two-layer cylinder's loop (break_loop.hpp), with
+// ratios for times. Deterministic: hashed thresholds, canonical ties. An observer (set after
+// build) sees each of these events after its re-solve: item < 2·(springs per layer) is that
+// network spring broken (the surface's slot: frames' generation tells which), otherwise the
+// debonding of every surface node then past its critical shear strain (seeds: their nodes).
+// Springs cut when a region falls off are not loop events (the frames and record show them).
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "shitsukan/bark/cylinder_lattice.hpp"
-#include "shitsukan/bark/event_tree.hpp"
+#include "shitsukan/bark/break_loop.hpp"
 #include "shitsukan/bark/layer_schedule.hpp"
 #include "shitsukan/bark/spring_network.hpp"
 
@@ -122,6 +127,10 @@ public:
     const BarkCylinder& lattice() const { return lattice_; }  // topology, areas (one layer)
     const std::vector<LayeredStep>& record() const { return record_; }
     const std::vector<LayerFrame>& frames() const { return frames_; }
+    // Every break and debonding of the loop, in order, after its re-solve (call after build).
+    void observe(const BreakObserver& observer) { observer_ = observer; }
+    int loop_events() const { return loop_.events(); }
+    int surface_slot() const { return surface_slot_; }  // network nodes [slot·n, (slot+1)·n)
     int regions_peeled_in_cycle(int cycle) const;
 
     // Pieces, public for the tests and for teaching:
@@ -167,8 +176,9 @@ private:
     std::vector<LayeredStep> record_;
     std::vector<LayerFrame> frames_;
     std::vector<std::uint32_t> touched_;
-    EventTree events_;                      // break_until_stable's next break, kept across calls
-    std::vector<std::uint8_t> event_mark_;  // its scratch: leaves already refreshed
+    struct Events;                          // this bark as break_loop.hpp's model
+    BreakLoop loop_;                        // break_until_stable's loop, its tree kept across calls
+    BreakObserver observer_;
     int step_peeled_ = 0, step_debonded_ = 0;
 };
 
