@@ -101,6 +101,9 @@ const std::map<std::string, Call>& functions() {
          [](const Args& a) { return sk_hirota1998_layers_run(int(a[0]), int(a[1]), int(a[2]), float(a[3])); }},
         {"sk_hirota1998_layers_frame",
          [](const Args& a) { return sk_hirota1998_layers_frame(int(a[0]), float(a[1])); }},
+        {"sk_hirota1998_layers_events", [](const Args&) { return sk_hirota1998_layers_events(); }},
+        {"sk_hirota1998_layers_event",
+         [](const Args& a) { return sk_hirota1998_layers_event(int(a[0]), float(a[1])); }},
         {"sk_hirota1998_branch_run",
          [](const Args& a) {
              return sk_hirota1998_branch_run(float(a[0]), float(a[1]), float(a[2]), float(a[3]), float(a[4]));
@@ -224,6 +227,10 @@ const std::vector<Case>& cases() {
         {"hirota1998 four layers, after role change 1", "sk_hirota1998_layers_frame", {50, 16}, "picture text"},
         {"hirota1998 four layers, cycle 3 mid", "sk_hirota1998_layers_frame", {127, 16}, "picture text"},
         {"hirota1998 four layers, the end", "sk_hirota1998_layers_frame", {202, 16}, "picture text"},
+        {"hirota1998 four layers: every loop event, in order", "sk_hirota1998_layers_events", {}, "floats"},
+        {"hirota1998 four layers at event 0", "sk_hirota1998_layers_event", {0, 16}, "picture text"},
+        {"hirota1998 four layers at event 100", "sk_hirota1998_layers_event", {100, 16}, "picture text"},
+        {"hirota1998 four layers at event 400", "sk_hirota1998_layers_event", {400, 16}, "picture text"},
         {"hirota1998 four layers frame past the end refused", "sk_hirota1998_layers_frame", {203, 16}, "status"},
         {"hirota1998 branch view before a run refused", "sk_hirota1998_branch_view", {20, 0, 0, 0, 256}, "status"},
         {"hirota1998 fig. 11 branch run (L0 0.6)", "sk_hirota1998_branch_run", {0.6, 0.01, 0.05, 1.015, 0.0175}, "floats text"},

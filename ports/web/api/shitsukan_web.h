@@ -76,6 +76,8 @@ int sk_hirota1998_frame(int event, float px_per_cm);
 /* api_hirota1998_layers.cpp */
 int sk_hirota1998_layers_run(int n_r, int n_h, int cycles, float kappa_h);
 int sk_hirota1998_layers_frame(int index, float px_per_cm);
+int sk_hirota1998_layers_events(void);
+int sk_hirota1998_layers_event(int event, float px_per_cm);
 
 /* api_hirota1998_branch.cpp */
 int sk_hirota1998_branch_run(float edge_length, float r_h, float r_n, float kappa, float sigma);

@@ -239,7 +239,7 @@
     cite: 'hirota1998 §4.1-4.2, figs. 6-8: surface, middle (1), middle (2), inner; middle (2) grows to middle (1)\'s thickness in one cycle T, then the roles shift outward (Fig. 7); the surface cracks, dries near its cracks and peels when the interlayer shear strain passes kappa_h (Table 4); a plate falls when its lifted area is large enough',
     source: 'lib/shitsukan/bark/layered_bark.cpp LayeredBark::build() / run(), layer_schedule.cpp; paper_figures/hirota1998/layer_frame_draw.cpp draw_layer_frame() (fig. 8\'s frames); ports/web/api/api_hirota1998_layers.cpp',
     figures: ['hirota1998/fig08'],
-    interaction: { control: 'layers-frame', value: 120, canvas: 'canvas.sk-layers' },
+    interaction: { control: 'layers-event', value: 300, canvas: 'canvas.sk-layers' },
     async open(body, panel) {
       const box = SK.el('div', { class: 'sk-controls' }, body);
       const figs = SK.el('div', { class: 'sk-figs' }, body);
@@ -249,12 +249,14 @@
         kappa_h: SK.slider(box, { label: 'kappa_h (Table 4)', min: 0.01, max: 0.2, step: 0.005, value: 0.08, key: 'layers-kappa-h' }),
       };
       const runInfo = SK.el('div', { class: 'sk-readout' }, box);
-      SK.el('h4', {}, box, 'The run, step by step (T / 50 a step)');
+      SK.el('h4', {}, box, 'The run: by time (T / 50 a step) or event by event');
       const fr = SK.slider(box, { label: 'time (step)', min: 0, max: 1, step: 1, value: 0, key: 'layers-frame' });
+      const evs = SK.slider(box, { label: 'event', min: 0, max: 1, step: 1, value: 0, key: 'layers-event' });
+      const speed = SK.slider(box, { label: 'events / frame', min: 1, max: 40, step: 1, value: 3, key: 'layers-speed' });
       const bar = SK.el('div', { class: 'sk-control' }, box);
       const play = SK.el('button', { type: 'button' }, bar, 'play');
-      const step = SK.el('button', { type: 'button' }, bar, 'step');
-      const back = SK.el('button', { type: 'button' }, bar, 'back');
+      const step = SK.el('button', { type: 'button' }, bar, 'step one event');
+      const back = SK.el('button', { type: 'button' }, bar, 'back one');
       const frameInfo = SK.el('div', { class: 'sk-readout' }, box);
       const f = SK.figure(figs, 'the unrolled bark patch: surface bonded (dark brown), lifted (pale), middle (1) exposed where the surface fell off (orange); black: cracks of each layer', 480, 300);
       f.canvas.classList.add('sk-layers');
@@ -276,19 +278,40 @@
         for (let k = 0; k < run.frames; k++) if (row(k)[7]) { g.beginPath(); g.moveTo(x(row(k)[0]), 2); g.lineTo(x(row(k)[0]), h - 2); g.stroke(); }
         g.strokeStyle = '#cc0000'; g.beginPath(); g.moveTo(x(row(i)[0]), 2); g.lineTo(x(row(i)[0]), h - 2); g.stroke();
       };
+      const KIND = ['a spring of the surface broke', 'a spring of middle (1) broke', 'surface nodes debonded (peeling starts)'];
+      const eventsUpTo = (i) => { let k = 0; while (k < run.events && run.ev[4 * k + 3] <= i) k++; return k; };
+      const roles = (t) => 'surface = layer born in cycle ' + t.generation_surface + ', middle (1) = layer born in cycle ' + t.generation_middle1;
+      const recordText = (i) => {
+        const q = row(i);
+        return 'surface on the trunk ' + (100 * q[1]).toFixed(1) + ' %, of it bonded ' + (100 * q[2]).toFixed(1) + ' %\n' +
+          'broken springs: surface ' + q[3] + ', middle (1) ' + q[4] + '\nthis step: ' + q[5] + ' plates fell, ' + q[6] + ' shear springs debonded';
+      };
+      const cycleOf = (t) => Math.min(run.cycles, Math.floor(t / run.T - 1e-6) + 1);
+      let mode = 'step';
       const show = SK.coalesce(async () => {
         if (!run) return;
+        if (mode === 'event') {
+          const e = Math.max(0, Math.min(run.events, Math.round(evs.value)));
+          const r = await SK.call('sk_hirota1998_layers_event', [e, SIZES[c.size.value][3]], ['picture', 'text']);
+          if (!SK.report(evs, r)) return;
+          SK.draw(f.canvas, r.picture);
+          const t = JSON.parse(r.text);
+          fr.set(Math.max(0, t.frame - (e ? 0 : 1)));
+          frameInfo.textContent = 'event ' + e + ' of ' + run.events + (e ? ' at t = ' + t.t.toFixed(1) + ' (cycle ' + cycleOf(t.t) + '): ' + KIND[t.kind] + (t.kind < 2 ? ' (red square)' : '') : ': the patch before any growth') + '\n' +
+            roles(t) + '\ncracks and debonds of this step so far on the step\'s start; plates fall and roles change at the step\'s end\n' +
+            (e ? 'at the end of this step: ' + recordText(t.frame) : '');
+          drawTimeline(Math.max(0, t.frame));
+          return;
+        }
         const i = Math.max(0, Math.min(run.frames - 1, Math.round(fr.value)));
         const r = await SK.call('sk_hirota1998_layers_frame', [i, SIZES[c.size.value][3]], ['picture', 'text']);
         if (!SK.report(fr, r)) return;
         SK.draw(f.canvas, r.picture);
         const t = JSON.parse(r.text), q = row(i);
-        const cycle = Math.min(run.cycles, Math.floor(q[0] / run.T - 1e-6) + 1);
-        frameInfo.textContent = 'step ' + (i + 1) + ' of ' + run.frames + ': t = ' + q[0].toFixed(1) + ' (cycle ' + cycle + ' of ' + run.cycles + ')' +
-          (t.before_role_change ? ', just before the role change' : q[7] ? ', the roles have just shifted outward' : '') + '\n' +
-          'surface = layer born in cycle ' + t.generation_surface + ', middle (1) = layer born in cycle ' + t.generation_middle1 + '\n' +
-          'surface on the trunk ' + (100 * q[1]).toFixed(1) + ' %, of it bonded ' + (100 * q[2]).toFixed(1) + ' %\n' +
-          'broken springs: surface ' + q[3] + ', middle (1) ' + q[4] + '\nthis step: ' + q[5] + ' plates fell, ' + q[6] + ' shear springs debonded';
+        evs.set(eventsUpTo(i));
+        frameInfo.textContent = 'step ' + (i + 1) + ' of ' + run.frames + ': t = ' + q[0].toFixed(1) + ' (cycle ' + cycleOf(q[0]) + ' of ' + run.cycles + ')' +
+          (t.before_role_change ? ', just before the role change' : q[7] ? ', the roles have just shifted outward' : '') + ', after ' + evs.value + ' events\n' +
+          roles(t) + '\n' + recordText(i);
         drawTimeline(i);
       });
       const rerun = SK.coalesce(async () => {
@@ -300,29 +323,38 @@
         run = Object.assign(JSON.parse(r.text), { rec: r.floats.data });
         runInfo.textContent = 'native-identical run: ' + run.frames + ' steps kept (' + run.cycles + ' cycles of ' + run.steps + ', ' + run.role_changes +
           ' role changes), ' + run.peeled + ' plates fell\nrun in ' + r.ms.toFixed(0) + ' ms (WASM, in the worker)';
+        const ev = await SK.call('sk_hirota1998_layers_events', [], ['floats']);
+        if (!SK.report(c.size, ev)) { run = null; return; }
+        run.ev = ev.floats.data;
+        runInfo.textContent += '\n' + run.events + ' events of the break loop (as the native run: count and order), seen by the library\'s observer';
         fr.range.max = run.frames - 1; fr.box.max = run.frames - 1;
+        evs.range.max = run.events; evs.box.max = run.events;
         fr.set(Math.min(Number(fr.value), run.frames - 1));
+        mode = 'step';
         await show();
       });
       function stop() { if (timer) clearTimeout(timer); timer = 0; play.textContent = 'play'; }
       const tick = async () => {
         if (!timer || !run) return;
-        const next = Math.min(run.frames - 1, Number(fr.value) + 1);
-        fr.set(next);
+        const next = Math.min(run.events, Number(evs.value) + Number(speed.value));
+        evs.set(next);
+        mode = 'event';
         await show();
-        if (next >= run.frames - 1) { stop(); return; }
-        if (timer) timer = setTimeout(tick, 60);
+        if (next >= run.events) { stop(); return; }
+        if (timer) timer = setTimeout(tick, 30);
       };
       play.addEventListener('click', () => {
         if (timer) { stop(); return; }
-        if (run && Number(fr.value) >= run.frames - 1) fr.set(0);
+        if (run && Number(evs.value) >= run.events) evs.set(0);
         play.textContent = 'pause';
         timer = setTimeout(tick, 0);
       });
-      step.addEventListener('click', () => { stop(); if (run) { fr.set(Math.min(run.frames - 1, Number(fr.value) + 1)); show(); } });
-      back.addEventListener('click', () => { stop(); if (run) { fr.set(Math.max(0, Number(fr.value) - 1)); show(); } });
+      const move = (d) => { stop(); if (run) { evs.set(Math.max(0, Math.min(run.events, Number(evs.value) + d))); mode = 'event'; show(); } };
+      step.addEventListener('click', () => move(1));
+      back.addEventListener('click', () => move(-1));
       Object.values(c).forEach((x) => { x.onchange = rerun; });
-      fr.onchange = () => { stop(); show(); };
+      fr.onchange = () => { stop(); mode = 'step'; show(); };
+      evs.onchange = () => { stop(); mode = 'event'; show(); };
       panel.stop = stop;
       fr.set(124);
       await rerun();
