@@ -307,6 +307,7 @@ int main(int argc, char** argv) {
                 return 1;
             }
             if (o == "picture" && sk_picture_width() == 0) ++failures;
+            if (o == "text") std::printf("selftest-text: %s: %s\n", c.name, sk_text());
             std::printf("selftest: %-45s %-8s %s\n", c.name, o.c_str(), hex(h).c_str());
             hashes += std::string(hashes.empty() ? "" : ", ") + "\"" + o + "\": \"" + hex(h) + "\"";
         }

@@ -357,6 +357,9 @@
       const drawn = Array.from(canvases).filter((c) => SK.canvasHash(c) !== 'empty').length;
       lines.push('panel ' + p.id + ': ready in ' + (performance.now() - t0).toFixed(0) + ' ms, ' + canvases.length + ' canvases');
       if (!canvases.length || !drawn) { ok = false; lines.push('FAIL panel ' + p.id + ' drew nothing'); }
+      // An animated panel's event count (its event slider's end): test_web.sh compares it with
+      // the native run's at the same (default) settings.
+      if (p.eventCount) lines.push('events ' + p.id + ' ' + p.eventCount());
     }
     for (const p of SK.panels.filter((q) => q.interaction)) {
       await SK.open(p.id);

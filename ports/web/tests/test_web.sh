@@ -7,6 +7,7 @@
 #     and writes PASS/FAIL into the DOM; any difference fails
 #  3. index.html#interaction: every panel opens and draws, a slider changes the picture and
 #     its hash; a console error or uncaught exception on any panel fails
+#     and the animated panels' event counts must equal the native runs' at the same settings
 #  4. Firefox ESR (bidi.js, WebDriver BiDi): the same self-test must PASS, and a panel opened at
 #     1280x720 must draw (screenshot WEB_DIR/firefox.png)
 #  5. the classroom bundle ZIP (make web-dist), unpacked and opened from disk (test_dist.sh)
@@ -34,6 +35,20 @@ run() {  # run NAME URL-HASH DATASET-KEY [DRIVER]
 }
 run selftest selftest selftest
 run interaction interaction interaction
+# The animations' event counts (each panel's event slider at its default settings) against the
+# native runs of the same settings (native_reference's text of the run).
+events() {  # events PANEL NATIVE-CASE
+  local page_n native_n
+  page_n=$(sed -n "s/^events $1 //p" "$web/test_interaction.txt")
+  native_n=$(grep -F "selftest-text: $2: " "$web/native_reference.txt" | sed 's/.*"events":\([0-9]*\).*/\1/')
+  if [ -z "$page_n" ] || [ "$page_n" != "$native_n" ]; then
+    echo "test-web: $1 animates ${page_n:-?} events, the native run has ${native_n:-?} ($2)"; return 1
+  fi
+  echo "test-web: events: $1 animates $page_n events = the native run's ($2)"
+}
+events hirota1998-growth "hirota1998 camphor run: events, hash"
+events hirota1998-layers "hirota1998 figs. 6-8 four layers 24 x 16, 4 cycles"
+events hirota1998-branch "hirota1998 fig. 11 branch run (L0 0.6)"
 # Firefox ESR: the self-test's hashes, then one panel drawn at 1280x720 (looked at by a person:
 # WEB_DIR/firefox.png). `firefox-esr --headless --screenshot` shoots at the load event, before
 # the worker has drawn anything, so bidi.js waits for the panel instead.

@@ -156,6 +156,7 @@
       [c.grid, c.sigma, c.kappa1, c.kappa2].forEach((x) => { x.onchange = rerun; });
       ev.onchange = () => { stop(); showFrame(); };
       panel.stop = stop;
+      panel.eventCount = () => Number(ev.range.max);
       await speciesDefaults();
     },
   });
@@ -229,6 +230,7 @@
       [v.view, v.yaw, v.pitch].forEach((x) => { x.onchange = draw; });
       SK.turnable(f.canvas, v.yaw, v.pitch, draw);
       panel.stop = stop;
+      panel.eventCount = () => (run ? run.events : -1);
       await rerun();
     },
   });
@@ -356,6 +358,7 @@
       fr.onchange = () => { stop(); mode = 'step'; show(); };
       evs.onchange = () => { stop(); mode = 'event'; show(); };
       panel.stop = stop;
+      panel.eventCount = () => Number(evs.range.max);
       fr.set(124);
       await rerun();
     },
