@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "driver/figure.hpp"
+#include "fujimoto2000/terrain_mesh.hpp"
 #include "fujimoto2000/wr_figure_common.hpp"
 #include "shitsukan/core/detmath.hpp"
 #include "shitsukan/core/hash.hpp"
@@ -25,10 +26,9 @@ namespace {
 using figures::FigureContext;
 using figures::fmt;
 
-// The three deltas of (e), (f), (g) (chosen: the paper does not print them) and the "not
-// superposed" delta of the green part.
+// The three deltas of (e), (f), (g) (chosen: the paper does not print them); the green part's
+// "not superposed" delta is kTerrainDeltaGreen (terrain_mesh.hpp, with the control mesh).
 constexpr float kDeltas[3] = {0.35f, 0.55f, 0.75f};
-constexpr float kDeltaGreen = 0.02f;
 // §5: "to add naturalness, Gaussian random numbers are given to the sample values" (chosen
 // deviations: the paper gives none). Only the sampled panels (e)-(g) have samples.
 constexpr float kJitterHeight = 0.12f, kJitterColor = 0.035f;
@@ -36,52 +36,8 @@ constexpr float kJitterHeight = 0.12f, kJitterColor = 0.035f;
 // The camera looks diagonally across the parameter grid (from +x +z, 45 degrees to both
 // parameter directions, so neither the u nor the v stripes of the product IST line up with
 // the view), from above; the light comes from above. Screen "right" is +x -z, "front" +x +z.
-const Shot kShot{{5.4f, 4.6f, 5.4f}, {-0.3f, 0.3f, -0.3f}, {0, 1, 0}, 41.0f};
-const Vec3 kLight{0.25f, 1.0f, 0.45f};
-
-float screen_right(float x, float z) { return 0.7071f * (x - z); }
-float screen_front(float x, float z) { return 0.7071f * (x + z); }
-
-// 1 in the field at the front right (as seen by kShot), 0 in the mountains.
-float green_mask(float x, float z) {
-    return clamp((screen_right(x, z) - 0.5f) * 1.1f, 0.0f, 1.0f) *
-           clamp((screen_front(x, z) + 0.6f) * 1.1f, 0.0f, 1.0f);
-}
-
-// Chosen: 10 x 10 control points (7 x 7 spans) on [-3, 3]^2, flat base; a massif at the back,
-// a second range to the left, a low green field at the front right. Colour per control point
-// varies along both parameters: the height band (grass, rock, snow), a hashed tint per point
-// and a slow drift (warmer rock towards +x, cooler towards +z); hashed variation seed 21.
-WrControlMesh terrain_mesh(float delta) {
-    const int n = 10;
-    WrControlMesh m = make_control_mesh(n, n);
-    for (int r = 0; r < n; ++r)
-        for (int c = 0; c < n; ++c) {
-            WrControlPoint& p = m.at(c, r);
-            const float x = -3.0f + 6.0f * float(c) / float(n - 1);
-            const float z = 3.0f - 6.0f * float(r) / float(n - 1);
-            const float g = green_mask(x, z);
-            float h =
-                1.9f *
-                    det_expf(-((x + 0.9f) * (x + 0.9f) / 1.6f + (z + 1.0f) * (z + 1.0f) / 1.6f)) +
-                1.1f *
-                    det_expf(-((x + 2.0f) * (x + 2.0f) / 0.8f + (z - 1.2f) * (z - 1.2f) / 1.4f)) +
-                0.3f * hash_uniform(21, 0, c, r);
-            h = (1.0f - g) * h + g * (0.06f + 0.08f * hash_uniform(21, 1, c, r));
-            p.position = {x, 0.0f, z};
-            p.height = h;
-            const float warm =
-                0.5f + 0.08f * x - 0.06f * z + 0.25f * (hash_uniform(21, 2, c, r) - 0.5f);
-            const Vec3 grass = lerp(Vec3{0.30f, 0.50f, 0.22f}, Vec3{0.50f, 0.55f, 0.25f}, warm);
-            const Vec3 rock = lerp(Vec3{0.42f, 0.42f, 0.44f}, Vec3{0.60f, 0.47f, 0.36f}, warm);
-            const Vec3 snow{0.96f, 0.96f, 0.98f};
-            Vec3 col = h < 0.6f ? lerp(grass, rock, h / 0.6f)
-                                : lerp(rock, snow, clamp((h - 1.0f) / 0.6f, 0.0f, 1.0f));
-            p.color = lerp(col, Vec3{0.28f, 0.62f, 0.20f}, g);
-            p.delta = (1.0f - g) * delta + g * kDeltaGreen;
-        }
-    return m;
-}
+const Shot kShot{kTerrainEye, kTerrainTarget, {0, 1, 0}, kTerrainFovDegrees};
+const Vec3 kLight = kTerrainLight;
 
 struct Panel {
     char id;
@@ -116,10 +72,10 @@ TerrainMeasure measure_terrain(const WrSurface& surface, const WrMesh& wm) {
         sum += h;
         sum_plain += hp;
         ++n;
-        if (green_mask(b.position.x, b.position.z) > 0.99f) {
+        if (terrain_green_mask(b.position.x, b.position.z) > 0.99f) {
             sg += double(d) * d;
             ++ng;
-        } else if (green_mask(b.position.x, b.position.z) == 0.0f) {
+        } else if (terrain_green_mask(b.position.x, b.position.z) == 0.0f) {
             sm += double(d) * d;
             ++nm;
         }
@@ -132,7 +88,7 @@ TerrainMeasure measure_terrain(const WrSurface& surface, const WrMesh& wm) {
 }
 
 Status make_terrain_surface(float delta, WrControlMesh* mesh, WrSurface* surface, AxisPair* axes) {
-    *mesh = terrain_mesh(delta);
+    *mesh = terrain_control_mesh(delta);
     SHITSUKAN_TRY(make_wr_surface(*mesh, SurfaceBasis::bspline, 3, *surface));
     SHITSUKAN_TRY(make_axes(*surface, IstKind::fully_connected, "fully", 3, kMaxWrLevel, axes));
     return surface->set_axes(axes->u.axis(), axes->v.axis());

@@ -13,6 +13,10 @@ Writes
                  server: Chromium fetches no separate file for a page from file://).
   OUT/params.js  the parameter tables of every figure of the papers, read from paper_figures'
                  index.md (the "given / chosen" rows the figures record), never retyped.
+  OUT/sources/   every repository file a panel names (its `source` text, its C API file, its
+                 page file; a .cpp's header beside it), each as <path>.html (the text in a
+                 <pre>, so a browser shows it from disk too): the panels link to them. Also in
+                 OUT/hosted/sources/. A named file that does not exist stops the build.
 
 Panels are discovered: every page/panels/*.js is included, in name order, at the line
 `<!-- panels -->` of page/index.html (a panel registers itself with SK.register).
@@ -60,6 +64,72 @@ def script_safe(js):
     return js.replace("</script", "<\\/script")
 
 
+SOURCE_TOKEN = re.compile(r"[\w./-]+\.(?:cpp|hpp|h)\b")
+
+
+def panel_sources(panels_dir, repo):
+    """{panel id: [repository paths]} by the rule of SK.sourceFiles in page/app.js."""
+    out = {}
+    for name in sorted(os.listdir(panels_dir)):
+        if not name.endswith(".js"):
+            continue
+        text = read(os.path.join(panels_dir, name))
+        ids = re.findall(r"\bid: '([a-z0-9-]+)'", text)
+        sources = re.findall(r"\bsource: '((?:[^'\\]|\\.)*)'", text)
+        if len(ids) != len(sources):
+            sys.exit("bundle.py: %s: %d panel ids but %d source texts" % (name, len(ids), len(sources)))
+        for pid, src in zip(ids, sources):
+            files, folder = [], ""
+            for t in SOURCE_TOKEN.findall(src):
+                if "/" in t:
+                    folder = t[: t.rindex("/") + 1]
+                else:
+                    t = folder + t
+                if t not in files:
+                    files.append(t)
+            key = pid.split("-")[0]
+            for t in ("ports/web/api/api_%s.cpp" % key, "ports/web/page/panels/%s.js" % key):
+                if t not in files:
+                    files.append(t)
+            for t in files:
+                if not os.path.isfile(os.path.join(repo, t)):
+                    sys.exit("bundle.py: panel %s names %s, which is not in the repository" % (pid, t))
+            out[pid] = files
+    return out
+
+
+def source_page(repo, path, header):
+    esc = lambda t: t.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+    depth = "../" * path.count("/")
+    also = ('<p>Its header (declarations and the manual): <a href="%s%s.html">%s</a></p>\n'
+            % (depth, header, header)) if header else ""
+    return ('<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8"><title>%s</title>\n'
+            '<style>body{font:14px/1.4 system-ui,sans-serif;margin:12px 18px}pre{font:13px/1.4 '
+            'ui-monospace,monospace;background:#f3f5f7;padding:8px;overflow:auto}</style></head>\n'
+            '<body><h1 style="font-size:17px">%s</h1><p>shitsukan repository path <code>%s</code> '
+            '(a copy made by ports/web/bundle.py with the page).</p>\n%s<pre>%s</pre></body></html>\n'
+            % (esc(path), esc(path), esc(path), also, esc(read(os.path.join(repo, path)))))
+
+
+def write_sources(repo, panels_dir, outs):
+    files = []
+    for paths in panel_sources(panels_dir, repo).values():
+        for p in paths:
+            if p not in files:
+                files.append(p)
+    for p in list(files):
+        h = p[:-4] + ".hpp" if p.endswith(".cpp") else None
+        if h and os.path.isfile(os.path.join(repo, h)) and h not in files:
+            files.append(h)
+    for out in outs:
+        shutil.rmtree(os.path.join(out, "sources"), ignore_errors=True)
+        for p in files:
+            h = p[:-4] + ".hpp" if p.endswith(".cpp") else None
+            h = h if h in files else None
+            write(os.path.join(out, "sources", p + ".html"), source_page(repo, p, h))
+    return len(files)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--page", required=True)
@@ -67,6 +137,7 @@ def main():
     ap.add_argument("--hosted-module", required=True)
     ap.add_argument("--single-module", required=True)
     ap.add_argument("--out", required=True)
+    ap.add_argument("--repo", default=".")
     a = ap.parse_args()
 
     params = figure_params(a.figures)
@@ -106,8 +177,10 @@ def main():
     single = single.replace("</body>", '<script type="text/plain" id="sk-worker-src">%s</script>\n</body>'
                             % script_safe(worker_src))
     write(os.path.join(a.out, "index.html"), single)
-    print("bundle.py: %s (%d bytes, one file), %s/ (hosted), %d panel files, %d figures' parameters"
-          % (os.path.join(a.out, "index.html"), len(single.encode("utf-8")), hosted, len(panels), len(params)))
+    sources = write_sources(a.repo, os.path.join(a.page, "panels"), [a.out, hosted])
+    print("bundle.py: %s (%d bytes, one file), %s/ (hosted), %d panel files, %d figures' parameters, "
+          "%d source files" % (os.path.join(a.out, "index.html"), len(single.encode("utf-8")), hosted,
+                               len(panels), len(params), sources))
 
 
 if __name__ == "__main__":

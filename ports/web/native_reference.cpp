@@ -97,6 +97,26 @@ const std::map<std::string, Call>& functions() {
                                        float(a[6]), int(a[7]));
          }},
         {"sk_fujimoto2000_ratio", [](const Args& a) { return sk_fujimoto2000_ratio(int(a[0])); }},
+        {"sk_hirota1998_layers_run",
+         [](const Args& a) { return sk_hirota1998_layers_run(int(a[0]), int(a[1]), int(a[2]), float(a[3])); }},
+        {"sk_hirota1998_layers_frame",
+         [](const Args& a) { return sk_hirota1998_layers_frame(int(a[0]), float(a[1])); }},
+        {"sk_hirota1998_layers_events", [](const Args&) { return sk_hirota1998_layers_events(); }},
+        {"sk_hirota1998_layers_event",
+         [](const Args& a) { return sk_hirota1998_layers_event(int(a[0]), float(a[1])); }},
+        {"sk_hirota1998_branch_run",
+         [](const Args& a) {
+             return sk_hirota1998_branch_run(float(a[0]), float(a[1]), float(a[2]), float(a[3]), float(a[4]));
+         }},
+        {"sk_hirota1998_branch_view",
+         [](const Args& a) {
+             return sk_hirota1998_branch_view(int(a[0]), int(a[1]), float(a[2]), float(a[3]), int(a[4]));
+         }},
+        {"sk_fujimoto2000_terrain",
+         [](const Args& a) {
+             return sk_fujimoto2000_terrain(int(a[0]), float(a[1]), int(a[2]), float(a[3]), float(a[4]), unsigned(a[5]),
+                                            float(a[6]), float(a[7]), int(a[8]));
+         }},
     };
     return f;
 }
@@ -179,6 +199,12 @@ const std::vector<Case>& cases() {
         {"fujimoto2000 fig. 17 superposed delta 0.65", "sk_fujimoto2000_wr", {0, 2, 0.65, 3, 14, 0.5, 0.2, 256}, "picture"},
         {"fujimoto2000 fig. 18 B-spline WR, K = 2", "sk_fujimoto2000_wr", {1, 1, 0.5, 2, 18, 0, 0, 256}, "picture"},
         {"fujimoto2000 WR delta = 1 refused", "sk_fujimoto2000_wr", {1, 2, 1, 2, 18, 0, 0, 256}, "status"},
+        {"fujimoto2000 fig. 21c conventional terrain", "sk_fujimoto2000_terrain", {0, 0.55, 3, 0.12, 0.035, 21, 0, 0, 256}, "picture"},
+        {"fujimoto2000 fig. 21f superposed, jitter", "sk_fujimoto2000_terrain", {2, 0.55, 3, 0.12, 0.035, 21, 0, 0, 256}, "picture"},
+        {"fujimoto2000 fig. 21f jitter seed 22", "sk_fujimoto2000_terrain", {2, 0.55, 3, 0.12, 0.035, 22, 0, 0, 256}, "picture"},
+        {"fujimoto2000 fig. 21f no jitter, turned", "sk_fujimoto2000_terrain", {2, 0.55, 3, 0, 0, 21, 0.6, 0.2, 256}, "picture"},
+        {"fujimoto2000 fig. 21d WR terrain", "sk_fujimoto2000_terrain", {1, 0.55, 2, 0.12, 0.035, 21, 0, 0, 256}, "picture"},
+        {"fujimoto2000 terrain jitter refused", "sk_fujimoto2000_terrain", {2, 0.55, 2, 1000, 0.035, 21, 0, 0, 256}, "status"},
         {"hirota1998 frame before a run refused", "sk_hirota1998_frame", {0, 40}, "status"},
         {"hirota1998 Table 2 camphor", "sk_hirota1998_species", {0}, "text"},
         {"hirota1998 sigma refused", "sk_hirota1998_run", {0, 0.5, 1.04, 1.015, 32, 24}, "status"},
@@ -190,9 +216,28 @@ const std::vector<Case>& cases() {
         {"hirota1998 Table 2 Chinese tallow", "sk_hirota1998_species", {1}, "text"},
         {"hirota1998 tallow run: events, hash", "sk_hirota1998_run", {1, 0.0175, 1.033, 1.015, 32, 24}, "floats text"},
         {"hirota1998 tallow after 300 events", "sk_hirota1998_frame", {300, 40}, "picture"},
+        {"hirota1998 tallow all 1135 events", "sk_hirota1998_frame", {1135, 40}, "picture text"},
         {"hirota1998 Table 2 pine", "sk_hirota1998_species", {2}, "text"},
         {"hirota1998 pine run: events, hash", "sk_hirota1998_run", {2, 0.0175, 1.038, 1.023, 32, 24}, "floats text"},
         {"hirota1998 pine all 912 events", "sk_hirota1998_frame", {912, 40}, "picture text"},
+        {"hirota1998 layers frame before a run refused", "sk_hirota1998_layers_frame", {0, 16}, "status"},
+        {"hirota1998 figs. 6-8 four layers 24 x 16, 4 cycles", "sk_hirota1998_layers_run", {24, 16, 4, 0.08}, "floats text"},
+        {"hirota1998 four layers, step 25", "sk_hirota1998_layers_frame", {24, 16}, "picture text"},
+        {"hirota1998 four layers, before role change 1", "sk_hirota1998_layers_frame", {49, 16}, "picture text"},
+        {"hirota1998 four layers, after role change 1", "sk_hirota1998_layers_frame", {50, 16}, "picture text"},
+        {"hirota1998 four layers, cycle 3 mid", "sk_hirota1998_layers_frame", {127, 16}, "picture text"},
+        {"hirota1998 four layers, the end", "sk_hirota1998_layers_frame", {202, 16}, "picture text"},
+        {"hirota1998 four layers: every loop event, in order", "sk_hirota1998_layers_events", {}, "floats"},
+        {"hirota1998 four layers at event 0", "sk_hirota1998_layers_event", {0, 16}, "picture text"},
+        {"hirota1998 four layers at event 100", "sk_hirota1998_layers_event", {100, 16}, "picture text"},
+        {"hirota1998 four layers at event 400", "sk_hirota1998_layers_event", {400, 16}, "picture text"},
+        {"hirota1998 four layers frame past the end refused", "sk_hirota1998_layers_frame", {203, 16}, "status"},
+        {"hirota1998 branch view before a run refused", "sk_hirota1998_branch_view", {20, 0, 0, 0, 256}, "status"},
+        {"hirota1998 fig. 11 branch run (L0 0.6)", "sk_hirota1998_branch_run", {0.6, 0.01, 0.05, 1.015, 0.0175}, "floats text"},
+        {"hirota1998 fig. 11 branch at T, front", "sk_hirota1998_branch_view", {20, 0, 0, 0, 256}, "picture text"},
+        {"hirota1998 fig. 11 branch at T, above", "sk_hirota1998_branch_view", {20, 1, 0, 0, 256}, "picture text"},
+        {"hirota1998 fig. 11 branch at T/2, turned", "sk_hirota1998_branch_view", {10, 0, 0.8, 0.3, 256}, "picture text"},
+        {"hirota1998 branch frame past T refused", "sk_hirota1998_branch_view", {21, 0, 0, 0, 256}, "status"},
     };
     return c;
 }
@@ -262,6 +307,7 @@ int main(int argc, char** argv) {
                 return 1;
             }
             if (o == "picture" && sk_picture_width() == 0) ++failures;
+            if (o == "text") std::printf("selftest-text: %s: %s\n", c.name, sk_text());
             std::printf("selftest: %-45s %-8s %s\n", c.name, o.c_str(), hex(h).c_str());
             hashes += std::string(hashes.empty() ? "" : ", ") + "\"" + o + "\": \"" + hex(h) + "\"";
         }

@@ -1,4 +1,4 @@
-# ---- web: ports/web, the explorer (okada1987, okada1989, tokai1994 step by step in a browser;
+# ---- web: ports/web, the explorer (the five papers step by step in a browser, and a classroom bundle;
 # ports/web/README.md). Included from the Makefile; everything of the web port is in this file.
 #
 #   make web        installs Debian's emscripten if missing; builds build/web/: index.html (one
@@ -9,14 +9,21 @@
 #   make test-web   the native reference of the page's self-test, then Debian's headless
 #                   Chromium opens build/web/index.html from disk: the page's hashes must equal
 #                   the native ones (PASS in the DOM), a slider must change picture and hash,
-#                   and no panel may log a console error (ports/web/tests/test_web.sh)
-#   make bench-web  bench: lines (first panel ready, slider -> new 512x512 marble frame, .wasm
-#                   size raw and gzip) against the goals of ports/web/README.md
+#                   and no panel may log a console error; the self-test again in Firefox ESR
+#                   (WebDriver BiDi) and one panel drawn there at 1280x720; the web-dist zip
+#                   unpacked and opened from disk (ports/web/tests/test_web.sh, test_dist.sh)
+#   make web-dist   the classroom bundle: build/web-dist/ (index.html, sources/, a README for
+#                   teachers from ports/web/dist/README.md) and build/web-dist.zip of the same
+#                   (ports/web/dist/dist.py); opens from a USB stick (file://) or any static host
+#   make bench-web  bench: lines (first panel ready, slider -> new 512x512 marble frame, an IST
+#                   diagram redraw, a WR surface at fig. 14's size re-tessellated and drawn, the
+#                   camphor run at 128 x 64 and its replay's frames per second, .wasm size raw
+#                   and gzip) against the goals of ports/web/README.md
 #
 # Debian's emscripten works offline as shipped. Its linker runs node scripts that need acorn
 # from Debian's node modules: NODE_PATH points there in case `node` is not Debian's.
 WEB_REQUIRED := /usr/bin/em++:emscripten /usr/share/nodejs/acorn/package.json:node-acorn \
-                /usr/bin/chromium:chromium /usr/bin/node:nodejs /usr/bin/python3:python3 /usr/bin/gzip:gzip
+                /usr/bin/chromium:chromium /usr/bin/firefox-esr:firefox-esr /usr/bin/node:nodejs /usr/bin/python3:python3 /usr/bin/gzip:gzip
 WEB_DIR      := $(BUILD)/web
 EMXX         ?= em++
 EM_ENV       := NODE_PATH=/usr/share/nodejs$(if $(NODE_PATH),:$(NODE_PATH))
@@ -26,9 +33,11 @@ WEB_PAPERS   := okada1987 okada1989 tokai1994
 WEB_PAPERS   += fujimoto2000/fig03 fujimoto2000/fig04 fujimoto2000/fig06a fujimoto2000/fig06b \
                 fujimoto2000/fig07 fujimoto2000/fig08 fujimoto2000/fig09 fujimoto2000/table01
 # hirota1998: the two-layer model's figures (the species runs at the quick size).
-WEB_PAPERS   += hirota1998/fig04 hirota1998/fig05
+WEB_PAPERS   += hirota1998/fig04 hirota1998/fig05 hirota1998/fig08 hirota1998/fig11
 # fujimoto2000 WR surfaces: one panel each of figs. 14, 17, 18 for their parameter tables.
 WEB_PAPERS   += fujimoto2000/fig14b fujimoto2000/fig17a4 fujimoto2000/fig18a5
+# fujimoto2000 fig. 21's superposed terrain (the jitter's record).
+WEB_PAPERS   += fujimoto2000/fig21f
 # Same flags as the native build (docs/DESIGN.md: same inputs, same bits). stb's headers come
 # from Debian's libstb-dev through a directory of their own (not all of /usr/include: the WASM
 # build must not see glibc's headers), as system headers like the native build's; the page never reads or writes image files, so the
@@ -36,8 +45,11 @@ WEB_PAPERS   += fujimoto2000/fig14b fujimoto2000/fig17a4 fujimoto2000/fig18a5
 WEB_CXXFLAGS := -std=c++17 -O2 $(WARN) -ffp-contract=off
 WEB_CPPFLAGS := -Ilib -Ipaper_figures -Iports/web -isystem $(WEB_DIR)/include
 WEB_API_SRCS := $(sort $(wildcard ports/web/api/*.cpp))
-# The figures' drawing code the panels share with paper_figures (the IST diagrams of figs. 3-9).
+# The figures' code the panels share with paper_figures (the IST diagrams of figs. 3-9).
 WEB_API_SRCS += paper_figures/fujimoto2000/ist_diagram.cpp
+# ... fig. 21's terrain control mesh, fig. 11's 3D scene of the branch, fig. 8's frames.
+WEB_API_SRCS += paper_figures/fujimoto2000/terrain_mesh.cpp paper_figures/hirota1998/branch_scene.cpp \
+                paper_figures/hirota1998/layer_frame_draw.cpp
 WEB_LIB_OBJS := $(LIB_SRCS:%.cpp=$(WEB_DIR)/obj/%.o)
 WEB_API_OBJS := $(WEB_API_SRCS:%.cpp=$(WEB_DIR)/obj/%.o)
 WEB_TEST_OBJS := $(TEST_SRCS:%.cpp=$(WEB_DIR)/obj/%.o)
@@ -65,7 +77,7 @@ WASM_TEST_SKIPS := \
 # convert as printf does); clang's -Wformat names it, g++ does not.
 $(WEB_TEST_OBJS): WEB_EXTRA := -Wno-format
 
-.PHONY: web test-wasm test-web bench-web web-deps
+.PHONY: web web-dist web-screenshots test-wasm test-web bench-web web-deps
 
 web-deps:
 	$(call ensure_packages,$(WEB_REQUIRED) $(REQUIRED))
@@ -106,8 +118,10 @@ $(WEB_DIR)/figures/index.md: $(BUILD)/paper_figures ports/web/web.mk
 	@rm -rf $(WEB_DIR)/figures
 	$(BUILD)/paper_figures --quick --jobs $(JOBS) $(WEB_PAPERS:%=--only %) --out $(WEB_DIR)/figures > /dev/null
 
+# The bundle copies the source files the panels link to (sources/): any library file may be one.
 $(WEB_DIR)/index.html: $(WEB_DIR)/hosted/shitsukan_web.js $(WEB_DIR)/single/shitsukan_web.js \
-                       $(WEB_DIR)/figures/index.md $(WEB_PAGE_SRCS) ports/web/bundle.py
+                       $(WEB_DIR)/figures/index.md $(WEB_PAGE_SRCS) ports/web/bundle.py \
+                       $(WEB_API_SRCS) $(wildcard lib/shitsukan/*/*.hpp lib/shitsukan/*/*.cpp)
 	python3 ports/web/bundle.py --page ports/web/page --figures $(WEB_DIR)/figures/index.md \
 	  --hosted-module $(WEB_DIR)/hosted/shitsukan_web.js --single-module $(WEB_DIR)/single/shitsukan_web.js \
 	  --out $(WEB_DIR)
@@ -120,14 +134,27 @@ $(WEB_DIR)/native_reference: ports/web/native_reference.cpp $(WEB_API_SRCS) port
 $(WEB_DIR)/tests.js: $(WEB_TEST_OBJS) $(WEB_LIB_OBJS)
 	$(EM_ENV) $(EMXX) $(WEB_TEST_LINK) -o $@ $(WEB_TEST_OBJS) $(WEB_LIB_OBJS)
 
+WEB_DIST := $(BUILD)/web-dist
+$(WEB_DIST).zip: $(WEB_DIR)/index.html ports/web/dist/dist.py ports/web/dist/README.md
+	python3 ports/web/dist/dist.py --web $(WEB_DIR) --readme ports/web/dist/README.md \
+	  --panels ports/web/page/panels --out $(WEB_DIST) --zip $@
+
+web-dist: web
+	@$(SUBMAKE) $(WEB_DIST).zip
+	@echo "web-dist: $(WEB_DIST)/ and $(WEB_DIST).zip (open index.html from disk; README.md for teachers)"
+
 test-wasm: web-deps
 	@$(SUBMAKE) $(WEB_DIR)/tests.js
 	@excl=""; for s in $(WASM_TEST_SKIPS); do pat=$${s%%|*}; why=$${s#*|}; \
 	  echo "test-wasm: skipped $$pat: $$why"; excl="$$excl$${excl:+,}$$pat"; done; \
 	node $(WEB_DIR)/tests.js -tce="$$excl"
 
-test-web: web
-	bash ports/web/tests/test_web.sh $(WEB_DIR)
+test-web: web-dist
+	bash ports/web/tests/test_web.sh $(WEB_DIR) $(WEB_DIST).zip
 
 bench-web: web
 	bash ports/web/tests/bench_web.sh $(WEB_DIR)
+
+# Every panel at 1280x720 in Chromium and one in Firefox ESR, to look at (build/web/screenshots/).
+web-screenshots: web
+	bash ports/web/tests/screenshots.sh $(WEB_DIR) $(WEB_DIR)/screenshots

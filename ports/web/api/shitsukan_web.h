@@ -64,10 +64,24 @@ int sk_fujimoto2000_table(int first_label, int max_lines);
 int sk_fujimoto2000_ratio(int coordinates);
 int sk_fujimoto2000_wr(int figure, int form, float delta, int K, unsigned seed, float yaw, float pitch, int size);
 
+/* api_fujimoto2000_terrain.cpp */
+int sk_fujimoto2000_terrain(int form, float delta, int K, float jitter_height, float jitter_color, unsigned seed,
+                            float yaw, float pitch, int size);
+
 /* api_hirota1998.cpp */
 int sk_hirota1998_species(int species);
 int sk_hirota1998_run(int species, float sigma, float kappa1, float kappa2, int n_r, int n_h);
 int sk_hirota1998_frame(int event, float px_per_cm);
+
+/* api_hirota1998_layers.cpp */
+int sk_hirota1998_layers_run(int n_r, int n_h, int cycles, float kappa_h);
+int sk_hirota1998_layers_frame(int index, float px_per_cm);
+int sk_hirota1998_layers_events(void);
+int sk_hirota1998_layers_event(int event, float px_per_cm);
+
+/* api_hirota1998_branch.cpp */
+int sk_hirota1998_branch_run(float edge_length, float r_h, float r_n, float kappa, float sigma);
+int sk_hirota1998_branch_view(int frame, int view, float yaw, float pitch, int size);
 
 #ifdef __cplusplus
 }

@@ -196,6 +196,20 @@
     sel.addEventListener('change', () => { if (c.onchange) c.onchange(); });
     return c;
   };
+  // A picture turned by the mouse (drag) and by two sliders (the keyboard's way: Tab to a
+  // slider, arrow keys): dragging moves the sliders, and either calls update().
+  SK.turnable = function (canvas, yaw, pitch, update) {
+    let drag = null;
+    canvas.addEventListener('pointerdown', (e) => { drag = { x: e.clientX, y: e.clientY, yaw: yaw.value, pitch: pitch.value }; canvas.setPointerCapture(e.pointerId); });
+    canvas.addEventListener('pointermove', (e) => {
+      if (!drag) return;
+      yaw.set((drag.yaw + (e.clientX - drag.x) * 0.01).toFixed(2));
+      pitch.set(Math.max(Number(pitch.range.min), Math.min(Number(pitch.range.max), drag.pitch + (e.clientY - drag.y) * 0.01)).toFixed(2));
+      update();
+    });
+    canvas.addEventListener('pointerup', () => { drag = null; });
+    canvas.style.cursor = 'grab';
+  };
   // Shows a reply's Status beside the control that caused it; true when the call succeeded.
   SK.report = function (control, reply) {
     if (!reply) return false;
@@ -243,6 +257,21 @@
   // the library that computes it; `open` builds the panel and resolves once it has drawn
   // (after warming its code up on a small input).
   SK.register = function (panel) { SK.panels.push(panel); };
+  // The repository files a panel names: the paths in its `source` text (a bare file name is in
+  // the folder of the path before it), its C API file and its page file. ports/web/bundle.py
+  // reads the same text by the same rule and copies these files (as HTML) into sources/.
+  SK.sourceFiles = function (panel) {
+    const key = panel.id.split('-')[0];
+    const out = [];
+    let dir = '';
+    (panel.source.match(/[\w./-]+\.(?:cpp|hpp|h)\b/g) || []).forEach((t) => {
+      if (t.includes('/')) dir = t.slice(0, t.lastIndexOf('/') + 1);
+      else t = dir + t;
+      if (!out.includes(t)) out.push(t);
+    });
+    ['ports/web/api/api_' + key + '.cpp', 'ports/web/page/panels/' + key + '.js'].forEach((t) => { if (!out.includes(t)) out.push(t); });
+    return out;
+  };
   let current = null;
   SK.open = function (id) {
     const panel = SK.panels.find((p) => p.id === id);
@@ -256,6 +285,11 @@
       el('h2', {}, s, panel.title);
       const meta = el('p', { class: 'sk-cite' }, s);
       meta.innerHTML = '<b>' + panel.cite + '</b><br>Computed by <code>' + panel.source + '</code>';
+      const src = el('p', { class: 'sk-sources' }, s, 'Source (repository path; the classroom bundle carries a copy): ');
+      SK.sourceFiles(panel).forEach((f, i) => {
+        if (i) src.appendChild(document.createTextNode(' · '));
+        el('a', { href: 'sources/' + f + '.html', class: 'sk-source', target: '_blank' }, src, f);
+      });
       const bar = (panel.progress = el('progress', { max: 1, value: 0, class: 'sk-progress' }, s));
       bar.hidden = true;
       const body = el('div', { class: 'sk-body' }, s);
@@ -323,6 +357,9 @@
       const drawn = Array.from(canvases).filter((c) => SK.canvasHash(c) !== 'empty').length;
       lines.push('panel ' + p.id + ': ready in ' + (performance.now() - t0).toFixed(0) + ' ms, ' + canvases.length + ' canvases');
       if (!canvases.length || !drawn) { ok = false; lines.push('FAIL panel ' + p.id + ' drew nothing'); }
+      // An animated panel's event count (its event slider's end): test_web.sh compares it with
+      // the native run's at the same (default) settings.
+      if (p.eventCount) lines.push('events ' + p.id + ' ' + p.eventCount());
     }
     for (const p of SK.panels.filter((q) => q.interaction)) {
       await SK.open(p.id);
@@ -364,12 +401,39 @@
     }
     const sorted = times.slice().sort((x, y) => x - y);
     const inWorker = compute.slice().sort((x, y) => x - y);
-    out.textContent = [
+    const lines = [
       'bench: first panel (' + b.id + ') ready ' + first.toFixed(0) + ' ms after navigation start (goal <= 1500 ms)',
       'bench: slider -> new ' + t.what + ' frame drawn: median ' + sorted[sorted.length >> 1].toFixed(1) + ' ms, best ' +
         sorted[0].toFixed(1) + ' ms over ' + times.length + ' moves (goal <= 33 ms)',
       'bench: of which ' + t.fn + ' in the worker (WASM): median ' + inWorker[inWorker.length >> 1].toFixed(1) + ' ms, best ' + inWorker[0].toFixed(1) + ' ms',
-    ].join('\n');
+    ];
+    // The panels' own benches (panel.benches, set by a panel's open()): {label, goal, prepare,
+    // control, values, fns} moves a slider and times each move to the next drawn frame and the
+    // named calls in the worker; {run} measures itself and returns its lines.
+    for (const p of SK.panels) {
+      await SK.open(p.id);
+      for (const bb of p.benches || []) {
+        if (bb.run) { lines.push(...(await bb.run())); continue; }
+        if (bb.prepare) await bb.prepare();
+        await SK.idle();
+        const range = p.section.querySelector('input[data-key="' + bb.control + '"]');
+        const wall = [], work = [];
+        for (const v of bb.values) {
+          const t0 = performance.now();
+          range.value = v;
+          range.dispatchEvent(new Event('input'));
+          await SK.idle();
+          wall.push(performance.now() - t0);
+          work.push(bb.fns.reduce((sum, fn) => sum + (SK.lastMs[fn] || 0), 0));
+        }
+        const med = (a) => a.slice().sort((x, y) => x - y)[a.length >> 1], best = (a) => Math.min(...a);
+        lines.push('bench: ' + bb.label + ': ' + bb.fns.join(' + ') + ' in the worker (WASM) median ' + med(work).toFixed(1) + ' ms, best ' +
+          best(work).toFixed(1) + ' ms; to the next drawn frame median ' + med(wall).toFixed(1) + ' ms, best ' + best(wall).toFixed(1) +
+          ' ms over ' + wall.length + ' moves (goal <= ' + bb.goal + ' ms)');
+      }
+      if (p.stop) p.stop();
+    }
+    out.textContent = lines.join('\n');
     document.body.dataset.bench = 'done';
   };
 

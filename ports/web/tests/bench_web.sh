@@ -13,7 +13,7 @@ gz=$(gzip -9c "$wasm" | wc -c)
 echo "bench: .wasm $raw bytes raw, $gz bytes gzip -9 (goal for all five papers <= 409600 bytes gzip)"
 echo "bench: one-file page $web/index.html $(wc -c < "$web/index.html") bytes (the .wasm inside as base64)"
 for round in 1 2 3; do
-  node "$here/cdp.js" "$page#bench" --timeout 120 --wait "document.body.dataset.bench" \
+  node "$here/cdp.js" "$page#bench" --timeout 300 --wait "document.body.dataset.bench" \
     --eval "document.getElementById('sk-selftest').textContent" 2>/dev/null | sed "s/^bench: /bench: run $round: /"
 done
 echo "bench: (wall-clock in headless Chromium on this machine, under its current load; the median of the moves is the number to compare)"

@@ -34,7 +34,7 @@
     source: 'lib/shitsukan/wrinkly/ist_axis.cpp ist_*_axis(), ist_procedure.cpp ist_divide_and_shuffle_internally() / ist_shuffle_externally(), ist_digits.cpp ist_scale_reverse_unit() / ist_scale_reverse_fully_connected(), ist_formula.cpp ist_forward(), ist_table.cpp ist_table(); diagrams by paper_figures/fujimoto2000/ist_diagram.cpp draw_ist_diagram()',
     figures: ['fujimoto2000/fig03', 'fujimoto2000/fig06a', 'fujimoto2000/fig09', 'fujimoto2000/table01'],
     interaction: { control: 'ist-u', value: 0.81, canvas: 'canvas.sk-ist' },
-    async open(body) {
+    async open(body, panel) {
       const box = SK.el('div', { class: 'sk-controls' }, body);
       const figs = SK.el('div', { class: 'sk-figs' }, body);
       const preset = SK.select(box, { label: 'figure', value: '', options: PRESETS.map(([n]) => [n, n || PRESETS[0][1]]) });
@@ -101,6 +101,12 @@
           '      formula       ' + t.back_formula;
       };
       const updateFollow = SK.coalesce(follow);
+      // make bench-web: fig. 6(a)'s diagram (N = 5, K = 3, B = 13, 5 bases shown) redrawn as u moves.
+      panel.benches = [{
+        label: 'IST diagram redraw (fig. 6(a), 1000 px, u moved)', goal: 16, control: 'ist-u',
+        values: Array.from({ length: 24 }, (_, i) => (0.02 + 0.04 * i).toFixed(3)), fns: ['sk_fujimoto2000_diagram'],
+        prepare: async () => { preset.sel.value = 'fig. 6(a)'; preset.sel.dispatchEvent(new Event('change')); },
+      }];
       Object.values(c).forEach((x) => { x.onchange = drawAxis; });
       Object.values(v).forEach((x) => { x.onchange = updateFollow; });
       preset.sel.addEventListener('change', () => {
@@ -131,7 +137,7 @@
     source: 'lib/shitsukan/wrinkly/wr_surface.cpp make_wr_surface(), wr_tessellation.cpp tessellate_wr_surface(), hierarchical_sampling.cpp sample_hierarchy(), superposition.cpp; lib/shitsukan/raster/rasterizer.cpp draw_mesh()',
     figures: ['fujimoto2000/fig14b', 'fujimoto2000/fig17a4', 'fujimoto2000/fig18a5'],
     interaction: { control: 'wr-delta', value: 0.7, canvas: 'canvas.sk-wr' },
-    async open(body) {
+    async open(body, panel) {
       const box = SK.el('div', { class: 'sk-controls' }, body);
       const figs = SK.el('div', { class: 'sk-figs' }, body);
       const c = {
@@ -141,14 +147,17 @@
         K: SK.slider(box, { label: 'K (levels)', min: 0, max: 5, step: 1, value: 3, key: 'wr-K' }),
         seed: SK.slider(box, { label: 'heights seed', min: 0, max: 999, step: 1, value: 14, key: 'wr-seed' }),
       };
+      const view = {
+        yaw: SK.slider(box, { label: 'turn (yaw)', min: -3.14, max: 3.14, step: 0.01, value: 0, key: 'wr-yaw' }),
+        pitch: SK.slider(box, { label: 'tilt (pitch)', min: -1.2, max: 1.2, step: 0.01, value: 0, key: 'wr-pitch' }),
+      };
       const note = SK.el('p', { class: 'sk-note' }, box);
-      note.textContent = 'Drag the picture to turn the surface (the tessellation is kept; only the view is redrawn). The control heights h_i are chosen here (a hashed field), not the paper\'s meshes.';
+      note.textContent = 'Drag the picture (or use the turn / tilt sliders) to turn the surface (the tessellation is kept; only the view is redrawn). The control heights h_i are chosen here (a hashed field), not the paper\'s meshes.';
       const readout = SK.el('div', { class: 'sk-readout' }, box);
       const f = SK.figure(figs, 'the surface, Z-buffered and Lambert-lit by the library\'s rasterizer', 512, 512);
       f.canvas.classList.add('sk-wr');
-      const view = { yaw: 0, pitch: 0 };
       const update = SK.coalesce(async () => {
-        const r = await SK.call('sk_fujimoto2000_wr', [c.figure.value, c.form.value, c.delta.value, c.K.value, c.seed.value, view.yaw, view.pitch, 512], ['picture', 'text']);
+        const r = await SK.call('sk_fujimoto2000_wr', [c.figure.value, c.form.value, c.delta.value, c.K.value, c.seed.value, view.yaw.value, view.pitch.value, 512], ['picture', 'text']);
         const bad = /delta/.test(r.message) ? c.delta : /\bK\b|level/.test(r.message) ? c.K : /form/.test(r.message) ? c.form : c.figure;
         [c.delta, c.K, c.form, c.figure].forEach((x) => SK.clearReport(x));
         if (!SK.report(bad, r)) return;
@@ -159,16 +168,61 @@
           ' ms, drawn in ' + t.draw_ms.toFixed(0) + ' ms (WASM, wall clock)';
       });
       Object.values(c).forEach((x) => { x.onchange = update; });
-      let drag = null;
-      f.canvas.addEventListener('pointerdown', (e) => { drag = { x: e.clientX, y: e.clientY, yaw: view.yaw, pitch: view.pitch }; f.canvas.setPointerCapture(e.pointerId); });
-      f.canvas.addEventListener('pointermove', (e) => {
-        if (!drag) return;
-        view.yaw = drag.yaw + (e.clientX - drag.x) * 0.01;
-        view.pitch = Math.max(-1.2, Math.min(1.2, drag.pitch + (e.clientY - drag.y) * 0.01));
-        update();
-      });
-      f.canvas.addEventListener('pointerup', () => { drag = null; });
+      // make bench-web: fig. 14(b)'s surface (IST-Bezier, unit-IST N = 3, WR eq. (15) at K = 2,
+      // 512 x 512): each new heights seed re-tessellates and redraws it.
+      panel.benches = [{
+        label: 'WR surface, fig. 14(b) size (K = 2, 512 x 512) re-tessellated and drawn', goal: 100, control: 'wr-seed',
+        values: Array.from({ length: 12 }, (_, i) => 100 + i), fns: ['sk_fujimoto2000_wr'],
+        prepare: async () => { c.figure.sel.value = 0; c.form.sel.value = 1; c.K.set(2); await update(); },
+      }];
+      Object.values(view).forEach((x) => { x.onchange = update; });
+      SK.turnable(f.canvas, view.yaw, view.pitch, update);
       await SK.call('sk_fujimoto2000_wr', [0, 0, 0.35, 1, 14, 0, 0, 64], []);  // warm-up
+      await update();
+    },
+  });
+
+  SK.register({
+    id: 'fujimoto2000-terrain', paper: P, order: 115,
+    title: 'The superposed terrain of fig. 21, with its jitter',
+    cite: 'fujimoto2000 §5 fig. 21: a terrain as a superposed IST-B-spline surface (eq. 20), the ratio delta of eq. (19) in the mountains and almost 0 in the green field (not superposed); "Gaussian random numbers are given to the sample values" (§5): the jitter on the hierarchical samples (§4.2); (c) conventional, (d) WR (spiky)',
+    source: 'paper_figures/fujimoto2000/terrain_mesh.cpp terrain_control_mesh() (the figure\'s mesh); lib/shitsukan/wrinkly/hierarchical_sampling.cpp sample_hierarchy() (the jitter), wr_tessellation.cpp tessellate_wr_surface(), wr_surface.cpp make_wr_surface(); lib/shitsukan/raster/rasterizer.cpp draw_mesh(); ports/web/api/api_fujimoto2000_terrain.cpp',
+    figures: ['fujimoto2000/fig21f'],
+    interaction: { control: 'terrain-seed', value: 22, canvas: 'canvas.sk-terrain' },
+    async open(body) {
+      const box = SK.el('div', { class: 'sk-controls' }, body);
+      const figs = SK.el('div', { class: 'sk-figs' }, body);
+      // Defaults: fig. 21(f) as paper_figures/fujimoto2000/fig21_terrain.cpp draws it (delta 0.55,
+      // jitter 0.12 on heights, 0.035 on colours, seed 21).
+      const c = {
+        form: SK.select(box, { label: 'form', value: 2, options: [[0, '(c) conventional B-spline'], [1, '(d) WR surface, eq. (15): spiky'], [2, '(e)-(g) superposed, eq. (20)']] }),
+        delta: SK.slider(box, { label: 'delta (eq. 19)', min: 0.05, max: 0.95, step: 0.01, value: 0.55, key: 'terrain-delta' }),
+        K: SK.slider(box, { label: 'K (levels)', min: 1, max: 4, step: 1, value: 3, key: 'terrain-K' }),
+        jh: SK.slider(box, { label: 'jitter: height', min: 0, max: 0.6, step: 0.01, value: 0.12, key: 'terrain-jh' }),
+        jc: SK.slider(box, { label: 'jitter: colour', min: 0, max: 0.2, step: 0.005, value: 0.035, key: 'terrain-jc' }),
+        seed: SK.slider(box, { label: 'jitter seed', min: 0, max: 999, step: 1, value: 21, key: 'terrain-seed' }),
+        yaw: SK.slider(box, { label: 'turn (yaw)', min: -3.14, max: 3.14, step: 0.01, value: 0, key: 'terrain-yaw' }),
+        pitch: SK.slider(box, { label: 'tilt (pitch)', min: -0.6, max: 0.6, step: 0.01, value: 0, key: 'terrain-pitch' }),
+      };
+      const note = SK.el('p', { class: 'sk-note' }, box);
+      note.textContent = 'The jitter multiplies each hierarchical sample\'s height by (1 + jitter g) and adds jitter g to its colour (g Gaussian, drawn from the seed): set it to 0 to see the IST alone. The green field at the front right carries delta 0.02: it is hardly superposed. Drag the picture (or use the turn / tilt sliders) to turn it.';
+      const readout = SK.el('div', { class: 'sk-readout' }, box);
+      const f = SK.figure(figs, 'fig. 21 drawn by the library\'s rasterizer from the figure\'s camera and light', 512, 512);
+      f.canvas.classList.add('sk-terrain');
+      const update = SK.coalesce(async () => {
+        const r = await SK.call('sk_fujimoto2000_terrain', [c.form.value, c.delta.value, c.K.value, c.jh.value, c.jc.value, c.seed.value, c.yaw.value, c.pitch.value, 512], ['picture', 'text']);
+        const bad = /jitter_height/.test(r.message) ? c.jh : /jitter_color|colour/.test(r.message) ? c.jc : /delta/.test(r.message) ? c.delta : /\bK\b|level/.test(r.message) ? c.K : c.form;
+        Object.values(c).forEach((x) => SK.clearReport(x));
+        if (!SK.report(bad, r)) return;
+        SK.draw(f.canvas, r.picture);
+        const t = JSON.parse(r.text);
+        readout.textContent = t.vertices + ' vertices, ' + t.triangles + ' triangles (grid ' + t.grid.join(' x ') + ')' +
+          (c.form.value === 2 ? ', deepest step used ' + t.levels_used : '') + '\ntessellated in ' + t.tessellate_ms.toFixed(0) +
+          ' ms, drawn in ' + t.draw_ms.toFixed(0) + ' ms (WASM, wall clock)';
+      });
+      Object.values(c).forEach((x) => { x.onchange = update; });
+      SK.turnable(f.canvas, c.yaw, c.pitch, update);
+      await SK.call('sk_fujimoto2000_terrain', [2, 0.55, 1, 0.12, 0.035, 21, 0, 0, 64], []);  // warm-up
       await update();
     },
   });
