@@ -121,6 +121,7 @@
 // leather
 #include "shitsukan/leather/edge_perturbation.hpp"
 #include "shitsukan/leather/leather.hpp"
+#include "shitsukan/leather/leather_looks.hpp"
 #include "shitsukan/leather/maps.hpp"
 #include "shitsukan/leather/products.hpp"
 #include "shitsukan/leather/relief.hpp"
