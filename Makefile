@@ -80,6 +80,8 @@ BENCH_REQUIRED := /usr/include/libnoise/noise.h:libnoise-dev /usr/include/boost/
                   /usr/include/CGAL/Surface_mesh.h:libcgal-dev /usr/include/CGAL/Delaunay_triangulation_2.h:libcgal-dev
 # The checks written in Python (tools/*.py: module map, manual snippets, function lengths).
 PY_REQUIRED := /usr/bin/python3:python3
+# test-cli reads the tool's EXR maps back through an independent reader (tests/cli/exr_readback.py).
+CLI_REQUIRED := /usr/share/doc/python3-openimageio/copyright:python3-openimageio /usr/share/doc/python3-numpy/copyright:python3-numpy
 CONSUMER_REQUIRED := /usr/bin/cmake:cmake /usr/bin/pkg-config:pkg-config /usr/bin/git:git
 FUZZ_REQUIRED := /usr/bin/clang++:clang
 ensure_packages = @bash tools/ensure_packages.sh $(1)
@@ -111,6 +113,7 @@ cli:
 # The tool's good runs make their files, each bad flag exits 2 naming it (tests/cli/run.sh);
 # failed writes leave nothing behind and name the reason (tests/cli/faults.sh).
 test-cli: deps
+	$(call ensure_packages,$(CLI_REQUIRED))
 	@$(SUBMAKE) $(CLI)
 	bash tests/cli/run.sh $(CLI)
 	bash tests/cli/faults.sh $(CLI)
