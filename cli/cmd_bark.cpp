@@ -70,9 +70,9 @@ void add_bark_flags(FlagSet& f, BarkArgs& a) {
     f.number("sigma", &a.p.sigma, 0, 0.2999, "Table 1: spread of the critical elongation (chosen)");
     f.number("T", &a.p.T, 0.001, 1e6, "Table 1: growth period T [s] (chosen 100)");
     f.number("delta_r", &a.p.delta_r, 0, 10,
-             "Table 1: radial growth rate [cm/s] (chosen; scaled with N_R/128 if not given)");
+             "Table 1: radial growth rate [cm/s] (chosen; --texture: x N_R/128)");
     f.number("delta_h", &a.p.delta_h, 0, 10,
-             "Table 1: height growth rate [cm/s] (chosen; scaled with N_H/64 if not given)");
+             "Table 1: height growth rate [cm/s] (chosen; --texture: x N_H/64)");
     f.number("tolerance", &a.p.tolerance, 1e-7, 0.1, "relaxation tolerance (chosen 1e-3)");
     f.seed(&a.p.seed, "critical elongations of the springs (chosen 1998)");
     f.number("px-per-cm", &a.px_per_cm, 1, 400, "crack map and SVG scale");
@@ -114,9 +114,11 @@ int finish_bark_args(FlagSet& f, BarkArgs& a) {
         a.p.N_H = std::max(3, int(std::lround(C / (1.0f + 0.036f))));
     }
     if (a.texture && a.p.N_H < 3) return f.fail("--N_H must be >= 3 with --texture (got %d)", a.p.N_H);
-    // chosen here: Table 3's calibrated strains (bark_params.hpp) kept for any lattice size
-    if (!f.given("delta_r")) a.p.delta_r *= float(a.p.N_R) / 128.0f;
-    if (!f.given("delta_h")) a.p.delta_h *= float(a.p.N_H) / 64.0f;
+    // chosen here: the texture keeps Table 3's calibrated strains (bark_params.hpp) at any
+    // lattice size (the growth rates are absolute: the same rates on a taller lattice strain
+    // it less)
+    if (a.texture && !f.given("delta_r")) a.p.delta_r *= float(a.p.N_R) / 128.0f;
+    if (a.texture && !f.given("delta_h")) a.p.delta_h *= float(a.p.N_H) / 64.0f;
     a.tex.width = a.tex.height = a.size;
     a.tex.colors = bark_texture_colors(sp);
     a.tex.seed = a.p.seed;

@@ -181,5 +181,20 @@ if [ $rc = 1 ] && grep -q 'colour.mesh:2: the colour' err.txt; then ok; else bad
 rc=$?
 if [ $rc = 1 ] && grep -q 'long.mesh:2: line longer than 1024 bytes' err.txt; then ok; else bad "long.mesh: rc $rc $(cat err.txt)"; fi
 
+# --- bark as a texture (--texture and its flags: a good run and a bad value each) ---
+good bark --species pine --texture --N_R 16 --size 32 -o bt -- bt_albedo.png bt_height16.png \
+     bt_height.pfm bt_normal.png
+good bark --species camphor --texture --N_R 16 --N_H 14 --size 16 --bevel 0.5 --relief 0.1 \
+     --tone 0.3 -o bt2 -- bt2_albedo.png bt2_normal.png
+if [ "$(sed -n 2p bt_height.pfm)" = "32 32" ]; then ok; else bad "bt_height.pfm header $(sed -n 2p bt_height.pfm)"; fi
+refused "--size must be a power of two in [8, 8192] (got 48)" bark --texture --size 48
+refused "--size must be an integer in [8, 8192]" bark --texture --size 4
+refused "--bevel must be a number in [0.01, 4]" bark --texture --bevel 9
+refused "--relief must be a number in [0, 1]" bark --texture --relief 2
+refused "--tone must be a number in [0, 1]" bark --texture --tone -1
+refused "add --texture" bark --size 64
+refused "--N_H must be >= 3 with --texture" bark --texture --N_H 2
+refused "takes no value" bark --texture=yes
+
 echo "cli tests: $pass passed, $fail failed"
 [ $fail = 0 ]
