@@ -44,22 +44,26 @@ Status ramp_error(const char* text, const char* why) {
                          text, why);
 }
 
-// Mean of the pixels [x0, x1) x [y0, y1) (continuous pixel coordinates) cover: clamped at
-// the borders, or wrapped (a periodic map).
+// Mean of the map over [x0, x1) x [y0, y1) (continuous pixel coordinates, pixel x covering
+// [x, x + 1)), each pixel weighted by the area it shares with the box: clamped at the
+// borders, or wrapped (a periodic map).
 float box_mean(const float* map, int w, int h, float x0, float x1, float y0, float y1,
                bool wrap) {
-    int ix0 = int(std::floor(x0)), ix1 = int(std::ceil(x1)) - 1;
-    int iy0 = int(std::floor(y0)), iy1 = int(std::ceil(y1)) - 1;
-    ix1 = std::max(ix0, ix1), iy1 = std::max(iy0, iy1);
-    double sum = 0;
-    int n = 0;
-    for (int y = iy0; y <= iy1; ++y)
+    const int ix0 = int(std::floor(x0)), ix1 = int(std::ceil(x1)) - 1;
+    const int iy0 = int(std::floor(y0)), iy1 = int(std::ceil(y1)) - 1;
+    double sum = 0, weight = 0;
+    for (int y = iy0; y <= iy1; ++y) {
+        const double wy = std::fmin(double(y) + 1.0, double(y1)) - std::fmax(double(y), double(y0));
         for (int x = ix0; x <= ix1; ++x) {
+            const double wx =
+                std::fmin(double(x) + 1.0, double(x1)) - std::fmax(double(x), double(x0));
             const int cx = wrap ? (x % w + w) % w : clamp(x, 0, w - 1);
             const int cy = wrap ? (y % h + h) % h : clamp(y, 0, h - 1);
-            sum += double(map[std::size_t(cy) * std::size_t(w) + std::size_t(cx)]), ++n;
+            sum += wx * wy * double(map[std::size_t(cy) * std::size_t(w) + std::size_t(cx)]);
+            weight += wx * wy;
         }
-    return float(sum / n);
+    }
+    return weight > 0 ? float(sum / weight) : map[0];
 }
 
 }  // namespace

@@ -18,9 +18,13 @@
 // Layout (chosen here, as fig. 21's terrain): the points lie on the x-z plane over
 // [-extent/2, extent/2]^2 (column c along +x, row r along -z, image row 0 at z = extent/2,
 // so dP/du x dP/dv = +y), y up; each point's height h_i = height_scale·(map value), displaced
-// along the plane's normal, +y. The map is resampled to points x points by the mean of the pixels each point's
-// cell covers (a box filter; a map smaller than the mesh is sampled at the cell centres).
-// Open (periodic = false): points x points control points, spaced extent/(points - 1).
+// along the plane's normal, +y. The map is resampled to points x points: each point takes
+// the mean of the map over its cell (1/points of the map a side; pixels weighted by the area
+// they share with the cell, so a map smaller than the mesh works too).
+// Open (periodic = false): points x points control points, spaced extent/(points - 1); point
+// c's cell is [c, c + 1)/points of the map.
+// Periodic: the cell is centred on the point the B-spline's u = c/points is centred on, and
+// wraps; the output maps (terrain_maps.hpp) then keep the input's pixels where they were.
 // Periodic: the map is one period of a tiling terrain. A uniform B-spline of degree n repeats
 // with period m when its (m + n) x (m + n) control points repeat with period m; so the m x m
 // points (spaced extent/m) are wrapped (wrap_control_mesh): m x m spans, one period of extent.
