@@ -196,5 +196,42 @@ refused "add --texture" bark --size 64
 refused "--N_H must be >= 3 with --texture" bark --texture --N_H 2
 refused "takes no value" bark --texture=yes
 
+# --- wrinkly from the shell: a height map in, the map set out, camera/jitter/ramp flags ---
+good wrinkly --height-map bt_height16.png --periodic --form superposed --K 2 --points 8 \
+     --map-size 32 --size 64 -o hm -- hm.obj hm.png hm_height16.png hm_height.pfm hm_albedo.png \
+     hm_normal.png
+good wrinkly --height-map bt_height.pfm --form superposed --K 2 --points 6 --extent 4 \
+     --height-scale 0.5 --ramp sand --jitter-height 0.1 --jitter-color 0.02 --seed 3 \
+     --azimuth 10 --elevation 45 --distance 3 --fov 30 --map-size 16 --size 48 -o hp -- \
+     hp.png hp_height16.png
+good wrinkly --height-map bt_height16.png --ramp "0:0,0,0;0.5:1,0,0;1:1,1,1" --points 5 \
+     --map-size 16 --size 32 --grid-level 1 -o hr -- hr_albedo.png
+good wrinkly --mesh "$ROOT/examples/data/ridge.mesh" --periodic --grid-level 2 --size 64 \
+     --map-size 32 -o rp -- rp.obj rp_height16.png rp_normal.png
+good wrinkly --mesh "$ROOT/examples/data/fig21_terrain.mesh" --form superposed --K 2 \
+     --grid-level 2 --jitter-height 0.12 --jitter-color 0.035 --size 64 --map-size 32 -o f21 -- \
+     f21.png f21_albedo.png
+if [ "$(sed -n 2p hm_height.pfm)" = "32 32" ]; then ok; else bad "hm_height.pfm header $(sed -n 2p hm_height.pfm)"; fi
+refused "not both" wrinkly --mesh "$ROOT/examples/data/ridge.mesh" --height-map bt_height16.png
+refused "--map-size must be a power of two in [8, 8192] (got 48)" wrinkly --height-map bt_height16.png --map-size 48
+refused "--map-size must be an integer in [8, 8192]" wrinkly --height-map bt_height16.png --map-size 4
+refused "--periodic needs --basis bspline" wrinkly --height-map bt_height16.png --periodic --basis bezier
+refused "--points must be an integer in [4, 1024]" wrinkly --height-map bt_height16.png --points 2
+refused "add --height-map" wrinkly --mesh "$ROOT/examples/data/ridge.mesh" --points 8
+refused "--extent must be a number in [0.001, 10000]" wrinkly --height-map bt_height16.png --extent 0
+refused "--height-scale must be a number in [0, 10000]" wrinkly --height-map bt_height16.png --height-scale -1
+refused "--ramp: colour ramp \"heat\"" wrinkly --height-map bt_height16.png --ramp heat
+refused "--jitter-height must be a number in [0, 100]" wrinkly --height-map bt_height16.png --jitter-height 200
+refused "jitter the samples of --form superposed" wrinkly --height-map bt_height16.png --jitter-height 0.1
+refused "--jitter-color must be a number in [0, 1]" wrinkly --height-map bt_height16.png --form superposed --jitter-color 2
+refused "--azimuth must be a number in [-360, 360]" wrinkly --height-map bt_height16.png --azimuth 400
+refused "--elevation must be a number in [1, 89]" wrinkly --height-map bt_height16.png --elevation 0
+refused "--distance must be a number in [0.5, 50]" wrinkly --height-map bt_height16.png --distance 0.1
+refused "--fov must be a number in [5, 120]" wrinkly --height-map bt_height16.png --fov 200
+refused "takes no value" wrinkly --height-map bt_height16.png --periodic=1
+"$BIN" wrinkly --height-map /nonexistent.png > out.txt 2> err.txt
+rc=$?
+if [ $rc = 1 ] && grep -q 'nonexistent.png' err.txt; then ok; else bad "wrinkly --height-map of a missing file: rc $rc $(cat err.txt)"; fi
+
 echo "cli tests: $pass passed, $fail failed"
 [ $fail = 0 ]
