@@ -65,7 +65,7 @@ void add_bark_flags(FlagSet& f, BarkArgs& a) {
              "Table 2: mean critical elongation ratio, diagonal (species)");
     f.integer("N_R", &a.p.N_R, 4, 4096, "Table 1: nodes around (even; chosen 128)");
     f.integer("N_H", &a.p.N_H, 2, 4096,
-              "Table 1: nodes along the axis (chosen 64; --texture: a square period, 110)");
+              "Table 1: nodes along the axis (chosen 64; --texture: a square period, 109)");
     f.number("D", &a.p.D, 0.001, 100, "§5.1: layer thickness D [cm] (chosen 0.55)");
     f.number("sigma", &a.p.sigma, 0, 0.2999, "Table 1: spread of the critical elongation (chosen)");
     f.number("T", &a.p.T, 0.001, 1e6, "Table 1: growth period T [s] (chosen 100)");

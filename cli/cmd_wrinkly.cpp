@@ -158,7 +158,7 @@ std::uint8_t byte(float v) { return std::uint8_t(clamp(v, 0.0f, 1.0f) * 255.0f +
 // The map set: <o>_height16.png (lo .. hi -> 0 .. 65535), <o>_height.pfm (world units),
 // <o>_albedo.png (the carried colours), <o>_normal.png (OpenGL, true slope; wrapped when
 // periodic). `world_px`: world units per pixel along u.
-Status write_maps(const WrinklyArgs& a, const TerrainMaps& m, float world_px) {
+Status write_terrain_maps(const WrinklyArgs& a, const TerrainMaps& m, float world_px) {
     const int n = m.width;
     const std::size_t count = m.heights.size();
     Gray16Image h16;
@@ -311,7 +311,7 @@ int run_wrinkly(int argc, char** argv) {
     OutputSet files;  // the OBJ, the picture and the maps appear together, or none
     s = write_obj((a.out + ".obj").c_str(), tri);
     if (s) s = render_picture(a, tri);
-    if (s) s = write_maps(a, maps, std::fmax(1e-6f, world_u) / float(a.map_size));
+    if (s) s = write_terrain_maps(a, maps, std::fmax(1e-6f, world_u) / float(a.map_size));
     if (s) s = files.commit();
     if (!s) return f.fail_status(s);
     progress.report(1.0f);
