@@ -111,6 +111,7 @@ cli:
 # one-line message naming it (tests/cli/run.sh); failed writes (disk full, read-only or missing
 # directories, a signal mid-write) leave nothing behind and name the reason (tests/cli/faults.sh).
 test-cli: deps
+	$(call ensure_packages,$(CLI_REQUIRED))
 	@$(SUBMAKE) $(CLI)
 	bash tests/cli/run.sh $(CLI)
 	bash tests/cli/faults.sh $(CLI)
@@ -121,6 +122,8 @@ BENCH_REQUIRED := /usr/include/libnoise/noise.h:libnoise-dev /usr/include/boost/
                   /usr/include/CGAL/Surface_mesh.h:libcgal-dev /usr/include/CGAL/Delaunay_triangulation_2.h:libcgal-dev
 # The checks written in Python (tools/*.py: module map, manual snippets, function lengths).
 PY_REQUIRED := /usr/bin/python3:python3
+# test-cli reads the tool's EXR maps back through an independent reader (tests/cli/exr_readback.py).
+CLI_REQUIRED := /usr/share/doc/python3-openimageio/copyright:python3-openimageio /usr/share/doc/python3-numpy/copyright:python3-numpy
 CONSUMER_REQUIRED := /usr/bin/cmake:cmake /usr/bin/pkg-config:pkg-config /usr/bin/git:git
 define ensure_packages
 	@missing=""; for pair in $(1); do f=$${pair%%:*}; p=$${pair##*:}; \

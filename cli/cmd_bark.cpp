@@ -7,15 +7,13 @@
 
 #include "commands.hpp"
 #include "flags.hpp"
+#include "preview.hpp"
 #include "shitsukan/bark/bark.hpp"
 #include "shitsukan/bark/bark_texture.hpp"
 #include "shitsukan/core/scalar.hpp"
 #include "shitsukan/core/output_file.hpp"
 #include "shitsukan/geom/obj.hpp"
 #include "shitsukan/image/image_io.hpp"
-#include "shitsukan/image/normal_map.hpp"
-#include "shitsukan/image/pfm.hpp"
-#include "shitsukan/image/png16.hpp"
 #include "shitsukan/image/raster_canvas.hpp"
 #include "shitsukan/render/bark_crack_map.hpp"
 
@@ -47,7 +45,8 @@ struct BarkArgs {
     SpeciesParams given = species_preset(Species::camphor);  // Table 2 values given as flags
     int species = 0, size = 1024;
     float px_per_cm = 24.0f;
-    std::string out = "bark";
+    MapFlags maps;  // -o: the prefix of every file (map set: docs/TOOL.md)
+    std::string preview;
     bool no_csv = false, texture = false;
     BarkTextureOptions tex;
 };
@@ -79,17 +78,19 @@ void add_bark_flags(FlagSet& f, BarkArgs& a) {
     f.toggle("no-csv", &a.no_csv, "skip the three CSV files");
     f.toggle("texture", &a.texture,
              "a seamless map set instead (lattice periodic along the axis too): <o>_albedo.png,\n"
-             "<o>_height16.png, <o>_height.pfm (cm), <o>_normal.png (OpenGL)");
+             "_height16.png, _height.exr (cm), _normal.png, _roughness.png, _ao.png");
     f.integer("size", &a.size, 8, 8192, "--texture: map side in pixels (a power of two)");
     f.number("bevel", &a.tex.bevel, 0.01, 4, "--texture: rounded plate edge, x D (chosen 0.25)");
     f.number("relief", &a.tex.relief, 0, 1, "--texture: spread of plate tops, x D (chosen 0.2)");
     f.number("tone", &a.tex.tone, 0, 1, "--texture: spread of plate tones (chosen 0.24)");
-    f.text("o", &a.out, "output prefix");
+    a.maps.prefix = "bark";
+    add_map_flags(f, a.maps);
+    f.text("preview", &a.preview, "--texture: also the map set on a lit sphere and plane, one PNG");
 }
 
 // The species preset, the Table 2 values given, the texture mode's defaults; 0 or exit code.
 int finish_bark_args(FlagSet& f, BarkArgs& a) {
-    if (int e = f.check_prefix("o", a.out)) return e;
+    if (int e = check_map_flags(f, a.maps)) return e;
     const Species sp = Species(a.species);
     a.p.species = species_preset(sp);
     if (f.given("L0")) a.p.species.L0 = a.given.L0;
@@ -100,12 +101,13 @@ int finish_bark_args(FlagSet& f, BarkArgs& a) {
     if (f.given("kappa2")) a.p.species.kappa2 = a.given.kappa2;
     if (a.p.N_R % 2 != 0)
         return f.fail("--N_R must be an even integer in [4, 4096] (got %d)", a.p.N_R);
-    const bool texture_only[] = {f.given("size"), f.given("bevel"), f.given("relief"),
-                                 f.given("tone")};
-    for (bool g : texture_only)
-        if (g && !a.texture)
-            return f.fail("--size, --bevel, --relief and --tone shape the --texture maps; "
-                          "add --texture");
+    const char* texture_only[] = {"size",   "bevel",  "relief",    "tone",
+                                  "normal", "float",  "strength",  "ao-radius", "preview"};
+    for (const char* name : texture_only)
+        if (f.given(name) && !a.texture)
+            return f.fail("--%s shapes the --texture maps; add --texture", name);
+    if (!a.preview.empty())
+        if (int e = f.check_output("preview", a.preview, ".png")) return e;
     if (a.texture && (a.size & (a.size - 1)) != 0)
         return f.fail("--size must be a power of two in [8, 8192] (got %d)", a.size);
     if (a.texture && !f.given("N_H")) {
@@ -130,7 +132,7 @@ int finish_bark_args(FlagSet& f, BarkArgs& a) {
 Status write_simulation(const BarkArgs& a, const BarkCylinder& bark) {
     const float T = a.p.T;
     const Vec3* W = bark.net.W.data();
-    const std::string& out = a.out;
+    const std::string& out = a.maps.prefix;
     RgbImage map;
     SHITSUKAN_TRY(draw_cracks(bark, T, W, a.px_per_cm, &map));
     SHITSUKAN_TRY(write_png((out + "_cracks.png").c_str(), map.view()));
@@ -141,34 +143,26 @@ Status write_simulation(const BarkArgs& a, const BarkCylinder& bark) {
     return write_obj((out + "_trunk.obj").c_str(), trunk);
 }
 
-// The texture's map set: albedo, height (16-bit PNG scaled to the highest plate, PFM in cm),
-// normals (OpenGL, wrapped, at the true slope: strength = highest plate in pixels).
-Status write_texture(const BarkArgs& a, const BarkTexture& tex) {
-    const std::string& out = a.out;
-    const int w = tex.width, h = tex.height;
-    RgbImage albedo;
-    Gray16Image height16;
-    SHITSUKAN_TRY(albedo.try_resize(w, h));
-    SHITSUKAN_TRY(height16.try_resize(w, h));
-    std::vector<float> unit(tex.height_cm.size());
-    for (std::size_t i = 0; i < unit.size(); ++i) {
-        albedo.data()[i] = Rgb8{tex.albedo[3 * i], tex.albedo[3 * i + 1], tex.albedo[3 * i + 2]};
-        unit[i] = tex.max_height > 0.0f ? tex.height_cm[i] / tex.max_height : 0.0f;
-        height16.data()[i] = std::uint16_t(std::lround(clamp(unit[i], 0.0f, 1.0f) * 65535.0f));
+// The texture's map set (image/map_set.hpp): the albedo, the heights in cm, the normal and AO
+// at the true slope unless --strength is given (the relief's range in pixels), wrapped.
+int write_texture(const FlagSet& f, const BarkArgs& a, const BarkTexture& tex,
+                  std::vector<std::string>& written) {
+    std::vector<Rgb8> albedo(tex.height_cm.size());
+    for (std::size_t i = 0; i < albedo.size(); ++i)
+        albedo[i] = Rgb8{tex.albedo[3 * i], tex.albedo[3 * i + 1], tex.albedo[3 * i + 2]};
+    MapSetOptions options = map_set_options(a.maps, true);
+    if (!f.given("strength")) {
+        const auto mm = std::minmax_element(tex.height_cm.begin(), tex.height_cm.end());
+        options.strength = (*mm.second - *mm.first) / tex.cm_per_pixel;
     }
-    SHITSUKAN_TRY(write_png((out + "_albedo.png").c_str(), albedo.view()));
-    SHITSUKAN_TRY(write_png16((out + "_height16.png").c_str(), height16.view()));
-    SHITSUKAN_TRY(write_pfm((out + "_height.pfm").c_str(), tex.height_cm.data(), w, h, 1));
-    HeightNormalOptions o;
-    o.strength = tex.max_height / tex.cm_per_pixel;
-    o.wrap = true;
-    std::vector<Vec3> normals(unit.size());
-    SHITSUKAN_TRY(height_map_normals(unit.data(), w, h, o, normals.data()));
-    std::vector<std::uint8_t> bytes(3 * normals.size());
-    encode_normal_rgb8(normals.data(), normals.size(), bytes.data());
-    for (std::size_t i = 0; i < unit.size(); ++i)
-        albedo.data()[i] = Rgb8{bytes[3 * i], bytes[3 * i + 1], bytes[3 * i + 2]};
-    return write_png((out + "_normal.png").c_str(), albedo.view());
+    const MapSetInput input{albedo.data(), tex.height_cm.data(), tex.width, tex.height};
+    if (int e = write_maps(f, a.maps, input, options, &written)) return e;
+    if (!a.preview.empty()) {
+        const Status s = write_map_preview(a.preview.c_str(), input, options);
+        if (!s) return f.fail_status(s);
+        written.push_back(a.preview);
+    }
+    return 0;
 }
 
 }  // namespace
@@ -203,18 +197,21 @@ int run_bark(int argc, char** argv) {
     if (!s) return f.fail_status(s);
     OutputSet files;  // every file of the run appears, or none (core/output_file.hpp)
     const Species sp = Species(a.species);
-    const char* o = a.out.c_str();
+    const char* o = a.maps.prefix.c_str();
     if (a.texture) {
         BarkTexture tex;
         if (!(s = make_bark_texture(bark, a.p.T, W, &rep, a.tex, tex))) return f.fail_status(s);
-        if (!(s = write_texture(a, tex)) || !(s = files.commit())) return f.fail_status(s);
+        std::vector<std::string> written;
+        if (int e = write_texture(f, a, tex, written)) return e;
+        if (!(s = files.commit())) return f.fail_status(s);
+        std::string list;
+        for (const std::string& name : written) list += (list.empty() ? "" : ", ") + name;
         std::fprintf(stderr,
                      "shitsukan bark: %s texture %d x %d px = %.2f x %.2f cm (around x along), "
-                     "%d breaks, %d plates, mean crack width %.3f cm, relief %.3f cm; wrote "
-                     "%s_albedo.png, %s_height16.png, %s_height.pfm, %s_normal.png\n",
+                     "%d breaks, %d plates, mean crack width %.3f cm, relief %.3f cm; wrote %s\n",
                      species_name(sp), tex.width, tex.height, double(tex.period_u),
                      double(tex.period_z), int(run.breaks.size()), tex.plates,
-                     double(tex.mean_crack_width), double(tex.max_height), o, o, o, o);
+                     double(tex.mean_crack_width), double(tex.max_height), list.c_str());
         return 0;
     }
     if (!(s = write_simulation(a, bark)) || !(s = files.commit())) return f.fail_status(s);

@@ -1,5 +1,6 @@
 // cli/cmd_leather.cpp — `shitsukan leather` (tokai1994 §3.1 scale pattern, §3.2 relief).
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -13,6 +14,8 @@
 #include "shitsukan/image/pfm.hpp"
 #include "shitsukan/image/png16.hpp"
 #include "shitsukan/image/svg_canvas.hpp"
+#include "preview.hpp"
+#include "shitsukan/leather/leather_looks.hpp"
 #include "shitsukan/leather/maps.hpp"
 #include "shitsukan/leather/scale_division.hpp"
 #include "shitsukan/leather/tileable.hpp"
@@ -93,99 +96,101 @@ Status make_pattern(const ScaleParams& prm, int layout, bool tileable, ScalePatt
     return perturb_subdivision(sub, prm.perturbation, prm.seed, prm.width, prm.height, *pattern);
 }
 
-}  // namespace
 
-int run_leather(int argc, char** argv) {
+struct LeatherRun {
     ScaleParams prm;
     ReliefOptions relief;
-    int section = 0, size = 1024, mesh_step = 0;
-    std::string out = "leather", control;
-    bool pfm = false, tileable = false;
-    int layout = 0;
-    FlagSet f("leather",
-              "tokai1994 §3.1: the crocodile-belly scale pattern, a two-stage Voronoi division\n"
-              "(stage 1 vertical, stage 2 horizontal inside each stage-1 polygon) and the edge\n"
-              "perturbation (processing 4); §3.2: each scale's relief from a Bezier cross-section\n"
-              "z(r) (eqs. (2)-(4), Table 1). Writes <o>_height16.png (16-bit height), <o>_normal.png\n"
-              "(RGB normal map, OpenGL convention, green = +y), <o>_pattern.svg, and on request\n"
-              "<o>_height.pfm and <o>_relief.obj. Pattern units: the region is W x H.\n"
-              "--layout square|triangular: fig. 3's lattices (one Voronoi stage) instead of the belly.\n"
-              "--tileable: the maps repeat with no seam (a periodic Voronoi division on a torus,\n"
-              "the same perturbation on both sides of each seam; not in the paper). The lattices\n"
-              "tile along x and y (D is rounded so whole columns and rows fit the tile); the belly\n"
-              "tiles along y only (D rounded so whole rows fit H): its size gradient toward the left\n"
-              "and right edges (fig. 6) is not periodic by nature.",
-              "shitsukan leather [flags] [-o prefix]");
-    f.number("W", &prm.width, 0.01, 100, "§3.1: width of the pattern region");
-    f.number("H", &prm.height, 0.01, 100, "§3.1: height of the pattern region");
-    f.number("D", &prm.D, 0.001, 10, "§3.1 (1): seed spacing D (chosen: 10 rows a unit)");
-    f.number("d", &prm.d, 0, 10, "§3.1 (1): stage-1 rows' distance d from the centre (fig. 7: D)");
-    f.number("a", &prm.a, 0, 1, "§3.1 processing 2: random move a of the seeds (fig. 7)");
-    f.number("edge-ratio", &prm.edge_ratio, 0.051, 1,
+    int section = 0, size = 1024, mesh_step = 0, layout = 0;
+    bool tileable = false;
+    MapFlags maps;
+    std::string control, look_text, preview;
+    BezierChain chain;
+    Vec3 crevice{96, 72, 44}, top{214, 190, 146};  // the belly look's colours (leather_looks)
+};
+
+const char* kLeatherAbout =
+    "tokai1994 §3.1: the crocodile-belly scale pattern, a two-stage Voronoi division\n"
+    "(stage 1 vertical, stage 2 horizontal inside each stage-1 polygon) and the edge\n"
+    "perturbation (processing 4); §3.2: each scale's relief from a Bezier cross-section\n"
+    "z(r) (eqs. (2)-(4), Table 1). Writes the map set (docs/TOOL.md): <o>_albedo.png (the look's\n"
+    "crevice and crown colours mixed by the height), <o>_height16.png, <o>_height.exr,\n"
+    "<o>_normal.png (OpenGL, green = +y; --normal directx), <o>_roughness.png, <o>_ao.png, and\n"
+    "<o>_pattern.svg; on request <o>_relief.obj. Pattern units: the region is W x H.\n"
+    "--layout square|triangular: fig. 3's lattices (one Voronoi stage) instead of the belly.\n"
+    "--tileable: the maps repeat with no seam (a periodic Voronoi division on a torus,\n"
+    "the same perturbation on both sides of each seam; not in the paper).\n"
+    "--strength: unless given, the relief's true scale (heights in pattern units over the\n"
+    "pixel size).";
+
+void add_leather_flags(FlagSet& f, LeatherRun& r) {
+    f.text("look", &r.look_text, "a named look: crocodile-belly|crocodile-back (flags given "
+                                 "beside it win)");
+    f.number("W", &r.prm.width, 0.01, 100, "§3.1: width of the pattern region");
+    f.number("H", &r.prm.height, 0.01, 100, "§3.1: height of the pattern region");
+    f.number("D", &r.prm.D, 0.001, 10, "§3.1 (1): seed spacing D (chosen: 10 rows a unit)");
+    f.number("d", &r.prm.d, 0, 10, "§3.1 (1): stage-1 rows' distance d from the centre (fig. 7: D)");
+    f.number("a", &r.prm.a, 0, 1, "§3.1 processing 2: random move a of the seeds (fig. 7)");
+    f.number("edge-ratio", &r.prm.edge_ratio, 0.051, 1,
              "§3.1 (2): stage-2 spacing at the edges / D (chosen)");
-    f.number("p", &prm.perturbation.p, 0, 1, "§3.1 processing 4: perturbation amplitude p (fig. 7)");
-    f.integer("levels", &prm.perturbation.levels, 0, kMaxPerturbationLevels,
+    f.number("p", &r.prm.perturbation.p, 0, 1,
+             "§3.1 processing 4: perturbation amplitude p (fig. 7)");
+    f.integer("levels", &r.prm.perturbation.levels, 0, kMaxPerturbationLevels,
               "§3.1 processing 4: recursion levels of the perturbation (chosen)");
-    f.seed(&prm.seed, "seed moves and perturbation (chosen 1)");
-    f.choice("section", &section, "convex|concave|two_segment",
+    f.seed(&r.prm.seed, "seed moves and perturbation (chosen 1)");
+    f.choice("section", &r.section, "convex|concave|two_segment",
              "§3.2 Table 1 cross-section: figs. 13(a), 14(a), 15(a)");
-    f.choice("layout", &layout, "belly|square|triangular",
+    f.choice("layout", &r.layout, "belly|square|triangular",
              "§3.1: figs. 4-7's two-stage belly, or fig. 3's square / triangular lattice");
-    f.toggle("tileable", &tileable,
-             "seamless tiles (lattices: x and y; belly: along y only, see above)");
-    f.text("control", &control,
+    f.toggle("tileable", &r.tileable, "seamless tiles along x and y");
+    f.text("control", &r.control,
            "your own section: r0,z0,r1,z1,r2,z2,r3,z3[;next segment] (eq. (2) control points)");
-    f.number("edge-r", &relief.edge_r, 0.01, 10, "§3.2: r at the scale's edge (chosen 1)");
-    f.number("height-scale", &relief.height_scale, 0.001, 1000, "§3.2: heights times this");
+    f.number("edge-r", &r.relief.edge_r, 0.01, 10, "§3.2: r at the scale's edge (chosen 1)");
+    f.number("height-scale", &r.relief.height_scale, 0.001, 1000, "§3.2: heights times this");
     // 8192 at most: the maps are held whole (make_leather_maps: 20 bytes a pixel, labels,
     // heights and normals), so 16384 x 16384 needs 5.4 GB, over the default memory budget of
     // 4 GiB, and was refused after being offered; 8192 needs 1.3 GB plus 0.6 GB of PNG rows.
-    f.integer("size", &size, 8, 8192, "map side in pixels (W x H mapped to size x size·H/W)");
-    f.text("o", &out, "output prefix");
-    f.toggle("pfm", &pfm, "also <o>_height.pfm: the heights as floats (pattern units)");
-    f.integer("obj-step", &mesh_step, 0, 4096,
+    f.integer("size", &r.size, 8, 8192, "map side in pixels (W x H mapped to size x size·H/W)");
+    add_map_flags(f, r.maps);
+    f.text("preview", &r.preview, "also the map set on a lit sphere and plane, one PNG");
+    f.integer("obj-step", &r.mesh_step, 0, 4096,
               "also <o>_relief.obj, one vertex every this many pixels (0 = no OBJ)");
-    const int rc = f.parse(argc, argv);
-    if (rc != kParsed) return rc;
-    if (int e = f.check_prefix("o", out)) return e;
-    BezierChain chain = table1_section(Table1Section(section));
-    if (!control.empty()) {
+}
+
+// The look's values for every flag not given beside it; then the section.
+int settle_leather(const FlagSet& f, LeatherRun& r) {
+    if (!r.look_text.empty()) {
+        const LeatherLook* look = find_leather_look(r.look_text.c_str());
+        if (look == nullptr)
+            return f.fail("--look must be one of %s (got \"%s\")", leather_look_names(),
+                          r.look_text.c_str());
+        if (!f.given("layout")) r.layout = look->layout;
+        if (!f.given("section")) r.section = int(look->section);
+        if (!f.given("D")) r.prm.D = look->D;
+        if (!f.given("d")) r.prm.d = look->d;
+        if (!f.given("a")) r.prm.a = look->a;
+        if (!f.given("p")) r.prm.perturbation.p = look->p;
+        r.crevice = look->crevice, r.top = look->top;
+    }
+    r.chain = table1_section(Table1Section(r.section));
+    if (!r.control.empty()) {
         if (f.given("section")) return f.fail("--control and --section: give one of them");
-        if (!parse_section(control, &chain))
+        if (!parse_section(r.control, &r.chain))
             return f.fail("--control must be 8 numbers r0,z0,...,r3,z3 per segment, segments "
                           "separated by ';', at most %d (got \"%s\")",
-                          kMaxChainSegments, control.c_str());
-        Status s = validate_section(chain);
+                          kMaxChainSegments, r.control.c_str());
+        Status s = validate_section(r.chain);
         if (!s) return f.fail("--control: %s", s.message());
     }
-    Status s = check_scale_params(prm);
-    if (!s) return f.fail_status(s);
+    if (int e = check_map_flags(f, r.maps)) return e;
+    if (!r.preview.empty())
+        if (int e = f.check_output("preview", r.preview, ".png")) return e;
+    const Status s = check_scale_params(r.prm);
+    return s ? 0 : f.fail_status(s);
+}
 
-    Progress progress = f.progress("pattern and maps");
-    progress.report(0.0f);
-    ScalePattern pattern;
-    std::string note;
-    PartProgress pattern_part{progress, 0.0f, 0.2f};  // chosen: shares of a 2048 run's time
-    if (!(s = make_pattern(prm, layout, tileable, &pattern, &note, pattern_part.part())))
-        return f.fail_status(s);
-    const int w = size, h = std::max(1, int(float(size) * prm.height / prm.width + 0.5f));
-    LeatherMaps maps;
-    PartProgress maps_part{progress, 0.2f, 0.8f};
-    if (!(s = make_leather_maps(pattern, w, h, chain, relief, maps, maps_part.part())))
-        return f.fail_status(s);
-    Gray16Image height(w, h);
-    encode_height16(maps, height.data());
-    const std::string height_path = out + "_height16.png", normal_path = out + "_normal.png";
-    OutputSet files;  // every file of the run appears, or none (core/output_file.hpp)
-    if (!(s = write_png16(height_path.c_str(), height.view()))) return f.fail_status(s);
-    std::vector<std::uint8_t> rgb(3 * std::size_t(w) * std::size_t(h));
-    encode_normal_rgb(maps, rgb.data());
-    RgbImage normal(w, h);
-    for (std::size_t i = 0; i < std::size_t(w) * std::size_t(h); ++i)
-        normal.data()[i] = Rgb8{rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2]};
-    if (!(s = write_png(normal_path.c_str(), normal.view()))) return f.fail_status(s);
-    progress.report(0.9f);
-    // The pattern as vector outlines (pattern y up = SVG y down, flipped), 512 px wide.
+// The pattern as vector outlines (pattern y up = SVG y down, flipped), 512 px wide.
+Status write_pattern_svg(const std::string& path, const ScalePattern& pattern,
+                         const ScaleParams& prm) {
     const float px = 512.0f / prm.width;
     SvgCanvas svg_canvas(512, int(prm.height * px + 0.5f), Rgb8{255, 255, 255});
     for (int i = 0; i < pattern.polygon_count(); ++i) {
@@ -195,28 +200,82 @@ int run_leather(int argc, char** argv) {
         for (int k = 0; k < n; ++k) pts.push_back({poly[k].x * px, (prm.height - poly[k].y) * px});
         svg_canvas.polygon_outline(pts.data(), n, Rgb8{40, 30, 20}, 1.0f);
     }
-    if (!(s = svg_canvas.save(out + "_pattern.svg"))) return f.fail_status(s);
-    if (pfm) {
-        // rows flipped to the image convention (top row = largest y), like the PNGs
-        std::vector<float> top(maps.heights.size());
-        for (int j = 0; j < h; ++j)
-            for (int i = 0; i < w; ++i)
-                top[std::size_t(j) * w + i] = maps.at_height(i, h - 1 - j);
-        if (!(s = write_pfm((out + "_height.pfm").c_str(), top.data(), w, h, 1)))
-            return f.fail_status(s);
+    return svg_canvas.save(path);
+}
+
+// The map set: heights with the image's rows (top row = largest y), the albedo from them.
+int write_leather_maps(const FlagSet& f, const LeatherRun& r, const LeatherMaps& maps,
+                       std::vector<std::string>& written) {
+    const int w = maps.width, h = maps.height;
+    std::vector<float> top(maps.heights.size());
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) top[std::size_t(j) * w + i] = maps.at_height(i, h - 1 - j);
+    std::vector<float> h01;
+    Status s = normalise_heights(top.data(), w, h, h01);
+    if (!s) return f.fail_status(s);
+    std::vector<Rgb8> albedo(h01.size());
+    for (std::size_t i = 0; i < h01.size(); ++i) {
+        const Vec3 c = r.crevice + (r.top - r.crevice) * std::sqrt(h01[i]);
+        albedo[i] = Rgb8{std::uint8_t(c.x + 0.5f), std::uint8_t(c.y + 0.5f),
+                         std::uint8_t(c.z + 0.5f)};
     }
-    if (mesh_step > 0) {
+    MapSetOptions options = map_set_options(r.maps, r.tileable);
+    if (!f.given("strength")) {  // the true scale: pattern units of height over the pixel size
+        float lo = top[0], hi = top[0];
+        for (float v : top) lo = std::min(lo, v), hi = std::max(hi, v);
+        options.strength = (hi - lo) * float(w) / r.prm.width;
+    }
+    const MapSetInput input{albedo.data(), top.data(), w, h};
+    if (int e = write_maps(f, r.maps, input, options, &written)) return e;
+    if (!r.preview.empty()) {
+        if (!(s = write_map_preview(r.preview.c_str(), input, options))) return f.fail_status(s);
+        written.push_back(r.preview);
+    }
+    return 0;
+}
+
+}  // namespace
+
+int run_leather(int argc, char** argv) {
+    LeatherRun r;
+    r.maps.prefix = "leather";
+    FlagSet f("leather", kLeatherAbout, "shitsukan leather [flags] [-o prefix]");
+    add_leather_flags(f, r);
+    const int rc = f.parse(argc, argv);
+    if (rc != kParsed) return rc;
+    if (int e = settle_leather(f, r)) return e;
+
+    Progress progress = f.progress("pattern and maps");
+    progress.report(0.0f);
+    ScalePattern pattern;
+    std::string note;
+    PartProgress pattern_part{progress, 0.0f, 0.2f};  // chosen: shares of a 2048 run's time
+    Status s = make_pattern(r.prm, r.layout, r.tileable, &pattern, &note, pattern_part.part());
+    if (!s) return f.fail_status(s);
+    const int w = r.size, h = std::max(1, int(float(r.size) * r.prm.height / r.prm.width + 0.5f));
+    LeatherMaps maps;
+    PartProgress maps_part{progress, 0.2f, 0.8f};
+    if (!(s = make_leather_maps(pattern, w, h, r.chain, r.relief, maps, maps_part.part())))
+        return f.fail_status(s);
+    OutputSet files;  // every file of the run appears, or none (core/output_file.hpp)
+    std::vector<std::string> written;
+    if (int e = write_leather_maps(f, r, maps, written)) return e;
+    progress.report(0.9f);
+    if (!(s = write_pattern_svg(r.maps.prefix + "_pattern.svg", pattern, r.prm)))
+        return f.fail_status(s);
+    written.push_back(r.maps.prefix + "_pattern.svg");
+    if (r.mesh_step > 0) {
         TriangleMesh mesh;
-        if (!(s = make_relief_mesh(maps, mesh_step, 1.0f, mesh))) return f.fail_status(s);
-        if (!(s = write_obj((out + "_relief.obj").c_str(), mesh))) return f.fail_status(s);
+        if (!(s = make_relief_mesh(maps, r.mesh_step, 1.0f, mesh))) return f.fail_status(s);
+        if (!(s = write_obj((r.maps.prefix + "_relief.obj").c_str(), mesh))) return f.fail_status(s);
+        written.push_back(r.maps.prefix + "_relief.obj");
     }
     if (!(s = files.commit())) return f.fail_status(s);
     progress.report(1.0f);
-    std::fprintf(stderr,
-                 "shitsukan leather: %d scales; wrote %s, %s, %s_pattern.svg%s%s (%d x %d; height "
-                 "unit = %.3g pattern units)%s\n",
-                 pattern.polygon_count(), height_path.c_str(), normal_path.c_str(), out.c_str(),
-                 pfm ? ", _height.pfm" : "", mesh_step > 0 ? ", _relief.obj" : "", w, h,
+    std::string list;
+    for (const std::string& name : written) list += (list.empty() ? "" : ", ") + name;
+    std::fprintf(stderr, "shitsukan leather: %d scales; wrote %s (%d x %d; height unit = %.3g "
+                 "pattern units)%s\n", pattern.polygon_count(), list.c_str(), w, h,
                  double(maps.max_height) / 65535.0, note.c_str());
     return 0;
 }

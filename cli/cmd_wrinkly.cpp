@@ -9,14 +9,12 @@
 
 #include "commands.hpp"
 #include "flags.hpp"
+#include "preview.hpp"
 #include "shitsukan/core/output_file.hpp"
 #include "shitsukan/core/scalar.hpp"
 #include "shitsukan/geom/mesh_builders.hpp"
 #include "shitsukan/geom/obj.hpp"
 #include "shitsukan/image/image_io.hpp"
-#include "shitsukan/image/normal_map.hpp"
-#include "shitsukan/image/pfm.hpp"
-#include "shitsukan/image/png16.hpp"
 #include "shitsukan/raster/camera.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
 #include "shitsukan/wrinkly/control_mesh_read.hpp"
@@ -50,7 +48,8 @@ struct WrinklyArgs {
     float azimuth = 45.0f, elevation = 28.0f, distance = 2.7f, fov = 41.0f;
     std::uint32_t seed = 21;
     bool periodic = false;
-    std::string mesh_path, height_map, ramp = "terrain", out = "wrinkly";
+    std::string mesh_path, height_map, ramp = "terrain", preview;
+    MapFlags maps;  // -o: the prefix of every file (map set: docs/TOOL.md)
 };
 
 void add_wrinkly_flags(FlagSet& f, WrinklyArgs& a) {
@@ -85,11 +84,15 @@ void add_wrinkly_flags(FlagSet& f, WrinklyArgs& a) {
     f.number("fov", &a.fov, 5, 120, "vertical field of view, degrees");
     f.integer("size", &a.size, 8, 8192, "picture side in pixels");
     f.integer("map-size", &a.map_size, 8, 8192, "side of the maps written (a power of two)");
-    f.text("o", &a.out, "output prefix");
+    a.maps.prefix = "wrinkly";
+    add_map_flags(f, a.maps);
+    f.text("preview", &a.preview, "also the map set on a lit sphere and plane, one PNG");
 }
 
 int check_wrinkly_args(FlagSet& f, WrinklyArgs& a) {
-    if (int e = f.check_prefix("o", a.out)) return e;
+    if (int e = check_map_flags(f, a.maps)) return e;
+    if (!a.preview.empty())
+        if (int e = f.check_output("preview", a.preview, ".png")) return e;
     if (a.mesh_path.empty() == a.height_map.empty())
         return f.fail("--mesh is required (a control-mesh file; see --help), or --height-map "
                       "instead, not both");
@@ -155,37 +158,24 @@ Status build_surface(const WrinklyArgs& a, const WrControlMesh& mesh, WrSurface&
 
 std::uint8_t byte(float v) { return std::uint8_t(clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); }
 
-// The map set: <o>_height16.png (lo .. hi -> 0 .. 65535), <o>_height.pfm (world units),
-// <o>_albedo.png (the carried colours), <o>_normal.png (OpenGL, true slope; wrapped when
-// periodic). `world_px`: world units per pixel along u.
-Status write_terrain_maps(const WrinklyArgs& a, const TerrainMaps& m, float world_px) {
-    const int n = m.width;
-    const std::size_t count = m.heights.size();
-    Gray16Image h16;
-    RgbImage rgb;
-    SHITSUKAN_TRY(h16.try_resize(n, m.height));
-    SHITSUKAN_TRY(rgb.try_resize(n, m.height));
-    const float range = m.hi > m.lo ? m.hi - m.lo : 1.0f;
-    std::vector<float> unit(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        unit[i] = (m.heights[i] - m.lo) / range;
-        h16.data()[i] = std::uint16_t(std::lround(clamp(unit[i], 0.0f, 1.0f) * 65535.0f));
-        rgb.data()[i] = Rgb8{byte(m.color[i].x), byte(m.color[i].y), byte(m.color[i].z)};
+// The map set (image/map_set.hpp) of H and the carried colour; the normal and AO at the true
+// slope unless --strength is given (H's range over `world_px`, world units per pixel along
+// u), wrapped when periodic.
+int write_terrain_maps(const FlagSet& f, const WrinklyArgs& a, const TerrainMaps& m,
+                       float world_px, std::vector<std::string>& written) {
+    std::vector<Rgb8> albedo(m.heights.size());
+    for (std::size_t i = 0; i < albedo.size(); ++i)
+        albedo[i] = Rgb8{byte(m.color[i].x), byte(m.color[i].y), byte(m.color[i].z)};
+    MapSetOptions options = map_set_options(a.maps, a.periodic);
+    if (!f.given("strength")) options.strength = (m.hi - m.lo) / world_px;
+    const MapSetInput input{albedo.data(), m.heights.data(), m.width, m.height};
+    if (int e = write_maps(f, a.maps, input, options, &written)) return e;
+    if (!a.preview.empty()) {
+        const Status s = write_map_preview(a.preview.c_str(), input, options);
+        if (!s) return f.fail_status(s);
+        written.push_back(a.preview);
     }
-    const std::string& o = a.out;
-    SHITSUKAN_TRY(write_png16((o + "_height16.png").c_str(), h16.view()));
-    SHITSUKAN_TRY(write_pfm((o + "_height.pfm").c_str(), m.heights.data(), n, m.height, 1));
-    SHITSUKAN_TRY(write_png((o + "_albedo.png").c_str(), rgb.view()));
-    HeightNormalOptions no;
-    no.strength = range / world_px;
-    no.wrap = a.periodic;
-    std::vector<Vec3> normals(count);
-    SHITSUKAN_TRY(height_map_normals(unit.data(), n, m.height, no, normals.data()));
-    std::vector<std::uint8_t> bytes(3 * count);
-    encode_normal_rgb8(normals.data(), count, bytes.data());
-    for (std::size_t i = 0; i < count; ++i)
-        rgb.data()[i] = Rgb8{bytes[3 * i], bytes[3 * i + 1], bytes[3 * i + 2]};
-    return write_png((o + "_normal.png").c_str(), rgb.view());
+    return 0;
 }
 
 // The periodic surface as a mesh: one period of the maps on the base surface (P + H·N), at
@@ -235,7 +225,7 @@ Status render_picture(const WrinklyArgs& a, const TriangleMesh& mesh) {
     DrawOptions dopt;
     dopt.cull = CullMode::none;
     SHITSUKAN_TRY(draw_mesh(camera, band, mesh.view(), dopt, shader));
-    return write_png((a.out + ".png").c_str(), color.view());
+    return write_png((a.maps.prefix + ".png").c_str(), color.view());
 }
 
 // The surface sampled (superposed: §4.2's hierarchy) and tessellated as §4.2 does (open) or
@@ -286,8 +276,9 @@ int run_wrinkly(int argc, char** argv) {
               "the steps k = 0..K with weights (1 - delta)·delta^k (eq. (19)), hierarchically sampled\n"
               "(eq. (20), §4.2). The shell: a control-mesh file (\"cols rows\", then one point a line:\n"
               "x y z h [r g b [delta]]) or --height-map. Writes <o>.obj (uv = (u, v), vertex\n"
-              "colours), <o>.png (shaded) and the maps <o>_height16.png, <o>_height.pfm,\n"
-              "<o>_albedo.png, <o>_normal.png (H and the colour over u, v in [0, 1)).",
+              "colours), <o>.png (shaded) and the map set of H and the colour over u, v in\n"
+              "[0, 1): <o>_albedo.png, _height16.png, _height.exr, _normal.png, _roughness.png,\n"
+              "_ao.png (docs/TOOL.md).",
               "shitsukan wrinkly --mesh control.txt | --height-map h.png [flags] [-o prefix]");
     add_wrinkly_flags(f, a);
     const int rc = f.parse(argc, argv);
@@ -309,18 +300,20 @@ int run_wrinkly(int argc, char** argv) {
     const float world_u = length(surface.base_point(1.0f, 0.5f).position -
                                  surface.base_point(0.0f, 0.5f).position);
     OutputSet files;  // the OBJ, the picture and the maps appear together, or none
-    s = write_obj((a.out + ".obj").c_str(), tri);
+    const std::string& o = a.maps.prefix;
+    std::vector<std::string> written{o + ".obj", o + ".png"};
+    s = write_obj((o + ".obj").c_str(), tri);
     if (s) s = render_picture(a, tri);
-    if (s) s = write_terrain_maps(a, maps, std::fmax(1e-6f, world_u) / float(a.map_size));
-    if (s) s = files.commit();
     if (!s) return f.fail_status(s);
+    const float world_px = std::fmax(1e-6f, world_u) / float(a.map_size);
+    if (int e = write_terrain_maps(f, a, maps, world_px, written)) return e;
+    if (!(s = files.commit())) return f.fail_status(s);
     progress.report(1.0f);
-    const char* o = a.out.c_str();
-    std::fprintf(stderr,
-                 "shitsukan wrinkly: %d triangles, heights %.4g .. %.4g%s; wrote %s.obj, %s.png, "
-                 "%s_height16.png, %s_height.pfm, %s_albedo.png, %s_normal.png\n",
+    std::string list;
+    for (const std::string& name : written) list += (list.empty() ? "" : ", ") + name;
+    std::fprintf(stderr, "shitsukan wrinkly: %d triangles, heights %.4g .. %.4g%s; wrote %s\n",
                  tri.triangle_count(), double(maps.lo), double(maps.hi),
-                 a.periodic ? " (periodic: the maps tile)" : "", o, o, o, o, o, o);
+                 a.periodic ? " (periodic: the maps tile)" : "", list.c_str());
     return 0;
 }
 

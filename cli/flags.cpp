@@ -126,6 +126,43 @@ int FlagSet::check_prefix(const char* flag, const std::string& prefix) const {
     return 0;
 }
 
+void add_map_flags(FlagSet& f, MapFlags& maps) {
+    f.text("o", &maps.prefix,
+           "prefix of the map set: <o>_albedo.png, _height16.png, _height.exr, _normal.png, "
+           "_roughness.png, _ao.png");
+    f.choice("normal", &maps.normal, "opengl|directx",
+             "normal map convention (directx: green flipped, 255 - g)");
+    f.choice("float", &maps.floats, "exr|pfm|both", "format of the float height map");
+    f.number("strength", &maps.strength, 0, 1e4,
+             "normal and AO: pixels of relief for the full height range");
+    f.number("ao-radius", &maps.ao_radius, 1, 4096,
+             "ambient occlusion: how far, in pixels, a ridge shades a texel");
+}
+
+int check_map_flags(const FlagSet& f, const MapFlags& maps) {
+    return f.check_prefix("o", maps.prefix);
+}
+
+MapSetOptions map_set_options(const MapFlags& maps, bool tileable) {
+    MapSetOptions o;
+    o.strength = maps.strength;
+    o.normal = maps.normal == 1 ? NormalConvention::directx : NormalConvention::opengl;
+    o.wrap = tileable;
+    o.ao_radius = maps.ao_radius;
+    o.exr = maps.floats != 1;
+    o.pfm = maps.floats != 0;
+    return o;
+}
+
+int write_maps(const FlagSet& f, const MapFlags& maps, const MapSetInput& input,
+               const MapSetOptions& options, std::vector<std::string>* written) {
+    std::vector<std::string> names;
+    const Status s = write_map_set(maps.prefix.c_str(), input, options, names);
+    if (!s) return f.fail_status(s);
+    if (written) written->insert(written->end(), names.begin(), names.end());
+    return 0;
+}
+
 int FlagSet::fail_status(const Status& s) const {
     std::fprintf(stderr, "shitsukan %s: %s\n", command_, s.message());
     return 1;

@@ -16,6 +16,7 @@
 
 #include "shitsukan/core/progress.hpp"
 #include "shitsukan/core/status.hpp"
+#include "shitsukan/image/map_set.hpp"
 
 namespace shitsukan::cli {
 
@@ -68,6 +69,30 @@ private:
     bool quiet_ = false;
     std::string stage_;
 };
+
+// The map set, one -o convention for every material command (marble, wood, leather, bark,
+// wrinkly): -o is a PREFIX and the maps are <prefix>_albedo.png, _height16.png, _height.exr
+// (and/or _height.pfm), _normal.png, _roughness.png, _ao.png (image/map_set.hpp says how each
+// is derived). A prefix ending in a file extension ("-o out.jpg") is refused with exit 2.
+//   MapFlags maps;  maps.prefix = "marble";  maps.strength = 2.0f;   // the command's defaults
+//   add_map_flags(f, maps);                  // -o, --normal, --float, --strength, --ao-radius
+//   ... f.parse ...;  if (int e = check_map_flags(f, maps)) return e;
+//   MapSetOptions o = map_set_options(maps, tileable);
+//   OutputSet files;  if (int e = write_maps(f, maps, input, o)) return e;  then files.commit()
+struct MapFlags {
+    std::string prefix;
+    int normal = 0;  // 0 opengl, 1 directx
+    int floats = 0;  // 0 exr, 1 pfm, 2 both
+    float strength = 4.0f;
+    float ao_radius = 16.0f;
+};
+void add_map_flags(FlagSet& f, MapFlags& maps);
+int check_map_flags(const FlagSet& f, const MapFlags& maps);
+MapSetOptions map_set_options(const MapFlags& maps, bool tileable);
+// Writes the set (inside the caller's OutputSet); 0, or 1 with the library's message. The
+// names written are appended to *written when it is given.
+int write_maps(const FlagSet& f, const MapFlags& maps, const MapSetInput& input,
+               const MapSetOptions& options, std::vector<std::string>* written = nullptr);
 
 // Whole-string number parsing (no trailing junk, finite).
 bool parse_double(const char* text, double* out);

@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "shitsukan/geom/mesh.hpp"
+#include "shitsukan/geom/mesh_builders.hpp"
+#include "shitsukan/geom/mesh_fit.hpp"
 #include "shitsukan/render/solid_bake.hpp"
 #include "shitsukan/solid/lattice_store.hpp"
 #include "shitsukan/solid/okada1987_presets.hpp"
@@ -87,4 +89,46 @@ TEST_CASE("render_solid_slice: pixels are the colours at their lattice points; d
     slice.extent = 0.0f;
     CHECK(render_solid_slice(lattice.view(), m, slice, 32, 16, img).code() ==
           StatusCode::invalid_argument);
+}
+
+TEST_CASE("bake_solid_texture: a 16 px gutter leaves no empty texel near a uv sphere's islands") {
+    TriangleMesh mesh;
+    REQUIRE(make_uv_sphere(1.0f, 24, 12, mesh));
+    REQUIRE(fit_mesh_to_cube(mesh, 0.92f));
+    FractalLattice lattice;
+    REQUIRE(lattice.build(okada1987_lattice_params()));
+    const int size = 256;
+    const Rgb8 magenta{255, 0, 255}, cyan{0, 255, 255};
+    RgbImage a, b, gutter, old_default;
+    const ObjectToLattice mapping = object_to_lattice_mapping(6);
+    // covered texels: the same colour whatever the background, with no dilation
+    REQUIRE(bake_solid_texture(mesh.view(), lattice.view(), okada1987_marble(), mapping, size,
+                               size, a, magenta, 0));
+    REQUIRE(bake_solid_texture(mesh.view(), lattice.view(), okada1987_marble(), mapping, size,
+                               size, b, cyan, 0));
+    REQUIRE(bake_solid_texture(mesh.view(), lattice.view(), okada1987_marble(), mapping, size,
+                               size, gutter, magenta, 16));
+    REQUIRE(bake_solid_texture(mesh.view(), lattice.view(), okada1987_marble(), mapping, size,
+                               size, old_default, magenta, 4));
+    std::vector<int> covered(std::size_t(size * size));
+    for (int i = 0; i < size * size; ++i) covered[std::size_t(i)] = a.data()[i] == b.data()[i];
+    int near = 0, empty_near = 0, empty_old = 0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            bool close = false;  // within 16 texels (square ring) of a covered one
+            for (int dy = -16; dy <= 16 && !close; ++dy)
+                for (int dx = -16; dx <= 16 && !close; ++dx) {
+                    const int u = x + dx, v = y + dy;
+                    close = u >= 0 && v >= 0 && u < size && v < size &&
+                            covered[std::size_t(v * size + u)];
+                }
+            if (!close) continue;
+            ++near;
+            empty_near += gutter.at(x, y) == magenta;
+            empty_old += old_default.at(x, y) == magenta;
+        }
+    MESSAGE(near << " texels within 16 px of an island; empty with a 4 px gutter: " << empty_old
+                 << ", with 16 px: " << empty_near);
+    CHECK(empty_near == 0);
+    CHECK(empty_old > 0);  // the pole cells the old default left empty
 }

@@ -46,13 +46,14 @@ intact() {  # intact FILE...: each still holds $OLD
 }
 
 # --- disk full ---
-"$BIN" marble --size 64 -o /dev/full --quiet 2> err.txt
+"$BIN" marble --size 16 -o hm --quiet 2> /dev/null
+"$BIN" normals hm_height16.png -o /dev/full --quiet 2> err.txt
 failed $? . "/dev/full" "No space left on device" && ok
 "$BIN" ist --N 3 --K 4 > /dev/full 2> err.txt
 failed $? . "standard output" "No space left on device" && ok
-mkdir quota && echo "$OLD" > quota/m.png
-( ulimit -f 16; exec "$BIN" marble --size 256 -o quota/m.png --quiet ) 2> err.txt
-failed $? quota "quota/m.png" "File too large" && intact quota/m.png && ok
+mkdir quota && echo "$OLD" > quota/m_albedo.png
+( ulimit -f 16; exec "$BIN" marble --size 256 -o quota/m --quiet ) 2> err.txt
+failed $? quota "quota/m_albedo.png" "File too large" && intact quota/m_albedo.png && ok
 # a multi-file command: the first file is past the limit; the second file's old copy stays
 echo "$OLD" > quota/l_normal.png
 ( ulimit -f 64; exec "$BIN" leather --size 512 -o quota/l --quiet ) 2> err.txt
@@ -60,11 +61,11 @@ failed $? quota "File too large" && absent quota/l_height16.png quota/l_pattern.
     intact quota/l_normal.png && ok
 
 # --- directories ---
-"$BIN" marble --size 64 -o nodir/m.png --quiet 2> err.txt
-failed $? . "nodir/m.png" "No such file or directory" && absent nodir && ok
-mkdir way.png
-"$BIN" marble --size 64 -o way.png --quiet 2> err.txt
-failed $? . "way.png" "Is a directory" && [ -d way.png ] && ok
+"$BIN" marble --size 64 -o nodir/m --quiet 2> err.txt
+failed $? . "nodir/m_albedo.png" "No such file or directory" && absent nodir && ok
+mkdir way_albedo.png
+"$BIN" marble --size 64 -o way --quiet 2> err.txt
+failed $? . "way_albedo.png" "Is a directory" && [ -d way_albedo.png ] && ok
 
 # --- read-only directory and file: as root permission bits do not hold, so run as nobody ---
 as_other=()
@@ -79,25 +80,25 @@ if [ ${#as_other[@]} = 0 ]; then
     skipped "read-only file: running as root and cannot run the tool as nobody (setpriv)"
 else
     mkdir ro && chmod 555 ro
-    "${as_other[@]}" "$BIN" marble --size 64 -o ro/m.png --quiet 2> err.txt
-    failed $? ro "ro/m.png" "directory ro: Permission denied" && absent ro/m.png && ok
-    mkdir open && chmod 777 open && echo "$OLD" > open/m.png && chmod 444 open/m.png
-    "${as_other[@]}" "$BIN" marble --size 64 -o open/m.png --quiet 2> err.txt
-    failed $? open "open/m.png" "Permission denied (the file is read-only)" && intact open/m.png && ok
+    "${as_other[@]}" "$BIN" marble --size 64 -o ro/m --quiet 2> err.txt
+    failed $? ro "ro/m_albedo.png" "directory ro: Permission denied" && absent ro/m_albedo.png && ok
+    mkdir open && chmod 777 open && echo "$OLD" > open/m_albedo.png && chmod 444 open/m_albedo.png
+    "${as_other[@]}" "$BIN" marble --size 64 -o open/m --quiet 2> err.txt
+    failed $? open "open/m_albedo.png" "Permission denied (the file is read-only)" && intact open/m_albedo.png && ok
 fi
 # --- a read-only file system: a read-only tmpfs in a private mount namespace ---
 if [ "$(id -u)" = 0 ] && command -v unshare > /dev/null && mkdir rofs && \
    unshare -m sh -c "mount -t tmpfs -o ro none '$WORK/rofs'" 2> /dev/null; then
     unshare -m sh -c "mount -t tmpfs -o ro none '$WORK/rofs' && exec '$BIN' marble --size 64 \
-        -o '$WORK/rofs/m.png' --quiet" 2> err.txt
-    failed $? . "rofs/m.png" "Read-only file system" && ok
+        -o '$WORK/rofs/m' --quiet" 2> err.txt
+    failed $? . "rofs/m_albedo.png" "Read-only file system" && ok
 else
     skipped "read-only file system: needs root and a private mount namespace (unshare -m)"
 fi
 
 # --- a later file of a multi-file command fails: none of them appears, old ones are kept ---
 mkdir set && mkdir set/s_pattern.svg && echo "$OLD" > set/s_normal.png
-"$BIN" leather --size 64 -o set/s --pfm --quiet 2> err.txt
+"$BIN" leather --size 64 -o set/s --float both --quiet 2> err.txt
 failed $? set "set/s_pattern.svg" "Is a directory" && absent set/s_height16.png set/s_height.pfm && \
     intact set/s_normal.png && ok
 mkdir bark && mkdir bark/b_trunk.obj && echo "$OLD" > bark/b.svg
@@ -108,9 +109,9 @@ mkdir wr && mkdir wr/w.png
 "$BIN" wrinkly --mesh "$ROOT/examples/data/ridge.mesh" --grid-level 1 --size 16 \
     -o wr/w --quiet 2> err.txt
 failed $? wr "wr/w.png" "Is a directory" && absent wr/w.obj && ok
-mkdir mp && mkdir mp/d.pfm
-"$BIN" marble --size 64 -o mp/m.png --pfm mp/d.pfm --quiet 2> err.txt
-failed $? mp "mp/d.pfm" "Is a directory" && absent mp/m.png && ok
+mkdir mp && mkdir mp/m_ao.png
+"$BIN" marble --size 64 -o mp/m --quiet 2> err.txt
+failed $? mp "mp/m_ao.png" "Is a directory" && absent mp/m_albedo.png mp/m_height.exr && ok
 
 # --- a signal while the files are written: leather holds its height map (written) while it
 # encodes the normal map; marble's PNG is open while it is encoded ---
@@ -141,8 +142,9 @@ interrupted() {
 mkdir sig && echo "$OLD" > sig/l_normal.png
 interrupted INT 130 sig l_height16.png leather --size 2048 -o sig/l && \
     absent sig/l_height16.png sig/l_pattern.svg && intact sig/l_normal.png && ok
-mkdir term && echo "$OLD" > term/m.png
-interrupted TERM 143 term m.png.  marble --size 2048 -o term/m.png && intact term/m.png && ok
+mkdir term && echo "$OLD" > term/m_ao.png
+interrupted TERM 143 term m_albedo.png. marble --size 2048 -o term/m && intact term/m_ao.png && \
+    absent term/m_albedo.png && ok
 
 echo "cli fault tests: $pass passed, $fail failed, $skip skipped"
 [ $fail = 0 ]

@@ -48,14 +48,15 @@ refused() {
 }
 
 # --- good runs ---
-good marble --size 64 -o m.png -- m.png
-good marble --size 64 --tileable --pfm m.pfm -o mt.png -- mt.png m.pfm
-good marble --size 64 --layer-period 8 --w 2 --alpha 0.7 --plane xy --at 10 -o ml.png -- ml.png
-good wood --size 64 --k2 2 --x0 30 --y0 30 -o w.png -- w.png
+good marble --size 64 -o m -- m_albedo.png m_height16.png m_height.exr m_normal.png m_roughness.png m_ao.png
+good marble --size 64 --tileable --float both -o mt -- mt_albedo.png mt_height.pfm mt_height.exr
+cp mt_height.pfm m.pfm
+good marble --size 64 --layer-period 8 --w 2 --alpha 0.7 --plane xy --at 10 -o ml -- ml_albedo.png
+good wood --size 64 --k2 2 --x0 30 --y0 30 -o w -- w_albedo.png w_normal.png
 good marble --size 64 --stripes "20,3,0.8;44,1.5,1.2" --i-min 10,20,30 --i-max 250,240,230 \
-     -o ms.png -- ms.png
-good leather --size 96 --section concave --pfm --obj-step 8 -o croc -- croc_height16.png \
-     croc_normal.png croc_pattern.svg croc_height.pfm croc_relief.obj
+     -o ms -- ms_albedo.png
+good leather --size 96 --section concave --float pfm --obj-step 8 -o croc -- croc_height16.png \
+     croc_normal.png croc_pattern.svg croc_height.pfm croc_relief.obj croc_albedo.png croc_ao.png
 good leather --size 64 --control "0,0.1,0.5,0.1,0.8,0.12,1,0" --D 0.2 --d 0.2 -o own -- \
      own_height16.png own_normal.png
 good leather --size 64 --tileable -o tile -- tile_height16.png tile_normal.png
@@ -70,9 +71,9 @@ good bark --species chinese_tallow --N_R 16 --N_H 12 --no-csv --kappa1 1.05 -o t
 good ist --N 3 --K 2 --
 good version --
 # marble baked onto an OBJ's uv map (the trunk the bark run wrote has uv), and a view
-good marble --obj pine_trunk.obj --size 64 --view view.png -o baked.png -- baked.png view.png
+good marble --obj pine_trunk.obj --size 64 --view view.png -o baked -- baked_albedo.png view.png
 # the tileable marble's PFM: 64 x 64 floats; ist prints N^K = 9 pairs after 2 comments
-if [ "$(sed -n 2p m.pfm)" = "64 64" ]; then ok; else bad "m.pfm header $(sed -n 2p m.pfm)"; fi
+if [ "$(sed -n 2p mt_height.pfm)" = "64 64" ]; then ok; else bad "mt_height.pfm header $(sed -n 2p mt_height.pfm)"; fi
 "$BIN" ist --N 3 --K 2 > ist.txt
 if [ "$(grep -vc '^#' ist.txt)" = 9 ] && grep -q '^12 21$' ist.txt; then ok; else bad "ist table"; cat ist.txt; fi
 # normals from any height map: the leather run's 16-bit PNG, the tileable marble's PFM
@@ -125,14 +126,14 @@ refused "a height map is required" normals
 refused "-o must name a .png file" normals own_height16.png -o n.jpg
 refused "unknown command" frobnicate
 # an output name the command cannot write: refused before any work, nothing written
-refused "-o must name a .png file (got \"x.jpg\")" marble --size 8 -o x.jpg
-refused "-o must name a .png file" wood --size 8 -o x.tif
-refused "--pfm must name a .pfm file" marble --size 8 --pfm d.png
+refused "-o is the prefix of the files written (<prefix>_...), not a .jpg file (got \"x.jpg\")" marble --size 8 -o x.jpg
+refused "-o is the prefix of the files written" wood --size 8 -o x.tif
+refused "--preview must name a .png file" marble --size 8 --preview d.jpg
 refused "--view must name a .png file" marble --obj pine_trunk.obj --view v.jpg
 refused "-o is the prefix of the files written" leather --size 8 -o croc.png
 refused "-o is the prefix of the files written" bark -o pine.svg
 refused "-o is the prefix of the files written" wrinkly --mesh broken.mesh -o wr.obj
-for f in x.jpg x.tif d.png v.jpg croc.png_height16.png pine.svg_cracks.png; do
+for f in x.jpg x.jpg_albedo.png x.tif d.jpg v.jpg croc.png_height16.png pine.svg_cracks.png; do
     if [ -e "$f" ]; then bad "$f written by a refused run"; else ok; fi
 done
 refused "takes no value" marble --tileable=yes
@@ -169,7 +170,7 @@ done
 
 # readers stop at once on an endless or binary input, and refuse out-of-range colours and
 # over-long lines with the line number
-timeout 20 "$BIN" marble --obj /dev/zero -o z.png > out.txt 2> err.txt
+timeout 20 "$BIN" marble --obj /dev/zero -o z > out.txt 2> err.txt
 rc=$?
 if [ $rc = 1 ] && grep -q '/dev/zero:1: NUL byte' err.txt; then ok; else bad "--obj /dev/zero: rc $rc $(cat err.txt)"; fi
 printf '1 1\n0 0 0 0 1.5 0 0\n' > colour.mesh
@@ -182,8 +183,10 @@ rc=$?
 if [ $rc = 1 ] && grep -q 'long.mesh:2: line longer than 1024 bytes' err.txt; then ok; else bad "long.mesh: rc $rc $(cat err.txt)"; fi
 
 # --- bark as a texture (--texture and its flags: a good run and a bad value each) ---
-good bark --species pine --texture --N_R 16 --size 32 -o bt -- bt_albedo.png bt_height16.png \
-     bt_height.pfm bt_normal.png
+good bark --species pine --texture --N_R 16 --size 32 --float both -o bt -- bt_albedo.png \
+     bt_height16.png bt_height.pfm bt_height.exr bt_normal.png bt_roughness.png bt_ao.png
+good bark --species chinese_tallow --texture --N_R 16 --size 32 --normal directx --strength 3 \
+     --ao-radius 4 --preview btp.png -o btd -- btd_normal.png btd_height.exr btp.png
 good bark --species camphor --texture --N_R 16 --N_H 14 --size 16 --bevel 0.5 --relief 0.1 \
      --tone 0.3 -o bt2 -- bt2_albedo.png bt2_normal.png
 if [ "$(sed -n 2p bt_height.pfm)" = "32 32" ]; then ok; else bad "bt_height.pfm header $(sed -n 2p bt_height.pfm)"; fi
@@ -193,13 +196,17 @@ refused "--bevel must be a number in [0.01, 4]" bark --texture --bevel 9
 refused "--relief must be a number in [0, 1]" bark --texture --relief 2
 refused "--tone must be a number in [0, 1]" bark --texture --tone -1
 refused "add --texture" bark --size 64
+refused "--normal shapes the --texture maps; add --texture" bark --normal directx
+refused "--preview shapes the --texture maps; add --texture" bark --preview p.png
+refused "--preview must name a .png file" bark --texture --preview p.jpg
 refused "--N_H must be >= 3 with --texture" bark --texture --N_H 2
 refused "takes no value" bark --texture=yes
 
 # --- wrinkly from the shell: a height map in, the map set out, camera/jitter/ramp flags ---
 good wrinkly --height-map bt_height16.png --periodic --form superposed --K 2 --points 8 \
-     --map-size 32 --size 64 -o hm -- hm.obj hm.png hm_height16.png hm_height.pfm hm_albedo.png \
-     hm_normal.png
+     --map-size 32 --size 64 --float both --preview hmp.png -o hm -- hm.obj hm.png \
+     hm_height16.png hm_height.pfm hm_height.exr hm_albedo.png hm_normal.png hm_roughness.png \
+     hm_ao.png hmp.png
 good wrinkly --height-map bt_height.pfm --form superposed --K 2 --points 6 --extent 4 \
      --height-scale 0.5 --ramp sand --jitter-height 0.1 --jitter-color 0.02 --seed 3 \
      --azimuth 10 --elevation 45 --distance 3 --fov 30 --map-size 16 --size 48 -o hp -- \
@@ -207,7 +214,7 @@ good wrinkly --height-map bt_height.pfm --form superposed --K 2 --points 6 --ext
 good wrinkly --height-map bt_height16.png --ramp "0:0,0,0;0.5:1,0,0;1:1,1,1" --points 5 \
      --map-size 16 --size 32 --grid-level 1 -o hr -- hr_albedo.png
 good wrinkly --mesh "$ROOT/examples/data/ridge.mesh" --periodic --grid-level 2 --size 64 \
-     --map-size 32 -o rp -- rp.obj rp_height16.png rp_normal.png
+     --map-size 32 --normal directx -o rp -- rp.obj rp_height16.png rp_normal.png
 good wrinkly --mesh "$ROOT/examples/data/fig21_terrain.mesh" --form superposed --K 2 \
      --grid-level 2 --jitter-height 0.12 --jitter-color 0.035 --size 64 --map-size 32 -o f21 -- \
      f21.png f21_albedo.png
@@ -229,9 +236,44 @@ refused "--elevation must be a number in [1, 89]" wrinkly --height-map bt_height
 refused "--distance must be a number in [0.5, 50]" wrinkly --height-map bt_height16.png --distance 0.1
 refused "--fov must be a number in [5, 120]" wrinkly --height-map bt_height16.png --fov 200
 refused "takes no value" wrinkly --height-map bt_height16.png --periodic=1
+refused "--preview must name a .png file" wrinkly --height-map bt_height16.png --preview p.exr
+refused "-o is the prefix of the files written" wrinkly --height-map bt_height16.png -o t.exr
 "$BIN" wrinkly --height-map /nonexistent.png > out.txt 2> err.txt
 rc=$?
 if [ $rc = 1 ] && grep -q 'nonexistent.png' err.txt; then ok; else bad "wrinkly --height-map of a missing file: rc $rc $(cat err.txt)"; fi
+# --- map sets (docs/TOOL.md): every new flag runs, and refuses a bad value with one line ---
+good marble --size 64 --tileable --look carrara --preview mp.png -o mc -- mc_albedo.png mp.png
+good marble --size 64 --interpolation eq6 --normal directx -o me -- me_normal.png
+good marble --size 64 --strength 6 --ao-radius 4 -o ma -- ma_ao.png ma_roughness.png
+good wood --size 64 --look walnut -o ww -- ww_albedo.png
+good leather --size 64 --look crocodile-back --tileable --preview lp.png -o lb -- lb_albedo.png \
+     lp.png lb_height.exr
+good marble --obj pine_trunk.obj --size 64 --gutter 2 -o bg -- bg_albedo.png bg_normal.png
+refused "--look must be one of" marble --look oak
+refused "--look must be one of" wood --look granite
+refused "--look must be one of" leather --look lizard
+refused "--interpolation must be one of smooth|eq6" marble --interpolation cubic
+refused "--normal must be one of opengl|directx" marble --normal vulkan
+refused "--float must be one of exr|pfm|both" leather --float tiff
+refused "--strength must be a number in [0, 10000]" marble --strength -2
+refused "--ao-radius must be a number in [1, 4096]" wood --ao-radius 0
+refused "--gutter must be an integer in [0, 256]" marble --obj pine_trunk.obj --gutter 999
+refused "--gutter needs --obj" marble --gutter 4
+refused "--preview must name a .png file" leather --preview p.exr
+# DirectX and OpenGL normal maps differ exactly in the green channel (g' = 255 - g)
+"$BIN" marble --size 64 -o gl --quiet 2> /dev/null && "$BIN" marble --size 64 --normal directx -o dx --quiet 2> /dev/null
+if /usr/bin/python3 -c "
+import sys, numpy as np, OpenImageIO as oiio
+a = oiio.ImageInput.open('gl_normal.png').read_image(oiio.UINT8).astype(int)
+b = oiio.ImageInput.open('dx_normal.png').read_image(oiio.UINT8).astype(int)
+sys.exit(0 if (a[:, :, 0] == b[:, :, 0]).all() and (a[:, :, 2] == b[:, :, 2]).all()
+         and (a[:, :, 1] + b[:, :, 1] == 255).all() else 1)"; then ok; else bad "DirectX normal map: not OpenGL's with green flipped"; fi
+# the EXR and PFM of one run hold the same floats: read back through OpenImageIO, bit for bit
+for set in mt croc; do
+    [ -e ${set}_height.exr ] || "$BIN" leather --size 96 --section concave --float both -o croc --quiet 2> /dev/null
+    if /usr/bin/python3 "$ROOT/tests/cli/exr_readback.py" ${set}_height.exr ${set}_height.pfm > rb.txt 2>&1
+    then ok; else bad "EXR read back: $(cat rb.txt)"; fi
+done
 
 echo "cli tests: $pass passed, $fail failed"
 [ $fail = 0 ]
