@@ -121,7 +121,10 @@ Status write_map_preview(const char* path, const MapSetInput& input, const MapSe
     clear_band(band, Rgb8{46, 48, 52});
     const Vec3 eye{0.0f, 0.6f, 5.2f};
     const Camera camera = perspective_camera(eye, {0, 0, 0}, {0, 1, 0}, 30.0f, W, H);
-    Scene scene{&maps, eye, normalize(Vec3{-0.5f, 0.6f, 0.65f}), Vec2{2, 1}, true, {}, {}};
+    // A tileable set repeats: twice around the sphere, 2 x 2 on the plane (a seam would show);
+    // any other set once (its borders are not meant to meet).
+    const float repeat = options.wrap ? 2.0f : 1.0f;
+    Scene scene{&maps, eye, normalize(Vec3{-0.5f, 0.6f, 0.65f}), Vec2{repeat, 1}, true, {}, {}};
     TriangleMesh sphere, plane;
     SHITSUKAN_TRY(make_uv_sphere(1.0f, 96, 48, sphere));
     for (Vec3& p : sphere.positions) p = p + Vec3{-1.2f, 0.0f, 0.0f};
@@ -130,7 +133,7 @@ Status write_map_preview(const char* path, const MapSetInput& input, const MapSe
     SHITSUKAN_TRY(draw_mesh(camera, band, sphere.view(), draw, shader));
     make_plane(Vec3{1.2f, 0.0f, 0.0f}, 0.5f, plane, &scene.plane_t, &scene.plane_b);
     scene.sphere = false;
-    scene.repeat = Vec2{2, 2};
+    scene.repeat = Vec2{repeat, repeat};
     SHITSUKAN_TRY(draw_mesh(camera, band, plane.view(), draw, shader));
     return write_png(path, color.view());
 }

@@ -1,7 +1,7 @@
 // cli/preview.hpp — `--preview FILE.png`: a map set (image/map_set.hpp) as an artist first
-// checks it, on a lit sphere (the maps once around, once pole to pole... twice around) and on a
-// plane tiled 2 x 2 (so a seam or a crease shows), drawn by the library's rasterizer
-// (raster/rasterizer.hpp), 1024 x 512.
+// checks it, on a lit sphere and on a plane, drawn by the library's rasterizer
+// (raster/rasterizer.hpp), 1024 x 512. A tileable set (options.wrap) goes twice around the
+// sphere and 2 x 2 on the plane, so a seam or a crease would show; any other set once.
 //
 //   MapSetInput maps{albedo, heights, w, h};
 //   Status s = write_map_preview("preview.png", maps, map_set_options(flags, tileable));
