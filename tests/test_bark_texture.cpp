@@ -8,6 +8,7 @@
 
 #include "shitsukan/bark/bark.hpp"
 #include "shitsukan/bark/bark_texture.hpp"
+#include "measured.hpp"
 #include "tile_seams.hpp"
 
 using namespace shitsukan;
@@ -81,6 +82,11 @@ TEST_CASE("bark texture: tiled 2 x 2, the seams are ordinary columns and rows") 
         INFO("rows " << rows << ": seam " << m.seam_value << " / " << m.seam_gradient
                      << ", interior median " << m.median_value << " / " << m.median_gradient
                      << ", max " << m.max_value << " / " << m.max_gradient);
+        MEASURED("bark 2x2 " << (rows ? "rows" : "columns") << ": seam value jump "
+                             << m.seam_value << " cm (interior median " << m.median_value
+                             << ", max " << m.max_value << "), second difference "
+                             << m.seam_gradient << " (median " << m.median_gradient << ", max "
+                             << m.max_gradient << ")");
         CHECK(m.seam_value <= m.max_value);
         CHECK(m.seam_gradient <= m.max_gradient);
         CHECK(m.seam_value <= 4.0 * m.median_value + 1e-3);
@@ -107,6 +113,8 @@ TEST_CASE("bark texture: crack edges anti-aliased at every power-of-two size") {
             else ++plate;
         }
         INFO("size " << size << ": crack " << crack << ", edge " << edge << ", plate " << plate);
+        MEASURED("bark " << size << " px: " << edge << " of " << size * size
+                         << " pixels between crack floor and plate (anti-aliased edges)");
         CHECK(edge > 0);  // intermediate values between crack and plate
         CHECK(plate > crack);
         // no hard step: neighbouring pixels differ by less than a plate's full height

@@ -12,6 +12,7 @@
 #include "shitsukan/wrinkly/terrain_maps.hpp"
 #include "shitsukan/wrinkly/terrain_mesh.hpp"
 #include "shitsukan/wrinkly/wr_ist_axis.hpp"
+#include "measured.hpp"
 #include "tile_seams.hpp"
 
 using namespace shitsukan;
@@ -166,6 +167,9 @@ TEST_CASE("periodic terrain maps: the tile's seam is an interior column of the s
                                                        ma.heights[std::size_t(((y + 64) % 128) * 128 +
                                                                                (x + 64) % 128)]));
             INFO("form " << int(form) << " mode " << int(mode) << ": worst " << worst);
+            MEASURED("terrain half-period roll, form " << int(form) << " mode " << int(mode)
+                                                      << ": largest difference " << worst
+                                                      << " of a range " << (ma.hi - ma.lo));
             CHECK(worst < 1e-4 * (ma.hi - ma.lo));
         }
 }
@@ -189,6 +193,12 @@ TEST_CASE("periodic terrain maps tile 2 x 2: seams are ordinary columns and rows
                          << m.seam_gradient << ", median " << m.median_value << " / "
                          << m.median_gradient << ", max " << m.max_value << " / "
                          << m.max_gradient);
+            MEASURED("terrain " << (form == WrSurfaceForm::wr ? "WR" : "superposed") << " 2x2 "
+                                << (rows ? "rows" : "columns") << ": seam value jump "
+                                << m.seam_value << " (interior median " << m.median_value
+                                << ", max " << m.max_value << "), second difference "
+                                << m.seam_gradient << " (median " << m.median_gradient
+                                << ", max " << m.max_gradient << ")");
             CHECK(m.seam_value <= m.max_value);
             CHECK(m.seam_gradient <= m.max_gradient);
             CHECK(m.seam_value <= 3.0 * m.median_value);
