@@ -199,6 +199,10 @@ refused "add --texture" bark --size 64
 refused "--normal shapes the --texture maps; add --texture" bark --normal directx
 refused "--preview shapes the --texture maps; add --texture" bark --preview p.png
 refused "--preview must name a .png file" bark --texture --preview p.jpg
+refused "--normal must be one of opengl|directx" bark --texture --normal vulkan
+refused "--float must be one of exr|pfm|both" bark --texture --float tiff
+refused "--strength must be a number in [0, 10000]" bark --texture --strength -1
+refused "--ao-radius must be a number in [1, 4096]" bark --texture --ao-radius 0
 refused "--N_H must be >= 3 with --texture" bark --texture --N_H 2
 refused "takes no value" bark --texture=yes
 
@@ -238,6 +242,13 @@ refused "--fov must be a number in [5, 120]" wrinkly --height-map bt_height16.pn
 refused "takes no value" wrinkly --height-map bt_height16.png --periodic=1
 refused "--preview must name a .png file" wrinkly --height-map bt_height16.png --preview p.exr
 refused "-o is the prefix of the files written" wrinkly --height-map bt_height16.png -o t.exr
+refused "--seed must be an integer in [0, 4294967295]" wrinkly --height-map bt_height16.png --seed -1
+refused "--normal must be one of opengl|directx" wrinkly --height-map bt_height16.png --normal metal
+refused "--float must be one of exr|pfm|both" wrinkly --height-map bt_height16.png --float hdr
+refused "--strength must be a number in [0, 10000]" wrinkly --height-map bt_height16.png --strength -3
+refused "--ao-radius must be a number in [1, 4096]" wrinkly --height-map bt_height16.png --ao-radius 9999
+good wrinkly --height-map bt_height16.png --points 4 --map-size 16 --size 32 --grid-level 1 \
+     --strength 2 --ao-radius 3 -o hs -- hs_ao.png hs_roughness.png
 "$BIN" wrinkly --height-map /nonexistent.png > out.txt 2> err.txt
 rc=$?
 if [ $rc = 1 ] && grep -q 'nonexistent.png' err.txt; then ok; else bad "wrinkly --height-map of a missing file: rc $rc $(cat err.txt)"; fi
