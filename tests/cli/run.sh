@@ -182,6 +182,76 @@ if [ $rc = 1 ] && grep -q 'colour.mesh:2: the colour' err.txt; then ok; else bad
 rc=$?
 if [ $rc = 1 ] && grep -q 'long.mesh:2: line longer than 1024 bytes' err.txt; then ok; else bad "long.mesh: rc $rc $(cat err.txt)"; fi
 
+# --- bark as a texture (--texture and its flags: a good run and a bad value each) ---
+good bark --species pine --texture --N_R 16 --size 32 --float both -o bt -- bt_albedo.png \
+     bt_height16.png bt_height.pfm bt_height.exr bt_normal.png bt_roughness.png bt_ao.png
+good bark --species chinese_tallow --texture --N_R 16 --size 32 --normal directx --strength 3 \
+     --ao-radius 4 --preview btp.png -o btd -- btd_normal.png btd_height.exr btp.png
+good bark --species camphor --texture --N_R 16 --N_H 14 --size 16 --bevel 0.5 --relief 0.1 \
+     --tone 0.3 -o bt2 -- bt2_albedo.png bt2_normal.png
+if [ "$(sed -n 2p bt_height.pfm)" = "32 32" ]; then ok; else bad "bt_height.pfm header $(sed -n 2p bt_height.pfm)"; fi
+refused "--size must be a power of two in [8, 8192] (got 48)" bark --texture --size 48
+refused "--size must be an integer in [8, 8192]" bark --texture --size 4
+refused "--bevel must be a number in [0.01, 4]" bark --texture --bevel 9
+refused "--relief must be a number in [0, 1]" bark --texture --relief 2
+refused "--tone must be a number in [0, 1]" bark --texture --tone -1
+refused "add --texture" bark --size 64
+refused "--normal shapes the --texture maps; add --texture" bark --normal directx
+refused "--preview shapes the --texture maps; add --texture" bark --preview p.png
+refused "--preview must name a .png file" bark --texture --preview p.jpg
+refused "--normal must be one of opengl|directx" bark --texture --normal vulkan
+refused "--float must be one of exr|pfm|both" bark --texture --float tiff
+refused "--strength must be a number in [0, 10000]" bark --texture --strength -1
+refused "--ao-radius must be a number in [1, 4096]" bark --texture --ao-radius 0
+refused "--N_H must be >= 3 with --texture" bark --texture --N_H 2
+refused "takes no value" bark --texture=yes
+
+# --- wrinkly from the shell: a height map in, the map set out, camera/jitter/ramp flags ---
+good wrinkly --height-map bt_height16.png --periodic --form superposed --K 2 --points 8 \
+     --map-size 32 --size 64 --float both --preview hmp.png -o hm -- hm.obj hm.png \
+     hm_height16.png hm_height.pfm hm_height.exr hm_albedo.png hm_normal.png hm_roughness.png \
+     hm_ao.png hmp.png
+good wrinkly --height-map bt_height.pfm --form superposed --K 2 --points 6 --extent 4 \
+     --height-scale 0.5 --ramp sand --jitter-height 0.1 --jitter-color 0.02 --seed 3 \
+     --azimuth 10 --elevation 45 --distance 3 --fov 30 --map-size 16 --size 48 -o hp -- \
+     hp.png hp_height16.png
+good wrinkly --height-map bt_height16.png --ramp "0:0,0,0;0.5:1,0,0;1:1,1,1" --points 5 \
+     --map-size 16 --size 32 --grid-level 1 -o hr -- hr_albedo.png
+good wrinkly --mesh "$ROOT/examples/data/ridge.mesh" --periodic --grid-level 2 --size 64 \
+     --map-size 32 --normal directx -o rp -- rp.obj rp_height16.png rp_normal.png
+good wrinkly --mesh "$ROOT/examples/data/fig21_terrain.mesh" --form superposed --K 2 \
+     --grid-level 2 --jitter-height 0.12 --jitter-color 0.035 --size 64 --map-size 32 -o f21 -- \
+     f21.png f21_albedo.png
+if [ "$(sed -n 2p hm_height.pfm)" = "32 32" ]; then ok; else bad "hm_height.pfm header $(sed -n 2p hm_height.pfm)"; fi
+refused "not both" wrinkly --mesh "$ROOT/examples/data/ridge.mesh" --height-map bt_height16.png
+refused "--map-size must be a power of two in [8, 8192] (got 48)" wrinkly --height-map bt_height16.png --map-size 48
+refused "--map-size must be an integer in [8, 8192]" wrinkly --height-map bt_height16.png --map-size 4
+refused "--periodic needs --basis bspline" wrinkly --height-map bt_height16.png --periodic --basis bezier
+refused "--points must be an integer in [4, 1024]" wrinkly --height-map bt_height16.png --points 2
+refused "add --height-map" wrinkly --mesh "$ROOT/examples/data/ridge.mesh" --points 8
+refused "--extent must be a number in [0.001, 10000]" wrinkly --height-map bt_height16.png --extent 0
+refused "--height-scale must be a number in [0, 10000]" wrinkly --height-map bt_height16.png --height-scale -1
+refused "--ramp: colour ramp \"heat\"" wrinkly --height-map bt_height16.png --ramp heat
+refused "--jitter-height must be a number in [0, 100]" wrinkly --height-map bt_height16.png --jitter-height 200
+refused "jitter the samples of --form superposed" wrinkly --height-map bt_height16.png --jitter-height 0.1
+refused "--jitter-color must be a number in [0, 1]" wrinkly --height-map bt_height16.png --form superposed --jitter-color 2
+refused "--azimuth must be a number in [-360, 360]" wrinkly --height-map bt_height16.png --azimuth 400
+refused "--elevation must be a number in [1, 89]" wrinkly --height-map bt_height16.png --elevation 0
+refused "--distance must be a number in [0.5, 50]" wrinkly --height-map bt_height16.png --distance 0.1
+refused "--fov must be a number in [5, 120]" wrinkly --height-map bt_height16.png --fov 200
+refused "takes no value" wrinkly --height-map bt_height16.png --periodic=1
+refused "--preview must name a .png file" wrinkly --height-map bt_height16.png --preview p.exr
+refused "-o is the prefix of the files written" wrinkly --height-map bt_height16.png -o t.exr
+refused "--seed must be an integer in [0, 4294967295]" wrinkly --height-map bt_height16.png --seed -1
+refused "--normal must be one of opengl|directx" wrinkly --height-map bt_height16.png --normal metal
+refused "--float must be one of exr|pfm|both" wrinkly --height-map bt_height16.png --float hdr
+refused "--strength must be a number in [0, 10000]" wrinkly --height-map bt_height16.png --strength -3
+refused "--ao-radius must be a number in [1, 4096]" wrinkly --height-map bt_height16.png --ao-radius 9999
+good wrinkly --height-map bt_height16.png --points 4 --map-size 16 --size 32 --grid-level 1 \
+     --strength 2 --ao-radius 3 -o hs -- hs_ao.png hs_roughness.png
+"$BIN" wrinkly --height-map /nonexistent.png > out.txt 2> err.txt
+rc=$?
+if [ $rc = 1 ] && grep -q 'nonexistent.png' err.txt; then ok; else bad "wrinkly --height-map of a missing file: rc $rc $(cat err.txt)"; fi
 # --- map sets (docs/TOOL.md): every new flag runs, and refuses a bad value with one line ---
 good marble --size 64 --tileable --look carrara --preview mp.png -o mc -- mc_albedo.png mp.png
 good marble --size 64 --interpolation eq6 --normal directx -o me -- me_normal.png

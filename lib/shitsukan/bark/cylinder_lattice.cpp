@@ -15,8 +15,10 @@ const Vec3 kDirection[3] = {{0.0f, 1.0f, 0.0f},
                             {0.86602540378f, 0.5f, 0.0f},
                             {0.86602540378f, -0.5f, 0.0f}};
 
-// The far end of spring (c, r, dir), or false where the lattice has none (free edges).
-bool spring_end(int N_R, int N_H, int c, int r, int dir, int* c2, int* r2) {
+// The far end of spring (c, r, dir), or false where the lattice has none (free edges; a
+// lattice periodic along the axis wraps row N_H onto row 0 instead).
+bool spring_end(int N_R, int N_H, bool periodic_along, int c, int r, int dir, int* c2,
+                int* r2) {
     const int p = c & 1;
     if (dir == 0) {
         *c2 = c, *r2 = r + 1;
@@ -24,6 +26,7 @@ bool spring_end(int N_R, int N_H, int c, int r, int dir, int* c2, int* r2) {
         *c2 = c + 1 == N_R ? 0 : c + 1;
         *r2 = dir == 1 ? r + p : r + p - 1;
     }
+    if (periodic_along) *r2 = (*r2 + N_H) % N_H;
     return *r2 >= 0 && *r2 < N_H;
 }
 
@@ -82,7 +85,7 @@ void make_springs(BarkCylinder& b, bool reverse_springs) {
         for (int r = 0; r < N_H; ++r)
             for (int dir = 0; dir < 3; ++dir) {
                 int c2, r2;
-                if (spring_end(N_R, N_H, c, r, dir, &c2, &r2)) coords.push_back({c, r, dir});
+                if (spring_end(N_R, N_H, b.periodic_along, c, r, dir, &c2, &r2)) coords.push_back({c, r, dir});
             }
     if (reverse_springs) std::reverse(coords.begin(), coords.end());
     b.spring_index.assign(std::size_t(3 * N_R * N_H), -1);
@@ -91,7 +94,7 @@ void make_springs(BarkCylinder& b, bool reverse_springs) {
     for (std::size_t s = 0; s < coords.size(); ++s) {
         const Coord k = coords[s];
         int c2, r2;
-        spring_end(N_R, N_H, k.c, k.r, k.dir, &c2, &r2);
+        spring_end(N_R, N_H, b.periodic_along, k.c, k.r, k.dir, &c2, &r2);
         BarkSpring& sp = net.springs[s];
         sp.i = std::uint32_t(b.node(k.c, k.r));
         sp.j = std::uint32_t(b.node(c2, r2));
@@ -113,15 +116,20 @@ void make_springs(BarkCylinder& b, bool reverse_springs) {
 //   T_right(c, r) = {(c, r), up-right(c, r), down-right(c, r)}
 void make_triangles(BarkCylinder& b) {
     const int N_R = b.params.N_R, N_H = b.params.N_H;
+    const bool wrap = b.periodic_along;
+    const float height = float(N_H) * b.params.species.L0;
     auto corner = [&](int c, int r, int from_c) {
-        Vec3 x = b.net.X[std::size_t(b.node(c, r))];
+        const int rw = wrap ? (r + N_H) % N_H : r;
+        Vec3 x = b.net.X[std::size_t(b.node(c, rw))];
         if (c < from_c) x.x += b.circumference;  // across the seam
+        x.y += height * float((r - rw) / N_H);   // across the axial seam (periodic_along)
         return x;
     };
+    auto row = [&](int r) { return wrap ? (r + N_H) % N_H : r; };
     auto triangle = [&](const int (&cr)[3][2], const int (&spring)[3], int c) {
         ConnectionTriangle t;
         for (int k = 0; k < 3; ++k) {
-            t.node[k] = std::uint32_t(b.node(cr[k][0], cr[k][1]));
+            t.node[k] = std::uint32_t(b.node(cr[k][0], row(cr[k][1])));
             t.spring[k] = std::uint32_t(spring[k]);
             t.corner[k] = corner(cr[k][0], cr[k][1], c);
         }
@@ -130,12 +138,13 @@ void make_triangles(BarkCylinder& b) {
     for (int c = 0; c < N_R; ++c) {
         const int p = c & 1, c1 = c + 1 == N_R ? 0 : c + 1;
         for (int r = 0; r < N_H; ++r) {
-            if (r + 1 < N_H && r + p < N_H)
+            if (wrap || (r + 1 < N_H && r + p < N_H))
                 triangle({{c, r}, {c, r + 1}, {c1, r + p}},
-                         {b.spring(c, r, 0), b.spring(c, r + 1, 2), b.spring(c, r, 1)}, c);
-            if (r + p < N_H && r + p - 1 >= 0)
+                         {b.spring(c, r, 0), b.spring(c, row(r + 1), 2), b.spring(c, r, 1)}, c);
+            if (wrap || (r + p < N_H && r + p - 1 >= 0))
                 triangle({{c, r}, {c1, r + p}, {c1, r + p - 1}},
-                         {b.spring(c, r, 1), b.spring(c1, r + p - 1, 0), b.spring(c, r, 2)}, c);
+                         {b.spring(c, r, 1), b.spring(c1, row(r + p - 1), 0), b.spring(c, r, 2)},
+                         c);
         }
     }
     b.spring_triangles.assign(2 * b.net.springs.size(), -1);
@@ -182,10 +191,20 @@ Status set_constants(BarkCylinder& b) {
 }  // namespace
 
 Status build_cylinder(const CylinderParams& params, BarkCylinder& out, bool reverse_springs) {
+    return build_cylinder(params, false, out, reverse_springs);
+}
+
+Status build_cylinder(const CylinderParams& params, bool periodic_along, BarkCylinder& out,
+                      bool reverse_springs) {
     SHITSUKAN_TRY(validate(params));
+    if (periodic_along && params.N_H < 3)
+        return Status::error(StatusCode::invalid_argument,
+                             "bark: a lattice periodic along the axis needs N_H >= 3 (got %d)",
+                             params.N_H);
     BarkCylinder& b = out;
     b = BarkCylinder{};
     b.params = params;
+    b.periodic_along = periodic_along;
     b.R0 = initial_radius(params);  // Table 1
     b.H0 = initial_height(params);
     b.a_h = column_spacing(params);

@@ -18,7 +18,8 @@
 //     dir 0 "up"          (c, r) - (c,   r + 1)         axial spring, family 1
 //     dir 1 "up-right"    (c, r) - (c+1, r + p)         diagonal, family 2   (p = c mod 2)
 //     dir 2 "down-right"  (c, r) - (c+1, r + p - 1)     diagonal, family 2
-// Column N_R - 1 joins column 0 across the seam; the top and bottom rows are free edges.
+// Column N_R - 1 joins column 0 across the seam; the top and bottom rows are free edges
+// (or, periodic_along, row N_H - 1 joins row 0: see the second build_cylinder).
 // No spring is horizontal: hoop tension is carried by the diagonals.
 //
 // The two layers (§3.1): the surface layer is the mechanical lattice above; the inner layer
@@ -57,6 +58,7 @@ struct BarkCylinder {
     std::vector<std::int32_t> spring_triangles;     // 2 per spring, -1 where none
     std::vector<float> node_area, spring_face;      // connection areas (Fig. 9)
     std::vector<std::int32_t> spring_index;         // 3 per node: spring (c, r, dir) or -1
+    bool periodic_along = false;                    // rows wrap: row N_H - 1 joins row 0
 
     int node(int c, int r) const { return c * params.N_H + r; }
     int column_of(int p) const { return p / params.N_H; }
@@ -76,6 +78,13 @@ struct BarkCylinder {
 constexpr double kMaxSpringAnchorRatio = 2097152.0;
 
 Status build_cylinder(const CylinderParams& params, BarkCylinder& out,
+                      bool reverse_springs = false);
+// The same lattice periodic along the axis too (periodic_along, for bark as a texture,
+// bark_texture.hpp; chosen here): row N_H - 1 joins row 0 as column N_R - 1 joins column 0,
+// so there are no free edges; triangles across the axial seam get reference corners one
+// height H0 = N_H·L0 up. The anchors grow as before (z·(1 + eps_z) is linear, so the period
+// grows to H(t)). Needs N_H >= 3. periodic_along = false is build_cylinder above.
+Status build_cylinder(const CylinderParams& params, bool periodic_along, BarkCylinder& out,
                       bool reverse_springs = false);
 
 // The spring's canonical key and its lattice coordinates.

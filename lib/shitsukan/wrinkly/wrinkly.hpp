@@ -11,6 +11,9 @@
 //   §4.1, eqs. (16)-(19)          superposition.hpp      the superposed WR surface
 //   §4.2, eq. (20)                hierarchical_sampling.hpp  sampling without the staircase
 //   §4.2, §5                      wr_tessellation.hpp    adaptive polygonisation
+//   §3.1, the shell               terrain_mesh.hpp       a control mesh from a height map; the
+//                                                        periodic (wrapped) control mesh
+//   eqs. (15), (20) as maps       terrain_maps.hpp       height and colour maps (tileable)
 //
 // Manual
 //   WrControlMesh mesh = make_control_mesh(8, 8);          // control_mesh.hpp
@@ -35,3 +38,5 @@
 #include "shitsukan/wrinkly/superposition.hpp"
 #include "shitsukan/wrinkly/hierarchical_sampling.hpp"
 #include "shitsukan/wrinkly/wr_tessellation.hpp"
+#include "shitsukan/wrinkly/terrain_mesh.hpp"
+#include "shitsukan/wrinkly/terrain_maps.hpp"
