@@ -118,6 +118,7 @@
 #include "shitsukan/leather/edge_perturbation.hpp"
 #include "shitsukan/leather/leather.hpp"
 #include "shitsukan/leather/maps.hpp"
+#include "shitsukan/leather/perturbation_tiling.hpp"
 #include "shitsukan/leather/products.hpp"
 #include "shitsukan/leather/relief.hpp"
 #include "shitsukan/leather/scale_division.hpp"
