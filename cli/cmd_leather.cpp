@@ -75,7 +75,7 @@ Status make_pattern(const ScaleParams& prm, int layout, bool tileable, ScalePatt
         SHITSUKAN_TRY(generate_tileable_pattern(tp, *pattern, &rep, progress));
         char buf[160];
         std::snprintf(buf, sizeof buf, "; tileable: %s, spacing %.5g x %.5g (%d rows)",
-                      layout == 0 ? "along y" : "along x and y", double(rep.Dx), double(rep.Dy),
+                      "along x and y", double(rep.Dx), double(rep.Dy),
                       rep.rows);
         *note = buf;
         return Status::success();
@@ -111,10 +111,10 @@ int run_leather(int argc, char** argv) {
               "<o>_height.pfm and <o>_relief.obj. Pattern units: the region is W x H.\n"
               "--layout square|triangular: fig. 3's lattices (one Voronoi stage) instead of the belly.\n"
               "--tileable: the maps repeat with no seam (a periodic Voronoi division on a torus,\n"
-              "the same perturbation on both sides of each seam; not in the paper). The lattices\n"
-              "tile along x and y (D is rounded so whole columns and rows fit the tile); the belly\n"
-              "tiles along y only (D rounded so whole rows fit H): its size gradient toward the left\n"
-              "and right edges (fig. 6) is not periodic by nature.",
+              "the same perturbation on both sides of each seam; not in the paper). Every layout\n"
+              "tiles along x and y (D is rounded so whole columns and rows fit the tile); the belly's\n"
+              "tile edge is a joint like its centre line: the narrow flank scales of one tile meet\n"
+              "those of the next (fig. 6's size gradient, mirrored).",
               "shitsukan leather [flags] [-o prefix]");
     f.number("W", &prm.width, 0.01, 100, "§3.1: width of the pattern region");
     f.number("H", &prm.height, 0.01, 100, "§3.1: height of the pattern region");
@@ -132,7 +132,7 @@ int run_leather(int argc, char** argv) {
     f.choice("layout", &layout, "belly|square|triangular",
              "§3.1: figs. 4-7's two-stage belly, or fig. 3's square / triangular lattice");
     f.toggle("tileable", &tileable,
-             "seamless tiles (lattices: x and y; belly: along y only, see above)");
+             "seamless tiles along x and y (see above)");
     f.text("control", &control,
            "your own section: r0,z0,r1,z1,r2,z2,r3,z3[;next segment] (eq. (2) control points)");
     f.number("edge-r", &relief.edge_r, 0.01, 10, "§3.2: r at the scale's edge (chosen 1)");
