@@ -78,7 +78,7 @@ Status make_pattern(const ScaleParams& prm, int layout, bool tileable, ScalePatt
         SHITSUKAN_TRY(generate_tileable_pattern(tp, *pattern, &rep, progress));
         char buf[160];
         std::snprintf(buf, sizeof buf, "; tileable: %s, spacing %.5g x %.5g (%d rows)",
-                      layout == 0 ? "along y" : "along x and y", double(rep.Dx), double(rep.Dy),
+                      "along x and y", double(rep.Dx), double(rep.Dy),
                       rep.rows);
         *note = buf;
         return Status::success();
@@ -118,7 +118,10 @@ const char* kLeatherAbout =
     "<o>_pattern.svg; on request <o>_relief.obj. Pattern units: the region is W x H.\n"
     "--layout square|triangular: fig. 3's lattices (one Voronoi stage) instead of the belly.\n"
     "--tileable: the maps repeat with no seam (a periodic Voronoi division on a torus,\n"
-    "the same perturbation on both sides of each seam; not in the paper).\n"
+    "the same perturbation on both sides of each seam; not in the paper). Every layout\n"
+    "tiles along x and y (D is rounded so whole columns and rows fit the tile); the belly's\n"
+    "tile edge is a joint like its centre line: the narrow flank scales of one tile meet\n"
+    "those of the next (fig. 6's size gradient, mirrored).\n"
     "--strength: unless given, the relief's true scale (heights in pattern units over the\n"
     "pixel size).";
 

@@ -113,6 +113,48 @@ TEST_CASE("predicates: in-circle on a rounded lattice, every stage against the e
     CHECK(near_zero > 100);  // ... and cocircular on the lattice but not in doubles
 }
 
+TEST_CASE("predicates: mirrored chords of a rounded lattice are 0, one ulp off them is not") {
+    // Isosceles trapezoids whose axis is horizontal, vertical or diagonal (incircle_unfiltered
+    // proves these 0 by exact sums): every one is checked against the exact sum, and so is
+    // the same set with one coordinate moved one ulp (rounding can make either of the two
+    // exactly cocircular: the sums decide, never the lattice's picture).
+    const int side = 100;
+    auto p = [&](int i, int j) { return Vec2d{(i + 0.5) / side, (j + 0.5) / side}; };
+    Pcg32 rng(18, 5);
+    int zeros = 0, checked = 0;
+    for (int k = 0; k < 4000; ++k) {
+        const int i = 10 + int(rng.uniform_int(70)), j = 10 + int(rng.uniform_int(70));
+        const int s = 1 + int(rng.uniform_int(4)), t = 1 + int(rng.uniform_int(4));
+        const int u = int(rng.uniform_int(4));
+        Vec2d v[4];
+        switch (k % 3) {
+            case 0:  // vertical chords, mirrored about a horizontal line
+                v[0] = p(i, j), v[1] = p(i, j + s), v[2] = p(i + t, j - u), v[3] = p(i + t, j + s + u);
+                break;
+            case 1:  // horizontal chords
+                v[0] = p(i, j), v[1] = p(i + s, j), v[2] = p(i - u, j + t), v[3] = p(i + s + u, j + t);
+                break;
+            default:  // diagonal chords, mirrored about x + y = const
+                v[0] = p(i, j), v[1] = p(i + s, j + s), v[2] = p(i + s + t, j - t),
+                v[3] = p(i + t + s + u, j - t + u);
+                if (k % 2) std::swap(v[1].x, v[1].y), std::swap(v[0].x, v[0].y);
+                break;
+        }
+        for (int move = 0; move < 2; ++move) {
+            Vec2d w[4] = {v[0], v[1], v[2], v[3]};
+            if (move) w[3].y = std::nextafter(w[3].y, 2.0);
+            const double e = incircle_exact(w[0], w[1], w[2], w[3]);
+            const double f = incircle_unfiltered(w[0], w[1], w[2], w[3]);
+            REQUIRE((f > 0) == (e > 0));
+            REQUIRE((f < 0) == (e < 0));
+            zeros += move == 0 && f == 0.0;
+            ++checked;
+        }
+    }
+    CHECK(zeros > 1000);  // most of the unmoved sets are exactly cocircular in doubles
+    CHECK(checked == 8000);
+}
+
 TEST_CASE("delaunay: empty circumcircles on random points") {
     auto sites = random_sites(300, 1);
     DelaunayTriangulation dt;

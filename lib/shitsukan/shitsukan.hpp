@@ -123,6 +123,7 @@
 #include "shitsukan/leather/leather.hpp"
 #include "shitsukan/leather/leather_looks.hpp"
 #include "shitsukan/leather/maps.hpp"
+#include "shitsukan/leather/perturbation_tiling.hpp"
 #include "shitsukan/leather/products.hpp"
 #include "shitsukan/leather/relief.hpp"
 #include "shitsukan/leather/scale_division.hpp"

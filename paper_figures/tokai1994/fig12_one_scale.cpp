@@ -15,30 +15,14 @@
 using namespace shitsukan;
 using namespace shitsukan::figures;
 
-SHITSUKAN_FIGURE(tokai1994_fig12, "tokai1994", "fig12",
-                 "One scale: centroid m, edge point p, the r axis, the section and its normals") {
-    const int H = ctx.quick() ? 256 : 512, W = 2 * H;
-    const float s = float(H) / 512.0f;
-    const int text_scale = ctx.quick() ? 1 : 2;
-    // An irregular, slightly non-convex scale (chosen here), in pattern units.
-    const Vec2 poly[7] = {{0.10f, 0.18f}, {0.55f, 0.08f}, {0.88f, 0.30f}, {0.84f, 0.62f},
-                          {0.90f, 0.85f}, {0.40f, 0.92f}, {0.12f, 0.60f}};
-    const int n = 7;
-    const Vec2 m = to_float(polygon_centroid(poly, n));  // fig. 12's m: the area centroid
-    const BezierChain section = table1_section(Table1Section::convex);
-    const ReliefOptions opt;
-    ctx.given("section", "fig. 13(a): (0.0, 0.1) (0.51, 0.1) (0.75, 0.13) (0.92, 0.0)", "Table 1");
-    ctx.given("normal", "n = (p_x - m_x, p_y - m_y, -dr·n_r/dz)", "tokai1994 eq. (4)");
-    ctx.chosen("polygon", "an irregular 7-gon, star-shaped from m", "illustration");
-    ctx.chosen("edge_r", "1 (r = |x - m| / |p - m|; the section ends at 0.92: groove floor)",
-               "README reading of Table 1");
-    ctx.chosen("height unit", "S = 2·area/perimeter of the polygon",
-               "flat sections give flat tops (relief.hpp)");
-    RgbImage img(W, H, Rgb8{255, 255, 255});
-    RasterCanvas canvas(img.view());
-    Canvas& cv = canvas;
+namespace {
 
-    // (a) Top view, the height as grey (white = high).
+// Panel (a): the top view, the height as grey (white = high), the r axes with the x-y part of
+// eq. (4), m, x and p. Returns the relief at x (its edge point is p).
+ReliefSample draw_top_view(RgbImage& img, Canvas& cv, const Vec2* poly, int n, Vec2 m,
+                           const BezierChain& section, const ReliefOptions& opt, int H,
+                           int text_scale) {
+    const float s = float(H) / 512.0f;
     const float view = 0.92f * float(H);
     auto top = [&](Vec2 q) {
         return Vec2{0.04f * float(H) + q.x * view, 0.96f * float(H) - q.y * view};
@@ -90,7 +74,13 @@ SHITSUKAN_FIGURE(tokai1994_fig12, "tokai1994", "fig12",
             "(a) top view, grey = height; blue: (n_x, n_y) of eq. (4) at rho = 0.86, x70",
             Rgb8{0, 0, 0}, 1);
 
-    // (b) The section along the r axis: r = rho (0 at m, 1 at p), z in the same units.
+    return at_x;
+}
+
+// Panel (b): the section along the r axis, r = rho (0 at m, 1 at p), z in the same units,
+// with its control polygon and the eq. (4) normals.
+void draw_section_view(Canvas& cv, const BezierChain& section, int H, int text_scale) {
+    const float s = float(H) / 512.0f;
     tokai_relief::PlotFrame f{float(H) + 0.10f * float(H), 0.62f * float(H), 0.82f * float(H)};
     cv.fill_rect({float(H), 0}, {float(H), float(H)}, Rgb8{255, 255, 255});
     tokai_relief::draw_axes(cv, f, {0.0f, 0.0f}, {1.05f, 0.45f}, 0.2f, "r", "z");
@@ -118,6 +108,35 @@ SHITSUKAN_FIGURE(tokai1994_fig12, "tokai1994", "fig12",
             1);
     cv.text({float(H) + 8 * s, 6 * s}, "(b) section z(r) of Table 1 (fig. 13a), normals of eq. (4)",
             Rgb8{0, 0, 0}, 1);
+}
+
+}  // namespace
+
+SHITSUKAN_FIGURE(tokai1994_fig12, "tokai1994", "fig12",
+                 "One scale: centroid m, edge point p, the r axis, the section and its normals") {
+    const int H = ctx.quick() ? 256 : 512, W = 2 * H;
+    const int text_scale = ctx.quick() ? 1 : 2;
+    // An irregular, slightly non-convex scale (chosen here), in pattern units.
+    const Vec2 poly[7] = {{0.10f, 0.18f}, {0.55f, 0.08f}, {0.88f, 0.30f}, {0.84f, 0.62f},
+                          {0.90f, 0.85f}, {0.40f, 0.92f}, {0.12f, 0.60f}};
+    const int n = 7;
+    const Vec2 m = to_float(polygon_centroid(poly, n));  // fig. 12's m: the area centroid
+    const BezierChain section = table1_section(Table1Section::convex);
+    const ReliefOptions opt;
+    ctx.given("section", "fig. 13(a): (0.0, 0.1) (0.51, 0.1) (0.75, 0.13) (0.92, 0.0)", "Table 1");
+    ctx.given("normal", "n = (p_x - m_x, p_y - m_y, -dr·n_r/dz)", "tokai1994 eq. (4)");
+    ctx.chosen("polygon", "an irregular 7-gon, star-shaped from m", "illustration");
+    ctx.chosen("edge_r", "1 (r = |x - m| / |p - m|; the section ends at 0.92: groove floor)",
+               "README reading of Table 1");
+    ctx.chosen("height unit", "S = 2·area/perimeter of the polygon",
+               "flat sections give flat tops (relief.hpp)");
+    RgbImage img(W, H, Rgb8{255, 255, 255});
+    RasterCanvas canvas(img.view());
+    Canvas& cv = canvas;
+
+    const ReliefSample at_x = draw_top_view(img, cv, poly, n, m, section, opt, H, text_scale);
+    const Vec2 p = at_x.edge_point;
+    draw_section_view(cv, section, H, text_scale);
     ctx.note(
         fmt("The ray from m through x meets the edge at p = (%.3f, %.3f); x lies at "
             "rho = %.3f of the way, height %.4f. Past r = 0.92 the section has ended: the "

@@ -4,7 +4,7 @@
 //    against the polygon lookup alone (the label image the maps are built from): what the
 //    relief itself (ray to the edge, Bezier inversion, eq. (4)) costs on top of knowing the
 //    polygon.
-// 3. The tileable belly pattern (tileable.hpp: the 1 x 3 block of tiles, then the middle one)
+// 3. The tileable belly pattern (tileable.hpp: the 3 x 3 block of tiles, then the middle one)
 //    against the plain fig. 7 pattern: what seamless tiling costs.
 // 2. The fig. 18 handbag frame (512 x 512, 7 patches at 32 x 32 quads + 2 knobs, bump-mapped
 //    Blinn 1977, two point lights) against the same frame shaded without bump mapping.
@@ -69,7 +69,7 @@ SHITSUKAN_BENCH(leather_tileable_pattern) {
             bench::sink(plain.polygon_count());
         });
     if (!bench::timed_calls_ok(ok, "tileable pattern")) return;
-    bench::report("tileable belly pattern (fig. 7 parameters, seamless along y)", t,
+    bench::report("tileable belly pattern (fig. 7 parameters, seamless along x and y)", t,
                   "plain fig. 7 pattern");
 }
 

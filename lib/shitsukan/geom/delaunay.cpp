@@ -12,11 +12,12 @@ namespace {
 
 // Index of (x, y) on a Hilbert curve over a 2^16 x 2^16 grid: the classic xy -> d loop, its
 // quadrant rotations (swap x and y; complement both, which commutes with the swap) kept as
-// two state bits applied to the original coordinates, so the loop has no branch to
-// mispredict (the branching loop was 16 % of the triangulation's time). The same index.
-std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
-    std::uint32_t d = 0, swapped = 0, flipped = 0;
-    for (int b = 15; b >= 0; --b) {
+// two state bits applied to the original coordinates. hilbert_bits runs that loop over the
+// `bits` lowest bits of x and y from a state (bit 0: swapped, bit 1: flipped) and returns the
+// index bits, the state after them in *state.
+std::uint32_t hilbert_bits(std::uint32_t x, std::uint32_t y, int bits, std::uint32_t* state) {
+    std::uint32_t d = 0, swapped = *state & 1u, flipped = *state >> 1;
+    for (int b = bits - 1; b >= 0; --b) {
         const std::uint32_t xb = (x >> b) & 1u, yb = (y >> b) & 1u;
         const std::uint32_t rx = ((xb & ~swapped) | (yb & swapped)) ^ flipped;
         const std::uint32_t ry = ((yb & ~swapped) | (xb & swapped)) ^ flipped;
@@ -24,6 +25,33 @@ std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
         const std::uint32_t turn = ry ^ 1u;  // ry == 0: rotate the quadrant
         flipped ^= turn & rx;                // rx == 1 too: complement
         swapped ^= turn;
+    }
+    *state = swapped | (flipped << 1);
+    return d;
+}
+
+// The loop four bits of x and y at a time, from a table of its 4 states x 256 nibble pairs
+// (made once by the loop itself, so the same index; the bit loop was ~4 % of a lattice's
+// Voronoi cells).
+struct HilbertNibbles {
+    std::uint8_t index[4][256], next[4][256];
+    HilbertNibbles() {
+        for (std::uint32_t s = 0; s < 4; ++s)
+            for (std::uint32_t xy = 0; xy < 256; ++xy) {
+                std::uint32_t state = s;
+                index[s][xy] = std::uint8_t(hilbert_bits(xy & 15u, xy >> 4, 4, &state));
+                next[s][xy] = std::uint8_t(state);
+            }
+    }
+};
+
+std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
+    static const HilbertNibbles table;
+    std::uint32_t d = 0, state = 0;
+    for (int shift = 12; shift >= 0; shift -= 4) {
+        const std::uint32_t xy = ((x >> shift) & 15u) | (((y >> shift) & 15u) << 4);
+        d |= std::uint32_t(table.index[state][xy]) << (2 * shift);
+        state = table.next[state][xy];
     }
     return d;
 }

@@ -20,8 +20,9 @@
 // 192 products of four doubles summed in two 2048-bit fixed-point integers (32-bit limbs, no
 // heap, about 1.3 KB of stack; Shewchuk's full expansion product needed 37.8 KB, too much
 // for a microcontroller; ~2x slower, on the rare calls with inexact differences).
-// The square lattice's cocircular case (an axis-parallel rectangle) is decided by
-// comparisons before any exact stage. Every stack frame here stays under 2.4 KB.
+// The square lattice's cocircular cases are decided before any exact stage: an axis-parallel
+// rectangle by comparisons, two chords mirrored about a horizontal, vertical or diagonal line
+// (an isosceles trapezoid) by exact sums of four doubles. Every stack frame here stays under 2.4 KB.
 // The filters are inline (the triangulation and the Voronoi cells call them millions of times;
 // a call per test cost more than the test), the exact stages are not.
 #pragma once
@@ -35,8 +36,8 @@ namespace shitsukan {
 // The exact evaluations behind the filters (for tests and for callers who want them).
 double orient2d_exact(Vec2d a, Vec2d b, Vec2d c);
 double incircle_exact(Vec2d a, Vec2d b, Vec2d c, Vec2d d);
-// What incircle does when its filter cannot decide: the lattice rectangle test, then the
-// exact determinant from exact coordinate differences.
+// What incircle does when its filter cannot decide: the lattice rectangle and mirrored-chord
+// tests, then the exact determinant from exact coordinate differences.
 double incircle_unfiltered(Vec2d a, Vec2d b, Vec2d c, Vec2d d);
 
 inline double orient2d(Vec2d a, Vec2d b, Vec2d c) {

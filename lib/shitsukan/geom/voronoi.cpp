@@ -161,6 +161,14 @@ bool circumcentre_double(Vec2d a, DoubleDouble dbx, DoubleDouble dby, DoubleDoub
 // ~97 % of the triangles of uniform sites, the double filter only ~40 %), else the double
 // filter, and the double-double construction for what they leave. Same bits either way.
 Vec2d circumcentre(Vec2d a, Vec2d b, Vec2d c) {
+    // three corners of an axis-parallel rectangle (every triangle of a square lattice): the
+    // centre is the midpoint of the rectangle's diagonal, (x0 + x1) / 2 and (y0 + y1) / 2 of
+    // the two distinct x and y values; halving is exact, so rounding the sum once gives the
+    // correctly rounded centre (the same bits as the filters below)
+    const double x1 = a.x != b.x ? b.x : c.x, y1 = a.y != b.y ? b.y : c.y;
+    if ((b.x == a.x || b.x == x1) && (c.x == a.x || c.x == x1) && x1 != a.x &&
+        (b.y == a.y || b.y == y1) && (c.y == a.y || c.y == y1) && y1 != a.y)
+        return {0.5 * (a.x + x1), 0.5 * (a.y + y1)};
     const DoubleDouble dbx = dd_diff(b.x, a.x), dby = dd_diff(b.y, a.y);
     const DoubleDouble dcx = dd_diff(c.x, a.x), dcy = dd_diff(c.y, a.y);
     Vec2d r;

@@ -20,7 +20,8 @@
 // hashed from the seed, the bit patterns of A and B and the midpoint's index (core/hash.hpp),
 // so the curve does not depend on which polygon asks first. Points: A + s (B - A) + f(s) n.
 //
-// The requested amplitude, and what keeps the tiling (chosen here). Every curve is first made
+// The requested amplitude, and what keeps the tiling (chosen here; the pieces in
+// perturbation_tiling.hpp, the two drivers in perturb_subdivision.cpp and perturb_two_stage.cpp). Every curve is first made
 // with the requested p; only a curve that would break the tiling is scaled down, as a whole
 // (offsets lambda f, lambda < 1), just enough. Each polygon is convex before perturbation; let
 // c be its centroid. The fan triangles (A, B, c) over all edges of all polygons partition the

@@ -50,6 +50,35 @@ void keep_border_seeds_inside(float width, SeedLayout* row) {
     }
 }
 
+// The stage-2 columns of a tileable belly's tile, repeated across the region (tile k's shifted
+// by k periods, their indices and so their random numbers the tile's own). The tile's edge is
+// a joint like its centre line (where the left half of one tile meets the right half of the
+// next): stage2_columns' edge columns are dropped and the others stretched from the centre
+// line by one factor so that the edge lies midway between the last column and its copy in the
+// next tile (chosen here: the scales along the seam are whole, about s(1) wide, as along the
+// centre line; the spacing grows by the factor, ~5 % at D = 0.1).
+Status periodic_stage2_columns(const ScaleParams& prm, float period, Stage2Columns& out) {
+    Stage2Columns tile;
+    SHITSUKAN_TRY(stage2_columns(period, prm.D, prm.edge_ratio, tile));
+    const double xc = 0.5 * double(period);
+    double last = 0.0;  // the largest distance from the centre line of an inside column
+    for (double x : tile.x)
+        if (x > 0.0 && x < double(period)) last = std::max(last, std::fabs(x - xc));
+    const double stretch = last > 0.0 ? xc / (0.5 * (last + xc)) : 1.0;
+    const int tiles = std::max(1, int(std::lround(double(prm.width) / double(period))));
+    out.x.clear();
+    out.spacing.clear();
+    out.index.clear();
+    for (int k = 0; k < tiles; ++k)
+        for (std::size_t c = 0; c < tile.x.size(); ++c) {
+            if (!(tile.x[c] > 0.0 && tile.x[c] < double(period))) continue;  // the edge columns
+            out.x.push_back(xc + (tile.x[c] - xc) * stretch + double(k) * double(period));
+            out.spacing.push_back(tile.spacing[c] * stretch);
+            out.index.push_back(tile.index[c]);
+        }
+    return Status::success();
+}
+
 }  // namespace
 
 Status check_scale_params(const ScaleParams& prm) {
@@ -153,12 +182,15 @@ struct Stage2Cells {
 Status stage2_row_for_polygon(const ScaleParams& prm, int f, ScaleDivision& out, SeedLayout& row) {
     const int site = out.stage1_site[std::size_t(f)];
     const Vec2d own = out.stage1_seeds.original[std::size_t(site)];
-    const int side = prm.d > 0.0f ? (own.x < 0.5 * double(prm.width) ? -1 : 1) : 0;
     const int row_id =
         out.stage1_row_id.empty() ? site : out.stage1_row_id[std::size_t(site)];
+    const bool periodic = out.column_period > 0.0f;
+    const int side = !(prm.d > 0.0f) ? 0
+                     : periodic      ? ((row_id & 1) ? 1 : -1)
+                                     : (own.x < 0.5 * double(prm.width) ? -1 : 1);
     SHITSUKAN_TRY(stage2_row_seeds(out.columns, prm.a, out.stage1_seeds.moved[std::size_t(site)].y,
                                    row_id, prm.seed, row, side));
-    keep_border_seeds_inside(prm.width, &row);
+    if (!periodic) keep_border_seeds_inside(prm.width, &row);  // (a tileable belly: no border)
     out.stage2_seeds.original.insert(out.stage2_seeds.original.end(), row.original.begin(),
                                      row.original.end());
     out.stage2_seeds.moved.insert(out.stage2_seeds.moved.end(), row.moved.begin(),
@@ -491,7 +523,10 @@ Status stage1_vertical_division(const ScaleParams& prm, ScaleDivision& out) {
 
 Status stage2_horizontal_division(const ScaleParams& prm, ScaleDivision& out) {
     const PlanarSubdivision& s1 = out.stage1;
-    SHITSUKAN_TRY(stage2_columns(prm.width, prm.D, prm.edge_ratio, out.columns));
+    if (out.column_period > 0.0f)
+        SHITSUKAN_TRY(periodic_stage2_columns(prm, out.column_period, out.columns));
+    else
+        SHITSUKAN_TRY(stage2_columns(prm.width, prm.D, prm.edge_ratio, out.columns));
     out.stage2_seeds.original.clear();
     out.stage2_seeds.moved.clear();
     out.stage2_row.clear();

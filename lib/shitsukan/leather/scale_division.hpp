@@ -40,7 +40,7 @@
 // Cost: stage 1 is one Voronoi division of n1 ~ 2 H / D seeds, O(n1 log n1); stage 2 one
 // Voronoi division per stage-1 polygon (its row of k ~ W / D seeds), O(N log k) for the N
 // final cells; the T-junction pass sorts the points on each stage-1 edge, O(N log N); memory
-// O(N). Measured: 154 scales in ~1 ms (fig. 7), 50 000 scales (D = 0.005) in ~0.7 s.
+// O(N). Measured: 140 scales in ~1 ms (fig. 7), 50 000 scales (D = 0.005) in ~0.7 s.
 #pragma once
 
 #include <cstdint>
@@ -72,6 +72,11 @@ struct ScaleDivision {
     SeedLayout stage1_seeds;
     std::vector<int> stage1_row_id;  // stage-1 seed -> the row id of its stage-2 random numbers
                                      // (empty: the seed's index; tileable: its wrapped index)
+    // Tileable belly (tileable.hpp), 0 otherwise: > 0, the stage-2 columns of one tile this
+    // wide repeat across the region with no column on the tile's edge (a joint, like the
+    // centre line), and each stage-1 polygon's side (left / right half of its tile) is its
+    // row id's low bit.
+    float column_period = 0.0f;
     PlanarSubdivision stage1;      // stage-1 polygons, before perturbation
     std::vector<int> stage1_site;  // stage-1 polygon -> its seed index
     Stage2Columns columns;

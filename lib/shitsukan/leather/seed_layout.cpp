@@ -1,5 +1,6 @@
 #include "shitsukan/leather/seed_layout.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "shitsukan/core/hash.hpp"
@@ -81,15 +82,33 @@ Status stage1_seeds(const Stage1SeedParams& prm, SeedLayout& out_layout) {
     out->original.clear();
     out->moved.clear();
     const double xc = 0.5 * double(width);
-    const int ny = int(std::ceil(height / D));
-    for (int j = -1; j <= ny + 1; ++j)
+    // processing 1: two rows parallel to y, at distance d on each side of the centre line, at
+    // y = (j + 1/2) Dy, Dy = H / N (N = H / D rounded: the rows fill the height exactly)
+    const int rows = std::max(1, int(std::lround(double(height) / double(D))));
+    const double Dy = double(height) / rows;
+    auto inside_row = [&](int j, int side, Vec2d* original, Vec2d* moved) {
+        *original = {side == 0 ? xc - double(d) : xc + double(d), (j + 0.5) * Dy};
+        *moved = *original;  // processing 2: move along y by eq. (1)
+        moved->y += seed_displacement(D, a, hashed_rnd(seed, kStreamStage1, 2 * j + side, 0));
+    };
+    // two rows beyond each border: the mirror images of the first (last) two inside rows, so
+    // the seeds are symmetric about y = 0 (y = H) there and the Voronoi edges run along the
+    // border itself: the border rows are whole scales, never slivers
+    for (int j = -2; j <= rows + 1; ++j)
         for (int side = 0; side < 2; ++side) {
-            // processing 1: two rows parallel to y, at distance d on each side of the centre line
-            Vec2d p{side == 0 ? xc - double(d) : xc + double(d), j * double(D)};
-            out->original.push_back(p);
-            // processing 2: move along y by eq. (1)
-            p.y += seed_displacement(D, a, hashed_rnd(seed, kStreamStage1, 2 * j + side, 0));
-            out->moved.push_back(p);
+            Vec2d original, moved;
+            if (j < 0) {
+                inside_row(-1 - j, side, &original, &moved);
+                original.y = -original.y, moved.y = -moved.y;
+            } else if (j >= rows) {
+                inside_row(2 * rows - 1 - j, side, &original, &moved);
+                original.y = 2.0 * double(height) - original.y;
+                moved.y = 2.0 * double(height) - moved.y;
+            } else {
+                inside_row(j, side, &original, &moved);
+            }
+            out->original.push_back(original);
+            out->moved.push_back(moved);
         }
     return Status::success();
 }

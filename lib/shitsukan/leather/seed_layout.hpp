@@ -75,8 +75,12 @@ Status triangular_lattice_seeds(float width, float height, float D, float a, std
                                 SeedLayout& out);
 
 // Stage 1 (fig. 4): two rows parallel to y at x = W/2 - d (left) and x = W/2 + d (right),
-// y = j D for j = -1 .. ceil(H / D) + 1 (chosen: the top and bottom edges then cut rows near
-// their middle, never a sliver); seed 2 (j + 1) + side; moved along y.
+// y = (j + 1/2) Dy for j = 0 .. N - 1, Dy = H / N, N = H / D rounded (at least 1), moved along
+// y by eq. (1) with D; then two rows beyond each border, the mirror images of the two inside
+// rows nearest to it (chosen here: the seeds are symmetric about y = 0 and y = H, so the
+// Voronoi edges run along the border and the border rows are whole scales, 0.75-1.25 Dy high
+// at a = 0.25; the paper's figs. 7-10 show no cut rows; rows centred on the border left
+// 0.25-0.75 D slivers). Seed index 2 (j + 2) + side, j = -2 .. N + 1.
 struct Stage1SeedParams {
     float width = 1.0f, height = 1.0f;  // the pattern region [0, W] x [0, H]
     float D = 0.1f;                     // seed spacing along y (chosen default, as ScaleParams)

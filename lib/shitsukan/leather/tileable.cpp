@@ -63,9 +63,10 @@ void lattice_block_seeds(const TileParams& prm, int bx, int by, TileReport& rep,
         }
 }
 
-// The belly's stage-1 seeds over the 1 x 3 block (fig. 4 along y, wrapped row indices), and
-// the wrapped row id of each for stage 2's random numbers.
-void belly_block_seeds(const ScaleParams& sp, int by, TileReport& rep, ScaleDivision& div) {
+// The belly's stage-1 seeds over the bx x by block (fig. 4 in every tile, wrapped row
+// indices), and the wrapped row id of each for stage 2's random numbers.
+void belly_block_seeds(const ScaleParams& sp, int bx, int by, TileReport& rep,
+                       ScaleDivision& div) {
     const int ny = belly_rows(sp);
     const double Dy = double(sp.height) / ny, xc = 0.5 * double(sp.width);
     rep.columns = 0;
@@ -76,10 +77,12 @@ void belly_block_seeds(const ScaleParams& sp, int by, TileReport& rep, ScaleDivi
     div.stage1_seeds.moved.clear();
     div.stage1_row_id.clear();
     for (int j = -1; j <= by * ny; ++j)
-        for (int side = 0; side < 2; ++side) {
+        for (int k = 0; k < 2 * bx; ++k) {
+            const int side = k & 1, tile = k / 2;
             const int jw = wrap_index(j, ny);
-            // processing 1: two rows parallel to y at distance d from the centre line
-            Vec2d p{side == 0 ? xc - double(sp.d) : xc + double(sp.d), (j + 0.5) * Dy};
+            // processing 1: two rows parallel to y at distance d from each tile's centre line
+            const double cx = xc + double(tile) * double(sp.width);
+            Vec2d p{side == 0 ? cx - double(sp.d) : cx + double(sp.d), (j + 0.5) * Dy};
             div.stage1_seeds.original.push_back(p);
             // processing 2: moved along y by eq. (1), the wrapped row's random number
             p.y += double(seed_displacement(float(Dy), sp.a,
@@ -138,8 +141,14 @@ Status generate_tileable_pattern(const TileParams& prm, ScalePattern& out, TileR
     const ScaleParams& sp = prm.scales;
     const bool belly = prm.layout == TileLayout::belly;
     int nx = 0, ny = belly_rows(sp);
-    if (!belly) lattice_counts(prm, &nx, &ny);
-    const int mx = belly ? 0 : margin_tiles(nx), my = margin_tiles(ny);
+    if (belly) {  // the belly's columns per tile (stage 2), for the block's margin along x
+        Stage2Columns columns;
+        SHITSUKAN_TRY(stage2_columns(sp.width, sp.D, sp.edge_ratio, columns));
+        nx = std::max(1, int(columns.x.size()) - 1);
+    } else {
+        lattice_counts(prm, &nx, &ny);
+    }
+    const int mx = margin_tiles(nx), my = margin_tiles(ny);
     const int bx = 2 * mx + 1, by = 2 * my + 1;
     // the block's tiles (a lattice has about as many cells as the belly has scales)
     SHITSUKAN_TRY(check_memory_budget(budget_mul(scale_pattern_bytes(sp), std::uint64_t(bx * by)),
@@ -148,15 +157,17 @@ Status generate_tileable_pattern(const TileParams& prm, ScalePattern& out, TileR
     PerturbationParams pp = sp.perturbation;
     ScalePattern block;
     if (belly) {
-        ScaleParams bp = sp;  // the 1 x by block: same width, by tiles high
+        ScaleParams bp = sp;  // the bx x by block of tiles
+        bp.width = float(bx) * sp.width;
         bp.height = float(by) * sp.height;
         bp.D = float(double(sp.height) / ny);
         ScaleDivision div;
-        belly_block_seeds(sp, by, rep, div);
+        div.column_period = sp.width;  // stage 2: the tile's columns, repeated
+        belly_block_seeds(sp, bx, by, rep, div);
         SHITSUKAN_TRY(stage1_vertical_division(bp, div));
         SHITSUKAN_TRY(stage2_horizontal_division(bp, div));
         progress.report(0.05f);
-        pp.period_x = 0.0f;
+        pp.period_x = sp.width;
         pp.period_y = sp.height;
         SHITSUKAN_TRY(perturb_two_stage(div.stage1, div.cells, div.cell_stage1, pp, sp.seed,
                                         bp.width, bp.height, div.stage1_pattern, block,

@@ -7,7 +7,7 @@
 //   #include "shitsukan/leather/maps.hpp"
 //
 //   TileParams tp;                          // the crocodile belly (fig. 7's d, a, p)
-//   tp.layout = TileLayout::belly;          // tiles along y; along x the size gradient stays
+//   tp.layout = TileLayout::belly;          // tiles along x and y (the tile edge: a joint)
 //   ScalePattern torus;
 //   TileReport rep;
 //   Status s = generate_tileable_pattern(tp, torus, &rep);   // rep.Dx, rep.Dy: spacing used
@@ -19,7 +19,7 @@
 // How (chosen here). A periodic Voronoi division is built from geom's ordinary one: the seeds
 // of one tile and their wrapped copies fill a block of 2m + 1 tiles along each periodic axis
 // (m tiles on each side of the kept one, at least 6 cells: 3 x 3 tiles for the lattices and
-// 1 x 3 for the belly at D = 0.1; more for tiles of very few, big scales, where processing
+// for the belly at D = 0.1; more for tiles of very few, big scales, where processing
 // 4's shrinking near the block's straight border reached the middle tile), every copy moved
 // by the same eq. (1) displacement,
 // drawn from the seed's WRAPPED lattice indices (hashed_rnd of (i mod nx, j mod ny)), and the
@@ -42,12 +42,15 @@
 //                       even rows across the seam), Dy = H / ny (within a few % of
 //                       Dx sqrt(3) / 2: the triangles are stretched that little along y);
 //                       tiles along x and y.
-//   belly               figs. 4-7: the two-stage crocodile belly. Its left-right size gradient
-//                       (stage-2 columns narrowing toward x = 0 and x = W, fig. 6) is not
-//                       periodic by nature: it tiles along y (the rows) only. ny =
-//                       round(H / D) stage-1 rows per side, Dy = H / ny; the rows sit at
-//                       (j + 1/2) Dy. The x edges stay straight, as in the plain pattern.
-// Cost: the block's tile count (9 for the lattices, 3 for the belly at D = 0.1) times the plain
+//   belly               figs. 4-7: the two-stage crocodile belly in every tile of the block:
+//                       ny = round(H / D) stage-1 rows per side, Dy = H / ny, at (j + 1/2) Dy;
+//                       the stage-2 columns (narrowing toward x = 0 and x = W, fig. 6) repeat
+//                       with the tile, with no column on its edge (ScaleDivision::
+//                       column_period): the edge is a joint like the centre line, where the
+//                       right half of one tile meets the left half of the next, its scales
+//                       whole on both sides (chosen here; the plain pattern cuts its edge
+//                       scales through their middle instead). Tiles along x and y.
+// Cost: the block's tile count (9 at D = 0.1, belly and lattices) times the plain
 // pattern's division and perturbation (measured: the belly tile 1.9x the plain fig. 7
 // pattern).
 #pragma once
