@@ -511,8 +511,8 @@ TEST_CASE("fully-connected superposition on a slope: eq. (20) has fewer flat ste
             return double(superposed_sampled(s, hs, u, v).attributes.height);
         });
     }
-    INFO("flat-step share: eq. (16) " << direct << ", eq. (20) " << sampled[0]
-                                      << ", with jitter " << sampled[1]);
+    INFO("flat-step share: eq. (16) " << direct << ", eq. (20) " << sampled[0] << ", with jitter "
+                                      << sampled[1]);
     CHECK(direct > 0.15);  // the staircase is there to avoid
     CHECK(sampled[0] < direct);
     CHECK(sampled[1] < 0.75 * direct);

@@ -331,6 +331,45 @@ ShapeStats measure_shape(const WrSurface& surface, const HierarchicalSampling& h
     return st;
 }
 
+// Panels (4)(5): the measured shape in the notes, and the checks of §4.1 and §4.2.
+Status note_and_check_shape(FigureContext& ctx, const SuperFigure& f, const WrSurface& surface,
+                            const HierarchicalSampling& hs, int panel) {
+    const bool quick = ctx.quick();
+    const bool bezier = f.basis == SurfaceBasis::bezier;
+    const ShapeStats st = measure_shape(surface, hs);
+    ctx.note(
+        fmt("Shape (measured on eq. (20)'s height): departure from (2) %.2f, relief "
+            "anisotropy %.2f, repetition at a third of the patch %.2f, step share %.2f "
+            "against eq. (16) directly %.2f, flat-step share %.3f against eq. (16) directly "
+            "%.3f (definitions: measure_shape in the source).",
+            st.departure, st.anisotropy, st.repetition, st.step_share, st.step_share_direct,
+            st.flat_share, st.flat_share_direct));
+    // §4.1: (4) and (5) are not the conventional surface, and fig. 17's read as ranges.
+    // §4.2: hierarchical sampling avoids eq. (16)'s staircase (fig. 19(b)); fig. 18's
+    // fully-connected IST adds its own ramp-ramp-drop teeth at every step (see the top of
+    // this file), which §5's jitter keeps from lining up into terraces.
+    // The checks hold the full run (--quick sums fewer steps on a coarser grid).
+    if (!quick && st.step_share > 0.8 * st.step_share_direct)
+        return Status::error(StatusCode::not_supported,
+                             "superposed panel (%d): step share %.2f against eq. (16)'s "
+                             "%.2f: the hierarchical sampling does not avoid the staircase",
+                             panel, st.step_share, st.step_share_direct);
+    // §4.2: no staircase. Every panel has fewer flat steps than eq. (16); fig. 18, whose
+    // teeth lined up into terraces without §5's jitter, under 0.75 of eq. (16)'s.
+    const double flat_limit = f.jitter_height > 0 ? 0.75 : 1.0;
+    if (!quick && st.flat_share > flat_limit * st.flat_share_direct)
+        return Status::error(StatusCode::not_supported,
+                             "superposed panel (%d): flat-step share %.3f against eq. (16)'s "
+                             "%.3f: terraces (fig. 19(b)'s staircase) remain",
+                             panel, st.flat_share, st.flat_share_direct);
+    if (!quick && (st.departure < 0.15 || (bezier && panel == 5 && st.anisotropy < 0.4)))
+        return Status::error(StatusCode::not_supported,
+                             "superposed panel (%d): departure %.2f, anisotropy %.2f: does "
+                             "not read as §4.1's mountain ranges",
+                             panel, st.departure, st.anisotropy);
+    return Status::success();
+}
+
 Status run_panel(FigureContext& ctx, const SuperFigure& f, char row, int panel) {
     const bool quick = ctx.quick();
     const int size = quick ? 128 : 512;
@@ -376,8 +415,8 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, char row, int panel) 
                    "printed for figs. 17-18); the unit-IST's first step is the identity, so "
                    "1 - delta^2 of the weight stays on the smooth H");
         if (f.jitter_height > 0)
-            ctx.chosen("jitter", fmt("height samples x (1 + %.2f g), g ~ N(0, 1)",
-                                     double(f.jitter_height)),
+            ctx.chosen("jitter",
+                       fmt("height samples x (1 + %.2f g), g ~ N(0, 1)", double(f.jitter_height)),
                        "§5's Gaussian randomness on the sample values of its superposed "
                        "IST-B-spline models, at fig. 21's deviation; without it the fully-"
                        "connected IST's teeth line up into terraces");
@@ -392,37 +431,7 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, char row, int panel) 
     ctx.note(fmt("%d triangles; superposition steps used: max %d, mean %.2f.",
                  wm.mesh.triangle_count(), wm.max_levels_used, wm.mean_levels_used));
     if (panel >= 4) {
-        const ShapeStats st = measure_shape(rs.surface, hs);
-        ctx.note(
-            fmt("Shape (measured on eq. (20)'s height): departure from (2) %.2f, relief "
-                "anisotropy %.2f, repetition at a third of the patch %.2f, step share %.2f "
-                "against eq. (16) directly %.2f, flat-step share %.3f against eq. (16) directly "
-                "%.3f (definitions: measure_shape in the source).",
-                st.departure, st.anisotropy, st.repetition, st.step_share, st.step_share_direct,
-                st.flat_share, st.flat_share_direct));
-        // §4.1: (4) and (5) are not the conventional surface, and fig. 17's read as ranges.
-        // §4.2: hierarchical sampling avoids eq. (16)'s staircase (fig. 19(b)); fig. 18's
-        // fully-connected IST adds its own ramp-ramp-drop teeth at every step (see the top of
-        // this file), which §5's jitter keeps from lining up into terraces.
-        // The checks hold the full run (--quick sums fewer steps on a coarser grid).
-        if (!quick && st.step_share > 0.8 * st.step_share_direct)
-            return Status::error(StatusCode::not_supported,
-                                 "superposed panel (%d): step share %.2f against eq. (16)'s "
-                                 "%.2f: the hierarchical sampling does not avoid the staircase",
-                                 panel, st.step_share, st.step_share_direct);
-        // §4.2: no staircase. Every panel has fewer flat steps than eq. (16); fig. 18, whose
-        // teeth lined up into terraces without §5's jitter, under 0.75 of eq. (16)'s.
-        const double flat_limit = f.jitter_height > 0 ? 0.75 : 1.0;
-        if (!quick && st.flat_share > flat_limit * st.flat_share_direct)
-            return Status::error(StatusCode::not_supported,
-                                 "superposed panel (%d): flat-step share %.3f against eq. (16)'s "
-                                 "%.3f: terraces (fig. 19(b)'s staircase) remain",
-                                 panel, st.flat_share, st.flat_share_direct);
-        if (!quick && (st.departure < 0.15 || (bezier && panel == 5 && st.anisotropy < 0.4)))
-            return Status::error(StatusCode::not_supported,
-                                 "superposed panel (%d): departure %.2f, anisotropy %.2f: does "
-                                 "not read as §4.1's mountain ranges",
-                                 panel, st.departure, st.anisotropy);
+        SHITSUKAN_TRY(note_and_check_shape(ctx, f, rs.surface, hs, panel));
     }
     if (row == 'b') {
         double share = 0, largest = 0;

@@ -48,9 +48,10 @@ WrControlMesh wave_mesh(float delta) {
             const float z = 0.5f * kMeshLengthZ - kMeshLengthZ * float(r) / float(rows - 1);
             // The former 10 x 8 mesh's crest, on the same (x, z) (its columns c' = 9 c / 5,
             // rows r' = 7 r / 9).
-            const float rr = float(r) * 7.0f / float(rows - 1), cc = float(c) * 9.0f / float(cols - 1);
-            const float crest = det_expf(-(rr - 3.5f) * (rr - 3.5f) / 0.8f) *
-                                (0.7f + 0.3f * det_sin(1.3f * cc));
+            const float rr = float(r) * 7.0f / float(rows - 1),
+                        cc = float(c) * 9.0f / float(cols - 1);
+            const float crest =
+                det_expf(-(rr - 3.5f) * (rr - 3.5f) / 0.8f) * (0.7f + 0.3f * det_sin(1.3f * cc));
             p.position = {x, 0.3f * det_sin(0.9f * x + 0.5f * z), z};
             p.height = 0.1f + 0.9f * crest + 0.05f * hash_uniform(22, 0, c, r);
             p.direction = normalize(Vec3{0.0f, 1.0f, crest});
@@ -75,7 +76,7 @@ constexpr int kCellW = 300, kCellH = 150;
 // crest_anisotropy = (J_z - J_x) / (J_z + J_x): 0 for bumps alike along x and z (a plaid),
 // towards 1 for crests running along x (the relief changes across them, along z).
 struct ReliefShape {
-    double anisotropy = 0;     // crest_anisotropy
+    double anisotropy = 0;          // crest_anisotropy
     double repetition[2] = {0, 0};  // along u, v: correlation with the relief one span on
 };
 ReliefShape relief_shape(const WrSurface& surface, const HierarchicalSampling& hs, float len_u,
@@ -185,8 +186,7 @@ Status draw_panel(bool quick, char row, int col, RgbView view, StageTimes* t) {
     t->grid_level = o.grid_level;
     t->levels = levels;
     t->quick = quick;
-    if (o.form == WrSurfaceForm::superposed)
-    {
+    if (o.form == WrSurfaceForm::superposed) {
         const ReliefShape rs = relief_shape(surface, hs, kMeshLengthX, kMeshLengthZ);
         t->relief_anisotropy = rs.anisotropy;
         t->relief_repetition[0] = rs.repetition[0];
@@ -275,8 +275,7 @@ SHITSUKAN_FIGURE(
     ctx.chosen("transparency rendering",
                "back-to-front sort of triangles + Z-buffer + blend (as fig. 23), Lambert shading",
                "the paper does not say how it blended");
-    ctx.chosen("adaptive sampling",
-               "grid: step 2, 2 vertices per interval",
+    ctx.chosen("adaptive sampling", "grid: step 2, 2 vertices per interval",
                "cells of about 7.5 x 1.8 px on a 1200 x 600 panel (step 2)");
     RgbImage img;
     std::map<std::string, StageTimes> times;
@@ -305,12 +304,12 @@ SHITSUKAN_FIGURE(
                                  label);
     }
     ctx.note(seen);
-    std::string crests = "Crests, measured (crest_anisotropy in the source: 0 = a plaid of round "
-                         "bumps, towards 1 = crests along x):";
+    std::string crests =
+        "Crests, measured (crest_anisotropy in the source: 0 = a plaid of round "
+        "bumps, towards 1 = crests along x):";
     for (const char* label : {"(a-2)", "(a-3)", "(a-4)", "(b-2)", "(b-3)", "(b-4)"})
-        crests += fmt(" %s %.2f (repetition u %.2f, v %.2f)", label,
-                      times[label].relief_anisotropy, times[label].relief_repetition[0],
-                      times[label].relief_repetition[1]);
+        crests += fmt(" %s %.2f (repetition u %.2f, v %.2f)", label, times[label].relief_anisotropy,
+                      times[label].relief_repetition[0], times[label].relief_repetition[1]);
     ctx.note(crests + ".");
     // The wave's relief runs as crests along x (the check holds the full run).
     for (const char* label : {"(a-2)", "(a-3)", "(a-4)", "(b-2)", "(b-3)", "(b-4)"})
