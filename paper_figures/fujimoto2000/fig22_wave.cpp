@@ -79,11 +79,27 @@ struct ReliefShape {
     double anisotropy = 0;          // crest_anisotropy
     double repetition[2] = {0, 0};  // along u, v: correlation with the relief one span on
 };
+// A parameter located once: its spline basis and its sample weights for k = 1..K (the
+// same bits as locating it per point, hierarchical_sampling.hpp).
+struct Located {
+    WrBasisAt basis;
+    std::vector<SampleWeights> weights;
+};
+Located locate(const WrSurface& surface, const HierarchicalSampling& hs, int axis, float x) {
+    Located l;
+    l.basis = axis == 0 ? surface.basis_u(x) : surface.basis_v(x);
+    for (int k = 1; k <= hs.levels(); ++k)
+        l.weights.push_back(axis == 0 ? hs.weights_u(k, x) : hs.weights_v(k, x));
+    return l;
+}
+
 ReliefShape relief_shape(const WrSurface& surface, const HierarchicalSampling& hs, float len_u,
                          float len_v) {
-    auto relief = [&](float u, float v) {
-        return double(superposed_sampled(surface, hs, u, v).attributes.height) -
-               double(surface.attributes(u, v).height);
+    auto relief = [&](const Located& lu, const Located& lv, float u, float v) {
+        return double(superposed_sampled(surface, hs, lu.basis, lv.basis, lu.weights.data(),
+                                         lv.weights.data(), u, v, 0.0f)
+                          .attributes.height) -
+               double(surface.attributes(lu.basis, lv.basis).height);
     };
     ReliefShape out;
     double j[2] = {0, 0};
@@ -94,15 +110,21 @@ ReliefShape relief_shape(const WrSurface& surface, const HierarchicalSampling& h
         n = n * 3 / 2;
         const long lag = n / (long(a.base_intervals) * a.division);
         const double step = double(axis == 0 ? len_u : len_v) / double(n);
+        std::vector<Located> along_at(static_cast<std::size_t>(n));
+        for (long i = 0; i < n; ++i)
+            along_at[std::size_t(i)] = locate(surface, hs, axis, (float(i) + 0.5f) / float(n));
         long count = 0;
         double c = 0, c0 = 0, c1 = 0;
         for (int p = 0; p < 16; ++p) {
             const float across = (float(p) + 0.5f) / 16.0f;
+            const Located across_at = locate(surface, hs, 1 - axis, across);
             std::vector<double> r(std::size_t(n), 0.0);
             double mean = 0;
             for (long i = 0; i < n; ++i) {
                 const float along = (float(i) + 0.5f) / float(n);
-                r[std::size_t(i)] = axis == 0 ? relief(along, across) : relief(across, along);
+                const Located& la = along_at[std::size_t(i)];
+                r[std::size_t(i)] = axis == 0 ? relief(la, across_at, along, across)
+                                              : relief(across_at, la, across, along);
                 mean += r[std::size_t(i)];
                 if (i > 0) {
                     const double d = r[std::size_t(i)] - r[std::size_t(i - 1)];
