@@ -235,14 +235,63 @@ double top_share(std::vector<double> d2) {
     }
     return total > 0 ? top / total : 0.0;
 }
-double direct_step_share(const WrSurface& surface, int levels, int n) {
+// One parameter value located once along u or v: its spline basis, its sample weights for
+// k = 1..K and the bases at its IST inverses for k = 0..K (eq. (16) directly). Evaluating from
+// these gives the same bits as evaluating at the point (hierarchical_sampling.hpp,
+// superposition.hpp); the measures below evaluate on grids and profiles, so they locate each
+// parameter once.
+struct ParamAt {
+    float x = 0;
+    WrBasisAt basis;
+    std::vector<SampleWeights> weights;
+    std::vector<WrBasisAt> inverse;
+};
+std::vector<ParamAt> locate_params(const WrSurface& surface, const HierarchicalSampling& hs,
+                                   int axis, const std::vector<float>& xs) {
+    std::vector<ParamAt> out(xs.size());
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+        ParamAt& p = out[i];
+        p.x = xs[i];
+        p.basis = axis == 0 ? surface.basis_u(p.x) : surface.basis_v(p.x);
+        for (int k = 1; k <= hs.levels(); ++k)
+            p.weights.push_back(axis == 0 ? hs.weights_u(k, p.x) : hs.weights_v(k, p.x));
+        for (int k = 0; k <= hs.levels(); ++k)
+            p.inverse.push_back(axis == 0 ? surface.basis_u(surface.inverse_u(p.x, k))
+                                          : surface.basis_v(surface.inverse_v(p.x, k)));
+    }
+    return out;
+}
+// (i + 1/2) / n for i = 0 .. n - 1.
+std::vector<float> cell_centres(int n) {
+    std::vector<float> x(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) x[std::size_t(i)] = (float(i) + 0.5f) / float(n);
+    return x;
+}
+double plain_height(const WrSurface& surface, const ParamAt& pu, const ParamAt& pv) {
+    return double(surface.attributes(pu.basis, pv.basis).height);
+}
+double sampled_height(const WrSurface& surface, const HierarchicalSampling& hs, const ParamAt& pu,
+                      const ParamAt& pv) {
+    return double(superposed_sampled(surface, hs, pu.basis, pv.basis, pu.weights.data(),
+                                     pv.weights.data(), pu.x, pv.x, 0.0f)
+                      .attributes.height);
+}
+double direct_height(const WrSurface& surface, int levels, const ParamAt& pu, const ParamAt& pv) {
+    const float delta = surface.base_point(pu.basis, pv.basis, pu.x, pv.x).delta;
+    return double(
+        superposed_attributes_direct(surface, delta, pu.inverse.data(), pv.inverse.data(), levels)
+            .height);
+}
+
+double direct_step_share(const WrSurface& surface, int levels, const std::vector<ParamAt>& pu,
+                         const std::vector<ParamAt>& pv) {
+    const int n = int(pu.size());
     std::vector<double> r(std::size_t(n) * n), d2;
     for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const float u = (float(i) + 0.5f) / float(n), v = (float(j) + 0.5f) / float(n);
-            r[std::size_t(j) * n + i] = superposed_attributes_direct(surface, u, v, levels).height -
-                                        surface.attributes(u, v).height;
-        }
+        for (int i = 0; i < n; ++i)
+            r[std::size_t(j) * n + i] =
+                direct_height(surface, levels, pu[std::size_t(i)], pv[std::size_t(j)]) -
+                plain_height(surface, pu[std::size_t(i)], pv[std::size_t(j)]);
     for (int j = 0; j + 1 < n; ++j)
         for (int i = 0; i + 1 < n; ++i) {
             const std::size_t k = std::size_t(j) * n + i;
@@ -251,17 +300,26 @@ double direct_step_share(const WrSurface& surface, int levels, int n) {
         }
     return top_share(d2);
 }
-// The flat-step share of one height function along 16 profiles in u and 16 in v (see above).
-template <class Height> double flat_step_share(int n, Height height) {
+
+// The flat-step share of one height function along 16 profiles in u and 16 in v (see above);
+// height(pu, pv) from located parameters.
+template <class Height> double flat_step_share(const WrSurface& surface,
+                                               const HierarchicalSampling& hs, int n,
+                                               Height height) {
+    const std::vector<float> along = cell_centres(n), across = cell_centres(16);
+    const std::vector<ParamAt> along_u = locate_params(surface, hs, 0, along),
+                               along_v = locate_params(surface, hs, 1, along),
+                               across_u = locate_params(surface, hs, 0, across),
+                               across_v = locate_params(surface, hs, 1, across);
     std::vector<double> d;
     d.reserve(std::size_t(32) * std::size_t(n));
     for (int p = 0; p < 16; ++p) {
-        const float across = (float(p) + 0.5f) / 16.0f;
         for (int axis = 0; axis < 2; ++axis) {
             double prev = 0;
             for (int i = 0; i < n; ++i) {
-                const float along = (float(i) + 0.5f) / float(n);
-                const double h = axis == 0 ? height(along, across) : height(across, along);
+                const double h = axis == 0
+                                     ? height(along_u[std::size_t(i)], across_v[std::size_t(p)])
+                                     : height(across_u[std::size_t(p)], along_v[std::size_t(i)]);
                 if (i > 0) d.push_back(std::fabs(h - prev));
                 prev = h;
             }
@@ -278,24 +336,26 @@ void measure_flat_steps(const WrSurface& surface, const HierarchicalSampling& hs
     long n = surface.axis_v().base_intervals;
     for (int k = 0; k < hs.levels(); ++k) n *= surface.axis_v().division;
     n = n * 3 / 2;
-    st->flat_share = flat_step_share(int(n), [&](float u, float v) {
-        return double(superposed_sampled(surface, hs, u, v).attributes.height);
-    });
-    st->flat_share_direct = flat_step_share(int(n), [&](float u, float v) {
-        return double(superposed_attributes_direct(surface, u, v, hs.levels()).height);
-    });
+    st->flat_share = flat_step_share(
+        surface, hs, int(n),
+        [&](const ParamAt& pu, const ParamAt& pv) { return sampled_height(surface, hs, pu, pv); });
+    st->flat_share_direct =
+        flat_step_share(surface, hs, int(n), [&](const ParamAt& pu, const ParamAt& pv) {
+            return direct_height(surface, hs.levels(), pu, pv);
+        });
 }
 
 ShapeStats measure_shape(const WrSurface& surface, const HierarchicalSampling& hs) {
     const int n = 162;  // a third of the patch is 54 cells
+    const std::vector<ParamAt> pu = locate_params(surface, hs, 0, cell_centres(n)),
+                               pv = locate_params(surface, hs, 1, cell_centres(n));
     std::vector<double> r(std::size_t(n) * n), h(r.size());
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
-            const float u = (float(i) + 0.5f) / float(n), v = (float(j) + 0.5f) / float(n);
-            const double plain = surface.attributes(u, v).height;
+            const ParamAt &a = pu[std::size_t(i)], &b = pv[std::size_t(j)];
+            const double plain = plain_height(surface, a, b);
             h[std::size_t(j) * n + i] = plain;
-            r[std::size_t(j) * n + i] =
-                superposed_sampled(surface, hs, u, v).attributes.height - plain;
+            r[std::size_t(j) * n + i] = sampled_height(surface, hs, a, b) - plain;
         }
     double mh = 0, mr = 0;
     for (std::size_t i = 0; i < r.size(); ++i) mh += h[i], mr += r[i];
@@ -326,7 +386,7 @@ ShapeStats measure_shape(const WrSurface& surface, const HierarchicalSampling& h
         jxx + jyy > 0 ? std::sqrt((jxx - jyy) * (jxx - jyy) + 4 * jxy * jxy) / (jxx + jyy) : 0.0;
     st.repetition = c0 > 0 && c1 > 0 ? c / std::sqrt(c0 * c1) : 0.0;
     st.step_share = top_share(std::move(du2));
-    st.step_share_direct = direct_step_share(surface, hs.levels(), n);
+    st.step_share_direct = direct_step_share(surface, hs.levels(), pu, pv);
     measure_flat_steps(surface, hs, &st);
     return st;
 }
