@@ -444,3 +444,76 @@ TEST_CASE(
     }
     CHECK(previous > 0.3);
 }
+
+namespace {
+
+// The terrace measure of fig. 18 (paper_figures/fujimoto2000/fig17_18_superposed.cpp): along
+// profiles in v, sampled finer than the step-K small intervals, the share of steps |dh| below a
+// tenth of the mean |dh|.
+template <class Height> double flat_step_share_v(int n, Height height) {
+    std::vector<double> d;
+    for (int p = 0; p < 8; ++p) {
+        const float u = (float(p) + 0.5f) / 8.0f;
+        double prev = height(u, 0.5f / float(n));
+        for (int i = 1; i < n; ++i) {
+            const double h = height(u, (float(i) + 0.5f) / float(n));
+            d.push_back(std::fabs(h - prev));
+            prev = h;
+        }
+    }
+    double mean = 0;
+    for (double x : d) mean += x;
+    mean /= double(d.size());
+    long flat = 0;
+    for (double x : d) flat += x < 0.1 * mean;
+    return double(flat) / double(d.size());
+}
+
+}  // namespace
+
+TEST_CASE("fully-connected superposition on a slope: eq. (20) has fewer flat steps than eq. (16)") {
+    // A range across v (heights by row), as fig. 18's: fig. 19(b)'s staircase is eq. (16)'s
+    // flat treads; §4.2's hierarchical sampling interpolates one sample per small region, and
+    // §5's Gaussian jitter on the samples keeps the IST's teeth from lining up into terraces.
+    WrControlMesh m = flat_mesh(11, 11);
+    for (int r = 0; r < 11; ++r)
+        for (int c = 0; c < 11; ++c) {
+            const float x = -1.5f + 0.3f * float(c), z = 1.5f - 0.3f * float(r);
+            const float d = z + 0.1f - 0.35f * std::sin(1.6f * x);  // a winding ridge
+            m.at(c, r).position = {x, 0.0f, z};
+            m.at(c, r).height = 0.05f + 0.55f * std::exp(-3.0f * d * d) *
+                                            (0.65f + 0.15f * float((c * 7 + r * 3) % 5));
+            m.at(c, r).delta = 0.75f;
+        }
+    WrSurface s;
+    REQUIRE(make_wr_surface(m, SurfaceBasis::bspline, 3, s));
+    const int K = 4;
+    IstAxis iu, iv;
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_u(), IstEnds::translation, iu));
+    REQUIRE(ist_fully_connected_axis(3, 1, s.spans_v(), IstEnds::translation, iv));
+    WrIstAxis au, av;
+    REQUIRE(make_wr_ist_axis(iu, K, au));
+    REQUIRE(make_wr_ist_axis(iv, K, av));
+    REQUIRE(s.set_axes(au.axis(), av.axis()));
+    const int n = s.spans_v() * 81 * 3 / 2;  // 1.5 profile points per step-K small interval
+    const double direct = flat_step_share_v(n, [&](float u, float v) {
+        return double(superposed_attributes_direct(s, u, v, K).height);
+    });
+    double sampled[2] = {0, 0};
+    for (int jitter = 0; jitter < 2; ++jitter) {
+        HierarchicalOptions o;
+        o.levels = K;
+        o.interpolation = SampleInterpolation::hermite;
+        o.jitter_height = jitter ? 0.12f : 0.0f;
+        HierarchicalSampling hs;
+        REQUIRE(sample_hierarchy(s, o, hs));
+        sampled[jitter] = flat_step_share_v(n, [&](float u, float v) {
+            return double(superposed_sampled(s, hs, u, v).attributes.height);
+        });
+    }
+    INFO("flat-step share: eq. (16) " << direct << ", eq. (20) " << sampled[0] << ", with jitter "
+                                      << sampled[1]);
+    CHECK(direct > 0.15);  // the staircase is there to avoid
+    CHECK(sampled[0] < direct);
+    CHECK(sampled[1] < 0.75 * direct);
+}

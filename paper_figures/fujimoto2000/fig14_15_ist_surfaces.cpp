@@ -151,19 +151,8 @@ const SurfaceFigure kFig15{"fig15",
                            fig15_mesh,
                            Shot{{1.6f, 3.4f, 2.9f}, {0.0f, 0.15f, 0.1f}, {0, 1, 0}, 42.0f}};
 
-Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
-    const bool quick = ctx.quick();
-    const int size = quick ? 128 : 512;
-    // IST steps of (b): K = 2, small intervals of about 45 (Bezier) / 15 (B-spline) pixels, so
-    // the structure can be seen; for fig. 14 also the K at which the unit-IST's left/right
-    // tendency of §3.2 can still be seen (it fades as N^-K, header).
-    const int K = 2;
-    // The zooms: one IST step deeper (the adaptive sampling of §3.1 refines with the screen
-    // detail), so a third of the patch shows as many small intervals as (b) does: the
-    // self-similarity the caption names (measured below). For fig. 14 this costs colour
-    // locality in the zooms (the unit-IST's fades as N^-K, file header); (b) keeps it.
-    const int zoom_levels = K + 1;
-    const int subdivisions = quick ? 1 : 2;
+// The parameter table of one panel.
+void note_parameters(FigureContext& ctx, const SurfaceFigure& f, int size) {
     ctx.given("base surface",
               f.basis == SurfaceBasis::bezier ? "Bezier, n = 3" : "uniform B-spline, n = 3",
               "fig. 14/15 captions");
@@ -184,6 +173,77 @@ Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
                    ? "left/right ends of the caption's zooms on screen"
                    : "a view along a parameter lines the IST ridges up into curtains (fig. 21's "
                      "reason too); red still at the left, blue at the right");
+}
+
+// Panels (b), (d)-(f): the relief measured against (c) and, for the zooms, against (b).
+Status check_relief(FigureContext& ctx, const SurfaceFigure& f, const WrSurface& surface, int K,
+                    int levels, char panel) {
+    // Measured: the zoom repeats the wrinkles of (b) (self-similarity, §3.2), and (b)
+    // differs from (c). The zoom's window is its third of u (without the margin).
+    const ReliefStats whole = measure_relief(surface, K, 0.0f, 1.0f, 0.0f, 1.0f);
+    if (panel == 'b') {
+        ctx.note(
+            fmt("Relief against (c) (measured at the step-%d vertices, over the patch): "
+                "%.1f wrinkles across per row, roughness %.2f, relief/plain height "
+                "variation %.2f (0 would read as (c)).",
+                K, whole.wrinkles, whole.roughness, whole.relief));
+        if (whole.relief < 0.5)
+            return Status::error(StatusCode::not_supported,
+                                 "%s(b): relief %.2f cannot be told from (c)", f.key, whole.relief);
+    } else {
+        const float uc = panel == 'd' ? 1.0f / 6.0f : (panel == 'e' ? 0.5f : 5.0f / 6.0f);
+        const ReliefStats z = measure_relief(surface, levels, uc - 1.0f / 6.0f, uc + 1.0f / 6.0f,
+                                             1.0f / 3.0f, 2.0f / 3.0f);
+        const ReliefStats z_same = measure_relief(surface, K, uc - 1.0f / 6.0f, uc + 1.0f / 6.0f,
+                                                  1.0f / 3.0f, 2.0f / 3.0f);
+        const double ratio = whole.wrinkles > 0 ? z.wrinkles / whole.wrinkles : 0.0;
+        ctx.note(
+            fmt("Self-similarity, measured: %.1f wrinkles across this third at K = %d "
+                "against %.1f across (b) at K = %d (ratio %.2f; at (b)'s own K the third "
+                "would show %.1f); roughness %.2f against (b)'s %.2f.",
+                z.wrinkles, levels, whole.wrinkles, K, ratio, z_same.wrinkles, z.roughness,
+                whole.roughness));
+        if (ratio < 0.6 || ratio > 1.6 ||
+            std::fabs(z.roughness - whole.roughness) > 0.35 * whole.roughness)
+            return Status::error(StatusCode::not_supported,
+                                 "%s(%c): the zoom does not repeat (b)'s wrinkles "
+                                 "(wrinkle ratio %.2f, roughness %.2f vs %.2f)",
+                                 f.key, panel, ratio, z.roughness, whole.roughness);
+    }
+    return Status::success();
+}
+
+// The zooms: the mean vertex colour over their third of the surface.
+void note_third_colour(FigureContext& ctx, const WrMesh& wm, char panel) {
+    // Measured, so the locality claim of §3.2 can be checked in numbers, not only by eye:
+    // the mean vertex colour over this third of the surface (u within 1/6 of uc).
+    const float uc = panel == 'd' ? 1.0f / 6.0f : (panel == 'e' ? 0.5f : 5.0f / 6.0f);
+    Vec3 sum{0, 0, 0};
+    int count = 0;
+    for (std::size_t i = 0; i < wm.mesh.uvs.size(); ++i)
+        if (std::fabs(wm.mesh.uvs[i].x - uc) <= 1.0f / 6.0f) {
+            sum += wm.mesh.colors[i];
+            ++count;
+        }
+    const Vec3 mean = count > 0 ? sum / float(count) : sum;
+    ctx.note(fmt("Mean vertex colour of this third (r, g, b) = (%.2f, %.2f, %.2f).", double(mean.x),
+                 double(mean.y), double(mean.z)));
+}
+
+Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
+    const bool quick = ctx.quick();
+    const int size = quick ? 128 : 512;
+    // IST steps of (b): K = 2, small intervals of about 45 (Bezier) / 15 (B-spline) pixels, so
+    // the structure can be seen; for fig. 14 also the K at which the unit-IST's left/right
+    // tendency of §3.2 can still be seen (it fades as N^-K, header).
+    const int K = 2;
+    // The zooms: one IST step deeper (the adaptive sampling of §3.1 refines with the screen
+    // detail), so a third of the patch shows as many small intervals as (b) does: the
+    // self-similarity the caption names (measured below). For fig. 14 this costs colour
+    // locality in the zooms (the unit-IST's fades as N^-K, file header); (b) keeps it.
+    const int zoom_levels = K + 1;
+    const int subdivisions = quick ? 1 : 2;
+    note_parameters(ctx, f, size);
 
     WrControlMesh mesh = f.mesh();
     WrSurface surface;
@@ -252,56 +312,9 @@ Status run_panel(FigureContext& ctx, const SurfaceFigure& f, char panel) {
     const auto t1 = Clock::now();
     RasterStats stats;
     SHITSUKAN_TRY(render_opaque(camera, wm.mesh, img.view(), shading, &stats));
-    if (panel == 'b' || panel >= 'd') {
-        // Measured: the zoom repeats the wrinkles of (b) (self-similarity, §3.2), and (b)
-        // differs from (c). The zoom's window is its third of u (without the margin).
-        const ReliefStats whole = measure_relief(surface, K, 0.0f, 1.0f, 0.0f, 1.0f);
-        if (panel == 'b') {
-            ctx.note(
-                fmt("Relief against (c) (measured at the step-%d vertices, over the patch): "
-                    "%.1f wrinkles across per row, roughness %.2f, relief/plain height "
-                    "variation %.2f (0 would read as (c)).",
-                    K, whole.wrinkles, whole.roughness, whole.relief));
-            if (whole.relief < 0.5)
-                return Status::error(StatusCode::not_supported,
-                                     "%s(b): relief %.2f cannot be told from (c)", f.key,
-                                     whole.relief);
-        } else {
-            const float uc = panel == 'd' ? 1.0f / 6.0f : (panel == 'e' ? 0.5f : 5.0f / 6.0f);
-            const ReliefStats z = measure_relief(surface, o.levels, uc - 1.0f / 6.0f,
-                                                 uc + 1.0f / 6.0f, 1.0f / 3.0f, 2.0f / 3.0f);
-            const ReliefStats z_same = measure_relief(surface, K, uc - 1.0f / 6.0f,
-                                                      uc + 1.0f / 6.0f, 1.0f / 3.0f, 2.0f / 3.0f);
-            const double ratio = whole.wrinkles > 0 ? z.wrinkles / whole.wrinkles : 0.0;
-            ctx.note(
-                fmt("Self-similarity, measured: %.1f wrinkles across this third at K = %d "
-                    "against %.1f across (b) at K = %d (ratio %.2f; at (b)'s own K the third "
-                    "would show %.1f); roughness %.2f against (b)'s %.2f.",
-                    z.wrinkles, o.levels, whole.wrinkles, K, ratio, z_same.wrinkles, z.roughness,
-                    whole.roughness));
-            if (ratio < 0.6 || ratio > 1.6 ||
-                std::fabs(z.roughness - whole.roughness) > 0.35 * whole.roughness)
-                return Status::error(StatusCode::not_supported,
-                                     "%s(%c): the zoom does not repeat (b)'s wrinkles "
-                                     "(wrinkle ratio %.2f, roughness %.2f vs %.2f)",
-                                     f.key, panel, ratio, z.roughness, whole.roughness);
-        }
-    }
-    if (panel >= 'd') {
-        // Measured, so the locality claim of §3.2 can be checked in numbers, not only by eye:
-        // the mean vertex colour over this third of the surface (u within 1/6 of uc).
-        const float uc = panel == 'd' ? 1.0f / 6.0f : (panel == 'e' ? 0.5f : 5.0f / 6.0f);
-        Vec3 sum{0, 0, 0};
-        int count = 0;
-        for (std::size_t i = 0; i < wm.mesh.uvs.size(); ++i)
-            if (std::fabs(wm.mesh.uvs[i].x - uc) <= 1.0f / 6.0f) {
-                sum += wm.mesh.colors[i];
-                ++count;
-            }
-        const Vec3 mean = count > 0 ? sum / float(count) : sum;
-        ctx.note(fmt("Mean vertex colour of this third (r, g, b) = (%.2f, %.2f, %.2f).",
-                     double(mean.x), double(mean.y), double(mean.z)));
-    }
+    if (panel == 'b' || panel >= 'd')
+        SHITSUKAN_TRY(check_relief(ctx, f, surface, K, o.levels, panel));
+    if (panel >= 'd') note_third_colour(ctx, wm, panel);
     ctx.note(fmt("%d triangles; tessellation %.2f s, rendering %.2f s.", wm.mesh.triangle_count(),
                  t_tess, seconds_since(t1)));
     if (panel == 'b' && !quick) SHITSUKAN_TRY(write_obj(ctx.path(".obj").c_str(), wm.mesh));

@@ -11,12 +11,20 @@
 // patch; a B-spline one on 4 x 4 spans, and the IST carries that change to the places it maps
 // there (every small interval whose source lies in the changed region).
 // Each panel (4)(5) measures its shape (measure_shape): how far it departs from (2), the
-// relief's anisotropy and repetition, and its step share against eq. (16) evaluated directly:
-// the hierarchical sampling of §4.2 removes fig. 19(b)'s staircase (fig. 18 (a-4): 0.72 ->
-// 0.44; fig. 17 (a-4): 0.58 -> 0.21) but fig. 18 keeps terraces on the slopes of its range:
-// the fully-connected IST gives each base interval's sub-intervals H from base intervals b - 1,
-// b, b + 1 (eq. 12), a ramp and a drop at every step, in eq. (16) as in eq. (20); a more
-// irregular range or linear interpolation left the step share at 0.43 / 0.42.
+// relief's anisotropy and repetition, its step share and its flat-step share against eq. (16)
+// evaluated directly (fig. 19(b)'s staircase, which §4.2's hierarchical sampling avoids).
+// Why fig. 18 terraced (measured): the sampling was already §4.2's (one sample per small
+// region at its midpoint, fig. 19(b)'s dots, interpolated as in fig. 19(c)/(d)); what made the
+// blocky terraces is the fully-connected IST itself. At every step k >= 2 the three small
+// intervals of each triple take H from x, x + 1/24 and x + 1/8 of the patch (eq. 12: a base
+// interval and its neighbours), so every H^k is the same ramp-ramp-drop sawtooth, of the
+// amplitude of H's change across one base interval, on the slopes of the range; the IST acts
+// on u and v separately (a direct product, §6), so the teeth of all steps line up along u and
+// v into rectangular blocks. §5 builds its models the way fig. 18 is built (superposed
+// IST-B-spline, n = 3, fully-connected IST) and gives the sample values Gaussian randomness
+// "to add naturalness" (§5); fig. 18 now does the same, at fig. 21's terrain deviation. The
+// teeth no longer line up: the flat-step share of (a-4) / (a-5) falls from 0.150 / 0.173 (eq.
+// (16) directly: 0.173 / 0.263) to 0.116 / 0.122, and the blocks are gone from the image.
 // Example: examples/31_superposed_mountains.cpp.
 #include <algorithm>
 #include <cmath>
@@ -43,6 +51,12 @@ using figures::fmt;
 // 88 % at the former 0.35, where (a-4) departed from the plain (a-2) by only 0.11 of its
 // height variation (measured, notes); 75 % at 0.5 (0.23) and 44 % at 0.75.
 constexpr float kDeltaSmooth = 0.5f, kDeltaRough = 0.75f;
+
+// Chosen: fig. 18's jitter on the height samples is fig. 21's terrain deviation (0.12,
+// fig21_terrain.cpp): §5 gives the sample values of its superposed IST-B-spline models Gaussian
+// randomness "to add naturalness" and prints no deviation. Fig. 17 (unit-IST Bezier) keeps
+// none: it shows no terraces (flat-step share of (a-5) 0.069 against eq. (16)'s 0.225).
+constexpr float kJitterFig18 = 0.12f;
 
 Vec3 height_color(float h, float hmax) {
     const Vec3 low{0.50f, 0.58f, 0.34f}, high{0.88f, 0.84f, 0.78f};
@@ -90,6 +104,8 @@ struct SuperFigure {
     int wr_levels;  // K of panel (3)
     int max_level;  // cap of the adaptive choice
     Shot shot;
+    // §5's Gaussian jitter on the height samples of (4)(5) (relative deviation; 0 = none).
+    float jitter_height;
 };
 
 const SuperFigure kFig17{SurfaceBasis::bezier,
@@ -97,13 +113,15 @@ const SuperFigure kFig17{SurfaceBasis::bezier,
                          fig17_mesh,
                          4,
                          5,
-                         Shot{{2.9f, 2.6f, 2.9f}, {0.0f, 0.3f, 0.0f}, {0, 1, 0}, 36.0f}};
+                         Shot{{2.9f, 2.6f, 2.9f}, {0.0f, 0.3f, 0.0f}, {0, 1, 0}, 36.0f},
+                         0.0f};
 const SuperFigure kFig18{SurfaceBasis::bspline,
                          IstKind::fully_connected,
                          fig18_mesh,
                          3,
                          4,
-                         Shot{{3.3f, 3.0f, 3.3f}, {0.0f, 0.15f, 0.0f}, {0, 1, 0}, 35.0f}};
+                         Shot{{3.3f, 3.0f, 3.3f}, {0.0f, 0.15f, 0.0f}, {0, 1, 0}, 35.0f},
+                         kJitterFig18};
 
 // The surface of one row (changed = row b) with its axes, ready to tessellate.
 struct RowSurface {
@@ -142,6 +160,8 @@ Status panel_options(const SuperFigure& f, const RowSurface& rs, int panel, bool
         HierarchicalOptions ho;
         ho.levels = std::max(a.sum_levels, 1);
         ho.interpolation = SampleInterpolation::hermite;
+        ho.jitter_height = f.jitter_height;
+        ho.seed = f.basis == SurfaceBasis::bezier ? 17 : 18;
         SHITSUKAN_TRY(sample_hierarchy(rs.surface, ho, *hs));
         o->form = WrSurfaceForm::superposed;
         o->grid_level = coarse ? std::min(a.grid_level, 3) : a.grid_level;
@@ -197,8 +217,14 @@ Status measure_reach(const SuperFigure& f, int panel, float delta, bool quick, i
 //                slopes, large when the relief is made of flat treads and walls (fig. 19(b)'s
 //                staircase); step_share_direct: the same for eq. (16) evaluated directly at
 //                the same steps, the staircase §4.2's hierarchical sampling is to avoid.
+//   flat_share:  the terrace measure (a histogram of slopes, its near-zero bin): along 16
+//                profiles in u and 16 in v, each sampled 3 N^K / 2 times per base interval
+//                span (finer than the step-K small intervals, so eq. (16)'s treads show), the
+//                share of steps |dh| below a tenth of the mean |dh|; flat_share_direct: the
+//                same for eq. (16) evaluated directly (fig. 19(b)'s naive sampling).
 struct ShapeStats {
     double departure = 0, anisotropy = 0, repetition = 0, step_share = 0, step_share_direct = 0;
+    double flat_share = 0, flat_share_direct = 0;
 };
 double top_share(std::vector<double> d2) {
     std::sort(d2.begin(), d2.end());
@@ -209,14 +235,63 @@ double top_share(std::vector<double> d2) {
     }
     return total > 0 ? top / total : 0.0;
 }
-double direct_step_share(const WrSurface& surface, int levels, int n) {
+// One parameter value located once along u or v: its spline basis, its sample weights for
+// k = 1..K and the bases at its IST inverses for k = 0..K (eq. (16) directly). Evaluating from
+// these gives the same bits as evaluating at the point (hierarchical_sampling.hpp,
+// superposition.hpp); the measures below evaluate on grids and profiles, so they locate each
+// parameter once.
+struct ParamAt {
+    float x = 0;
+    WrBasisAt basis;
+    std::vector<SampleWeights> weights;
+    std::vector<WrBasisAt> inverse;
+};
+std::vector<ParamAt> locate_params(const WrSurface& surface, const HierarchicalSampling& hs,
+                                   int axis, const std::vector<float>& xs) {
+    std::vector<ParamAt> out(xs.size());
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+        ParamAt& p = out[i];
+        p.x = xs[i];
+        p.basis = axis == 0 ? surface.basis_u(p.x) : surface.basis_v(p.x);
+        for (int k = 1; k <= hs.levels(); ++k)
+            p.weights.push_back(axis == 0 ? hs.weights_u(k, p.x) : hs.weights_v(k, p.x));
+        for (int k = 0; k <= hs.levels(); ++k)
+            p.inverse.push_back(axis == 0 ? surface.basis_u(surface.inverse_u(p.x, k))
+                                          : surface.basis_v(surface.inverse_v(p.x, k)));
+    }
+    return out;
+}
+// (i + 1/2) / n for i = 0 .. n - 1.
+std::vector<float> cell_centres(int n) {
+    std::vector<float> x(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) x[std::size_t(i)] = (float(i) + 0.5f) / float(n);
+    return x;
+}
+double plain_height(const WrSurface& surface, const ParamAt& pu, const ParamAt& pv) {
+    return double(surface.attributes(pu.basis, pv.basis).height);
+}
+double sampled_height(const WrSurface& surface, const HierarchicalSampling& hs, const ParamAt& pu,
+                      const ParamAt& pv) {
+    return double(superposed_sampled(surface, hs, pu.basis, pv.basis, pu.weights.data(),
+                                     pv.weights.data(), pu.x, pv.x, 0.0f)
+                      .attributes.height);
+}
+double direct_height(const WrSurface& surface, int levels, const ParamAt& pu, const ParamAt& pv) {
+    const float delta = surface.base_point(pu.basis, pv.basis, pu.x, pv.x).delta;
+    return double(
+        superposed_attributes_direct(surface, delta, pu.inverse.data(), pv.inverse.data(), levels)
+            .height);
+}
+
+double direct_step_share(const WrSurface& surface, int levels, const std::vector<ParamAt>& pu,
+                         const std::vector<ParamAt>& pv) {
+    const int n = int(pu.size());
     std::vector<double> r(std::size_t(n) * n), d2;
     for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const float u = (float(i) + 0.5f) / float(n), v = (float(j) + 0.5f) / float(n);
-            r[std::size_t(j) * n + i] = superposed_attributes_direct(surface, u, v, levels).height -
-                                        surface.attributes(u, v).height;
-        }
+        for (int i = 0; i < n; ++i)
+            r[std::size_t(j) * n + i] =
+                direct_height(surface, levels, pu[std::size_t(i)], pv[std::size_t(j)]) -
+                plain_height(surface, pu[std::size_t(i)], pv[std::size_t(j)]);
     for (int j = 0; j + 1 < n; ++j)
         for (int i = 0; i + 1 < n; ++i) {
             const std::size_t k = std::size_t(j) * n + i;
@@ -225,16 +300,62 @@ double direct_step_share(const WrSurface& surface, int levels, int n) {
         }
     return top_share(d2);
 }
+
+// The flat-step share of one height function along 16 profiles in u and 16 in v (see above);
+// height(pu, pv) from located parameters.
+template <class Height> double flat_step_share(const WrSurface& surface,
+                                               const HierarchicalSampling& hs, int n,
+                                               Height height) {
+    const std::vector<float> along = cell_centres(n), across = cell_centres(16);
+    const std::vector<ParamAt> along_u = locate_params(surface, hs, 0, along),
+                               along_v = locate_params(surface, hs, 1, along),
+                               across_u = locate_params(surface, hs, 0, across),
+                               across_v = locate_params(surface, hs, 1, across);
+    std::vector<double> d;
+    d.reserve(std::size_t(32) * std::size_t(n));
+    for (int p = 0; p < 16; ++p) {
+        for (int axis = 0; axis < 2; ++axis) {
+            double prev = 0;
+            for (int i = 0; i < n; ++i) {
+                const double h = axis == 0
+                                     ? height(along_u[std::size_t(i)], across_v[std::size_t(p)])
+                                     : height(across_u[std::size_t(p)], along_v[std::size_t(i)]);
+                if (i > 0) d.push_back(std::fabs(h - prev));
+                prev = h;
+            }
+        }
+    }
+    double mean = 0;
+    for (double x : d) mean += x;
+    mean /= double(d.size());
+    long flat = 0;
+    for (double x : d) flat += x < 0.1 * mean;
+    return d.empty() ? 0.0 : double(flat) / double(d.size());
+}
+void measure_flat_steps(const WrSurface& surface, const HierarchicalSampling& hs, ShapeStats* st) {
+    long n = surface.axis_v().base_intervals;
+    for (int k = 0; k < hs.levels(); ++k) n *= surface.axis_v().division;
+    n = n * 3 / 2;
+    st->flat_share = flat_step_share(
+        surface, hs, int(n),
+        [&](const ParamAt& pu, const ParamAt& pv) { return sampled_height(surface, hs, pu, pv); });
+    st->flat_share_direct =
+        flat_step_share(surface, hs, int(n), [&](const ParamAt& pu, const ParamAt& pv) {
+            return direct_height(surface, hs.levels(), pu, pv);
+        });
+}
+
 ShapeStats measure_shape(const WrSurface& surface, const HierarchicalSampling& hs) {
     const int n = 162;  // a third of the patch is 54 cells
+    const std::vector<ParamAt> pu = locate_params(surface, hs, 0, cell_centres(n)),
+                               pv = locate_params(surface, hs, 1, cell_centres(n));
     std::vector<double> r(std::size_t(n) * n), h(r.size());
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
-            const float u = (float(i) + 0.5f) / float(n), v = (float(j) + 0.5f) / float(n);
-            const double plain = surface.attributes(u, v).height;
+            const ParamAt &a = pu[std::size_t(i)], &b = pv[std::size_t(j)];
+            const double plain = plain_height(surface, a, b);
             h[std::size_t(j) * n + i] = plain;
-            r[std::size_t(j) * n + i] =
-                superposed_sampled(surface, hs, u, v).attributes.height - plain;
+            r[std::size_t(j) * n + i] = sampled_height(surface, hs, a, b) - plain;
         }
     double mh = 0, mr = 0;
     for (std::size_t i = 0; i < r.size(); ++i) mh += h[i], mr += r[i];
@@ -265,8 +386,48 @@ ShapeStats measure_shape(const WrSurface& surface, const HierarchicalSampling& h
         jxx + jyy > 0 ? std::sqrt((jxx - jyy) * (jxx - jyy) + 4 * jxy * jxy) / (jxx + jyy) : 0.0;
     st.repetition = c0 > 0 && c1 > 0 ? c / std::sqrt(c0 * c1) : 0.0;
     st.step_share = top_share(std::move(du2));
-    st.step_share_direct = direct_step_share(surface, hs.levels(), n);
+    st.step_share_direct = direct_step_share(surface, hs.levels(), pu, pv);
+    measure_flat_steps(surface, hs, &st);
     return st;
+}
+
+// Panels (4)(5): the measured shape in the notes, and the checks of §4.1 and §4.2.
+Status note_and_check_shape(FigureContext& ctx, const SuperFigure& f, const WrSurface& surface,
+                            const HierarchicalSampling& hs, int panel) {
+    const bool quick = ctx.quick();
+    const bool bezier = f.basis == SurfaceBasis::bezier;
+    const ShapeStats st = measure_shape(surface, hs);
+    ctx.note(
+        fmt("Shape (measured on eq. (20)'s height): departure from (2) %.2f, relief "
+            "anisotropy %.2f, repetition at a third of the patch %.2f, step share %.2f "
+            "against eq. (16) directly %.2f, flat-step share %.3f against eq. (16) directly "
+            "%.3f (definitions: measure_shape in the source).",
+            st.departure, st.anisotropy, st.repetition, st.step_share, st.step_share_direct,
+            st.flat_share, st.flat_share_direct));
+    // §4.1: (4) and (5) are not the conventional surface, and fig. 17's read as ranges.
+    // §4.2: hierarchical sampling avoids eq. (16)'s staircase (fig. 19(b)); fig. 18's
+    // fully-connected IST adds its own ramp-ramp-drop teeth at every step (see the top of
+    // this file), which §5's jitter keeps from lining up into terraces.
+    // The checks hold the full run (--quick sums fewer steps on a coarser grid).
+    if (!quick && st.step_share > 0.8 * st.step_share_direct)
+        return Status::error(StatusCode::not_supported,
+                             "superposed panel (%d): step share %.2f against eq. (16)'s "
+                             "%.2f: the hierarchical sampling does not avoid the staircase",
+                             panel, st.step_share, st.step_share_direct);
+    // §4.2: no staircase. Every panel has fewer flat steps than eq. (16); fig. 18, whose
+    // teeth lined up into terraces without §5's jitter, under 0.75 of eq. (16)'s.
+    const double flat_limit = f.jitter_height > 0 ? 0.75 : 1.0;
+    if (!quick && st.flat_share > flat_limit * st.flat_share_direct)
+        return Status::error(StatusCode::not_supported,
+                             "superposed panel (%d): flat-step share %.3f against eq. (16)'s "
+                             "%.3f: terraces (fig. 19(b)'s staircase) remain",
+                             panel, st.flat_share, st.flat_share_direct);
+    if (!quick && (st.departure < 0.15 || (bezier && panel == 5 && st.anisotropy < 0.4)))
+        return Status::error(StatusCode::not_supported,
+                             "superposed panel (%d): departure %.2f, anisotropy %.2f: does "
+                             "not read as §4.1's mountain ranges",
+                             panel, st.departure, st.anisotropy);
+    return Status::success();
 }
 
 Status run_panel(FigureContext& ctx, const SuperFigure& f, char row, int panel) {
@@ -313,6 +474,12 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, char row, int panel) 
                    "fig. 22's 0.50 / 0.75 (§4.1: smaller smoother, larger rougher; no value "
                    "printed for figs. 17-18); the unit-IST's first step is the identity, so "
                    "1 - delta^2 of the weight stays on the smooth H");
+        if (f.jitter_height > 0)
+            ctx.chosen("jitter",
+                       fmt("height samples x (1 + %.2f g), g ~ N(0, 1)", double(f.jitter_height)),
+                       "§5's Gaussian randomness on the sample values of its superposed "
+                       "IST-B-spline models, at fig. 21's deviation; without it the fully-"
+                       "connected IST's teeth line up into terraces");
         ctx.chosen("sample interpolation", "Hermite",
                    "fig. 19(d); the paper does not say for figs. 17-18");
         ctx.chosen("adaptive sampling", chosen, "cells <= 2 px, omitted rest of the sum < 0.5 px");
@@ -324,28 +491,7 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, char row, int panel) 
     ctx.note(fmt("%d triangles; superposition steps used: max %d, mean %.2f.",
                  wm.mesh.triangle_count(), wm.max_levels_used, wm.mean_levels_used));
     if (panel >= 4) {
-        const ShapeStats st = measure_shape(rs.surface, hs);
-        ctx.note(
-            fmt("Shape (measured on eq. (20)'s height): departure from (2) %.2f, relief "
-                "anisotropy %.2f, repetition at a third of the patch %.2f, step share %.2f "
-                "against eq. (16) directly %.2f (definitions: measure_shape in the source).",
-                st.departure, st.anisotropy, st.repetition, st.step_share, st.step_share_direct));
-        // §4.1: (4) and (5) are not the conventional surface, and fig. 17's read as ranges.
-        // §4.2: hierarchical sampling avoids eq. (16)'s staircase (fig. 19(b)). What it leaves
-        // in fig. 18 are the fully-connected IST's own steps on the slopes of H: each base
-        // interval's N sub-intervals take H from base intervals b - 1, b, b + 1 (eq. 12), a
-        // ramp and a drop at every step k, in eq. (16) as in eq. (20) (notes: step share).
-        // The checks hold the full run (--quick sums fewer steps on a coarser grid).
-        if (!quick && st.step_share > 0.8 * st.step_share_direct)
-            return Status::error(StatusCode::not_supported,
-                                 "superposed panel (%d): step share %.2f against eq. (16)'s "
-                                 "%.2f: the hierarchical sampling does not avoid the staircase",
-                                 panel, st.step_share, st.step_share_direct);
-        if (!quick && (st.departure < 0.15 || (bezier && panel == 5 && st.anisotropy < 0.4)))
-            return Status::error(StatusCode::not_supported,
-                                 "superposed panel (%d): departure %.2f, anisotropy %.2f: does "
-                                 "not read as §4.1's mountain ranges",
-                                 panel, st.departure, st.anisotropy);
+        SHITSUKAN_TRY(note_and_check_shape(ctx, f, rs.surface, hs, panel));
     }
     if (row == 'b') {
         double share = 0, largest = 0;

@@ -26,20 +26,32 @@ using figures::fmt;
 constexpr int kLevels = 3;                           // K, given
 constexpr float kDeltas[3] = {0.25f, 0.50f, 0.75f};  // given
 
-// Chosen: 10 x 8 control points (7 x 5 spans) on [-3.5, 3.5] x [-2, 2]; a swell along x, the
-// crest (rows 3-4) pushed up and forward (direction (0, 1, crest) normalised, up elsewhere);
-// heights 0.1..1.05; deep blue troughs, white crests; transparency (§5 gives the wave's control
-// points one) 0.30 in the troughs to 0.05 in the foam of the crest.
+// Chosen: 6 x 10 control points (3 x 7 spans) on [-3.5, 3.5] x [-2, 2]; a swell along x, the
+// crest (the middle rows) pushed up and forward (direction (0, 1, crest) normalised, up
+// elsewhere); heights 0.1..1.05; deep blue troughs, white crests; transparency (§5 gives the
+// wave's control points one) 0.30 in the troughs to 0.05 in the foam of the crest.
+// Why 3 x 7 spans (measured): the IST acts on u and v alike (a direct product, the same N and
+// K on both), so its small intervals are as wide as they are long when the spans are; with the
+// former 7 x 5 spans of about 1 x 0.8 world units, every step-1 small interval held one bump,
+// repeating along both axes (relief correlation one step-1 interval on: 0.40-0.62 along u
+// and v in row (a)): a plaid. Spans 2.3 x 0.57 units long make the small intervals long
+// along the crest, so the relief runs as crests along x, as a wave's does (crest_anisotropy
+// 0.76 -> 0.99; notes). The paper prints neither the mesh nor its spans.
+constexpr float kMeshLengthX = 7.0f, kMeshLengthZ = 4.0f;  // the mesh's extent along x and z
 WrControlMesh wave_mesh(float delta) {
-    const int cols = 10, rows = 8;
+    const int cols = 6, rows = 10;
     WrControlMesh m = make_control_mesh(cols, rows);
     for (int r = 0; r < rows; ++r)
         for (int c = 0; c < cols; ++c) {
             WrControlPoint& p = m.at(c, r);
-            const float x = -3.5f + 7.0f * float(c) / float(cols - 1);
-            const float z = 2.0f - 4.0f * float(r) / float(rows - 1);
-            const float crest = det_expf(-(float(r) - 3.5f) * (float(r) - 3.5f) / 0.8f) *
-                                (0.7f + 0.3f * det_sin(1.3f * float(c)));
+            const float x = -0.5f * kMeshLengthX + kMeshLengthX * float(c) / float(cols - 1);
+            const float z = 0.5f * kMeshLengthZ - kMeshLengthZ * float(r) / float(rows - 1);
+            // The former 10 x 8 mesh's crest, on the same (x, z) (its columns c' = 9 c / 5,
+            // rows r' = 7 r / 9).
+            const float rr = float(r) * 7.0f / float(rows - 1),
+                        cc = float(c) * 9.0f / float(cols - 1);
+            const float crest =
+                det_expf(-(rr - 3.5f) * (rr - 3.5f) / 0.8f) * (0.7f + 0.3f * det_sin(1.3f * cc));
             p.position = {x, 0.3f * det_sin(0.9f * x + 0.5f * z), z};
             p.height = 0.1f + 0.9f * crest + 0.05f * hash_uniform(22, 0, c, r);
             p.direction = normalize(Vec3{0.0f, 1.0f, crest});
@@ -56,6 +68,81 @@ const Shot kShot{{0.0f, 2.2f, 6.6f}, {0.0f, 0.35f, 0.0f}, {0, 1, 0}, 29.0f};
 // of 300 x 150 cells (each full panel shrunk 4x).
 constexpr int kPanelW = 1200, kPanelH = 600;
 constexpr int kCellW = 300, kCellH = 150;
+
+// What the superposed panels must not be: a plaid of round bumps. Measured on the relief
+// r = eq. (20)'s height - the plain height, along 16 rows (in u) and 16 columns (in v), each
+// sampled at 3/2 of the step-K small intervals, with the parameter steps converted to world
+// lengths along x (len_u) and z (len_v): J_x = mean (dr/dx)^2, J_z = mean (dr/dz)^2 and
+// crest_anisotropy = (J_z - J_x) / (J_z + J_x): 0 for bumps alike along x and z (a plaid),
+// towards 1 for crests running along x (the relief changes across them, along z).
+struct ReliefShape {
+    double anisotropy = 0;          // crest_anisotropy
+    double repetition[2] = {0, 0};  // along u, v: correlation with the relief one span on
+};
+// A parameter located once: its spline basis and its sample weights for k = 1..K (the
+// same bits as locating it per point, hierarchical_sampling.hpp).
+struct Located {
+    WrBasisAt basis;
+    std::vector<SampleWeights> weights;
+};
+Located locate(const WrSurface& surface, const HierarchicalSampling& hs, int axis, float x) {
+    Located l;
+    l.basis = axis == 0 ? surface.basis_u(x) : surface.basis_v(x);
+    for (int k = 1; k <= hs.levels(); ++k)
+        l.weights.push_back(axis == 0 ? hs.weights_u(k, x) : hs.weights_v(k, x));
+    return l;
+}
+
+ReliefShape relief_shape(const WrSurface& surface, const HierarchicalSampling& hs, float len_u,
+                         float len_v) {
+    auto relief = [&](const Located& lu, const Located& lv, float u, float v) {
+        return double(superposed_sampled(surface, hs, lu.basis, lv.basis, lu.weights.data(),
+                                         lv.weights.data(), u, v, 0.0f)
+                          .attributes.height) -
+               double(surface.attributes(lu.basis, lv.basis).height);
+    };
+    ReliefShape out;
+    double j[2] = {0, 0};
+    for (int axis = 0; axis < 2; ++axis) {
+        const WrAxis& a = axis == 0 ? surface.axis_u() : surface.axis_v();
+        long n = a.base_intervals;
+        for (int k = 0; k < hs.levels(); ++k) n *= a.division;
+        n = n * 3 / 2;
+        const long lag = n / (long(a.base_intervals) * a.division);
+        const double step = double(axis == 0 ? len_u : len_v) / double(n);
+        std::vector<Located> along_at(static_cast<std::size_t>(n));
+        for (long i = 0; i < n; ++i)
+            along_at[std::size_t(i)] = locate(surface, hs, axis, (float(i) + 0.5f) / float(n));
+        long count = 0;
+        double c = 0, c0 = 0, c1 = 0;
+        for (int p = 0; p < 16; ++p) {
+            const float across = (float(p) + 0.5f) / 16.0f;
+            const Located across_at = locate(surface, hs, 1 - axis, across);
+            std::vector<double> r(std::size_t(n), 0.0);
+            double mean = 0;
+            for (long i = 0; i < n; ++i) {
+                const float along = (float(i) + 0.5f) / float(n);
+                const Located& la = along_at[std::size_t(i)];
+                r[std::size_t(i)] = axis == 0 ? relief(la, across_at, along, across)
+                                              : relief(across_at, la, across, along);
+                mean += r[std::size_t(i)];
+                if (i > 0) {
+                    const double d = r[std::size_t(i)] - r[std::size_t(i - 1)];
+                    j[axis] += d * d / (step * step), ++count;
+                }
+            }
+            mean /= double(n);
+            for (long i = 0; i + lag < n; ++i) {
+                const double x = r[std::size_t(i)] - mean, y = r[std::size_t(i + lag)] - mean;
+                c += x * y, c0 += x * x, c1 += y * y;
+            }
+        }
+        j[axis] /= double(count);
+        out.repetition[axis] = c0 > 0 && c1 > 0 ? c / std::sqrt(c0 * c1) : 0.0;
+    }
+    out.anisotropy = j[0] + j[1] > 0 ? (j[1] - j[0]) / (j[1] + j[0]) : 0.0;
+    return out;
+}
 
 // One panel: kind 'x' mesh, 'y' spans, 'z' plain, or IST row ('a' fully, 'b' fig6b) with
 // column 1 (WR) .. 4 (delta 0.75).
@@ -77,13 +164,12 @@ Status draw_panel(bool quick, char row, int col, RgbView view, StageTimes* t) {
         draw_control_mesh(view, camera, mesh, surface, true, shading.background);
         return Status::success();
     }
-    // Grid: the first step whose cells project to <= 8 px, 2 vertices per interval (cells of
-    // <= 4 px at 1200 x 600: step 2, 3.2 px; chosen: step 3 would take ~25x the vertices for
-    // detail of about one pixel, and the paper's own figure is printed far smaller).
-    const float ppu = shot_pixels_per_unit(kShot, h);
-    const AdaptiveLevels a = choose_adaptive_levels(surface, mesh, ppu, 8.0f, 0.5f, levels);
+    // Grid: step 2, 2 vertices per interval (chosen: cells of about 7.5 px along x, where the
+    // crests change little, and 1.8 px along z at 1200 x 600; step 3 would take ~25x the
+    // vertices for detail of about one pixel, and the paper's own figure is printed far
+    // smaller).
     WrTessellationOptions o;
-    o.grid_level = quick ? 1 : a.grid_level;
+    o.grid_level = quick ? 1 : 2;
     o.subdivisions = quick ? 1 : 2;
     o.levels = levels;
     HierarchicalSampling hs;
@@ -122,6 +208,12 @@ Status draw_panel(bool quick, char row, int col, RgbView view, StageTimes* t) {
     t->grid_level = o.grid_level;
     t->levels = levels;
     t->quick = quick;
+    if (o.form == WrSurfaceForm::superposed) {
+        const ReliefShape rs = relief_shape(surface, hs, kMeshLengthX, kMeshLengthZ);
+        t->relief_anisotropy = rs.anisotropy;
+        t->relief_repetition[0] = rs.repetition[0];
+        t->relief_repetition[1] = rs.repetition[1];
+    }
     return Status::success();
 }
 
@@ -192,9 +284,10 @@ SHITSUKAN_FIGURE(
     ctx.given("deltas", "0.25, 0.50, 0.75", "fig. 22 caption");
     ctx.given("ISTs", "(a) fully-connected N = 5 (fig. 6a), (b) fig. 6b", "fig. 22 caption");
     ctx.chosen("control mesh",
-               "10 x 8 (7 x 5 spans), swell along x, crest rows pushed up and "
-               "forward, heights 0.1..1.05",
-               "not printed");
+               "6 x 10 (3 x 7 spans, each about 2.3 x 0.57 units), swell along x, crest rows "
+               "pushed up and forward, heights 0.1..1.05",
+               "not printed; spans long along the crest so that the IST's small intervals, "
+               "alike on u and v, run as crests rather than a plaid of bumps");
     ctx.chosen("jitter", "height x(1 + 0.15 g), colour + 0.04 g, transparency + 0.04 g",
                "§5 gives no deviation");
     ctx.given("transparency per control point", "yes, sampled and superposed like the heights",
@@ -204,9 +297,8 @@ SHITSUKAN_FIGURE(
     ctx.chosen("transparency rendering",
                "back-to-front sort of triangles + Z-buffer + blend (as fig. 23), Lambert shading",
                "the paper does not say how it blended");
-    ctx.chosen("adaptive sampling",
-               "grid: first step with cells <= 8 px (level <= 3), 2 vertices per interval",
-               "cells of <= 4 px on a 1200 x 600 panel (step 2, about 3 px)");
+    ctx.chosen("adaptive sampling", "grid: step 2, 2 vertices per interval",
+               "cells of about 7.5 x 1.8 px on a 1200 x 600 panel (step 2)");
     RgbImage img;
     std::map<std::string, StageTimes> times;
     SHITSUKAN_TRY(build_fig22(ctx.quick(), &img, &times, ctx.path("")));
@@ -234,6 +326,20 @@ SHITSUKAN_FIGURE(
                                  label);
     }
     ctx.note(seen);
+    std::string crests =
+        "Crests, measured (crest_anisotropy in the source: 0 = a plaid of round "
+        "bumps, towards 1 = crests along x):";
+    for (const char* label : {"(a-2)", "(a-3)", "(a-4)", "(b-2)", "(b-3)", "(b-4)"})
+        crests += fmt(" %s %.2f (repetition u %.2f, v %.2f)", label, times[label].relief_anisotropy,
+                      times[label].relief_repetition[0], times[label].relief_repetition[1]);
+    ctx.note(crests + ".");
+    // The wave's relief runs as crests along x (the check holds the full run).
+    for (const char* label : {"(a-2)", "(a-3)", "(a-4)", "(b-2)", "(b-3)", "(b-4)"})
+        if (!ctx.quick() && times[label].relief_anisotropy < 0.9)
+            return Status::error(StatusCode::not_supported,
+                                 "fig22 %s: crest anisotropy %.2f: the relief is a plaid of "
+                                 "bumps, not crests along x",
+                                 label, times[label].relief_anisotropy);
     ctx.note(
         fmt("Per-panel images (%d x %d): fig22_z.png, fig22_a1.png .. fig22_a4.png, "
             "fig22_b1.png .. fig22_b4.png; this image is the overview.",

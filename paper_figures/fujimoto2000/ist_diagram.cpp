@@ -16,12 +16,30 @@ Rgb8 hsv(double h, double s, double v) {
     double r = 0, g = 0, b = 0;
     int sector = int(h / 60.0);
     switch (sector) {
-        case 0: r = c; g = x; break;
-        case 1: r = x; g = c; break;
-        case 2: g = c; b = x; break;
-        case 3: g = x; b = c; break;
-        case 4: r = x; b = c; break;
-        default: r = c; b = x; break;
+        case 0:
+            r = c;
+            g = x;
+            break;
+        case 1:
+            r = x;
+            g = c;
+            break;
+        case 2:
+            g = c;
+            b = x;
+            break;
+        case 3:
+            g = x;
+            b = c;
+            break;
+        case 4:
+            r = x;
+            b = c;
+            break;
+        default:
+            r = c;
+            b = x;
+            break;
     }
     auto q = [](double t) {
         return std::uint8_t(std::lround(255.0 * (t < 0 ? 0 : t > 1 ? 1 : t)));
@@ -141,6 +159,36 @@ float diagram_height(const IstDiagram& d, const DiagramLayout& layout) {
     return layout.top + rows * layout.row_height + (rows - 1.0f) * layout.gap + 20.0f;
 }
 
+// The number of one piece over [x0, x1] x [y, y + h]: horizontally where it fits, else stacked
+// one character a line (skipped where neither fits).
+void draw_piece_label(Canvas& canvas, const std::string& label, Rgb8 ink, float x0, float x1,
+                      float y, float h) {
+    float w = x1 - x0;
+    int scale = (text_width(label, 2) + 6 <= w && 9 * 2 + 4 <= h) ? 2 : 1;
+    if (text_width(label, scale) + 3 <= w) {
+        float tx = x0 + 0.5f * (w - float(text_width(label, scale)));
+        canvas.text({std::floor(tx), std::floor(y + 0.5f * h - 4.5f * scale)}, label, ink, scale);
+    } else {
+        std::string head = label, tail;
+        std::size_t dot = label.find('.');
+        if (dot != std::string::npos) {
+            head = label.substr(0, dot);
+            tail = label.substr(dot + 1);
+        } else {
+            head = label.substr(0, 1);
+            tail = label.substr(1);
+        }
+        int lines = 1 + int(tail.size());
+        if (text_width(head, 1) + 2 > w || lines * 9 > h) return;
+        float ty = y + 0.5f * (h - float(lines * 9));
+        canvas.text({std::floor(x0 + 0.5f * (w - float(text_width(head, 1)))), std::floor(ty)},
+                    head, ink, 1);
+        for (std::size_t i = 0; i < tail.size(); ++i)
+            canvas.text({std::floor(x0 + 0.5f * (w - 5.0f)), std::floor(ty + 9.0f * float(i + 1))},
+                        std::string(1, tail[i]), ink, 1);
+    }
+}
+
 void draw_ist_diagram(Canvas& canvas, const IstDiagram& d, const DiagramLayout& layout) {
     const Rgb8 black{0, 0, 0}, grey{90, 90, 90}, white{255, 255, 255};
     auto x_of = [&](double u) {
@@ -169,35 +217,8 @@ void draw_ist_diagram(Canvas& canvas, const IstDiagram& d, const DiagramLayout& 
             // The number, horizontally where it fits, else stacked one character a line.
             std::string label = diagram_label(d, piece);
             if (label.empty()) continue;
-            Rgb8 ink = is_dark(colour) ? white : black;
-            float w = x1 - x0;
             if (x0 < x_min || x1 > x_max) continue;
-            int scale = (text_width(label, 2) + 6 <= w && 9 * 2 + 4 <= h) ? 2 : 1;
-            if (text_width(label, scale) + 3 <= w) {
-                float tx = x0 + 0.5f * (w - float(text_width(label, scale)));
-                canvas.text({std::floor(tx), std::floor(y + 0.5f * h - 4.5f * scale)}, label, ink,
-                            scale);
-            } else {
-                std::string head = label, tail;
-                std::size_t dot = label.find('.');
-                if (dot != std::string::npos) {
-                    head = label.substr(0, dot);
-                    tail = label.substr(dot + 1);
-                } else {
-                    head = label.substr(0, 1);
-                    tail = label.substr(1);
-                }
-                int lines = 1 + int(tail.size());
-                if (text_width(head, 1) + 2 > w || lines * 9 > h) continue;
-                float ty = y + 0.5f * (h - float(lines * 9));
-                canvas.text(
-                    {std::floor(x0 + 0.5f * (w - float(text_width(head, 1)))), std::floor(ty)},
-                    head, ink, 1);
-                for (std::size_t i = 0; i < tail.size(); ++i)
-                    canvas.text(
-                        {std::floor(x0 + 0.5f * (w - 5.0f)), std::floor(ty + 9.0f * float(i + 1))},
-                        std::string(1, tail[i]), ink, 1);
-            }
+            draw_piece_label(canvas, label, is_dark(colour) ? white : black, x0, x1, y, h);
         }
         canvas.rect_outline({x_min, y}, {layout.width, h}, black, 1.0f);
         // Base-interval edges: fixed on every axis.

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <array>
+#include <cstdint>
+#include <cstring>
 #include <map>
 #include <mutex>
 #include <vector>
@@ -61,6 +63,40 @@ Status render_opaque(const Camera& camera, const TriangleMesh& mesh, RgbView tar
     return draw_mesh(camera, band, mesh.view(), opt, shader, stats);
 }
 
+namespace {
+
+// The triangles in ascending depth, ties in ascending index: the order std::sort gives the
+// pairs (depth, index), found by a stable radix sort of the depths' order-preserving bit
+// patterns (three passes of 11 bits) over the indices in ascending order. -0 counts as +0, as
+// it compares equal in the pairs. Depths are finite.
+std::vector<int> far_first_order(const std::vector<float>& depth) {
+    const std::size_t n = depth.size();
+    std::vector<std::uint32_t> key(n), key2(n);
+    std::vector<int> index(n), index2(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const float z = depth[i] + 0.0f;  // -0 -> +0
+        std::uint32_t b;
+        std::memcpy(&b, &z, sizeof b);
+        key[i] = (b & 0x80000000u) ? ~b : (b | 0x80000000u);
+        index[i] = int(i);
+    }
+    for (int shift = 0; shift < 32; shift += 11) {
+        std::size_t count[2049] = {0};
+        for (std::size_t i = 0; i < n; ++i) ++count[((key[i] >> shift) & 2047u) + 1];
+        for (int d = 0; d < 2048; ++d) count[d + 1] += count[d];
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t at = count[(key[i] >> shift) & 2047u]++;
+            key2[at] = key[i];
+            index2[at] = index[i];
+        }
+        key.swap(key2);
+        index.swap(index2);
+    }
+    return index;
+}
+
+}  // namespace
+
 Status render_transparent(const Camera& camera, const WrMesh& wm, RgbView target,
                           const Shading& shading, RasterStats* stats, TransparencySeen* seen) {
     FloatImage depth(target.width, target.height);
@@ -69,14 +105,14 @@ Status render_transparent(const Camera& camera, const WrMesh& wm, RgbView target
     // Painter's order: sort the triangles by the view depth of their centroids, far first.
     const TriangleMesh& m = wm.mesh;
     const int n = m.triangle_count();
-    std::vector<std::pair<float, int>> order(static_cast<std::size_t>(n));
+    std::vector<float> depth_of(static_cast<std::size_t>(n));
     for (int t = 0; t < n; ++t) {
         Vec3 c{0, 0, 0};
         for (int e = 0; e < 3; ++e) c += m.positions[m.indices[std::size_t(3 * t + e)]];
         const Vec3 eye = transform_point(camera.view, c / 3.0f);
-        order[std::size_t(t)] = {eye.z, t};  // eye looks down -z: more negative = farther
+        depth_of[std::size_t(t)] = eye.z;  // eye looks down -z: more negative = farther
     }
-    std::sort(order.begin(), order.end());
+    const std::vector<int> order = far_first_order(depth_of);
     TriangleMesh sorted;
     sorted.positions = m.positions;
     sorted.normals = m.normals;
@@ -85,9 +121,8 @@ Status render_transparent(const Camera& camera, const WrMesh& wm, RgbView target
     sorted.uvs.resize(m.positions.size());
     for (std::size_t i = 0; i < sorted.uvs.size(); ++i) sorted.uvs[i] = {wm.transparency[i], 0};
     sorted.indices.reserve(m.indices.size());
-    for (const auto& o : order)
-        for (int e = 0; e < 3; ++e)
-            sorted.indices.push_back(m.indices[std::size_t(3 * o.second + e)]);
+    for (const int t : order)
+        for (int e = 0; e < 3; ++e) sorted.indices.push_back(m.indices[std::size_t(3 * t + e)]);
     const Vec3 light = normalize(shading.light);
     // For `seen`: per pixel, the share of the colour still the background's, and the share
     // from surface layers behind the latest fragment.

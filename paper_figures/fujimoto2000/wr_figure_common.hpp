@@ -106,8 +106,10 @@ struct StageTimes {
     long triangles = 0;
     int grid_level = 0, levels = 0;
     bool quick = false;
-    double mean_offset = 0;  // mean |R(u,v) - P(u,v)| over the vertices (see mean_offset)
-    TransparencySeen seen;   // transparent panels: what shows through (render_transparent)
+    double mean_offset = 0;        // mean |R(u,v) - P(u,v)| over the vertices (see mean_offset)
+    double relief_anisotropy = 0;  // fig. 22's superposed panels: relief_shape there
+    double relief_repetition[2] = {0, 0};
+    TransparencySeen seen;  // transparent panels: what shows through (render_transparent)
 };
 // Mean distance of the displaced vertices from the base surface (every 7th vertex): the total
 // height a panel carries, to compare superposed panels with the plain one (eq. 18).
