@@ -150,6 +150,7 @@ constexpr int kSphereIndices = kStacks * kSlices * 6;
 Vec3 g_sphere_pos[kSphereVertices], g_sphere_nrm[kSphereVertices];
 Vec2 g_sphere_uv[kSphereVertices];
 std::uint32_t g_sphere_idx[kSphereIndices];
+TriangleRows g_sphere_rows[kSphereIndices / 3];
 
 bool bench_sphere(const Camera& cam) {
     MeshView sphere;
@@ -165,10 +166,21 @@ bool bench_sphere(const Camera& cam) {
         return false;
     const std::uint64_t n = port::icount_since_start();
     // per triangle of the frame (every band is handed every triangle: triangles_in / bands)
-    bench_line("rasterized UV sphere 48x24 128x128 in 16-row bands, flat shader", n,
+    bench_line("rasterized UV sphere 48x24 128x128 in 16-row bands, flat shader, unbinned", n,
                std::uint32_t(stats.triangles_in / (kW / kRows)), "triangle");
-    bench_line("rasterized UV sphere 48x24 128x128 in 16-row bands, flat shader", n,
-               std::uint32_t(stats.fragments_shaded), "rasterized pixel");
+    RasterStats binned;
+    port::icount_start();
+    if (!bin_mesh(cam, sphere, opt, g_sphere_rows, kSphereIndices / 3)) return false;
+    if (!draw_in_bands([&](const FrameBand& b) {
+            return bool(draw_binned_mesh(cam, b, sphere, opt, g_sphere_rows, kSphereIndices / 3,
+                                         flat_shader, nullptr, &binned));
+        }))
+        return false;
+    const std::uint64_t nb = port::icount_since_start();
+    bench_line("rasterized UV sphere 48x24 128x128 in 16-row bands, flat shader, binned", nb,
+               std::uint32_t(sphere.triangle_count), "triangle");
+    bench_line("rasterized UV sphere 48x24 128x128 in 16-row bands, flat shader, binned", nb,
+               std::uint32_t(binned.fragments_shaded), "rasterized pixel");
     return true;
 }
 #endif

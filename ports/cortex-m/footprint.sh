@@ -11,7 +11,7 @@
 set -euo pipefail
 here="$(dirname "$0")"
 
-# goal CORE VARIANT: the flash goal in bytes, or nothing (chosen by the port's issues: the
+# goal CORE VARIANT: the flash goal in bytes, or nothing (the port's goals: the
 # lattice firmware in 8 KB on the M0, the marble cube in 32 KB everywhere).
 goal() {
     case "$1-$2" in

@@ -29,7 +29,7 @@ MCU_CORES  := m0 m4 m7 rv32
 MCU_COMMON_SRCS := $(SMALL_CPPS) lib/shitsukan/render/solid_mesh.cpp \
                    ports/cortex-m/transcript.cpp ports/cortex-m/device_main.cpp \
                    ports/cortex-m/assert_handler.cpp
-MCU_FLAGS  := -std=c++17 -Os -Wall -Wextra $(if $(CI),-Werror) -ffp-contract=off -fno-exceptions \
+MCU_FLAGS  := -std=c++17 -Os -Wall -Wextra $(if $(CI),-Werror) -ffp-contract=off -fno-math-errno -fno-exceptions \
               -fno-rtti -fno-threadsafe-statics -fno-use-cxa-atexit -ffunction-sections \
               -fdata-sections -DSHITSUKAN_SMALL_DEVICE -Ilib -Iports/cortex-m
 MCU_ARM_LD := --specs=nano.specs --specs=nosys.specs -nostartfiles -Wl,--gc-sections
@@ -56,13 +56,15 @@ MCU_PORT_m7 := $(MCU_ARM_PORT)
 MCU_SIZE_m7 := arm-none-eabi-size
 MCU_BENCH_m7 := -DBENCH_CORE='"M7"'
 # The M0's 16 KB of RAM: no Type I table (D(P) from Type III without its row cache) and
-# 512-pixel bands (one row of fig. 10a's 512, three of the lit box's 160); a 2 KB stack.
+# 512-pixel bands (one row of fig. 10a's 512, three of the lit box's 160); a 4 KB stack
+# (-fstack-usage: the rasterizer's draw frame alone is 2,128 bytes on Armv6-M; a 2 KB stack
+# overflowed into .bss and faulted).
 MCU_CXX_m0  := arm-none-eabi-g++
 MCU_LINK_m0 := arm-none-eabi-g++
 MCU_CPU_m0  := -mcpu=cortex-m0 -mthumb -mfloat-abi=soft -DSHITSUKAN_TYPE3_ROW_CACHE=0 \
                -DTRANSCRIPT_NO_TABLE -DTRANSCRIPT_BAND_PIXELS=512
 MCU_LD_m0   := $(MCU_ARM_LD) -T ports/cortex-m/microbit.ld
-MCU_STACK_m0 := -Wl,--defsym=STACK_SIZE=2048
+MCU_STACK_m0 := -Wl,--defsym=STACK_SIZE=4096
 MCU_LDS_m0  := ports/cortex-m/microbit.ld ports/cortex-m/sections.ld
 MCU_PORT_m0 := $(MCU_ARM_PORT)
 MCU_SIZE_m0 := arm-none-eabi-size

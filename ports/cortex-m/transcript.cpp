@@ -5,6 +5,8 @@
 //   ist       fujimoto2000 fully-connected and unit IST axes, forward and inverse
 //   relief    tokai1994 fig. 12 relief (height, normal) of one hexagonal scale
 //   lit       a box under two lights, Blinn-Phong, rotated, perspective camera, 16-row bands
+//             (the frames are binned once, raster/rasterizer.hpp's bin_mesh, then drawn band
+//             by band with draw_binned_mesh: the same bytes as draw_mesh per band)
 //   fig10a    okada1987 fig. 10a: the marble cube, 512 x 512 in 16-row bands, the figure's
 //             scene, shader and background (paper_figures/okada1987/okada_common.cpp)
 // Two build options keep the same transcript on a device with little RAM (the Cortex-M0 of
@@ -310,7 +312,11 @@ float g_band_depth[kBandPixels];
 template <class Draw>
 bool render_in_bands(const Camera& cam, Rgb8 background, Draw draw, Fnv* h) {
     const int band_rows = kBandPixels / cam.width;
-    if (band_rows < 1) return check(Status::error(StatusCode::too_large, "band buffer of %d pixels is narrower than the frame (%d)", kBandPixels, cam.width), "bands");
+    if (band_rows < 1)
+        return check(Status::error(StatusCode::too_large,
+                                   "band buffer of %d pixels is narrower than the frame (%d)",
+                                   kBandPixels, cam.width),
+                      "bands");
     for (int y0 = 0; y0 < cam.height; y0 += band_rows) {
         const int rows = cam.height - y0 < band_rows ? cam.height - y0 : band_rows;
         const RgbView color{g_band_color, cam.width, rows, cam.width};
@@ -329,6 +335,7 @@ bool render_in_bands(const Camera& cam, Rgb8 background, Draw draw, Fnv* h) {
     return true;
 }
 
+TriangleRows g_box_rows[kBoxTriangleCount];  // the rows of each triangle (bin_mesh)
 Vec3 g_box_positions[kBoxVertexCount], g_box_normals[kBoxVertexCount];
 Vec2 g_box_uvs[kBoxVertexCount];
 std::uint32_t g_box_indices[3 * kBoxTriangleCount];
@@ -361,8 +368,13 @@ void section_lit() {
         DrawOptions opt;
         opt.model = Mat4::rotate_y(0.41f * float(frame) + 0.2f) * Mat4::rotate_x(0.23f * float(frame) - 0.3f);
         Fnv h;
+        if (!check(bin_mesh(cam, box, opt, g_box_rows, kBoxTriangleCount), "lit bins")) return;
         const bool ok = render_in_bands(cam, Rgb8{10, 12, 16},
-            [&](const FrameBand& band) { return check(draw_mesh(cam, band, box, opt, shader), "lit draw"); },
+            [&](const FrameBand& band) {
+                return check(draw_binned_mesh(cam, band, box, opt, g_box_rows, kBoxTriangleCount,
+                                              shader),
+                             "lit draw");
+            },
             &h);
         if (!ok) return;
         put(" ");
@@ -384,17 +396,17 @@ void section_fig10a() {
     DrawOptions opt;
     opt.cull = CullMode::back;
     Fnv h;
-#if defined(TRANSCRIPT_NO_TABLE)
     if (!check(validate_solid_material(marble), "fig10a marble")) return;
+    if (!check(bin_mesh(cam, cube, opt, g_box_rows, kBoxTriangleCount), "fig10a bins")) return;
+#if defined(TRANSCRIPT_NO_TABLE)
     TypeIIISolidShader shader{&g_type3, marble, SolidShading{}};
-    auto draw = [&](const FrameBand& band) {
-        return check(draw_mesh(cam, band, cube, opt, shader), "fig10a draw");
-    };
-#else
-    auto draw = [&](const FrameBand& band) {
-        return check(draw_solid_textured_mesh(cam, band, cube, opt, g_view, marble), "fig10a draw");
-    };
+#else  // draw_solid_textured_mesh's shader (render/solid_mesh.hpp), the mesh binned
+    SolidTextureShader shader{g_view, marble, SolidShading{}};
 #endif
+    auto draw = [&](const FrameBand& band) {
+        return check(draw_binned_mesh(cam, band, cube, opt, g_box_rows, kBoxTriangleCount, shader),
+                     "fig10a draw");
+    };
     const bool ok = render_in_bands(cam, Rgb8{24, 26, 32}, draw, &h);
     if (!ok) return;
     put("fig10a 512x512 rgb fnv ");
