@@ -1,8 +1,55 @@
 #!/usr/bin/env bash
-# ports/cortex-m/footprint.sh MAP — flash, initialised data and zeroed RAM per library module
-# (and the port, and the C/C++ runtime) in a firmware, summed from the GNU ld map file's
-# input sections after --gc-sections: what each feature costs on the device.
+# ports/cortex-m/footprint.sh — what the firmwares of this port cost on the device.
+#   footprint.sh modules MAP    flash, initialised data and zeroed RAM per library module (and
+#                               the port, and the C runtime) in a firmware, summed from the GNU
+#                               ld map file's input sections after --gc-sections
+#   footprint.sh firmwares DIR  `make footprint-mcu`: runs DIR/{m4,m0,rv32}-{lattice,marble}.elf
+#                               (footprint_main.cpp) under QEMU and prints one `footprint:` line
+#                               each: flash = text + data, RAM = data + bss + the main stack's
+#                               high-water mark (the reserved stack itself not counted), with
+#                               the goal beside it where the port has one
 set -euo pipefail
+here="$(dirname "$0")"
+
+# goal CORE VARIANT: the flash goal in bytes, or nothing (the port's goals: the
+# lattice firmware in 8 KB on the M0, the marble cube in 32 KB everywhere).
+goal() {
+    case "$1-$2" in
+        m0-lattice) echo 8192 ;;
+        *-marble) echo 32768 ;;
+    esac
+}
+
+firmwares() {
+    local dir="$1" fail=0 core variant elf out stack size_tool name g
+    for core in m4 m0 rv32; do
+        case "$core" in
+            m4) name="Cortex-M4F, -Os, newlib-nano"; size_tool=arm-none-eabi-size ;;
+            m0) name="Cortex-M0, soft-float, -Os, newlib-nano"; size_tool=arm-none-eabi-size ;;
+            rv32) name="RV32IMAC, soft-float, -Os, picolibc"; size_tool=riscv64-unknown-elf-size ;;
+        esac
+        for variant in lattice marble; do
+            elf="$dir/$core-$variant.elf"
+            out=$(bash "$here/qemu_run.sh" "$core" "$elf") || { echo "footprint-mcu: $core $variant failed: $out"; fail=1; continue; }
+            echo "$out"
+            stack=$(echo "$out" | sed -n 's/.*main stack used \([0-9]*\) bytes/\1/p')
+            reserved=$(( $(nm "$elf" 2>/dev/null | awk '$3 == "_estack" { e = $1 } $3 == "_sstack" { s = $1 } END { print "0x" e " - 0x" s }') ))
+            g=$(goal "$core" "$variant")
+            "$size_tool" "$elf" | awk -v v="$variant" -v n="$name" -v s="$stack" -v r="$reserved" -v g="$g" 'NR == 2 {
+                flash = $1 + $2
+                printf "footprint: %s firmware (%s): flash %d bytes%s, RAM %d bytes (data %d + bss %d + stack used %d)\n", \
+                    v, n, flash, g == "" ? "" : sprintf(" (goal <= %d: %s)", g, flash <= g ? "met" : "MISSED"), \
+                    $2 + $3 - r + s, $2, $3 - r, s }'
+        done
+    done
+    return "$fail"
+}
+
+case "${1:-}" in
+    firmwares) firmwares "$2"; exit $? ;;
+    modules) shift ;;
+    *) echo "usage: footprint.sh modules MAP | firmwares DIR" >&2; exit 2 ;;
+esac
 awk '
 /^Linker script and memory map/ { on = 1; next }
 !on { next }
@@ -24,8 +71,8 @@ function add(sec, size, obj,   kind, mod, n) {
     n = hex(size)
     kind = sec ~ /^\.bss/ ? "bss" : (sec ~ /^\.data/ ? "data" : "flash")
     if (obj ~ /\/lib\/shitsukan\//) { mod = obj; sub(/.*\/lib\/shitsukan\//, "", mod); sub(/\/.*/, "", mod) }
-    else if (obj ~ /ports\/cortex-m/) mod = "port (startup, transcript, buffers)"
-    else mod = "C/C++ runtime (newlib-nano, libgcc)"
+    else if (obj ~ /ports\/(cortex-m|riscv)/) mod = "port (startup, transcript, buffers)"
+    else mod = "C/C++ runtime (C library, libgcc)"
     total[mod, kind] += n; mods[mod] = 1
 }
 END {

@@ -1,73 +1,111 @@
-# shitsukan - the microcontroller port's rules (ports/cortex-m, see its README.md), included by
-# the Makefile: make test-mcu | bench-mcu | footprint-mcu. Uses the Makefile's SMALL_CPPS,
-# FLAGS_STAMP, LIBRARY, SUBMAKE and ensure_packages.
+# shitsukan - the microcontroller port's rules (ports/cortex-m and ports/riscv, see
+# ports/cortex-m/README.md), included by the Makefile: make test-mcu | bench-mcu |
+# footprint-mcu. Uses the Makefile's SMALL_CPPS, FLAGS_STAMP, LIBRARY, SUBMAKE and
+# ensure_packages.
 
-MCU_NEWLIB := /usr/lib/arm-none-eabi/newlib/thumb/v7e-m+fp/hard
+# Four cores: m4 (Cortex-M4F, QEMU mps2-an386), m7 (Cortex-M7, mps2-an500), m0 (Cortex-M0, no
+# FPU: soft-float, micro:bit, 16 KB of RAM), rv32 (RV32IMAC, no FPU: soft-float, QEMU virt).
+MCU_NEWLIB := /usr/lib/arm-none-eabi/newlib/thumb
+MCU_PICOLIBC := /usr/lib/picolibc/riscv64-unknown-elf
 MCU_REQUIRED := /usr/bin/arm-none-eabi-g++:gcc-arm-none-eabi \
-                $(MCU_NEWLIB)/libc_nano.a:libnewlib-arm-none-eabi \
-                $(MCU_NEWLIB)/libstdc++.a:libstdc++-arm-none-eabi-newlib \
-                /usr/bin/qemu-system-arm:qemu-system-arm /usr/bin/clang++:clang
+                $(MCU_NEWLIB)/v7e-m+fp/hard/libc_nano.a:libnewlib-arm-none-eabi \
+                $(MCU_NEWLIB)/v6-m/nofp/libc_nano.a:libnewlib-arm-none-eabi \
+                $(MCU_NEWLIB)/v7e-m+fp/hard/libstdc++.a:libstdc++-arm-none-eabi-newlib \
+                /usr/bin/qemu-system-arm:qemu-system-arm /usr/bin/clang++:clang \
+                /usr/bin/riscv64-unknown-elf-g++:gcc-riscv64-unknown-elf \
+                $(MCU_PICOLIBC)/lib/rv32imac/ilp32/libc.a:picolibc-riscv64-unknown-elf \
+                /usr/bin/qemu-system-riscv32:qemu-system-misc
 
 mcu-deps: deps
 	$(call ensure_packages,$(MCU_REQUIRED))
 
-# ---- microcontrollers: ports/cortex-m (see its README.md) ----
+# ---- microcontrollers: ports/cortex-m, ports/riscv (see ports/cortex-m/README.md) ----
 # The small-device files (and render/solid_mesh.cpp, the figures' solid-texture shader) are
-# compiled for each core with arm-none-eabi-g++ -Os, newlib-nano, no exceptions, no RTTI;
-# ports/cortex-m/test_mcu.sh runs the three transcripts and compares them.
-MCU_CXX    := arm-none-eabi-g++
+# compiled for each core with gcc -Os, a small C library (newlib-nano on Arm, picolibc on
+# RISC-V), no exceptions, no RTTI; ports/cortex-m/test_mcu.sh runs the six transcripts
+# (host gcc, host clang, M0, M4F, M7, RV32) and compares them.
 MCU_DIR    := $(BUILD)/mcu
-MCU_SRCS   := $(SMALL_CPPS) \
-              lib/shitsukan/render/solid_mesh.cpp ports/cortex-m/transcript.cpp \
-              ports/cortex-m/semihosting.cpp ports/cortex-m/startup.cpp \
-              ports/cortex-m/device_main.cpp ports/cortex-m/assert_handler.cpp
-MCU_FLAGS  := -std=c++17 -Os -Wall -Wextra $(if $(CI),-Werror) -ffp-contract=off -fno-exceptions \
+MCU_CORES  := m0 m4 m7 rv32
+MCU_COMMON_SRCS := $(SMALL_CPPS) lib/shitsukan/render/solid_mesh.cpp \
+                   ports/cortex-m/transcript.cpp ports/cortex-m/device_main.cpp \
+                   ports/cortex-m/assert_handler.cpp
+MCU_FLAGS  := -std=c++17 -Os -Wall -Wextra $(if $(CI),-Werror) -ffp-contract=off -fno-math-errno -fno-exceptions \
               -fno-rtti -fno-threadsafe-statics -fno-use-cxa-atexit -ffunction-sections \
               -fdata-sections -DSHITSUKAN_SMALL_DEVICE -Ilib -Iports/cortex-m
-MCU_CPU_m4 := -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard
-MCU_CPU_m7 := -mcpu=cortex-m7 -mthumb -mfpu=fpv5-d16 -mfloat-abi=hard
-MCU_LDFLAGS := --specs=nano.specs --specs=nosys.specs -nostartfiles -Wl,--gc-sections \
-               -T ports/cortex-m/mps2.ld
+MCU_ARM_LD := --specs=nano.specs --specs=nosys.specs -nostartfiles -Wl,--gc-sections
+MCU_ARM_PORT := ports/cortex-m/semihosting.cpp ports/cortex-m/startup.cpp
+# RISC-V: Debian ships no libstdc++ for riscv64-unknown-elf; the library needs only the
+# header-only parts (<cstdint>, <cmath>, <limits>, ...), taken from the Arm newlib build of
+# the same GCC (12) over picolibc's C headers. No libstdc++ code is linked.
+MCU_RV_CXXINC := /usr/include/newlib/c++/12.2.1
 
+MCU_CXX_m4  := arm-none-eabi-g++
+MCU_LINK_m4 := arm-none-eabi-g++
+MCU_CPU_m4  := -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard
+MCU_LD_m4   := $(MCU_ARM_LD) -T ports/cortex-m/mps2.ld
+MCU_LDS_m4  := ports/cortex-m/mps2.ld ports/cortex-m/sections.ld
+MCU_PORT_m4 := $(MCU_ARM_PORT)
+MCU_SIZE_m4 := arm-none-eabi-size
+MCU_BENCH_m4 := -DBENCH_CORE='"M4F"'
+MCU_CXX_m7  := arm-none-eabi-g++
+MCU_LINK_m7 := arm-none-eabi-g++
+MCU_CPU_m7  := -mcpu=cortex-m7 -mthumb -mfpu=fpv5-d16 -mfloat-abi=hard
+MCU_LD_m7   := $(MCU_LD_m4)
+MCU_LDS_m7  := $(MCU_LDS_m4)
+MCU_PORT_m7 := $(MCU_ARM_PORT)
+MCU_SIZE_m7 := arm-none-eabi-size
+MCU_BENCH_m7 := -DBENCH_CORE='"M7"'
+# The M0's 16 KB of RAM: no Type I table (D(P) from Type III without its row cache) and
+# 512-pixel bands (one row of fig. 10a's 512, three of the lit box's 160); a 4 KB stack
+# (-fstack-usage: the rasterizer's draw frame alone is 2,128 bytes on Armv6-M; a 2 KB stack
+# overflowed into .bss and faulted).
+MCU_CXX_m0  := arm-none-eabi-g++
+MCU_LINK_m0 := arm-none-eabi-g++
+MCU_CPU_m0  := -mcpu=cortex-m0 -mthumb -mfloat-abi=soft -DSHITSUKAN_TYPE3_ROW_CACHE=0 \
+               -DTRANSCRIPT_NO_TABLE -DTRANSCRIPT_BAND_PIXELS=512
+MCU_LD_m0   := $(MCU_ARM_LD) -T ports/cortex-m/microbit.ld
+MCU_STACK_m0 := -Wl,--defsym=STACK_SIZE=4096
+MCU_LDS_m0  := ports/cortex-m/microbit.ld ports/cortex-m/sections.ld
+MCU_PORT_m0 := $(MCU_ARM_PORT)
+MCU_SIZE_m0 := arm-none-eabi-size
+MCU_BENCH_m0 := -DBENCH_CORE='"M0"' -DBENCH_SMALL_RAM -DBOARD_MICROBIT
+MCU_CXX_rv32  := riscv64-unknown-elf-g++
+MCU_LINK_rv32 := riscv64-unknown-elf-gcc
+MCU_CPU_rv32  := -march=rv32imac -mabi=ilp32 -mcmodel=medany --specs=picolibc.specs -nostdinc++ \
+                 -isystem $(MCU_RV_CXXINC) -isystem $(MCU_RV_CXXINC)/arm-none-eabi/thumb/v6-m/nofp
+MCU_LD_rv32   := -nostartfiles -Wl,--gc-sections -T ports/riscv/virt.ld
+MCU_LDS_rv32  := ports/riscv/virt.ld
+MCU_PORT_rv32 := ports/riscv/semihosting.cpp ports/riscv/startup.cpp
+MCU_SIZE_rv32 := riscv64-unknown-elf-size
+MCU_BENCH_rv32 := -DBENCH_CORE='"RV32"'
+
+MCU_TRANSCRIPTS := $(foreach c,$(MCU_CORES),$(MCU_DIR)/$(c)/transcript.elf)
 test-mcu: mcu-deps
-	@$(SUBMAKE) $(MCU_DIR)/m4/transcript.elf $(MCU_DIR)/m7/transcript.elf \
-	  $(MCU_DIR)/host_transcript $(MCU_DIR)/host_clang_O0 $(MCU_DIR)/png_fnv $(BUILD)/paper_figures
+	@$(SUBMAKE) $(MCU_TRANSCRIPTS) $(MCU_DIR)/host_transcript $(MCU_DIR)/host_clang_O0 \
+	  $(MCU_DIR)/png_fnv $(BUILD)/paper_figures
 	bash ports/cortex-m/test_mcu.sh $(MCU_DIR) $(BUILD)/paper_figures
 
-# Instructions per lattice node / marble pixel / rasterized pixel on the Cortex-M4F (QEMU
-# -icount: one instruction per ns of virtual time, read from the MPS2 timer).
-MCU_BENCH_SRCS := $(filter-out ports/cortex-m/transcript.cpp ports/cortex-m/device_main.cpp,$(MCU_SRCS)) \
-                  ports/cortex-m/bench_main.cpp
+# Instructions per lattice node / marble pixel / rasterized pixel / triangle on each core
+# (QEMU -icount: one instruction per ns of virtual time; ports/cortex-m/icount.hpp).
+MCU_BENCH_SRCS = $(filter-out ports/cortex-m/transcript.cpp ports/cortex-m/device_main.cpp,\
+                   $(MCU_COMMON_SRCS)) ports/cortex-m/bench_main.cpp
 bench-mcu: mcu-deps
-	@$(SUBMAKE) $(MCU_DIR)/m4/bench.elf
-	@qemu-system-arm -M mps2-an386 -icount shift=0 -display none -monitor none -serial none \
-	  -chardev stdio,id=semi -semihosting-config enable=on,target=native,chardev=semi \
-	  -kernel $(MCU_DIR)/m4/bench.elf
+	@$(SUBMAKE) $(foreach c,$(MCU_CORES),$(MCU_DIR)/$(c)/bench.elf)
+	@bash ports/cortex-m/bench_mcu.sh $(MCU_DIR)
 
-# The firmwares of the README's footprint table (ports/cortex-m/footprint_main.cpp), M4F -Os
-# newlib-nano, Type III row cache off: built, run, measured (flash = text + data, RAM = data +
-# bss + the main stack's high-water mark).
-MCU_FP_SRCS := $(filter-out ports/cortex-m/transcript.cpp ports/cortex-m/device_main.cpp \
-                 lib/shitsukan/render/solid_mesh.cpp,$(MCU_SRCS)) ports/cortex-m/footprint_main.cpp
-MCU_FP_FLAGS := $(MCU_CPU_m4) $(MCU_FLAGS) -DSHITSUKAN_TYPE3_ROW_CACHE=0
-MCU_FP_STACK := 8192
+# The firmwares of the footprint goals (ports/cortex-m/footprint_main.cpp): lattice only and
+# the marble cube, for the M4F, the M0 and the RV32, built, run and measured by
+# ports/cortex-m/footprint.sh (flash = text + data, RAM = data + bss + the stack's
+# high-water mark).
+MCU_FP_SRCS = $(filter-out ports/cortex-m/transcript.cpp ports/cortex-m/device_main.cpp \
+                 lib/shitsukan/render/solid_mesh.cpp,$(MCU_COMMON_SRCS)) ports/cortex-m/footprint_main.cpp
 footprint-mcu: mcu-deps
-	@mkdir -p $(MCU_DIR)/footprint
-	@for v in LATTICE MARBLE; do \
-	  $(MCU_CXX) $(MCU_FP_FLAGS) -DFOOTPRINT_$$v $(MCU_LDFLAGS) -Wl,--defsym=STACK_SIZE=$(MCU_FP_STACK) \
-	    -o $(MCU_DIR)/footprint/$$v.elf $(MCU_FP_SRCS) || exit 1; \
-	  out=$$(qemu-system-arm -M mps2-an386 -display none -monitor none -serial none \
-	    -chardev stdio,id=semi -semihosting-config enable=on,target=native,chardev=semi \
-	    -kernel $(MCU_DIR)/footprint/$$v.elf) || { echo "footprint-mcu: $$v failed"; exit 1; }; \
-	  echo "$$out"; stack=$$(echo "$$out" | sed -n 's/.*main stack used \([0-9]*\) bytes/\1/p'); \
-	  arm-none-eabi-size $(MCU_DIR)/footprint/$$v.elf | awk -v v=$$v -v s=$$stack -v r=$(MCU_FP_STACK) 'NR == 2 { \
-	    printf "footprint: %s firmware (M4F, -Os, newlib-nano): flash %d bytes, RAM %d bytes (data %d + bss %d + stack used %d)\n", \
-	    v, $$1 + $$2, $$2 + $$3 - r + s, $$2, $$3 - r, s }'; done
+	@$(SUBMAKE) $(foreach c,m4 m0 rv32,$(foreach v,lattice marble,$(MCU_DIR)/footprint/$(c)-$(v).elf))
+	@bash ports/cortex-m/footprint.sh firmwares $(MCU_DIR)/footprint
 
 # The same program built by clang at -O0 (library sources included): same bits as gcc -O2.
-MCU_HOST_SRCS := $(filter-out ports/cortex-m/semihosting.cpp ports/cortex-m/startup.cpp \
-                   ports/cortex-m/device_main.cpp ports/cortex-m/assert_handler.cpp,$(MCU_SRCS)) \
-                 ports/cortex-m/host_main.cpp
+MCU_HOST_SRCS := $(filter-out ports/cortex-m/device_main.cpp ports/cortex-m/assert_handler.cpp,\
+                   $(MCU_COMMON_SRCS)) ports/cortex-m/host_main.cpp
 $(MCU_DIR)/host_clang_O0: $(MCU_HOST_SRCS) $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	clang++ -std=c++17 -O0 -ffp-contract=off -Ilib -Iports/cortex-m -o $@ $(MCU_HOST_SRCS)
@@ -82,18 +120,30 @@ $(MCU_DIR)/png_fnv: tests/mcu/png_fnv.cpp
 	@mkdir -p $(@D)
 	$(CXX) -std=c++17 -O2 -w -o $@ $<
 
+# $(1): the core. Objects per core; the transcript, bench and footprint firmwares. (Every
+# MCU_*_$(1) is set above: $(call) expands them before the eval.)
 define mcu_core
 $(MCU_DIR)/$(1)/%.o: %.cpp $(FLAGS_STAMP)
 	@mkdir -p $$(@D)
-	$(MCU_CXX) $(MCU_CPU_$(1)) $(MCU_FLAGS) -MMD -MP -c $$< -o $$@
+	$(MCU_CXX_$(1)) $(MCU_CPU_$(1)) $(MCU_FLAGS) $$(MCU_EXTRA) -MMD -MP -c $$< -o $$@
+$(MCU_DIR)/$(1)/ports/cortex-m/bench_main.o: MCU_EXTRA := $(MCU_BENCH_$(1))
 
-$(MCU_DIR)/$(1)/bench.elf: $(MCU_BENCH_SRCS:%.cpp=$(MCU_DIR)/$(1)/%.o) ports/cortex-m/mps2.ld
-	$(MCU_CXX) $(MCU_CPU_$(1)) $(MCU_LDFLAGS) -o $$@ $(MCU_BENCH_SRCS:%.cpp=$(MCU_DIR)/$(1)/%.o)
+$(MCU_DIR)/$(1)/bench.elf: $(patsubst %.cpp,$(MCU_DIR)/$(1)/%.o,$(MCU_BENCH_SRCS) $(MCU_PORT_$(1))) $(MCU_LDS_$(1))
+	$(MCU_LINK_$(1)) $(MCU_CPU_$(1)) $(MCU_LD_$(1)) $(MCU_STACK_$(1)) -o $$@ \
+	  $(patsubst %.cpp,$(MCU_DIR)/$(1)/%.o,$(MCU_BENCH_SRCS) $(MCU_PORT_$(1)))
 
-$(MCU_DIR)/$(1)/transcript.elf: $(MCU_SRCS:%.cpp=$(MCU_DIR)/$(1)/%.o) ports/cortex-m/mps2.ld
-	$(MCU_CXX) $(MCU_CPU_$(1)) $(MCU_LDFLAGS) -Wl,-Map=$$(@:.elf=.map) -o $$@ \
-	  $(MCU_SRCS:%.cpp=$(MCU_DIR)/$(1)/%.o)
-	@arm-none-eabi-size $$@
+$(MCU_DIR)/$(1)/transcript.elf: $(patsubst %.cpp,$(MCU_DIR)/$(1)/%.o,$(MCU_COMMON_SRCS) $(MCU_PORT_$(1))) $(MCU_LDS_$(1))
+	$(MCU_LINK_$(1)) $(MCU_CPU_$(1)) $(MCU_LD_$(1)) $(MCU_STACK_$(1)) -Wl,-Map=$$(@:.elf=.map) -o $$@ \
+	  $(patsubst %.cpp,$(MCU_DIR)/$(1)/%.o,$(MCU_COMMON_SRCS) $(MCU_PORT_$(1)))
+	@$(MCU_SIZE_$(1)) $$@
+
+# Footprint firmwares: the Type III row cache off, 8 KB of stack reserved (measured, not
+# counted: RAM counts the high-water mark).
+$(MCU_DIR)/footprint/$(1)-%.elf: $(MCU_FP_SRCS) $(MCU_PORT_$(1)) $(MCU_LDS_$(1)) $(FLAGS_STAMP)
+	@mkdir -p $$(@D)
+	$(MCU_LINK_$(1)) $(MCU_CPU_$(1)) $(MCU_FLAGS) -DSHITSUKAN_TYPE3_ROW_CACHE=0 \
+	  -DFOOTPRINT_$$(shell echo $$* | tr a-z A-Z) $(MCU_LD_$(1)) \
+	  -Wl,--defsym=STACK_SIZE=$(if $(filter m0,$(1)),4096,8192) -Wl,-Map=$$(@:.elf=.map) -o $$@ \
+	  $(MCU_FP_SRCS) $(MCU_PORT_$(1))
 endef
-$(eval $(call mcu_core,m4))
-$(eval $(call mcu_core,m7))
+$(foreach c,$(MCU_CORES),$(eval $(call mcu_core,$(c))))

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# ports/cortex-m/test_mcu.sh DIR — run by `make test-mcu` after it built, in DIR,
-# host_transcript, m4/transcript.elf, m7/transcript.elf and png_fnv (and build/paper_figures).
-# Runs the transcript on the host and under QEMU on mps2-an386 (Cortex-M4F) and mps2-an500
-# (Cortex-M7); fails unless the three transcripts are byte-identical and the fig. 10a frame
-# equals the host's paper figure PNG.
+# ports/cortex-m/test_mcu.sh DIR [FIGURES] — run by `make test-mcu` after it built, in DIR,
+# host_transcript, host_clang_O0, {m0,m4,m7,rv32}/transcript.elf and png_fnv (and
+# build/paper_figures). Runs the transcript on the host (gcc -O2, clang -O0) and under QEMU
+# (qemu_run.sh: Cortex-M0 micro:bit, Cortex-M4F mps2-an386, Cortex-M7 mps2-an500, RV32IMAC
+# virt); fails unless the six transcripts are byte-identical and the fig. 10a frame equals the
+# host's paper figure PNG.
 set -euo pipefail
 dir="$1"
 figures="${2:-build/paper_figures}"
@@ -17,17 +18,21 @@ else
     echo "test-mcu: host clang -O0 transcript differs from gcc -O2:"; diff "$dir/host.txt" "$dir/host_clang_O0.txt" || true
     fail=1
 fi
-for pair in m4:mps2-an386 m7:mps2-an500; do
-    core=${pair%%:*}; machine=${pair##*:}
+# The four devices run at once (the M0's soft-float run is the long one); then compared.
+here="$(dirname "$0")"
+declare -A pid start  # per core
+for core in m0 m4 m7 rv32; do
     rm -f "$dir/$core.txt"
-    start=$(date +%s)
-    if ! timeout 900 qemu-system-arm -M "$machine" -display none -monitor none -serial none \
-         -chardev file,id=semi,path="$dir/$core.txt" \
-         -semihosting-config enable=on,target=native,chardev=semi \
-         -kernel "$dir/$core/transcript.elf"; then
-        echo "test-mcu: $core ($machine) exited with an error; its transcript:"; cat "$dir/$core.txt"; exit 1
+    start[$core]=$(date +%s)
+    (bash "$here/qemu_run.sh" "$core" "$dir/$core/transcript.elf" "$dir/$core.txt"; rc=$?
+     echo $(( $(date +%s) - ${start[$core]} )) > "$dir/$core.seconds"; exit $rc) &
+    pid[$core]=$!
+done
+for core in m0 m4 m7 rv32; do
+    if ! wait "${pid[$core]}"; then
+        echo "test-mcu: $core exited with an error; its transcript:"; cat "$dir/$core.txt"; exit 1
     fi
-    echo "test-mcu: $core ($machine) ran in $(( $(date +%s) - start )) s"
+    echo "test-mcu: $core ran in $(cat "$dir/$core.seconds") s (wall clock, the four QEMUs at once)"
     if cmp -s "$dir/host.txt" "$dir/$core.txt"; then
         echo "test-mcu: $core transcript == host transcript ($(wc -l < "$dir/host.txt") lines)"
     else
@@ -48,7 +53,9 @@ else
     fail=1
 fi
 grep -q '^end ok$' "$dir/host.txt" || { echo "test-mcu: the transcript reports errors"; fail=1; }
-echo "test-mcu: footprint of the Cortex-M4F transcript firmware by module (-Os, newlib-nano):"
-bash "$(dirname "$0")/footprint.sh" "$dir/m4/transcript.map"
-[ "$fail" = 0 ] && echo "test-mcu: host (gcc -O2, clang -O0), Cortex-M4F and Cortex-M7 (gcc -Os) transcripts are identical"
+for core in m4 m0; do
+    echo "test-mcu: footprint of the $core transcript firmware by module (-Os, newlib-nano):"
+    bash "$here/footprint.sh" modules "$dir/$core/transcript.map"
+done
+[ "$fail" = 0 ] && echo "test-mcu: all six transcripts are identical: host (gcc -O2, clang -O0), Cortex-M0, Cortex-M4F, Cortex-M7 and RV32IMAC (gcc -Os)"
 exit "$fail"

@@ -5,8 +5,21 @@
 //   ist       fujimoto2000 fully-connected and unit IST axes, forward and inverse
 //   relief    tokai1994 fig. 12 relief (height, normal) of one hexagonal scale
 //   lit       a box under two lights, Blinn-Phong, rotated, perspective camera, 16-row bands
+//             (the frames are binned once, raster/rasterizer.hpp's bin_mesh, then drawn band
+//             by band with draw_binned_mesh: the same bytes as draw_mesh per band)
 //   fig10a    okada1987 fig. 10a: the marble cube, 512 x 512 in 16-row bands, the figure's
 //             scene, shader and background (paper_figures/okada1987/okada_common.cpp)
+// Two build options keep the same transcript on a device with little RAM (the Cortex-M0 of
+// `make test-mcu`, 16 KB):
+//   TRANSCRIPT_NO_TABLE     no 1.1 MB Type I table: every D(P) comes from the Type III lattice
+//                           (okada1989 §3-3, 3.3 KB without its row cache). The "type1" lines
+//                           then come from a walk over all 65^3 nodes in the table's order,
+//                           and D(P)'s second column from Type III without reuse (okada1989's
+//                           own descent from the initial cube): the transcript equals the
+//                           host's only if Types I and III agree bit for bit.
+//   TRANSCRIPT_BAND_PIXELS  the band buffer in pixels (default 512 x 16): frames are drawn in
+//                           bands of TRANSCRIPT_BAND_PIXELS / width rows (the pixels do not
+//                           depend on the band height; raster/rasterizer.hpp).
 #include "transcript.hpp"
 
 #include <cstdint>
@@ -28,6 +41,7 @@
 #include "shitsukan/solid/turbulence.hpp"
 #include "shitsukan/wrinkly/ist_axis.hpp"
 #include "shitsukan/wrinkly/ist_formula.hpp"
+#include "type3_solid_shader.hpp"
 
 namespace shitsukan::port {
 
@@ -132,26 +146,60 @@ void section_detmath() {
 // ---- lattice ----
 constexpr int kR = kOkada1987R;
 constexpr int kSide = (1 << kR) + 1;
+TypeIIILattice g_type3;  // static: 10.9 KB (3.3 KB without the row cache) is no stack object
+constexpr int kSampleNodes[8][3] = {{0, 0, 0},   {32, 32, 32}, {1, 2, 3},    {64, 63, 17},
+                                    {33, 7, 50}, {5, 61, 29},  {48, 16, 40}, {13, 13, 13}};
+float g_type1_samples[8];  // the Type I values at kSampleNodes
+
+#if defined(TRANSCRIPT_NO_TABLE)
+// D(P) on this device: Type III; "Type I" is the full walk over the nodes (see the top).
+float lattice_density(Vec3 p) { return g_type3.turbulence(p); }
+float type1_density(Vec3 p) {
+    g_type3.set_reuse(false);
+    const float d = g_type3.turbulence(p);
+    g_type3.set_reuse(true);
+    return d;
+}
+bool build_type1(const FractalParams& p, Fnv* all) {
+    if (!check(g_type3.init(p), "Type III")) return false;
+    for (int z = 0; z < kSide; ++z)
+        for (int y = 0; y < kSide; ++y)
+            for (int x = 0; x < kSide; ++x) {
+                const float v = g_type3.node_value(x, y, z);
+                all->f(v);
+                for (int k = 0; k < 8; ++k)
+                    if (kSampleNodes[k][0] == x && kSampleNodes[k][1] == y && kSampleNodes[k][2] == z)
+                        g_type1_samples[k] = v;
+            }
+    return true;
+}
+#else
 float g_lattice[kSide * kSide * kSide];  // Type I: 1,098,500 bytes (fig. 10a needs it whole)
 LatticeView g_view;
-TypeIIILattice g_type3;  // static: 10.9 KB is no stack object on a microcontroller
+float lattice_density(Vec3 p) { return turbulence(g_view, p); }
+float type1_density(Vec3 p) { return turbulence(g_view, p); }
+bool build_type1(const FractalParams& p, Fnv* all) {
+    if (!check(build_fractal_lattice(p, g_lattice, sizeof g_lattice, g_view), "Type I"))
+        return false;
+    for (float v : g_lattice) all->f(v);
+    for (int k = 0; k < 8; ++k)
+        g_type1_samples[k] = g_view.at(kSampleNodes[k][0], kSampleNodes[k][1], kSampleNodes[k][2]);
+    return check(g_type3.init(p), "Type III");
+}
+#endif
 
 void section_lattice() {
     const FractalParams p = okada1987_lattice_params();
-    if (!check(build_fractal_lattice(p, g_lattice, sizeof g_lattice, g_view), "Type I")) return;
     Fnv all;
-    for (float v : g_lattice) all.f(v);
+    if (!build_type1(p, &all)) return;
     put("lattice type1 65^3 fnv ");
     put_hash(all);
     put("\n");
-    if (!check(g_type3.init(p), "Type III")) return;
-    static const int nodes[][3] = {{0, 0, 0},   {32, 32, 32}, {1, 2, 3},    {64, 63, 17},
-                                   {33, 7, 50}, {5, 61, 29},  {48, 16, 40}, {13, 13, 13}};
     int agree = 0;
     put("lattice type3 nodes");
-    for (const auto& n : nodes) {
-        const float v = g_type3.node_value(n[0], n[1], n[2]);
-        agree += bits(v) == bits(g_view.at(n[0], n[1], n[2]));
+    for (int k = 0; k < 8; ++k) {
+        const float v = g_type3.node_value(kSampleNodes[k][0], kSampleNodes[k][1], kSampleNodes[k][2]);
+        agree += bits(v) == bits(g_type1_samples[k]);
         put(" ");
         put_float(v);
     }
@@ -163,7 +211,7 @@ void section_lattice() {
         const Vec3 q{0.37f + 0.93f * float(i), 31.5f + 0.25f * float(i % 7), 63.9f - 0.81f * float(i)};
         const float t3 = g_type3.turbulence(q);
         d.f(t3);
-        d.f(turbulence(g_view, q));
+        d.f(type1_density(q));
         if (i % 16 == 0) {
             put(" ");
             put_float(t3);
@@ -182,7 +230,8 @@ void section_slice(const char* name, const SolidMaterial& m) {
     put(" slice 64x64 z=32");
     for (int y = 0; y < 64; ++y)
         for (int x = 0; x < 64; ++x) {
-            const float g = solid_density(m, g_view, Vec3{0.5f + float(x), 0.5f + float(y), 32.25f});
+            const Vec3 p{0.5f + float(x), 0.5f + float(y), 32.25f};
+            const float g = solid_density_at(m, p, lattice_density(p));  // = solid_density
             h.f(g);
             if ((x == 7 || x == 40) && (y == 9 || y == 50)) {
                 put(" ");
@@ -252,16 +301,24 @@ void section_relief() {
 }
 
 // ---- band rendering ----
-constexpr int kBandRows = 16;
-constexpr int kMaxWidth = 512;
-Rgb8 g_band_color[kMaxWidth * kBandRows];
-float g_band_depth[kMaxWidth * kBandRows];
+#if !defined(TRANSCRIPT_BAND_PIXELS)
+#define TRANSCRIPT_BAND_PIXELS (512 * 16)
+#endif
+constexpr int kBandPixels = TRANSCRIPT_BAND_PIXELS;
+Rgb8 g_band_color[kBandPixels];
+float g_band_depth[kBandPixels];
 
 // Renders a frame band by band with draw(band) and hashes its rows top to bottom.
 template <class Draw>
 bool render_in_bands(const Camera& cam, Rgb8 background, Draw draw, Fnv* h) {
-    for (int y0 = 0; y0 < cam.height; y0 += kBandRows) {
-        const int rows = cam.height - y0 < kBandRows ? cam.height - y0 : kBandRows;
+    const int band_rows = kBandPixels / cam.width;
+    if (band_rows < 1)
+        return check(Status::error(StatusCode::too_large,
+                                   "band buffer of %d pixels is narrower than the frame (%d)",
+                                   kBandPixels, cam.width),
+                      "bands");
+    for (int y0 = 0; y0 < cam.height; y0 += band_rows) {
+        const int rows = cam.height - y0 < band_rows ? cam.height - y0 : band_rows;
         const RgbView color{g_band_color, cam.width, rows, cam.width};
         const FloatView depth{g_band_depth, cam.width, rows, cam.width};
         const FrameBand band = make_band(color, depth, y0, cam.width, cam.height);
@@ -278,6 +335,7 @@ bool render_in_bands(const Camera& cam, Rgb8 background, Draw draw, Fnv* h) {
     return true;
 }
 
+TriangleRows g_box_rows[kBoxTriangleCount];  // the rows of each triangle (bin_mesh)
 Vec3 g_box_positions[kBoxVertexCount], g_box_normals[kBoxVertexCount];
 Vec2 g_box_uvs[kBoxVertexCount];
 std::uint32_t g_box_indices[3 * kBoxTriangleCount];
@@ -310,8 +368,13 @@ void section_lit() {
         DrawOptions opt;
         opt.model = Mat4::rotate_y(0.41f * float(frame) + 0.2f) * Mat4::rotate_x(0.23f * float(frame) - 0.3f);
         Fnv h;
+        if (!check(bin_mesh(cam, box, opt, g_box_rows, kBoxTriangleCount), "lit bins")) return;
         const bool ok = render_in_bands(cam, Rgb8{10, 12, 16},
-            [&](const FrameBand& band) { return check(draw_mesh(cam, band, box, opt, shader), "lit draw"); },
+            [&](const FrameBand& band) {
+                return check(draw_binned_mesh(cam, band, box, opt, g_box_rows, kBoxTriangleCount,
+                                              shader),
+                             "lit draw");
+            },
             &h);
         if (!ok) return;
         put(" ");
@@ -333,11 +396,18 @@ void section_fig10a() {
     DrawOptions opt;
     opt.cull = CullMode::back;
     Fnv h;
-    const bool ok = render_in_bands(cam, Rgb8{24, 26, 32},
-        [&](const FrameBand& band) {
-            return check(draw_solid_textured_mesh(cam, band, cube, opt, g_view, marble), "fig10a draw");
-        },
-        &h);
+    if (!check(validate_solid_material(marble), "fig10a marble")) return;
+    if (!check(bin_mesh(cam, cube, opt, g_box_rows, kBoxTriangleCount), "fig10a bins")) return;
+#if defined(TRANSCRIPT_NO_TABLE)
+    TypeIIISolidShader shader{&g_type3, marble, SolidShading{}};
+#else  // draw_solid_textured_mesh's shader (render/solid_mesh.hpp), the mesh binned
+    SolidTextureShader shader{g_view, marble, SolidShading{}};
+#endif
+    auto draw = [&](const FrameBand& band) {
+        return check(draw_binned_mesh(cam, band, cube, opt, g_box_rows, kBoxTriangleCount, shader),
+                     "fig10a draw");
+    };
+    const bool ok = render_in_bands(cam, Rgb8{24, 26, 32}, draw, &h);
     if (!ok) return;
     put("fig10a 512x512 rgb fnv ");
     put_hash(h);

@@ -72,6 +72,7 @@ struct DrawContext {
     FragmentShader shader;
     void* user;
     long fragments = 0;
+    Fragment f;  // one per draw call, not per triangle (raster_triangle sets what it reads)
 };
 
 // q = floor(a / b), r = a - q·b in [0, b), for b > 0: shift and subtract on 32-bit words
@@ -166,7 +167,10 @@ constexpr float kMaxFixed = 268435456.0f;
 inline bool to_fixed(float v, i64* out) {
     float s = v * float(kSubpixel);
     if (!(s > -kMaxFixed && s < kMaxFixed)) return false;
-    *out = i64(s < 0.0f ? s - 0.5f : s + 0.5f);
+    // |s ± 0.5| < 2^28 + 1: through int32 the same truncation is one FPU conversion (an int64
+    // one is libgcc's __aeabi_f2lz, by way of software double: about 100 instructions on a
+    // Cortex-M4F, six per triangle).
+    *out = i64(std::int32_t(s < 0.0f ? s - 0.5f : s + 0.5f));
     return true;
 }
 
@@ -354,7 +358,7 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
     const bool unclipped =
         a.bary == Vec3{1, 0, 0} && b.bary == Vec3{0, 1, 0} && c.bary == Vec3{0, 0, 1};
 
-    Fragment f;
+    Fragment& f = ctx.f;
     f.triangle = src.index;
     f.front_facing = front;
     const i64 width = band.frame_width;
@@ -585,28 +589,81 @@ void add_stats(const RasterStats& local, long fragments, RasterStats* stats) {
     stats->fragments_shaded += fragments;
 }
 
-}  // namespace
 
-Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
-                 const DrawOptions& options, FragmentShader shader, void* user,
-                 RasterStats* stats) {
-    // ---- Check everything before drawing anything ----
+// ---- Binning: which rows a triangle can touch, decided once per frame ----
+// Steps 1-4 for the common case only (every corner in front of the eye and inside the guard
+// band: no clipping), from the same clip-space corners, the same divide and the same snapping
+// as draw_mesh, so the rows are those raster_triangle would walk. A triangle that needs
+// clipping keeps every row (the band pass decides); one that cannot be drawn (outside one
+// side of the view, a corner that cannot be mapped, zero snapped area, culled) gets none.
+TriangleRows bin_triangle(const Camera& camera, const MeshView& mesh, const Mat4& mvp,
+                          CullMode cull, int t, ClipSpaceVertex corners[3]) {
+    const TriangleRows all{0, std::uint16_t(camera.height)}, none{0, 0};
+    const std::uint32_t* index = mesh.indices + 3 * std::size_t(t);
+    unsigned outcodes = 0, outside = kOutsideBits;
+    for (int k = 0; k < 3; ++k) {
+        const Vec3 p = mesh.positions[index[k]];
+        if (!is_finite(p)) return none;  // fetch_corners rejects it
+        corners[k].clip = transform_homogeneous(mvp, p);
+        corners[k].bary = Vec3{0, 0, 0};
+        const unsigned c = clip_outcode(corners[k].clip);
+        outcodes |= c;
+        outside &= c;
+    }
+    if (outside != 0) return none;  // beyond one side of the view
+    if ((outcodes & kClipPlaneBits) != 0) return all;
+    ScreenVertex s[3];  // no default member values: not zeroed
+    for (int k = 0; k < 3; ++k) {
+        if (!finite_clip(corners[k].clip) || !(corners[k].clip.w >= kMinClipW)) return all;
+        if (!to_screen(camera, corners[k], &s[k])) return none;  // rejected
+    }
+    const i64 area2 = snapped_area2(s[0], s[1], s[2]);
+    const bool front = area2 < 0;
+    if (area2 == 0 || (cull == CullMode::back && !front) || (cull == CullMode::front && front))
+        return none;
+    i64 top = s[0].y, bottom = s[0].y;
+    for (int k = 1; k < 3; ++k) {
+        if (s[k].y < top) top = s[k].y;
+        if (s[k].y > bottom) bottom = s[k].y;
+    }
+    i64 begin = ceil_div_subpixel(top - kHalfPixel), end = ceil_div_subpixel(bottom - kHalfPixel);
+    if (begin < 0) begin = 0;
+    if (end > camera.height) end = camera.height;
+    if (begin >= end) return none;
+    return TriangleRows{std::uint16_t(begin), std::uint16_t(end)};
+}
+
+Status check_draw_inputs(const Camera& camera, const FrameBand& band, const MeshView& mesh,
+                         const DrawOptions& options, FragmentShader shader, Mat4* normal_matrix) {
     if (shader == nullptr)
         return Status::error(StatusCode::invalid_argument, "draw_mesh: the shader is null");
     SHITSUKAN_TRY(validate_camera(camera));
     SHITSUKAN_TRY(validate_band(camera, band));
     SHITSUKAN_TRY(validate_mesh(mesh));
+    return validate_model(options.model, *normal_matrix);
+}
+
+// draw_mesh and draw_binned_mesh: rows == nullptr draws every triangle.
+Status draw_mesh_rows(const Camera& camera, const FrameBand& band, const MeshView& mesh,
+                      const DrawOptions& options, const TriangleRows* rows,
+                      FragmentShader shader, void* user, RasterStats* stats) {
+    // ---- Check everything before drawing anything ----
     Mat4 normal_matrix;
-    SHITSUKAN_TRY(validate_model(options.model, normal_matrix));
+    SHITSUKAN_TRY(check_draw_inputs(camera, band, mesh, options, shader, &normal_matrix));
 
     const Mat4 mvp = camera.projection * (camera.view * options.model);
-    DrawContext ctx{{&mesh, &options.model, &normal_matrix}, &band, shader, user, 0};
+    DrawContext ctx{{&mesh, &options.model, &normal_matrix}, &band, shader, user, 0, Fragment{}};
     RasterStats local;
-    local.triangles_in = mesh.triangle_count;
+    const int band_begin = band.y0, band_end = band.y0 + band.color.height;
+    SourceTriangle src;  // one, reused: fetch_corners and prepare write what is read
+    ClipSpaceVertex corners[3];
 
     for (int t = 0; t < mesh.triangle_count; ++t) {
-        SourceTriangle src;
-        ClipSpaceVertex corners[3];
+        if (rows != nullptr && (rows[t].begin >= rows[t].end || rows[t].begin >= band_end ||
+                                rows[t].end <= band_begin))
+            continue;  // binned away: it touches no row of this band
+        ++local.triangles_in;
+        src.ready = false;
         if (!fetch_corners(mesh, options.model, mvp, t, &src, corners)) {
             ++local.triangles_rejected;
             continue;
@@ -629,6 +686,42 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
     }
     add_stats(local, ctx.fragments, stats);
     return Status::success();
+}
+
+}  // namespace
+
+Status bin_mesh(const Camera& camera, const MeshView& mesh, const DrawOptions& options,
+                TriangleRows* rows, int capacity) {
+    SHITSUKAN_TRY(validate_camera(camera));
+    SHITSUKAN_TRY(validate_mesh(mesh));
+    Mat4 normal_matrix;
+    SHITSUKAN_TRY(validate_model(options.model, normal_matrix));
+    if (rows == nullptr || capacity < mesh.triangle_count)
+        return Status::error(StatusCode::invalid_argument,
+                             "bin_mesh: room for %d triangles' rows, the mesh has %d",
+                             rows == nullptr ? 0 : capacity, mesh.triangle_count);
+    const Mat4 mvp = camera.projection * (camera.view * options.model);
+    ClipSpaceVertex corners[3];  // scratch, not zeroed per triangle
+    for (int t = 0; t < mesh.triangle_count; ++t)
+        rows[t] = bin_triangle(camera, mesh, mvp, options.cull, t, corners);
+    return Status::success();
+}
+
+Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
+                 const DrawOptions& options, FragmentShader shader, void* user,
+                 RasterStats* stats) {
+    return draw_mesh_rows(camera, band, mesh, options, nullptr, shader, user, stats);
+}
+
+Status draw_binned_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
+                        const DrawOptions& options, const TriangleRows* rows, int capacity,
+                        FragmentShader shader, void* user, RasterStats* stats) {
+    if (rows == nullptr || capacity < mesh.triangle_count)
+        return Status::error(StatusCode::invalid_argument,
+                             "draw_binned_mesh: rows for %d triangles, the mesh has %d (bin_mesh "
+                             "fills them)",
+                             rows == nullptr ? 0 : capacity, mesh.triangle_count);
+    return draw_mesh_rows(camera, band, mesh, options, rows, shader, user, stats);
 }
 
 }  // namespace shitsukan

@@ -41,7 +41,8 @@
 //     (attributes / w interpolated linearly in screen space, then divided by 1/w).
 //   - Bands: a FrameBand is the rows [y0, y0 + color.height) of a frame of
 //     frame_width x frame_height pixels. Rendering all bands of a frame and stacking them
-//     gives the full frame bit for bit. The rasterizer allocates nothing.
+//     gives the full frame bit for bit. The rasterizer allocates nothing. Many bands: bin the
+//     mesh once (bin_mesh, below) so that each band sets up only its own triangles.
 #pragma once
 
 #include <cstdint>
@@ -137,6 +138,34 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
                  const DrawOptions& options, F& shader, RasterStats* stats = nullptr) {
     return draw_mesh(
         camera, band, mesh, options,
+        [](const Fragment& f, void* u) -> Rgb8 { return (*static_cast<F*>(u))(f); }, &shader,
+        stats);
+}
+
+// ---- Binning: a frame drawn in many bands sets each triangle up once ----
+//   TriangleRows rows[kMaxTriangles];                        // caller memory, 4 bytes each
+//   Status s = bin_mesh(camera, mesh, opt, rows, kMaxTriangles);      // once per frame
+//   for (each band) s = draw_binned_mesh(camera, band, mesh, opt, rows, kMaxTriangles, shader);
+// bin_mesh transforms, projects, snaps and culls every triangle once and keeps the rows it can
+// touch; draw_binned_mesh hands a band only the triangles whose rows meet it (a triangle is
+// set up again only in the bands it covers). Same pixels as draw_mesh, bit for bit: the rows
+// come from the same clip-space corners and snapping (a triangle that needs near-plane or
+// guard-band clipping keeps every row). The rows must come from bin_mesh with the same
+// camera, mesh and options. RasterStats: triangles_in counts the triangles handed to the band.
+struct TriangleRows {
+    std::uint16_t begin = 0, end = 0;  // frame rows [begin, end); empty: nothing to draw
+};
+Status bin_mesh(const Camera& camera, const MeshView& mesh, const DrawOptions& options,
+                TriangleRows* rows, int capacity);
+Status draw_binned_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
+                        const DrawOptions& options, const TriangleRows* rows, int capacity,
+                        FragmentShader shader, void* user, RasterStats* stats = nullptr);
+template <class F, class = decltype(std::declval<F&>()(std::declval<const Fragment&>()))>
+Status draw_binned_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
+                        const DrawOptions& options, const TriangleRows* rows, int capacity,
+                        F& shader, RasterStats* stats = nullptr) {
+    return draw_binned_mesh(
+        camera, band, mesh, options, rows, capacity,
         [](const Fragment& f, void* u) -> Rgb8 { return (*static_cast<F*>(u))(f); }, &shader,
         stats);
 }
