@@ -19,7 +19,7 @@ int usage(std::FILE* out) {
     std::fprintf(out,
                  "usage: shitsukan <command> [flags]   (shitsukan <command> --help for its flags)\n"
                  "\n"
-                 "commands (each cites its paper; see README.md \"Use it from the shell\"):\n"
+                 "commands (each cites its paper; see docs/TOOL.md):\n"
                  "  marble    okada1987 §4.1 / okada1989: 3D fractal marble, a slice or baked on an OBJ\n"
                  "  wood      okada1987 §4.2: 3D fractal wood, a slice or baked on an OBJ\n"
                  "  leather   tokai1994 §3: reptile scales (two-stage Voronoi), height/normal maps, OBJ\n"

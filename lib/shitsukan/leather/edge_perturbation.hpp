@@ -36,8 +36,6 @@
 // (after 12 halvings the edges go straight: the polygon is convex again). The report gives the
 // RMS offset requested and realised and the number of edges scaled down. Edges on the outer
 // boundary stay straight: the union of the polygons is the rectangle exactly.
-// (Until 2026-11 every edge's slope was capped by a bound at 0.6 of the worst case: fig. 7
-// realised 57 % of the requested RMS and fig. 10's p = 0.015 and p = 0.03 looked alike.)
 // Cost: O(E 2^L) time and memory for E interior edges and L levels (x 20 for the edges that
 // need the bisection).
 #pragma once
