@@ -52,17 +52,22 @@ int run_normals(int argc, char** argv) {
     std::string in, out = "normal.png";
     float strength = 8.0f;
     bool wrap = false;
+    int convention = 0;  // 0 opengl, 1 directx
     FlagSet f("normals",
               "A tangent-space normal map from any height map: n = (-s dh/dx, -s dh/dy, 1)/|.|\n"
               "with central differences, the height-field normal of Blinn's bump mapping (Blinn\n"
               "1978, cited by tokai1994 §4) that `shitsukan leather` writes, in the same OpenGL\n"
               "encoding (rgb = (n + 1)/2, green = +y = up the image). Heights: the first channel\n"
-              "of a PNG/JPEG/... (8- or 16-bit, full range = 1) or a PFM (values as stored).",
-              "shitsukan normals HEIGHT.png [-o normal.png] [--strength 8] [--wrap]");
+              "of a PNG/JPEG/... (8- or 16-bit, full range = 1) or a PFM (values as stored).\n"
+              "--normal directx stores 255 - green (green = -y), the only channel that differs.",
+              "shitsukan normals HEIGHT.png [-o normal.png] [--strength 8] [--wrap] "
+              "[--normal opengl|directx]");
     f.text("in", &in, "the height map (or give it as the first argument)");
     f.number("strength", &strength, 0, 1e6,
              "s: the height, in pixels, of a height difference of 1 (the full range)");
     f.toggle("wrap", &wrap, "differences across the borders: a tileable map stays tileable");
+    f.choice("normal", &convention, "opengl|directx",
+             "normal map convention (directx: green flipped, 255 - g)");
     f.text("o", &out, "output PNG (8-bit RGB)");
     // The height map may come first, as a plain argument.
     if (argc > 0 && argv[0][0] != '-') {
@@ -88,11 +93,14 @@ int run_normals(int argc, char** argv) {
     std::vector<std::uint8_t> bytes(3 * normals.size());
     encode_normal_rgb8(normals.data(), normals.size(), bytes.data());
     for (std::size_t i = 0; i < normals.size(); ++i)
-        rgb.data()[i] = Rgb8{bytes[3 * i], bytes[3 * i + 1], bytes[3 * i + 2]};
+        rgb.data()[i] = Rgb8{bytes[3 * i],
+                             convention == 1 ? std::uint8_t(255 - bytes[3 * i + 1]) : bytes[3 * i + 1],
+                             bytes[3 * i + 2]};
     if (!(s = write_png(out.c_str(), rgb.view()))) return f.fail_status(s);
     if (!f.quiet())
-        std::fprintf(stderr, "shitsukan normals: %s (%d x %d) -> %s, strength %g%s\n", in.c_str(),
-                     w, rows, out.c_str(), double(strength), wrap ? ", wrapped" : "");
+        std::fprintf(stderr, "shitsukan normals: %s (%d x %d) -> %s, strength %g%s%s\n", in.c_str(),
+                     w, rows, out.c_str(), double(strength), wrap ? ", wrapped" : "",
+                     convention == 1 ? ", DirectX" : "");
     return 0;
 }
 

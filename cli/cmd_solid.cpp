@@ -216,21 +216,7 @@ void report(const FlagSet& f, const std::vector<std::string>& written, const cha
     std::fprintf(stderr, "shitsukan %s: wrote %s (%s)\n", f.command(), list.c_str(), what);
 }
 
-// Heights from a gray bake; texels beyond the gutter (the background) get the mean height,
-// so the normal map has no cliff at the gutter's edge (chosen: flat, neither high nor low).
-std::vector<float> baked_heights(const RgbImage& gray, Rgb8 background) {
-    std::vector<float> height(std::size_t(gray.width()) * std::size_t(gray.height()));
-    double sum = 0.0;
-    std::size_t covered = 0;
-    for (std::size_t i = 0; i < height.size(); ++i)
-        if (gray.data()[i] != background) sum += gray.data()[i].r / 255.0, ++covered;
-    const float mean = covered ? float(sum / double(covered)) : 0.0f;
-    for (std::size_t i = 0; i < height.size(); ++i)
-        height[i] = gray.data()[i] == background ? mean : float(gray.data()[i].r) / 255.0f;
-    return height;
-}
-
-// The albedo and the density G' (a gray material: I_min 0, I_max 255) baked onto the uv map.
+// The albedo and the density G' (as floats) baked onto the uv map in one pass.
 int run_bake(FlagSet& f, SolidRun& r, const LatticeView& lattice) {
     TriangleMesh mesh;
     Status s = read_obj(r.obj.c_str(), mesh);
@@ -243,16 +229,12 @@ int run_bake(FlagSet& f, SolidRun& r, const LatticeView& lattice) {
         return f.fail("--obj %s has no uv (vt) to bake onto; add --view picture.png to "
                       "render the mesh with the solid texture instead", r.obj.c_str());
     if (!mesh.uvs.empty()) {
-        RgbImage texture, gray;
-        SolidMaterial density = r.material;
-        density.i_min = Vec3{0, 0, 0}, density.i_max = Vec3{255, 255, 255};
+        RgbImage texture;
+        FloatImage height;  // G' as floats, so the height maps have no 8-bit steps
         s = bake_solid_texture(mesh.view(), lattice, r.material, mapping, r.size, r.size,
-                               texture, Rgb8{0, 0, 0}, r.gutter, f.progress("baking the albedo"));
-        const Rgb8 none{255, 0, 255};  // never a gray G'
-        if (s) s = bake_solid_texture(mesh.view(), lattice, density, mapping, r.size, r.size,
-                                      gray, none, r.gutter, f.progress("baking G'"));
+                               texture, &height, Rgb8{0, 0, 0}, r.gutter,
+                               f.progress("baking"));
         if (!s) return f.fail_status(s);
-        std::vector<float> height = baked_heights(gray, none);
         const MapSetInput input{texture.data(), height.data(), r.size, r.size};
         const MapSetOptions options = map_set_options(r.maps, false);
         if (int e = write_maps(f, r.maps, input, options, &written)) return e;

@@ -3,6 +3,7 @@
 // colour at its lattice point, progress is reported, bad input is refused.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -131,4 +132,55 @@ TEST_CASE("bake_solid_texture: a 16 px gutter leaves no empty texel near a uv sp
                  << ", with 16 px: " << empty_near);
     CHECK(empty_near == 0);
     CHECK(empty_old > 0);  // the pole cells the old default left empty
+}
+
+TEST_CASE("bake_solid_texture: the densities G' as floats, the colours unchanged, no 8-bit steps") {
+    TriangleMesh mesh;
+    REQUIRE(make_uv_sphere(1.0f, 24, 12, mesh));
+    REQUIRE(fit_mesh_to_cube(mesh, 0.92f));
+    FractalLattice lattice;
+    REQUIRE(lattice.build(okada1987_lattice_params()));
+    const int size = 128;
+    const Rgb8 magenta{255, 0, 255};
+    const ObjectToLattice mapping = object_to_lattice_mapping(6);
+    const SolidMaterial marble = okada1987_marble();
+    RgbImage plain, with, bare;
+    FloatImage density, bare_density;
+    REQUIRE(bake_solid_texture(mesh.view(), lattice.view(), marble, mapping, size, size, plain,
+                               magenta, 8));
+    REQUIRE(bake_solid_texture(mesh.view(), lattice.view(), marble, mapping, size, size, with,
+                               &density, magenta, 8));
+    REQUIRE(bake_solid_texture(mesh.view(), lattice.view(), marble, mapping, size, size, bare,
+                               &bare_density, magenta, 0));
+    REQUIRE(density.width() == size);
+    REQUIRE(density.height() == size);
+    std::vector<float> levels;
+    int covered = 0, colour_mismatch = 0, outside = 0, differs = 0;
+    double sum = 0.0;
+    for (int i = 0; i < size * size; ++i) {
+        differs += !(plain.data()[i] == with.data()[i]);
+        const float g = density.data()[i];
+        outside += !(g >= 0.0f && g <= 1.0f);
+        if (bare.data()[i] == magenta) continue;  // not under a triangle
+        ++covered;
+        sum += double(bare_density.data()[i]);
+        // eq. (12) of the float density gives the texel's colour
+        colour_mismatch += !(bytes(solid_density_color(marble, bare_density.data()[i])) ==
+                             bare.data()[i]);
+        levels.push_back(bare_density.data()[i]);
+    }
+    std::sort(levels.begin(), levels.end());
+    const long distinct = long(std::unique(levels.begin(), levels.end()) - levels.begin());
+    // beyond the rings: the covered texels' mean
+    int mean_fill = 0, beyond = 0;
+    const float mean = float(sum / double(covered));
+    for (int i = 0; i < size * size; ++i)
+        if (bare.data()[i] == magenta) ++beyond, mean_fill += bare_density.data()[i] == mean;
+    MESSAGE(covered << " covered texels, " << distinct << " distinct densities (8-bit: <= 256)");
+    CHECK(differs == 0);
+    CHECK(outside == 0);
+    CHECK(colour_mismatch == 0);
+    CHECK(distinct > 1000);
+    CHECK(beyond > 0);
+    CHECK(mean_fill == beyond);
 }

@@ -279,6 +279,15 @@ a = oiio.ImageInput.open('gl_normal.png').read_image(oiio.UINT8).astype(int)
 b = oiio.ImageInput.open('dx_normal.png').read_image(oiio.UINT8).astype(int)
 sys.exit(0 if (a[:, :, 0] == b[:, :, 0]).all() and (a[:, :, 2] == b[:, :, 2]).all()
          and (a[:, :, 1] + b[:, :, 1] == 255).all() else 1)"; then ok; else bad "DirectX normal map: not OpenGL's with green flipped"; fi
+# the same for `shitsukan normals --normal directx` from any height map
+good normals own_height16.png --normal directx -o own_ndx.png --strength 20 -- own_ndx.png
+refused "--normal must be one of opengl|directx" normals own_height16.png --normal vulkan
+if /usr/bin/python3 -c "
+import sys, numpy as np, OpenImageIO as oiio
+a = oiio.ImageInput.open('own_n.png').read_image(oiio.UINT8).astype(int)
+b = oiio.ImageInput.open('own_ndx.png').read_image(oiio.UINT8).astype(int)
+sys.exit(0 if (a[:, :, 0] == b[:, :, 0]).all() and (a[:, :, 2] == b[:, :, 2]).all()
+         and (a[:, :, 1] + b[:, :, 1] == 255).all() else 1)"; then ok; else bad "normals --normal directx: not OpenGL's with green flipped"; fi
 # the EXR and PFM of one run hold the same floats: read back through OpenImageIO, bit for bit
 for set in mt croc; do
     [ -e ${set}_height.exr ] || "$BIN" leather --size 96 --section concave --float both -o croc --quiet 2> /dev/null

@@ -33,12 +33,64 @@ Status check_common(const LatticeView& lattice, const SolidMaterial& material, i
 // 2D edge function: > 0 when p is left of a -> b.
 float edge(Vec2 a, Vec2 b, Vec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); }
 
+// Dilation: each ring gives an uncovered texel the mean of its covered 4-neighbours (colour,
+// and density when baked); `covered` ends as the texels any ring reached.
+void dilate_rings(RgbImage& out, FloatImage* density, std::vector<std::uint8_t>& covered,
+                  int rings) {
+    const int width = out.width(), height = out.height();
+    std::vector<std::uint8_t> next;
+    for (int ring = 0; ring < rings; ++ring) {
+        next = covered;
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                if (covered[std::size_t(y) * width + x]) continue;
+                int r = 0, g = 0, b = 0, n = 0;
+                float d = 0.0f;
+                const int dx[4] = {-1, 1, 0, 0}, dy[4] = {0, 0, -1, 1};
+                for (int k = 0; k < 4; ++k) {
+                    const int nx = x + dx[k], ny = y + dy[k];
+                    if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+                    if (covered[std::size_t(ny) * width + nx] != 1) continue;
+                    const Rgb8 c = out.at(nx, ny);
+                    r += c.r, g += c.g, b += c.b, ++n;
+                    if (density) d += density->at(nx, ny);
+                }
+                if (n == 0) continue;
+                out.at(x, y) = Rgb8{std::uint8_t(r / n), std::uint8_t(g / n), std::uint8_t(b / n)};
+                if (density) density->at(x, y) = d / float(n);
+                next[std::size_t(y) * width + x] = 2;  // filled this ring: a source next ring
+            }
+        for (std::uint8_t& c : next) c = c ? 1 : 0;
+        covered.swap(next);
+    }
+}
+
+// Texels beyond the gutter get the covered texels' mean density (chosen here: flat, neither
+// high nor low, so a height map made from it has no cliff at the gutter's edge).
+void fill_uncovered_density(FloatImage& density, const std::vector<std::uint8_t>& covered) {
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < covered.size(); ++i)
+        if (covered[i]) sum += double(density.data()[i]), ++n;
+    const float mean = n ? float(sum / double(n)) : 0.0f;
+    for (std::size_t i = 0; i < covered.size(); ++i)
+        if (!covered[i]) density.data()[i] = mean;
+}
+
 }  // namespace
 
 Status bake_solid_texture(const MeshView& mesh, const LatticeView& lattice,
                           const SolidMaterial& material, const ObjectToLattice& mapping, int width,
                           int height, RgbImage& out, Rgb8 background, int dilate,
                           Progress progress) {
+    return bake_solid_texture(mesh, lattice, material, mapping, width, height, out, nullptr,
+                              background, dilate, progress);
+}
+
+Status bake_solid_texture(const MeshView& mesh, const LatticeView& lattice,
+                          const SolidMaterial& material, const ObjectToLattice& mapping, int width,
+                          int height, RgbImage& out, FloatImage* density, Rgb8 background,
+                          int dilate, Progress progress) {
     SHITSUKAN_TRY(check_common(lattice, material, width, height, "bake_solid_texture"));
     if (mesh.uvs == nullptr)
         return Status::error(StatusCode::invalid_argument,
@@ -54,6 +106,7 @@ Status bake_solid_texture(const MeshView& mesh, const LatticeView& lattice,
                                  "bake_solid_texture: index %u out of range (%d vertices)",
                                  mesh.indices[k], mesh.vertex_count);
     out.resize(width, height, background);
+    if (density) density->resize(width, height);
     std::vector<std::uint8_t> covered(std::size_t(width) * std::size_t(height), 0);
     const int report_every = std::max(1, mesh.triangle_count / 100);
     for (int t = 0; t < mesh.triangle_count; ++t) {
@@ -82,35 +135,15 @@ Status bake_solid_texture(const MeshView& mesh, const LatticeView& lattice,
                             w2 = edge(q[0], q[1], c) / area;
                 if (w0 < 0.0f || w1 < 0.0f || w2 < 0.0f) continue;
                 const Vec3 object = p[0] * w0 + p[1] * w1 + p[2] * w2;
-                const Vec3 colour = solid_color(material, lattice, object_to_lattice(object, mapping));
-                out.at(x, y) = to_rgb8(colour);
+                const float g = solid_density(material, lattice, object_to_lattice(object, mapping));
+                out.at(x, y) = to_rgb8(solid_density_color(material, g));
+                if (density) density->at(x, y) = g;
                 covered[std::size_t(y) * std::size_t(width) + std::size_t(x)] = 1;
             }
         if (t % report_every == 0) progress.report(float(t) / float(mesh.triangle_count));
     }
-    // Dilation: each ring gives an uncovered texel the mean of its covered 4-neighbours.
-    std::vector<std::uint8_t> next;
-    for (int ring = 0; ring < dilate; ++ring) {
-        next = covered;
-        for (int y = 0; y < height; ++y)
-            for (int x = 0; x < width; ++x) {
-                if (covered[std::size_t(y) * width + x]) continue;
-                int r = 0, g = 0, b = 0, n = 0;
-                const int dx[4] = {-1, 1, 0, 0}, dy[4] = {0, 0, -1, 1};
-                for (int k = 0; k < 4; ++k) {
-                    const int nx = x + dx[k], ny = y + dy[k];
-                    if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
-                    if (covered[std::size_t(ny) * width + nx] != 1) continue;
-                    const Rgb8 c = out.at(nx, ny);
-                    r += c.r, g += c.g, b += c.b, ++n;
-                }
-                if (n == 0) continue;
-                out.at(x, y) = Rgb8{std::uint8_t(r / n), std::uint8_t(g / n), std::uint8_t(b / n)};
-                next[std::size_t(y) * width + x] = 2;  // filled this ring: a source next ring
-            }
-        for (std::uint8_t& c : next) c = c ? 1 : 0;
-        covered.swap(next);
-    }
+    dilate_rings(out, density, covered, dilate);
+    if (density) fill_uncovered_density(*density, covered);
     progress.report(1.0f);
     return Status::success();
 }

@@ -11,6 +11,9 @@
 //   RgbImage texture;
 //   if (s) s = bake_solid_texture(mesh.view(), lattice.view(), okada1987_marble(),
 //                                 object_to_lattice_mapping(6), 128, 128, texture);
+//   FloatImage heights;                       // G' as floats: a height map with no 8-bit steps
+//   if (s) s = bake_solid_texture(mesh.view(), lattice.view(), okada1987_marble(),
+//                                 object_to_lattice_mapping(6), 128, 128, texture, &heights);
 //   return s;
 //   #include "shitsukan/geom/mesh_builders.hpp"
 //   #include "shitsukan/geom/mesh_fit.hpp"
@@ -57,6 +60,14 @@ Status bake_solid_texture(const MeshView& mesh, const LatticeView& lattice,
                           const SolidMaterial& material, const ObjectToLattice& mapping, int width,
                           int height, RgbImage& out, Rgb8 background = Rgb8{0, 0, 0},
                           int dilate = 4, Progress progress = Progress{});
+// The same, with the densities G' (eq. (12), in [0, 1]) as floats too when `density` is not
+// null: a height map with no 8-bit steps. Dilated like the colours; texels beyond the rings
+// get the covered texels' mean G' (chosen here: flat, so no cliff at the gutter's edge).
+Status bake_solid_texture(const MeshView& mesh, const LatticeView& lattice,
+                          const SolidMaterial& material, const ObjectToLattice& mapping, int width,
+                          int height, RgbImage& out, FloatImage* density,
+                          Rgb8 background = Rgb8{0, 0, 0}, int dilate = 4,
+                          Progress progress = Progress{});
 
 // Colours of the slice into out (resized); densities G' too when `density` is not null.
 Status render_solid_slice(const LatticeView& lattice, const SolidMaterial& material,
