@@ -121,7 +121,9 @@ failed $? mp "mp/m_ao.png" "Is a directory" && absent mp/m_albedo.png mp/m_heigh
 interrupted() {
     local sig="$1" status="$2" dir="$3" pattern="$4"; shift 4
     set -m  # a job of its own: a non-interactive shell starts background jobs ignoring SIGINT
-    "$BIN" "$@" --quiet 2> err.txt &
+    # the signals at their default even if this shell was started ignoring them (a background
+    # job of a non-interactive shell ignores SIGINT, and set -m cannot undo that)
+    env --default-signal=INT,TERM "$BIN" "$@" --quiet 2> err.txt &
     local pid=$! seen=0
     set +m
     for _ in $(seq 1 3000); do
