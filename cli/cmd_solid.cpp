@@ -232,7 +232,7 @@ int run_bake(FlagSet& f, SolidRun& r, const LatticeView& lattice) {
         RgbImage texture;
         FloatImage height;  // G' as floats, so the height maps have no 8-bit steps
         s = bake_solid_texture(mesh.view(), lattice, r.material, mapping, r.size, r.size,
-                               texture, &height, Rgb8{0, 0, 0}, r.gutter,
+                               texture, height, Rgb8{0, 0, 0}, r.gutter,
                                f.progress("baking"));
         if (!s) return f.fail_status(s);
         const MapSetInput input{texture.data(), height.data(), r.size, r.size};

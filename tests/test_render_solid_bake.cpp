@@ -149,9 +149,9 @@ TEST_CASE("bake_solid_texture: the densities G' as floats, the colours unchanged
     REQUIRE(bake_solid_texture(mesh.view(), lattice.view(), marble, mapping, size, size, plain,
                                magenta, 8));
     REQUIRE(bake_solid_texture(mesh.view(), lattice.view(), marble, mapping, size, size, with,
-                               &density, magenta, 8));
+                               density, magenta, 8));
     REQUIRE(bake_solid_texture(mesh.view(), lattice.view(), marble, mapping, size, size, bare,
-                               &bare_density, magenta, 0));
+                               bare_density, magenta, 0));
     REQUIRE(density.width() == size);
     REQUIRE(density.height() == size);
     std::vector<float> levels;

@@ -77,20 +77,10 @@ void fill_uncovered_density(FloatImage& density, const std::vector<std::uint8_t>
         if (!covered[i]) density.data()[i] = mean;
 }
 
-}  // namespace
-
-Status bake_solid_texture(const MeshView& mesh, const LatticeView& lattice,
-                          const SolidMaterial& material, const ObjectToLattice& mapping, int width,
-                          int height, RgbImage& out, Rgb8 background, int dilate,
-                          Progress progress) {
-    return bake_solid_texture(mesh, lattice, material, mapping, width, height, out, nullptr,
-                              background, dilate, progress);
-}
-
-Status bake_solid_texture(const MeshView& mesh, const LatticeView& lattice,
-                          const SolidMaterial& material, const ObjectToLattice& mapping, int width,
-                          int height, RgbImage& out, FloatImage* density, Rgb8 background,
-                          int dilate, Progress progress) {
+// Both public overloads: the densities only when `density` is not null.
+Status bake(const MeshView& mesh, const LatticeView& lattice, const SolidMaterial& material,
+            const ObjectToLattice& mapping, int width, int height, RgbImage& out,
+            FloatImage* density, Rgb8 background, int dilate, Progress progress) {
     SHITSUKAN_TRY(check_common(lattice, material, width, height, "bake_solid_texture"));
     if (mesh.uvs == nullptr)
         return Status::error(StatusCode::invalid_argument,
@@ -146,6 +136,24 @@ Status bake_solid_texture(const MeshView& mesh, const LatticeView& lattice,
     if (density) fill_uncovered_density(*density, covered);
     progress.report(1.0f);
     return Status::success();
+}
+
+}  // namespace
+
+Status bake_solid_texture(const MeshView& mesh, const LatticeView& lattice,
+                          const SolidMaterial& material, const ObjectToLattice& mapping, int width,
+                          int height, RgbImage& out, Rgb8 background, int dilate,
+                          Progress progress) {
+    return bake(mesh, lattice, material, mapping, width, height, out, nullptr, background, dilate,
+                progress);
+}
+
+Status bake_solid_texture(const MeshView& mesh, const LatticeView& lattice,
+                          const SolidMaterial& material, const ObjectToLattice& mapping, int width,
+                          int height, RgbImage& out, FloatImage& density, Rgb8 background,
+                          int dilate, Progress progress) {
+    return bake(mesh, lattice, material, mapping, width, height, out, &density, background,
+                dilate, progress);
 }
 
 Status render_solid_slice(const LatticeView& lattice, const SolidMaterial& material,

@@ -60,12 +60,12 @@ Status bake_solid_texture(const MeshView& mesh, const LatticeView& lattice,
                           const SolidMaterial& material, const ObjectToLattice& mapping, int width,
                           int height, RgbImage& out, Rgb8 background = Rgb8{0, 0, 0},
                           int dilate = 4, Progress progress = Progress{});
-// The same, with the densities G' (eq. (12), in [0, 1]) as floats too when `density` is not
-// null: a height map with no 8-bit steps. Dilated like the colours; texels beyond the rings
+// The same, with the densities G' (eq. (12), in [0, 1]) as floats in `density` (resized): a
+// height map with no 8-bit steps. Dilated like the colours; texels beyond the rings
 // get the covered texels' mean G' (chosen here: flat, so no cliff at the gutter's edge).
 Status bake_solid_texture(const MeshView& mesh, const LatticeView& lattice,
                           const SolidMaterial& material, const ObjectToLattice& mapping, int width,
-                          int height, RgbImage& out, FloatImage* density,
+                          int height, RgbImage& out, FloatImage& density,
                           Rgb8 background = Rgb8{0, 0, 0}, int dilate = 4,
                           Progress progress = Progress{});
 
