@@ -251,3 +251,49 @@ TEST_CASE("read_image: a header claiming more samples than the file can hold is 
     CHECK_FALSE(read_image(path.c_str(), img).ok());
     std::remove(path.c_str());
 }
+
+// fuzz_readers found a 60-byte PNG whose IDAT chunk claimed 2^30 bytes: stb_image grew its
+// buffer to the stated length before reading, and the harness ran out of memory. The chunks are
+// now walked first: each inside the file, none over 2^31 - 1 bytes, and IEND present.
+TEST_CASE("read_image: PNG chunks past the file's end, too long or without IEND are refused") {
+    if (!image_reading_available()) return;
+    GrayImage g(8, 8, 7);
+    const std::string path = temp_path("chunks.png");
+    REQUIRE(write_png(path.c_str(), g.view()).ok());
+    std::vector<unsigned char> png(std::size_t(file_size(path)));
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    REQUIRE(f != nullptr);
+    REQUIRE(std::fread(png.data(), 1, png.size(), f) == png.size());
+    std::fclose(f);
+    std::size_t idat = 0;
+    for (std::size_t i = 8; i + 4 <= png.size(); ++i)
+        if (std::memcmp(&png[i], "IDAT", 4) == 0) idat = i - 4;
+    REQUIRE(idat > 8);
+    LoadedImage img;
+    REQUIRE(read_image(path.c_str(), img).ok());
+    CHECK(img.width == 8);
+    struct Case {
+        std::uint32_t idat_length;
+        std::size_t keep;  // bytes of the file kept
+        const char* said;
+    };
+    const Case cases[] = {{0x40000000u, png.size(), "past the file's end"},
+                          {0x80000000u, png.size(), "at most 2^31 - 1"},
+                          {0, png.size() - 12, "without its IEND"}};
+    for (const Case& c : cases) {
+        CAPTURE(c.said);
+        std::vector<unsigned char> bad(png.begin(), png.begin() + long(c.keep));
+        if (c.idat_length != 0)
+            for (int b = 0; b < 4; ++b)
+                bad[idat + std::size_t(b)] = (unsigned char)(c.idat_length >> (24 - 8 * b));
+        write_bytes(path, bad.data(), bad.size());
+        const Status s = read_image(path.c_str(), img);
+        CHECK(s.code() == StatusCode::invalid_argument);
+        CHECK(std::string(s.message()).find(c.said) != std::string::npos);
+        CHECK(std::string(s.message()).find(path) != std::string::npos);
+    }
+    std::remove(path.c_str());
+    const Status missing = read_image(path.c_str(), img);
+    CHECK(missing.code() == StatusCode::io_error);
+    CHECK(std::string(missing.message()).find("No such file") != std::string::npos);
+}

@@ -445,3 +445,36 @@ TEST_CASE("leather maps: heights past kMaxReliefHeight are refused, steep normal
         for (float h : maps.heights) REQUIRE(std::isfinite(h));
     }
 }
+
+// fuzz_maps: a section drawn 1e-20 small (its r and z, and edge_r with it) gave normals whose
+// squared length is lost below float's range: (dz, dr) near 1e-20 normalised to length 0.7 or
+// to NaN. They are unit now, and still tilted where the scale slopes. (Not compared with the
+// section at scale 1: invert_r's tolerance is absolute, so at 1e-20 it stops at the chord
+// guess and the tilts differ.)
+TEST_CASE("leather maps: a section drawn 1e-20 small still has unit normals, tilted on slopes") {
+    ScaleParams prm;
+    prm.D = prm.d = 0.25f;
+    ScalePattern pattern;
+    REQUIRE(generate_scale_pattern(prm, pattern).ok());
+    BezierChain tiny = table1_section(Table1Section::convex);
+    for (int i = 0; i < tiny.count; ++i)
+        for (Vec2& p : tiny.segments[i].p) p = p * 1e-20f;
+    for (ReliefNormal rule : {ReliefNormal::eq4, ReliefNormal::height_gradient}) {
+        CAPTURE(int(rule));
+        ReliefOptions o;
+        o.normal_rule = rule;
+        o.edge_r *= 1e-20f;
+        LeatherMaps maps;
+        REQUIRE(make_leather_maps(pattern, 32, 32, tiny, o, maps).ok());
+        int sloped = 0;
+        for (const Vec3& n : maps.normals) {
+            REQUIRE(std::isfinite(n.x));
+            REQUIRE(std::isfinite(n.y));
+            REQUIRE(std::isfinite(n.z));
+            CHECK(std::fabs(length(n) - 1.0f) < 1e-5f);
+            CHECK(n.z >= 0.0f);
+            sloped += n.z < 0.999f;
+        }
+        CHECK(sloped > 100);  // the slopes are there, not only the flat floor
+    }
+}

@@ -1,4 +1,4 @@
-// shitsukan/core/input_file.hpp — a text file read whole, within a stated bound.
+// shitsukan/core/input_file.hpp — a text or binary file read whole, within a stated bound.
 //
 // Manual
 //   std::string text;
@@ -10,16 +10,20 @@
 // them: a file longer than max_bytes (too_large, naming the bound), more than the memory
 // budget allows (core/memory_budget.hpp; its message names `what`), and a NUL byte, which no text
 // holds (/dev/zero, a binary file: invalid_argument naming the line). A read error is io_error with
-// the C library's reason. Host side.
+// the C library's reason. read_binary_file is the same for bytes (read_image's files): NUL
+// bytes allowed, the same bounds. Host side.
 #pragma once
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "shitsukan/core/status.hpp"
 
 namespace shitsukan {
 
 Status read_text_file(const char* path, std::size_t max_bytes, const char* what, std::string& out);
+Status read_binary_file(const char* path, std::size_t max_bytes, const char* what,
+                        std::vector<unsigned char>& out);
 
 }  // namespace shitsukan

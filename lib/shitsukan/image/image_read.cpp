@@ -4,7 +4,10 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
+#include <vector>
 
+#include "shitsukan/core/input_file.hpp"
 #include "shitsukan/core/memory_budget.hpp"
 
 #if !defined(SHITSUKAN_NO_STB) && defined(__has_include)
@@ -35,43 +38,70 @@ namespace shitsukan {
 
 #ifdef SHITSUKAN_USE_STB_IMAGE
 namespace {
-// The file's size in bytes, -1 when it cannot be measured (a pipe).
-long long file_size(const char* path) {
-    std::FILE* f = std::fopen(path, "rb");
-    if (!f) return -1;
-    long n = -1;
-    if (std::fseek(f, 0, SEEK_END) == 0) n = std::ftell(f);
-    std::fclose(f);
-    return n;
-}
+using Bytes = std::vector<unsigned char>;
 
 // stb_image's PNM header reader (P5, P6) accumulates each number in an int without a bound,
 // undefined behaviour past INT_MAX (fuzz_readers: "P5 42 421111...1"). The header is read here
 // first, the way stb_image reads it (blanks and '#' comments between the numbers), and a
 // number past INT_MAX is refused before stb_image sees it.
-bool pnm_header_fits_int(const char* path) {
-    std::FILE* f = std::fopen(path, "rb");
-    if (!f) return true;  // stb_image reports the missing file
-    const int p = std::fgetc(f), t = std::fgetc(f);
-    bool fits = true;
-    if (p == 'P' && (t == '5' || t == '6')) {
-        int c = std::fgetc(f);
-        for (int number = 0; number < 3 && fits; ++number) {
-            for (;;) {  // blanks, then a comment to the end of its line, again
-                while (c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r')
-                    c = std::fgetc(f);
-                if (c != '#') break;
-                while (c != EOF && c != '\n' && c != '\r') c = std::fgetc(f);
-            }
-            long long value = 0;
-            for (; c >= '0' && c <= '9' && fits; c = std::fgetc(f)) {
-                value = value * 10 + (c - '0');
-                fits = value <= 2147483647LL;
-            }
+bool pnm_header_fits_int(const Bytes& file) {
+    std::size_t at = 2;
+    auto next = [&]() { return at < file.size() ? int(file[at++]) : EOF; };
+    if (file.size() < 2 || file[0] != 'P' || (file[1] != '5' && file[1] != '6')) return true;
+    int c = next();
+    for (int number = 0; number < 3; ++number) {
+        for (;;) {  // blanks, then a comment to the end of its line, again
+            while (c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r')
+                c = next();
+            if (c != '#') break;
+            while (c != EOF && c != '\n' && c != '\r') c = next();
+        }
+        long long value = 0;
+        for (; c >= '0' && c <= '9'; c = next()) {
+            value = value * 10 + (c - '0');
+            if (value > 2147483647LL) return false;
         }
     }
-    std::fclose(f);
-    return fits;
+    return true;
+}
+
+std::uint32_t big_endian_u32(const unsigned char* p) {
+    return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 |
+           std::uint32_t(p[3]);
+}
+
+// A PNG's chunks walked before stb_image decodes it: stb_image grows its compressed-data buffer
+// to each IDAT chunk's stated length before reading it, so a 60-byte file whose IDAT claims
+// 2^30 bytes allocated 1 GiB (fuzz_readers, an out-of-memory). Every chunk must lie inside the
+// file, its length at most 2^31 - 1 (the PNG specification's bound), and IEND must come.
+// Not a PNG: success, for stb_image to judge.
+Status png_chunks_inside(const char* path, const Bytes& file) {
+    static const unsigned char signature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
+    if (file.size() < 8 || std::memcmp(file.data(), signature, 8) != 0) return Status::success();
+    std::size_t at = 8;
+    while (at + 8 <= file.size()) {
+        const std::uint32_t length = big_endian_u32(&file[at]);
+        char type[5] = {0, 0, 0, 0, 0};
+        for (int i = 0; i < 4; ++i) {
+            const unsigned char t = file[at + 4 + std::size_t(i)];
+            type[i] = (t >= 'A' && t <= 'Z') || (t >= 'a' && t <= 'z') ? char(t) : '?';
+        }
+        if (length > 0x7fffffffu)
+            return Status::error(StatusCode::invalid_argument,
+                                 "%s: PNG chunk %s at byte %zu claims %u bytes (at most "
+                                 "2^31 - 1)",
+                                 path, type, at, length);
+        if (std::uint64_t(at) + 12 + length > file.size())
+            return Status::error(StatusCode::invalid_argument,
+                                 "%s: PNG chunk %s at byte %zu claims %u bytes, past the file's "
+                                 "end (%zu bytes): a truncated file",
+                                 path, type, at, length, file.size());
+        if (std::memcmp(type, "IEND", 4) == 0) return Status::success();
+        at += 12 + std::size_t(length);
+    }
+    return Status::error(StatusCode::invalid_argument,
+                         "%s: PNG ends after %zu bytes without its IEND chunk: a truncated file",
+                         path, file.size());
 }
 }  // namespace
 #endif
@@ -88,34 +118,44 @@ Status read_image(const char* path, LoadedImage& out) {
     if (path == nullptr || !path[0])
         return Status::error(StatusCode::invalid_argument, "read_image: empty path");
 #ifdef SHITSUKAN_USE_STB_IMAGE
-    int w = 0, h = 0, c = 0;
-    LoadedImage img;
-    if (!pnm_header_fits_int(path))
+    // The file is held whole (within the memory budget) and checked before stb_image decodes
+    // it from memory: its headers against its size, a PNG's chunks against its end.
+    Bytes file;
+    SHITSUKAN_TRY(read_binary_file(path, std::size_t(-1), "read_image: the file", file));
+    if (file.size() > std::size_t(2147483647))
+        return Status::error(StatusCode::too_large, "%s: %zu bytes, more than stb_image reads",
+                             path, file.size());
+    const stbi_uc* bytes = file.data();
+    const int size = int(file.size());
+    if (!pnm_header_fits_int(file))
         return Status::error(StatusCode::invalid_argument,
                              "%s: a PNM header number past %d", path, 2147483647);
+    SHITSUKAN_TRY(png_chunks_inside(path, file));
+    int w = 0, h = 0, c = 0;
+    LoadedImage img;
+    const bool wide = stbi_is_16_bit_from_memory(bytes, size) != 0;
     // The decoded buffer (stb's) and our copy must fit the memory budget before decoding:
     // a 100-byte PNG can announce 65535 x 65535 pixels.
-    if (stbi_info(path, &w, &h, &c)) {
+    if (stbi_info_from_memory(bytes, size, &w, &h, &c)) {
         const std::uint64_t samples =
             budget_mul(budget_mul(std::uint64_t(w), std::uint64_t(h)), std::uint64_t(c));
-        const bool wide = stbi_is_16_bit(path) != 0;
         const std::uint64_t per = wide ? 2 + 2 : 1 + 2;
         // The header's size against the file's: no supported format packs more than
         // kImageMaxExpansion decoded bytes into one byte of file, so a 100-byte file claiming
         // 30000 x 30000 pixels is refused before stb_image allocates for it.
-        const long long size = file_size(path);
         const std::uint64_t decoded = budget_mul(samples, wide ? 2 : 1);
-        if (size >= 0 && decoded > budget_mul(std::uint64_t(size) + 64, kImageMaxExpansion))
+        if (decoded > budget_mul(std::uint64_t(size) + 64, kImageMaxExpansion))
             return Status::error(StatusCode::invalid_argument,
                                  "%s: the header claims %d x %d x %d samples (%llu bytes), more "
-                                 "than its %lld bytes can hold (at most %llu decoded bytes a "
+                                 "than its %d bytes can hold (at most %llu decoded bytes a "
                                  "byte)",
                                  path, w, h, c, (unsigned long long)decoded, size,
                                  (unsigned long long)kImageMaxExpansion);
-        SHITSUKAN_TRY(check_memory_budget(budget_mul(samples, per), "read_image: the image"));
+        SHITSUKAN_TRY(check_memory_budget(budget_mul(samples, per) + file.size(),
+                                          "read_image: the image"));
     }
-    if (stbi_is_16_bit(path)) {
-        stbi_us* p = stbi_load_16(path, &w, &h, &c, 0);
+    if (wide) {
+        stbi_us* p = stbi_load_16_from_memory(bytes, size, &w, &h, &c, 0);
         if (!p)
             return Status::error(StatusCode::io_error, "cannot read %s: %s", path,
                                  stbi_failure_reason());
@@ -123,7 +163,7 @@ Status read_image(const char* path, LoadedImage& out) {
         stbi_image_free(p);
         img.bits = 16;
     } else {
-        stbi_uc* p = stbi_load(path, &w, &h, &c, 0);
+        stbi_uc* p = stbi_load_from_memory(bytes, size, &w, &h, &c, 0);
         if (!p)
             return Status::error(StatusCode::io_error, "cannot read %s: %s", path,
                                  stbi_failure_reason());

@@ -15,10 +15,12 @@
 //   #include "shitsukan/image/image_io.hpp"
 //
 // 16-bit PNGs keep their 16 bits (bits = 16); every other file is read as 8-bit.
-// Errors: a missing or undecodable file -> io_error with stb_image's reason; a header that
-// claims more samples than kImageMaxExpansion times the file's size -> invalid_argument,
-// and more than the memory budget -> too_large, both before decoding; a build without the
-// stb_image header -> not_supported. Host side.
+// The file is read whole within the memory budget and checked before stb_image decodes it.
+// Errors: a missing file -> io_error with the C library's reason; an undecodable one -> io_error
+// with stb_image's reason; a header that claims more samples than kImageMaxExpansion times the
+// file's size, or a PNG chunk past the file's end, over 2^31 - 1 bytes or no IEND (a truncated
+// file) -> invalid_argument, and more than the memory budget -> too_large, all before
+// decoding; a build without the stb_image header -> not_supported. Host side.
 #pragma once
 
 #include <cstdint>

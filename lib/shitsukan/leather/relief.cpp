@@ -195,19 +195,26 @@ float scale_size(const Vec2* polygon, int n) {
 }
 
 // normalize(n), also for a slope so steep that the squared length overflows a float (a
-// component past 1.8e19, or infinite: a tiny edge distance or a huge height_scale). Such an
-// n is first scaled by its largest component, an infinite one standing for the limit of the
-// normal as the slope grows: the horizontal direction of the infinite components.
+// component past 1.8e19, or infinite: a tiny edge distance or a huge height_scale), and for an
+// n so short that its squared length is lost below float's range (fuzz_maps: a section whose
+// dr and dz are both near 1e-20 gave a normal of length 0.7). Such an n is first scaled by its
+// largest component, in double so the scale itself neither overflows nor rounds away; an
+// infinite component stands for the limit of the normal as the slope grows (the horizontal
+// direction of the infinite components); n = 0 has no direction and is taken as straight up
+// (chosen here: the flat groove floor's normal).
 namespace {
 Vec3 steep_normalize(Vec3 n) {
-    if (is_finite(n.x * n.x + n.y * n.y + n.z * n.z)) return normalize(n);
+    const float squared = n.x * n.x + n.y * n.y + n.z * n.z;
+    if (is_finite(squared) && squared >= 1e-30f) return normalize(n);
     if (!is_finite(n.x) || !is_finite(n.y) || !is_finite(n.z)) {
         for (int c = 0; c < 3; ++c) n[c] = is_finite(n[c]) ? 0.0f : (n[c] > 0.0f ? 1.0f : -1.0f);
         return normalize(n);
     }
-    float m = std::fabs(n.x) > std::fabs(n.y) ? std::fabs(n.x) : std::fabs(n.y);
-    m = std::fabs(n.z) > m ? std::fabs(n.z) : m;
-    return normalize(n * (1.0f / m));
+    double m = std::fabs(double(n.x)) > std::fabs(double(n.y)) ? std::fabs(double(n.x))
+                                                                : std::fabs(double(n.y));
+    m = std::fabs(double(n.z)) > m ? std::fabs(double(n.z)) : m;
+    if (m == 0.0) return Vec3{0, 0, 1};
+    return normalize(Vec3{float(double(n.x) / m), float(double(n.y) / m), float(double(n.z) / m)});
 }
 }  // namespace
 
