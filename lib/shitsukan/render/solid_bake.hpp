@@ -13,7 +13,7 @@
 //                                 object_to_lattice_mapping(6), 128, 128, texture);
 //   FloatImage heights;                       // G' as floats: a height map with no 8-bit steps
 //   if (s) s = bake_solid_texture(mesh.view(), lattice.view(), okada1987_marble(),
-//                                 object_to_lattice_mapping(6), 128, 128, texture, &heights);
+//                                 object_to_lattice_mapping(6), 128, 128, texture, heights);
 //   return s;
 //   #include "shitsukan/geom/mesh_builders.hpp"
 //   #include "shitsukan/geom/mesh_fit.hpp"
