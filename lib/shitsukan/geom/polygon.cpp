@@ -231,9 +231,11 @@ void along_line(int along, const Vec2d* region, int m, const Vec2d* box, Vec2d* 
 }
 
 // Sutherland-Hodgman step 1: the exact side of every vertex (orient2d > 0: inside), with
-// vertices within `snap` of a region edge's line moved onto it and labelled. Returns true
-// when every vertex is strictly inside (nothing to cut).
-bool classify_vertices(std::vector<ClipVertex>& in, const ClipLine& line, double snap,
+// vertices within `snap` of a region edge's line moved onto it and labelled: across the line,
+// along its normal (moving along the edge left a vertex off the line, labelled as on it, and
+// the sliver between belonged to no cell); onto the region's corner when the vertex is already
+// on the neighbouring edge. Returns true when every vertex is strictly inside (nothing to cut).
+bool classify_vertices(std::vector<ClipVertex>& in, const ClipLine& line, int m, double snap,
                        double* side) {
     const Vec2d b0 = line.b0, b1 = line.b1;
     const int k = line.k;
@@ -244,12 +246,17 @@ bool classify_vertices(std::vector<ClipVertex>& in, const ClipLine& line, double
         double s = has_label(v, k) ? 0.0 : orient2d(b0, b1, v.p);
         if (k >= 0 && s != 0.0 && std::fabs(s) <= snap * edge_length) {  // |s| = dist * |b1 - b0|
             s = 0.0;
-            if (b0.x == b1.x)
+            const Vec2d e = b1 - b0;
+            if (has_label(v, (k + m - 1) % m))  // on edge k - 1 already: their shared corner
+                v.p = b0;
+            else if (has_label(v, (k + 1) % m))
+                v.p = b1;
+            else if (b0.x == b1.x)
                 v.p.x = b0.x;
             else if (b0.y == b1.y)
                 v.p.y = b0.y;
-            else
-                v.p = v.p - (b1 - b0) * (cross(b1 - b0, v.p - b0) / (edge_length * edge_length));
+            else  // minus the normal (-e.y, e.x) times the signed distance over |e|
+                v.p = v.p - Vec2d{-e.y, e.x} * (cross(e, v.p - b0) / (edge_length * edge_length));
         }
         if (s == 0.0 && k >= 0) add_label(v, k);
         side[i] = s;
@@ -327,7 +334,7 @@ void clip_step(std::vector<ClipVertex>* poly, const ClipLine& line, double snap,
         side_heap->resize(std::size_t(n));
         side = side_heap->data();
     }
-    if (classify_vertices(in, line, snap, side)) return;  // the common case inside the region
+    if (classify_vertices(in, line, m, snap, side)) return;  // the common case inside the region
     std::vector<ClipVertex>& out = *scratch;
     out.clear();
     for (int i = 0; i < n; ++i) {
