@@ -25,11 +25,18 @@
 // "to add naturalness" (§5); fig. 18 now does the same, at fig. 21's terrain deviation. The
 // teeth no longer line up: the flat-step share of (a-4) / (a-5) falls from 0.150 / 0.173 (eq.
 // (16) directly: 0.173 / 0.263) to 0.116 / 0.122, and the blocks are gone from the image.
+// Why fig. 17 was a regular quilt (measured): the unit-IST reverses the digits (eq. 7), so
+// each step k >= 2 tiles the Bezier patch with N^(k-1) x N^(k-1) small copies of the whole H,
+// and the superposed relief was a lattice of bumps at every scale (spectral-line share of
+// (a-5) 0.29 against fig. 18's 0.05), with (a-4) hardly told from the dome (departure 0.23).
+// Fig. 17 now takes §5's jitter too, at a deviation chosen to break the lattice (kJitterFig17):
+// line share 0.05 and departure 0.35 / 0.58 for (a-4) / (a-5).
 // Example: examples/31_superposed_mountains.cpp.
 #include <algorithm>
 #include <cmath>
 
 #include "driver/figure.hpp"
+#include "fujimoto2000/spectral_lines.hpp"
 #include "fujimoto2000/wr_figure_common.hpp"
 #include "shitsukan/core/hash.hpp"
 #include "shitsukan/core/scalar.hpp"
@@ -52,11 +59,20 @@ using figures::fmt;
 // height variation (measured, notes); 75 % at 0.5 (0.23) and 44 % at 0.75.
 constexpr float kDeltaSmooth = 0.5f, kDeltaRough = 0.75f;
 
-// Chosen: fig. 18's jitter on the height samples is fig. 21's terrain deviation (0.12,
-// fig21_terrain.cpp): §5 gives the sample values of its superposed IST-B-spline models Gaussian
-// randomness "to add naturalness" and prints no deviation. Fig. 17 (unit-IST Bezier) keeps
-// none: it shows no terraces (flat-step share of (a-5) 0.069 against eq. (16)'s 0.225).
-constexpr float kJitterFig18 = 0.12f;
+// Chosen: §5 gives the sample values of its superposed models Gaussian randomness "to add
+// naturalness" and prints no deviation; both figures here take it (height x (1 + s g)).
+// Fig. 18: fig. 21's terrain deviation s = 0.12 (fig21_terrain.cpp), enough to keep the
+// fully-connected IST's teeth from lining up into terraces (top of this file).
+// Fig. 17: s = 0.5. Without it the unit-IST Bezier panels (4)(5) were a regular quilt, not
+// §4.1's "mountain ranges": the unit-IST reverses the digits (eq. 7), so every step k >= 2
+// tiles the patch with N^(k-1) x N^(k-1) small copies of the whole H (a lattice whose period
+// is three small regions), each copy with H's full height variation, and the sum is a
+// lattice at every step: measured spectral-line share (measure_shape) 0.19 / 0.29 for
+// (a-4) / (a-5), 0.15 / 0.28 for (b-4) / (b-5), against fig. 18's 0.02 to 0.05. Relative
+// jitter has to compete with the copies' full height variation: s = 0.12 left 0.09 to 0.25,
+// 0.3 left 0.06 to 0.13, 0.4 left 0.02 to 0.09; 0.5 brings every panel within fig. 18's
+// range (0.01 to 0.05) and lifts (a-4)'s departure from the plain (a-2) from 0.23 to 0.35.
+constexpr float kJitterFig18 = 0.12f, kJitterFig17 = 0.5f;
 
 Vec3 height_color(float h, float hmax) {
     const Vec3 low{0.50f, 0.58f, 0.34f}, high{0.88f, 0.84f, 0.78f};
@@ -114,7 +130,7 @@ const SuperFigure kFig17{SurfaceBasis::bezier,
                          4,
                          5,
                          Shot{{2.9f, 2.6f, 2.9f}, {0.0f, 0.3f, 0.0f}, {0, 1, 0}, 36.0f},
-                         0.0f};
+                         kJitterFig17};
 const SuperFigure kFig18{SurfaceBasis::bspline,
                          IstKind::fully_connected,
                          fig18_mesh,
@@ -222,9 +238,18 @@ Status measure_reach(const SuperFigure& f, int panel, float delta, bool quick, i
 //                span (finer than the step-K small intervals, so eq. (16)'s treads show), the
 //                share of steps |dh| below a tenth of the mean |dh|; flat_share_direct: the
 //                same for eq. (16) evaluated directly (fig. 19(b)'s naive sampling).
+//   line_share:  regular quilt or irregular ranges: the share of the relief's power spectrum
+//                (wavenumbers >= 3 cycles per patch) held by isolated spectral lines, bins
+//                over 30 times the mean of the ring two bins around them (spectral_lines.hpp).
+//                A regular lattice of bumps is a few lines (fig. 17 without jitter: 0.15 to
+//                0.29), an irregular relief a spread spectrum (fig. 18: 0.02 to 0.05).
+// Chosen (measured on both figures): the line threshold 30 and the wavenumber floor 3 (a third
+// of the patch, the unit-IST's first copies). At 10 the B-spline relief's ridges along u
+// counted as lines too (0.35 to 0.55).
+constexpr double kLineMinWavenumber = 3.0, kLineFactor = 30.0;
 struct ShapeStats {
     double departure = 0, anisotropy = 0, repetition = 0, step_share = 0, step_share_direct = 0;
-    double flat_share = 0, flat_share_direct = 0;
+    double flat_share = 0, flat_share_direct = 0, line_share = 0;
 };
 double top_share(std::vector<double> d2) {
     std::sort(d2.begin(), d2.end());
@@ -386,6 +411,7 @@ ShapeStats measure_shape(const WrSurface& surface, const HierarchicalSampling& h
         jxx + jyy > 0 ? std::sqrt((jxx - jyy) * (jxx - jyy) + 4 * jxy * jxy) / (jxx + jyy) : 0.0;
     st.repetition = c0 > 0 && c1 > 0 ? c / std::sqrt(c0 * c1) : 0.0;
     st.step_share = top_share(std::move(du2));
+    st.line_share = spectral_line_share(r, n, kLineMinWavenumber, kLineFactor);
     st.step_share_direct = direct_step_share(surface, hs.levels(), pu, pv);
     measure_flat_steps(surface, hs, &st);
     return st;
@@ -401,9 +427,10 @@ Status note_and_check_shape(FigureContext& ctx, const SuperFigure& f, const WrSu
         fmt("Shape (measured on eq. (20)'s height): departure from (2) %.2f, relief "
             "anisotropy %.2f, repetition at a third of the patch %.2f, step share %.2f "
             "against eq. (16) directly %.2f, flat-step share %.3f against eq. (16) directly "
-            "%.3f (definitions: measure_shape in the source).",
+            "%.3f, spectral-line share %.3f (a regular quilt towards 1, irregular ranges "
+            "towards 0; definitions: measure_shape in the source).",
             st.departure, st.anisotropy, st.repetition, st.step_share, st.step_share_direct,
-            st.flat_share, st.flat_share_direct));
+            st.flat_share, st.flat_share_direct, st.line_share));
     // §4.1: (4) and (5) are not the conventional surface, and fig. 17's read as ranges.
     // §4.2: hierarchical sampling avoids eq. (16)'s staircase (fig. 19(b)); fig. 18's
     // fully-connected IST adds its own ramp-ramp-drop teeth at every step (see the top of
@@ -416,17 +443,23 @@ Status note_and_check_shape(FigureContext& ctx, const SuperFigure& f, const WrSu
                              panel, st.step_share, st.step_share_direct);
     // §4.2: no staircase. Every panel has fewer flat steps than eq. (16); fig. 18, whose
     // teeth lined up into terraces without §5's jitter, under 0.75 of eq. (16)'s.
-    const double flat_limit = f.jitter_height > 0 ? 0.75 : 1.0;
+    const double flat_limit = f.kind == IstKind::fully_connected ? 0.75 : 1.0;
     if (!quick && st.flat_share > flat_limit * st.flat_share_direct)
         return Status::error(StatusCode::not_supported,
                              "superposed panel (%d): flat-step share %.3f against eq. (16)'s "
                              "%.3f: terraces (fig. 19(b)'s staircase) remain",
                              panel, st.flat_share, st.flat_share_direct);
-    if (!quick && (st.departure < 0.15 || (bezier && panel == 5 && st.anisotropy < 0.4)))
+    // §4.1: "mountain ranges", not the plain surface and not a regular quilt of bumps. Fig.
+    // 17's (4) departs from (2) by at least 0.3 of its height variation (0.23 without §5's
+    // jitter, cannot be told from the dome); every panel's spectral-line share stays under
+    // 0.08 (fig. 18: 0.02 to 0.05; fig. 17 without the jitter 0.15 to 0.29).
+    const double min_departure = bezier ? 0.3 : 0.15;
+    if (!quick && (st.departure < min_departure || st.line_share > 0.08 ||
+                   (bezier && panel == 5 && st.anisotropy < 0.4)))
         return Status::error(StatusCode::not_supported,
-                             "superposed panel (%d): departure %.2f, anisotropy %.2f: does "
-                             "not read as §4.1's mountain ranges",
-                             panel, st.departure, st.anisotropy);
+                             "superposed panel (%d): departure %.2f, spectral-line share %.3f, "
+                             "anisotropy %.2f: does not read as §4.1's mountain ranges",
+                             panel, st.departure, st.line_share, st.anisotropy);
     return Status::success();
 }
 
@@ -477,9 +510,13 @@ Status run_panel(FigureContext& ctx, const SuperFigure& f, char row, int panel) 
         if (f.jitter_height > 0)
             ctx.chosen("jitter",
                        fmt("height samples x (1 + %.2f g), g ~ N(0, 1)", double(f.jitter_height)),
-                       "§5's Gaussian randomness on the sample values of its superposed "
-                       "IST-B-spline models, at fig. 21's deviation; without it the fully-"
-                       "connected IST's teeth line up into terraces");
+                       bezier ? "§5's Gaussian randomness on the sample values; without it the "
+                                "unit-IST's copies of H tile the patch into a regular quilt "
+                                "(spectral-line share 0.15 to 0.29; deviation chosen so it falls "
+                                "within fig. 18's 0.02 to 0.05)"
+                              : "§5's Gaussian randomness on the sample values of its superposed "
+                                "IST-B-spline models, at fig. 21's deviation; without it the "
+                                "fully-connected IST's teeth line up into terraces");
         ctx.chosen("sample interpolation", "Hermite",
                    "fig. 19(d); the paper does not say for figs. 17-18");
         ctx.chosen("adaptive sampling", chosen, "cells <= 2 px, omitted rest of the sum < 0.5 px");
