@@ -66,8 +66,33 @@ void border_scale_widths(const ScalePattern& pattern, double* narrowest, double*
     *count = int(border.size());
 }
 
+// The distance from each scale's centroid to each of its edges inside the region (the height
+// of the fan triangle a curve of that edge may use a share of, edge_perturbation.hpp): median.
+double median_centroid_distance(const ScalePattern& pattern) {
+    std::vector<double> h;
+    const double eps = 1e-6;
+    auto on_border = [&](Vec2 v) {
+        return v.x <= eps || v.y <= eps || v.x >= pattern.width - eps ||
+               v.y >= pattern.height - eps;
+    };
+    for (int i = 0; i < pattern.polygon_count(); ++i) {
+        int n = 0;
+        const Vec2* v = pattern.polygon(i, &n);
+        const Vec2 c = pattern.centroids[std::size_t(i)];
+        for (int k = 0; k < n; ++k) {
+            const Vec2 a = v[k], b = v[(k + 1) % n];
+            if (on_border(a) && on_border(b)) continue;
+            const double l = double(length(b - a));
+            if (l > 0.0) h.push_back(std::fabs(double(cross(b - a, c - a))) / l);
+        }
+    }
+    std::sort(h.begin(), h.end());
+    return h.empty() ? 0.0 : h[h.size() / 2];
+}
+
 Status panels_figure(FigureContext& ctx, const std::vector<Panel>& panels, const char* varied,
-                     std::vector<double>* lengths = nullptr) {
+                     std::vector<double>* lengths = nullptr,
+                     std::vector<double>* realised_share = nullptr) {
     double first_length = 1.0;
     record_scale_params(ctx, ScaleParams{});
     const int side = ctx.quick() ? 128 : 256, gap = side / 12, caption = 24;
@@ -89,6 +114,9 @@ Status panels_figure(FigureContext& ctx, const std::vector<Panel>& panels, const
             r.requested_rms > 0 ? 100.0 * r.realised_rms / r.requested_rms : 100.0, r.shrunk,
             r.edges, r.max_offset, length, 100.0 * (length / first_length - 1.0));
         if (lengths) lengths->push_back(length);
+        if (realised_share)
+            realised_share->push_back(
+                r.requested_rms > 0 ? 100.0 * r.realised_rms / r.requested_rms : 100.0);
     }
     ctx.note(note);
     return save_png_and_svg(ctx, width, height, [&](Canvas& c) {
@@ -197,15 +225,15 @@ SHITSUKAN_FIGURE(tokai_fig10, "tokai1994", "fig10", "Effect of the perturbation 
         panels.push_back(p);
     }
     ctx.chosen("p values", "0, 0.0075, 0.015, 0.03",
-               "the paper prints only fig. 7's p = 0.015; 0.03 already reaches 97 % of the "
+               "the paper prints only fig. 7's p = 0.015; 0.03 already nearly reaches the "
                "roughness the tiling allows (the ceiling measured in the notes), so a larger p "
                "would draw the same picture");
     ctx.note(
         "Each curve is made with the requested p; only the curves that would leave their fan "
         "triangles or break a scale's star shape are scaled down (edge_perturbation.hpp), so "
         "the panels grow rougher from left to right: compare the realised RMS offsets.");
-    std::vector<double> lengths;
-    SHITSUKAN_TRY(panels_figure(ctx, panels, "p (d = 1.0 D, a = 0.25)", &lengths));
+    std::vector<double> lengths, realised_share;
+    SHITSUKAN_TRY(panels_figure(ctx, panels, "p (d = 1.0 D, a = 0.25)", &lengths, &realised_share));
     // Why the largest p is not realised in full: the ceiling. With 4x the largest p nearly every
     // curve is scaled down to the most its fan triangles and the star shape (which the relief's
     // rays from the centroid need, eq. 4) allow; the realised RMS and the edge length stop there.
@@ -219,6 +247,29 @@ SHITSUKAN_FIGURE(tokai_fig10, "tokai1994", "fig10", "Effect of the perturbation 
     SHITSUKAN_TRY(generate_scale_pattern(panels.back().prm, last, &last_steps));
     const double ceiling_rms = steps.perturbation.realised_rms;
     const double ceiling_length = total_edge_length(ceiling);
+    // Why: the largest offset the recursion asks, p (1 + decay + decay^2 + ...), against the
+    // room a curve has, `safety` of the distance from its edge to its scale's centroid.
+    ScalePattern straight;
+    ScaleParams flat = panels.front().prm;
+    SHITSUKAN_TRY(generate_scale_pattern(flat, straight));
+    const PerturbationParams& pp = top.perturbation;
+    double reach = 0.0, amplitude = double(panels.back().prm.perturbation.p);
+    for (int k = 0; k < pp.levels; ++k, amplitude *= double(pp.decay)) reach += amplitude;
+    const double room = median_centroid_distance(straight);
+    ctx.note(
+        fmt("Why the largest p is not realised in full: at p = %g a curve's offsets reach "
+            "up to %.4f (p (1 + %g + %g^2 + ...), %d levels; requested RMS %.4f), while the "
+            "median distance from an edge to its scale's centroid is %.4f and a curve may use "
+            "%g of it, %.4f (its fan triangles), besides keeping every scale star-shaped from "
+            "its centroid (the relief's rays, eq. 4). The "
+            "edges that would swing further are scaled down, so p = %g realises %.0f %% of "
+            "its RMS, p = %g %.0f %% and p = %g %.0f %%.",
+            double(panels.back().prm.perturbation.p), reach, double(pp.decay), double(pp.decay),
+            pp.levels, last_steps.perturbation.requested_rms, room, double(pp.safety),
+            double(pp.safety) * room, double(panels.back().prm.perturbation.p),
+            100.0 * last_steps.perturbation.realised_rms / last_steps.perturbation.requested_rms,
+            double(panels[1].prm.perturbation.p), realised_share[1],
+            double(panels[2].prm.perturbation.p), realised_share[2]));
     ctx.note(
         fmt("The ceiling (measured with p = %g, 4x the largest panel's): RMS offset %.5f, "
             "edges %.1f %% longer than at p = 0, with %d of %d edges scaled down. The "
