@@ -72,8 +72,11 @@ void record_scale_params(FigureContext& ctx, const ScaleParams& prm) {
     ctx.chosen("stage-2 rows", "one row through each stage-1 seed, moved along x by s_k a Rnd",
                "the paper does not say where the rows lie; this puts one scale row in each stage-1 "
                "polygon");
-    ctx.chosen("stage-2 border columns", "seeds on x = 0 and x = W move only inward, by |M|",
-               "moved outward they leave sliver scales along the left and right edges");
+    ctx.chosen("stage-2 border columns",
+               "none on x = 0 and x = W: each edge lies midway between the outermost column and "
+               "its mirror image, and each row's outermost seed is mirrored about it",
+               "the border is then a Voronoi edge, so the edge scales are whole (a column on the "
+               "border cut them to 0.28-0.51 of the median width)");
     ctx.chosen(
         "perturbation recursion",
         fmt("%d levels, amplitude p decay^(k-1), decay %g, Rnd hashed from the edge's end points",

@@ -37,43 +37,24 @@ void collect_cells(const VoronoiCells& cells, std::vector<Vec2d>* verts, std::ve
     }
 }
 
-// A stage-2 seed on the left or right border column (x = 0 or x = W, stage2_columns puts a
-// column exactly there) moves only inward: |M| of eq. (1) toward the inside (chosen here). Moved
-// outward it would leave the edge scale a sliver (a = 0.5: edge cells 0.0006 wide, 1/90 of the
-// edge spacing); moved inward the border still cuts its cell near the middle, at least
-// s (1 - a) / 2 wide.
-void keep_border_seeds_inside(float width, SeedLayout* row) {
-    for (std::size_t i = 0; i < row->moved.size(); ++i) {
-        const double x0 = row->original[i].x, move = std::fabs(row->moved[i].x - x0);
-        if (x0 == 0.0) row->moved[i].x = x0 + move;
-        if (x0 == double(width)) row->moved[i].x = x0 - move;
-    }
-}
-
 // The stage-2 columns of a tileable belly's tile, repeated across the region (tile k's shifted
 // by k periods, their indices and so their random numbers the tile's own). The tile's edge is
 // a joint like its centre line (where the left half of one tile meets the right half of the
-// next): stage2_columns' edge columns are dropped and the others stretched from the centre
-// line by one factor so that the edge lies midway between the last column and its copy in the
-// next tile (chosen here: the scales along the seam are whole, about s(1) wide, as along the
-// centre line; the spacing grows by the factor, ~5 % at D = 0.1).
+// next): stage2_columns already puts it midway between the last column and its mirror image,
+// and in the repeated layout that image is the next tile's first column (so no mirror seeds:
+// the scales along the seam are whole, about s(1) wide, as along the centre line).
 Status periodic_stage2_columns(const ScaleParams& prm, float period, Stage2Columns& out) {
     Stage2Columns tile;
     SHITSUKAN_TRY(stage2_columns(period, prm.D, prm.edge_ratio, tile));
-    const double xc = 0.5 * double(period);
-    double last = 0.0;  // the largest distance from the centre line of an inside column
-    for (double x : tile.x)
-        if (x > 0.0 && x < double(period)) last = std::max(last, std::fabs(x - xc));
-    const double stretch = last > 0.0 ? xc / (0.5 * (last + xc)) : 1.0;
     const int tiles = std::max(1, int(std::lround(double(prm.width) / double(period))));
     out.x.clear();
     out.spacing.clear();
     out.index.clear();
+    out.mirrored = false;
     for (int k = 0; k < tiles; ++k)
         for (std::size_t c = 0; c < tile.x.size(); ++c) {
-            if (!(tile.x[c] > 0.0 && tile.x[c] < double(period))) continue;  // the edge columns
-            out.x.push_back(xc + (tile.x[c] - xc) * stretch + double(k) * double(period));
-            out.spacing.push_back(tile.spacing[c] * stretch);
+            out.x.push_back(tile.x[c] + double(k) * double(period));
+            out.spacing.push_back(tile.spacing[c]);
             out.index.push_back(tile.index[c]);
         }
     return Status::success();
@@ -178,7 +159,7 @@ struct Stage2Cells {
 // Stage 2, processings 1-2 (§3.1 (2)): the row of seeds parallel to x through the stage-1
 // polygon's own (moved) seed, on the columns of its own half (its scales end at the centre-line
 // joint; with d = 0 both rows sit on the centre line and every polygon spans both halves),
-// moved along x; the border columns' seeds only inward.
+// moved along x (the outermost seeds mirrored about the left and right borders).
 Status stage2_row_for_polygon(const ScaleParams& prm, int f, ScaleDivision& out, SeedLayout& row) {
     const int site = out.stage1_site[std::size_t(f)];
     const Vec2d own = out.stage1_seeds.original[std::size_t(site)];
@@ -190,7 +171,6 @@ Status stage2_row_for_polygon(const ScaleParams& prm, int f, ScaleDivision& out,
                                      : (own.x < 0.5 * double(prm.width) ? -1 : 1);
     SHITSUKAN_TRY(stage2_row_seeds(out.columns, prm.a, out.stage1_seeds.moved[std::size_t(site)].y,
                                    row_id, prm.seed, row, side));
-    if (!periodic) keep_border_seeds_inside(prm.width, &row);  // (a tileable belly: no border)
     out.stage2_seeds.original.insert(out.stage2_seeds.original.end(), row.original.begin(),
                                      row.original.end());
     out.stage2_seeds.moved.insert(out.stage2_seeds.moved.end(), row.moved.begin(),

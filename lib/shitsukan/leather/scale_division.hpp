@@ -18,8 +18,8 @@
 //            moved along y (seed_layout.hpp), Voronoi division of the rectangle;
 //   stage 2: for each stage-1 polygon, one seed row parallel to x through its (moved) seed,
 //            on the columns of its own half (left or right of the centre line; both when
-//            d = 0), narrowing toward the left and right edges, moved along x (the seeds
-//            on the border columns x = 0 and x = W only inward, chosen: no edge slivers);
+//            d = 0), narrowing toward the left and right edges, moved along x (the
+//            outermost seeds mirrored about x = 0 and x = W, chosen: whole edge scales);
 //            Voronoi division clipped to that polygon. The pieces of a stage-1 edge seen
 //            from its two sides are split at each other's end points (T junctions become
 //            vertices), so the final polygons share every edge and form one planar
@@ -40,7 +40,7 @@
 // Cost: stage 1 is one Voronoi division of n1 ~ 2 H / D seeds, O(n1 log n1); stage 2 one
 // Voronoi division per stage-1 polygon (its row of k ~ W / D seeds), O(N log k) for the N
 // final cells; the T-junction pass sorts the points on each stage-1 edge, O(N log N); memory
-// O(N). Measured: 140 scales in ~1 ms (fig. 7), 50 000 scales (D = 0.005) in ~0.7 s.
+// O(N). Measured: 120 scales in ~1 ms (fig. 7), 50 000 scales (D = 0.005) in ~0.7 s.
 #pragma once
 
 #include <cstdint>

@@ -119,6 +119,36 @@ float stage2_spacing(float width, float D, float edge_ratio, double x) {
     return float(double(D) * (1.0 - (1.0 - double(edge_ratio)) * u * u));
 }
 
+namespace {
+
+// The distances t_k of the columns from the centre line (and their spacings s_k) by the law:
+// t_1 = s(0) / 2, then steps of s at the step's middle, until one column lies beyond the edge;
+// all stretched by one common factor so that a column lies exactly on the edge (index
+// `*on_edge`).
+void columns_to_the_edge(float width, float D, float edge_ratio, std::vector<double>* t,
+                         std::vector<double>* s, std::size_t* on_edge) {
+    const double xc = 0.5 * double(width);
+    t->assign(1, 0.5 * stage2_spacing(width, D, edge_ratio, xc));
+    s->assign(1, double(stage2_spacing(width, D, edge_ratio, xc + t->front())));
+    while (t->back() <= xc) {  // until one column lies beyond the edge
+        double first = stage2_spacing(width, D, edge_ratio, xc + t->back());
+        double step = stage2_spacing(width, D, edge_ratio, xc + t->back() + 0.5 * first);
+        t->push_back(t->back() + step);
+        s->push_back(stage2_spacing(width, D, edge_ratio, xc + t->back()));
+    }
+    std::size_t nearest = 0;
+    for (std::size_t k = 0; k < t->size(); ++k)
+        if (std::fabs((*t)[k] - xc) < std::fabs((*t)[nearest] - xc)) nearest = k;
+    const double stretch = xc / (*t)[nearest];
+    for (std::size_t k = 0; k < t->size(); ++k) {
+        (*t)[k] *= stretch;
+        (*s)[k] *= stretch;
+    }
+    *on_edge = nearest;
+}
+
+}  // namespace
+
 Status stage2_columns(float width, float D, float edge_ratio, Stage2Columns& out) {
     SHITSUKAN_TRY(check_common("stage2_columns", width, width, D, 0.0f));
     if (!(edge_ratio > 0.05f && edge_ratio <= 1.0f))
@@ -126,40 +156,34 @@ Status stage2_columns(float width, float D, float edge_ratio, Stage2Columns& out
                              "stage2_columns: edge spacing ratio must be in (0.05, 1] (got %g)",
                              double(edge_ratio));
     const double xc = 0.5 * double(width);
-    // distances t_k from the centre line: t_1 = s(0) / 2, then steps of s at the step's middle
-    std::vector<double> t(1, 0.5 * stage2_spacing(width, D, edge_ratio, xc));
-    std::vector<double> s(1, double(stage2_spacing(width, D, edge_ratio, xc + t[0])));
-    while (t.back() <= xc) {  // until one column lies beyond the edge
-        double first = stage2_spacing(width, D, edge_ratio, xc + t.back());
-        double step = stage2_spacing(width, D, edge_ratio, xc + t.back() + 0.5 * first);
-        t.push_back(t.back() + step);
-        s.push_back(stage2_spacing(width, D, edge_ratio, xc + t.back()));
-    }
-    // stretch all distances by one common factor so that a column lies exactly on each edge:
-    // the edge scales are then cut through their middle, never left as slivers
-    std::size_t nearest = 0;
-    for (std::size_t k = 0; k < t.size(); ++k)
-        if (std::fabs(t[k] - xc) < std::fabs(t[nearest] - xc)) nearest = k;
-    const double stretch = xc / t[nearest];
-    for (std::size_t k = 0; k < t.size(); ++k) {
-        t[k] *= stretch;
-        s[k] *= stretch;
-    }
-    t[nearest] = xc;  // exactly: (xc / t) * t can miss xc by an ulp, leaving x = 1e-17
+    std::vector<double> t, s;
+    std::size_t on_edge = 0;
+    columns_to_the_edge(width, D, edge_ratio, &t, &s, &on_edge);
+    // the column on the edge and those beyond it dropped; the rest stretched from the centre
+    // line by one factor so that the edge lies midway between the last column and its mirror
+    // image: the Voronoi edge between them is the border itself, so the edge scales are whole
+    // (about s(1) wide, as their neighbours), never cut through their middle
+    t.resize(std::max<std::size_t>(on_edge, 1));
+    s.resize(t.size());
+    if (on_edge == 0) t[0] = 0.5 * xc;  // W = D: one column a side, midway to the edge
+    const double stretch = xc / (0.5 * (t.back() + xc));
     out.x.clear();
     out.spacing.clear();
     out.index.clear();
     const int n = int(t.size());
     for (int k = n - 1; k >= 0; --k) {
-        out.x.push_back(xc - t[std::size_t(k)]);
-        out.spacing.push_back(s[std::size_t(k)]);
+        out.x.push_back(xc - t[std::size_t(k)] * stretch);
+        out.spacing.push_back(s[std::size_t(k)] * stretch);
         out.index.push_back(-(k + 1));
     }
     for (int k = 0; k < n; ++k) {
-        out.x.push_back(xc + t[std::size_t(k)]);
-        out.spacing.push_back(s[std::size_t(k)]);
+        out.x.push_back(xc + t[std::size_t(k)] * stretch);
+        out.spacing.push_back(s[std::size_t(k)] * stretch);
         out.index.push_back(k + 1);
     }
+    out.mirrored = true;
+    out.left = 0.0;
+    out.right = double(width);
     return Status::success();
 }
 
@@ -173,7 +197,8 @@ Status stage2_row_seeds(const Stage2Columns& columns, float a, double row_y, int
         return Status::error(StatusCode::invalid_argument, "stage2_row_seeds: row y is not finite");
     out.original.clear();
     out.moved.clear();
-    for (std::size_t k = 0; k < columns.x.size(); ++k) {
+    const std::size_t n = columns.x.size();
+    for (std::size_t k = 0; k < n; ++k) {
         if ((side < 0 && columns.index[k] > 0) || (side > 0 && columns.index[k] < 0)) continue;
         // processing 1: seeds on a row parallel to x; processing 2: moved along x
         Vec2d p{columns.x[k], row_y};
@@ -181,6 +206,14 @@ Status stage2_row_seeds(const Stage2Columns& columns, float a, double row_y, int
         p.x += seed_displacement(float(columns.spacing[k]), a,
                                  hashed_rnd(seed, kStreamStage2, row_id, columns.index[k]));
         out.moved.push_back(p);
+        // the outermost seed's mirror image beyond the border (the seeds stay symmetric about
+        // x = left and x = right there, so the border is a Voronoi edge of the row)
+        const bool first = k == 0, last = k + 1 == n;
+        if (columns.mirrored && (first || last)) {
+            const double edge = first ? columns.left : columns.right;
+            out.original.push_back({2.0 * edge - columns.x[k], row_y});
+            out.moved.push_back({2.0 * edge - p.x, row_y});
+        }
     }
     return Status::success();
 }

@@ -26,13 +26,17 @@
 //   s(u) = D · (1 - (1 - r) · u^2),   r = edge ratio (default 0.5: edge scales half as wide).
 // On each side the first column lies half a spacing from the centre line (x = W/2 ± s(0)/2),
 // the next ones step outward by s evaluated at the middle of each step, until one column
-// lies beyond each edge; then all distances (and spacings) are stretched by one common factor
-// (a few percent) so that a column lies exactly on each edge (x = 0 and x = W bit for bit):
-// the edge scales are cut through their middle instead of leaving slivers (divide_scales
-// moves the seeds of these two columns only inward, for the same reason). The centre line
-// gets no column: it is where the left and right stage-1 polygons meet (the joint pattern),
-// so scales end there instead of being cut in two. In stage 2, eq. (1) uses the local
-// spacing s_k as "D", so a narrow column moves proportionally less.
+// lies beyond each edge; all distances (and spacings) are stretched by one common factor so
+// that a column lies exactly on each edge; that column (and any beyond) is dropped, and the
+// rest stretched from the centre line once more (a few percent) so that each edge lies midway
+// between the last column and its mirror image about the edge (x = 0, x = W). stage2_row_seeds
+// adds the mirror image of each row's outermost moved seed, as stage 1 mirrors its rows about
+// y = 0 and y = H (chosen here): the border is then the Voronoi edge between a seed and its
+// image, so the edge scales are whole scales, about s(1) wide like their neighbours, instead
+// of halves of a cell cut by the border (0.28-0.51 of the median width on fig. 7 before). The
+// centre line gets no column: it is where the left and right stage-1 polygons meet (the joint
+// pattern), so scales end there instead of being cut in two. In stage 2, eq. (1) uses the
+// local spacing s_k as "D", so a narrow column moves proportionally less.
 #pragma once
 
 #include <cstdint>
@@ -94,6 +98,10 @@ struct Stage2Columns {
     std::vector<double> x;        // column positions, increasing
     std::vector<double> spacing;  // the local spacing s_k used in eq. (1)
     std::vector<int> index;       // signed column number: -1, -2, ... left, 1, 2, ... right
+    // The first and last columns are mirrored about x = left and x = right (stage2_columns:
+    // the borders 0 and W); false for columns that repeat (a tileable belly) and have none.
+    bool mirrored = false;
+    double left = 0.0, right = 0.0;
 };
 
 // Stage 2 (fig. 6): column positions from the spacing law above.
@@ -102,7 +110,9 @@ float stage2_spacing(float width, float D, float edge_ratio, double x);  // s(u(
 
 // One stage-2 row at height row_y: a seed on every column (side < 0: left columns only,
 // side > 0: right only, 0: all), moved along x by s_k · a · Rnd; row_id selects the random
-// numbers (the tokai pipeline uses the stage-1 seed index).
+// numbers (the tokai pipeline uses the stage-1 seed index). With columns.mirrored, the first
+// (last) column's seed is followed by its mirror image about x = left (x = right), original
+// and moved alike.
 Status stage2_row_seeds(const Stage2Columns& columns, float a, double row_y, int row_id,
                         std::uint32_t seed, SeedLayout& out, int side = 0);
 

@@ -144,7 +144,7 @@ Status generate_tileable_pattern(const TileParams& prm, ScalePattern& out, TileR
     if (belly) {  // the belly's columns per tile (stage 2), for the block's margin along x
         Stage2Columns columns;
         SHITSUKAN_TRY(stage2_columns(sp.width, sp.D, sp.edge_ratio, columns));
-        nx = std::max(1, int(columns.x.size()) - 1);
+        nx = std::max(1, int(columns.x.size()));  // a scale per column
     } else {
         lattice_counts(prm, &nx, &ny);
     }
