@@ -383,3 +383,15 @@ TEST_CASE("voronoi robust: a vertex snapped onto a slanted edge is moved onto it
         CHECK(worst_outside <= 4e-16);
     }
 }
+
+// fuzz_voronoi, after the snap above was first written: a quadrilateral whose corner (0, 96)
+// turns by 5e-18 degrees. Its two edges there lie within the snap distance of each other along
+// their whole length, so a vertex snapped onto one is "near" the other too; moving such a vertex
+// to the corner (as tried) moved it by up to 1440 units and the cells covered 2.5 times the
+// region. Vertices are only projected, never sent to a corner.
+TEST_CASE("voronoi robust: a corner of 180 - 5e-18 degrees: the cells still tile the region") {
+    const Vec2d region[4] = {{7.1055358092511153e-15, 1536}, {0, 96}, {0, 0},
+                             {1.9822998046875, 252.984375}};
+    const Vec2d sites[3] = {{252.984375, 252.984375}, {252.984375, 252.984375}, {0, 0}};
+    require_tiling(sites, 3, region, 4);
+}

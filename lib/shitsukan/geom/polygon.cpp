@@ -233,9 +233,11 @@ void along_line(int along, const Vec2d* region, int m, const Vec2d* box, Vec2d* 
 // Sutherland-Hodgman step 1: the exact side of every vertex (orient2d > 0: inside), with
 // vertices within `snap` of a region edge's line moved onto it and labelled: across the line,
 // along its normal (moving along the edge left a vertex off the line, labelled as on it, and
-// the sliver between belonged to no cell); onto the region's corner when the vertex is already
-// on the neighbouring edge. Returns true when every vertex is strictly inside (nothing to cut).
-bool classify_vertices(std::vector<ClipVertex>& in, const ClipLine& line, int m, double snap,
+// the sliver between belonged to no cell). Not onto a corner when the vertex is on the
+// neighbouring edge too: two nearly collinear edges lie within the snap distance of each other
+// over their whole length (fuzz_voronoi: a corner of 180 - 5e-18 degrees), and a vertex moved
+// to their corner moved by 1440 units. Returns true when every vertex is strictly inside.
+bool classify_vertices(std::vector<ClipVertex>& in, const ClipLine& line, double snap,
                        double* side) {
     const Vec2d b0 = line.b0, b1 = line.b1;
     const int k = line.k;
@@ -247,11 +249,7 @@ bool classify_vertices(std::vector<ClipVertex>& in, const ClipLine& line, int m,
         if (k >= 0 && s != 0.0 && std::fabs(s) <= snap * edge_length) {  // |s| = dist * |b1 - b0|
             s = 0.0;
             const Vec2d e = b1 - b0;
-            if (has_label(v, (k + m - 1) % m))  // on edge k - 1 already: their shared corner
-                v.p = b0;
-            else if (has_label(v, (k + 1) % m))
-                v.p = b1;
-            else if (b0.x == b1.x)
+            if (b0.x == b1.x)
                 v.p.x = b0.x;
             else if (b0.y == b1.y)
                 v.p.y = b0.y;
@@ -334,7 +332,7 @@ void clip_step(std::vector<ClipVertex>* poly, const ClipLine& line, double snap,
         side_heap->resize(std::size_t(n));
         side = side_heap->data();
     }
-    if (classify_vertices(in, line, m, snap, side)) return;  // the common case inside the region
+    if (classify_vertices(in, line, snap, side)) return;  // the common case inside the region
     std::vector<ClipVertex>& out = *scratch;
     out.clear();
     for (int i = 0; i < n; ++i) {

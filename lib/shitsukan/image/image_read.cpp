@@ -103,6 +103,60 @@ Status png_chunks_inside(const char* path, const Bytes& file) {
                          "%s: PNG ends after %zu bytes without its IEND chunk: a truncated file",
                          path, file.size());
 }
+
+// A JPEG's marker segments walked before stb_image decodes it: each inside the file, and every
+// Huffman table (DHT) of at most 256 codes. stb_image 2.27 sums a table's 16 code counts
+// without that bound and writes past its 257-entry size list (fuzz_readers: a 28-byte file,
+// counts summing to 1,578). Between the segments after a scan (SOS) the entropy-coded bytes are
+// skipped (0xFF there is followed by 0x00 or a restart marker). The end of image (EOI) must
+// come. Not a JPEG: success, for stb_image to judge.
+Status jpeg_segments_inside(const char* path, const Bytes& file) {
+    const std::size_t n = file.size();
+    if (n < 2 || file[0] != 0xFF || file[1] != 0xD8) return Status::success();
+    std::size_t at = 2;
+    while (at + 1 < n) {
+        if (file[at] != 0xFF) {  // entropy-coded data after a scan
+            ++at;
+            continue;
+        }
+        const unsigned marker = file[at + 1];
+        if (marker == 0xFF) {  // a fill byte
+            ++at;
+            continue;
+        }
+        if (marker == 0x00 || (marker >= 0xD0 && marker <= 0xD8) || marker == 0x01) {
+            at += 2;  // a stuffed 0xFF, a restart marker, SOI or TEM: no length follows
+            continue;
+        }
+        if (marker == 0xD9) return Status::success();  // EOI
+        if (at + 4 > n)
+            return Status::error(StatusCode::invalid_argument,
+                                 "%s: JPEG ends inside the marker at byte %zu: a truncated file",
+                                 path, at);
+        const std::size_t length = std::size_t(file[at + 2]) << 8 | file[at + 3];
+        const std::size_t end = at + 2 + length;
+        if (length < 2 || end > n)
+            return Status::error(StatusCode::invalid_argument,
+                                 "%s: JPEG segment 0x%02X at byte %zu claims %zu bytes, past the "
+                                 "file's end (%zu bytes): a truncated file",
+                                 path, marker, at, length, n);
+        for (std::size_t table = at + 4; marker == 0xC4 && table < end;) {  // DHT's tables
+            std::size_t codes = 0;
+            for (std::size_t i = 1; i <= 16 && table + i < end; ++i) codes += file[table + i];
+            if (codes > 256 || table + 17 + codes > end)
+                return Status::error(StatusCode::invalid_argument,
+                                     "%s: JPEG Huffman table at byte %zu holds %zu codes (at most "
+                                     "256, within its segment)",
+                                     path, table, codes);
+            table += 17 + codes;
+        }
+        at = end;
+    }
+    return Status::error(StatusCode::invalid_argument,
+                         "%s: JPEG ends after %zu bytes without its end-of-image marker: a "
+                         "truncated file",
+                         path, n);
+}
 }  // namespace
 #endif
 
@@ -131,6 +185,7 @@ Status read_image(const char* path, LoadedImage& out) {
         return Status::error(StatusCode::invalid_argument,
                              "%s: a PNM header number past %d", path, 2147483647);
     SHITSUKAN_TRY(png_chunks_inside(path, file));
+    SHITSUKAN_TRY(jpeg_segments_inside(path, file));
     int w = 0, h = 0, c = 0;
     LoadedImage img;
     const bool wide = stbi_is_16_bit_from_memory(bytes, size) != 0;

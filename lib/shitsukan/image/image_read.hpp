@@ -18,8 +18,9 @@
 // The file is read whole within the memory budget and checked before stb_image decodes it.
 // Errors: a missing file -> io_error with the C library's reason; an undecodable one -> io_error
 // with stb_image's reason; a header that claims more samples than kImageMaxExpansion times the
-// file's size, or a PNG chunk past the file's end, over 2^31 - 1 bytes or no IEND (a truncated
-// file) -> invalid_argument, and more than the memory budget -> too_large, all before
+// file's size, a PNG chunk past the file's end, over 2^31 - 1 bytes or no IEND, a JPEG segment
+// past the end, a Huffman table over 256 codes or no EOI (a truncated or broken file) ->
+// invalid_argument, and more than the memory budget -> too_large, all before
 // decoding; a build without the stb_image header -> not_supported. Host side.
 #pragma once
 
