@@ -298,6 +298,7 @@ unsigned g_wr_seed = 0;
 float g_wr_delta = 0.0f;
 WrMesh g_wr_mesh;     // the last tessellation, redrawn while only the view turns
 int g_mesh_form = -1, g_mesh_k = -1;
+float g_mesh_jitter = -1.0f;  // the jitter g_wr_mesh was sampled with (0 unless superposed)
 
 Status make_scene(int figure, unsigned seed, float delta, WrScene* out) {
     const int n = figure == 0 ? 4 : 11;
@@ -325,6 +326,39 @@ Status make_scene(int figure, unsigned seed, float delta, WrScene* out) {
     return s;
 }
 
+// g_wr tessellated into g_wr_mesh: form 0 conventional (grid level 2), 1 WR (eq. 15) to K,
+// 2 superposed (eq. 20) to max(K, 1) with §4.2's Hermite sampling and §5's Gaussian jitter on
+// the height samples, x(1 + jitter g), g drawn from the heights' seed (sample_hierarchy judges
+// the jitter). On failure g_wr_mesh is marked stale.
+Status tessellate_wr(int figure, int form, int K, float jitter, unsigned seed) {
+    g_mesh_form = -1;
+    WrTessellationOptions o;
+    HierarchicalSampling hs;
+    o.progress = skweb::progress();
+    o.levels = K;
+    o.grid_level = K;
+    o.subdivisions = figure == 0 ? 8 : 2;  // chosen here: about 3^K x 8 cells along an axis
+    if (form == 0) {
+        o.form = WrSurfaceForm::plain;
+        o.grid_level = 2;
+    } else if (form == 1) {
+        o.form = WrSurfaceForm::wr;
+    } else {
+        HierarchicalOptions ho;
+        ho.levels = std::max(K, 1);
+        ho.interpolation = SampleInterpolation::hermite;
+        ho.jitter_height = jitter;
+        ho.seed = seed;
+        SHITSUKAN_TRY(sample_hierarchy(g_wr.surface, ho, hs));
+        o.form = WrSurfaceForm::superposed;
+        o.levels = ho.levels;
+        o.grid_level = ho.levels;
+    }
+    SHITSUKAN_TRY(tessellate_wr_surface(g_wr.surface, form == 2 ? &hs : nullptr, o, g_wr_mesh));
+    g_mesh_form = form, g_mesh_k = K, g_mesh_jitter = jitter;
+    return Status::success();
+}
+
 }  // namespace
 
 // A WR surface tessellated by the library (tessellate_wr_surface) and drawn by its rasterizer
@@ -332,10 +366,13 @@ Status make_scene(int figure, unsigned seed, float delta, WrScene* out) {
 // figure 0: IST-Bezier (unit-IST, figs. 14, 17), 1: IST-B-spline (fully-connected, figs. 15, 18).
 // form 0: the conventional surface P + H N; 1: the WR surface of eq. (15) with F^K; 2: the
 // superposed WR surface of eq. (20) to K with the ratio delta (eq. 19) and the hierarchical
-// Hermite sampling of §4.2. The tessellation is kept while only yaw and pitch change (the
-// mouse turns the view). Text: vertices, triangles, grid, levels used, milliseconds.
-SK_API int sk_fujimoto2000_wr(int figure, int form, float delta, int K, unsigned seed, float yaw, float pitch,
-                              int size) {
+// Hermite sampling of §4.2, the height samples jittered by §5's Gaussian x(1 + jitter g) (fig.
+// 17's 0.5, fig. 18's 0.12; 0 = none; g from seed, the heights' seed; forms 0 and 1 ignore it).
+// The tessellation is kept while only yaw and pitch change (the mouse turns the view); a new
+// figure, seed, delta, form, K or (superposed) jitter makes a new one. Text: vertices,
+// triangles, grid, levels used, milliseconds.
+SK_API int sk_fujimoto2000_wr(int figure, int form, float delta, int K, unsigned seed, float jitter, float yaw,
+                              float pitch, int size) {
     Status s = Status::success();
     if (figure < 0 || figure > 1)
         s = Status::error(StatusCode::invalid_argument, "figure must be 0 (IST-Bezier) or 1 (IST-B-spline) (got %d)", figure);
@@ -357,33 +394,11 @@ SK_API int sk_fujimoto2000_wr(int figure, int form, float delta, int K, unsigned
         g_have_wr = true;
         g_wr_figure = figure, g_wr_seed = seed, g_wr_delta = delta;
     }
-    const bool again = form != g_mesh_form || K != g_mesh_k;
-    WrTessellationOptions o;
-    HierarchicalSampling hs;
-    o.progress = skweb::progress();
-    o.levels = K;
-    o.grid_level = K;
-    o.subdivisions = figure == 0 ? 8 : 2;  // chosen here: about 3^K x 8 cells along an axis
-    if (form == 0) {
-        o.form = WrSurfaceForm::plain;
-        o.grid_level = 2;
-    } else if (form == 1) {
-        o.form = WrSurfaceForm::wr;
-    } else if (again) {
-        HierarchicalOptions ho;
-        ho.levels = std::max(K, 1);
-        ho.interpolation = SampleInterpolation::hermite;
-        s = sample_hierarchy(g_wr.surface, ho, hs);
-        o.form = WrSurfaceForm::superposed;
-        o.levels = ho.levels;
-        o.grid_level = ho.levels;
+    const float jitter_used = form == 2 ? jitter : 0.0f;  // only the superposed form samples
+    if (form != g_mesh_form || K != g_mesh_k || !(jitter_used == g_mesh_jitter)) {
+        s = tessellate_wr(figure, form, K, jitter_used, seed);
+        if (!s) return skweb::finish(s);
     }
-    if (s && again) {
-        g_mesh_form = -1;
-        s = tessellate_wr_surface(g_wr.surface, form == 2 ? &hs : nullptr, o, g_wr_mesh);
-    }
-    if (!s) return skweb::finish(s);
-    g_mesh_form = form, g_mesh_k = K;
     const WrMesh& m = g_wr_mesh;
     const double t1 = skweb::now_ms();
     Camera cam;

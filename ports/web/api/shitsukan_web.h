@@ -62,7 +62,8 @@ int sk_fujimoto2000_diagram(int half_axes, double u, int first_label, int window
 int sk_fujimoto2000_follow(double u);
 int sk_fujimoto2000_table(int first_label, int max_lines);
 int sk_fujimoto2000_ratio(int coordinates);
-int sk_fujimoto2000_wr(int figure, int form, float delta, int K, unsigned seed, float yaw, float pitch, int size);
+int sk_fujimoto2000_wr(int figure, int form, float delta, int K, unsigned seed, float jitter, float yaw, float pitch,
+                       int size);
 
 /* api_fujimoto2000_terrain.cpp */
 int sk_fujimoto2000_terrain(int form, float delta, int K, float jitter_height, float jitter_color, unsigned seed,

@@ -133,7 +133,7 @@
   SK.register({
     id: 'fujimoto2000-wr', paper: P, order: 110,
     title: 'WR surfaces: delta and K live, turned by the mouse',
-    cite: 'fujimoto2000 §3 the WR surface R = P + H(F_U^-1(u), F_V^-1(v)) N, eq. (15) (IST-Bezier figs. 14, 17; IST-B-spline figs. 15, 18); §4.1 the superposed surface eq. (16) with the weights of eq. (19) (delta: smooth to rough); §4.2 hierarchical sampling, eq. (20)',
+    cite: 'fujimoto2000 §3 the WR surface R = P + H(F_U^-1(u), F_V^-1(v)) N, eq. (15) (IST-Bezier figs. 14, 17; IST-B-spline figs. 15, 18); §4.1 the superposed surface eq. (16) with the weights of eq. (19) (delta: smooth to rough); §4.2 hierarchical sampling, eq. (20); §5 "Gaussian random numbers are given to the sample values" (the jitter, superposed form only)',
     source: 'lib/shitsukan/wrinkly/wr_surface.cpp make_wr_surface(), wr_tessellation.cpp tessellate_wr_surface(), hierarchical_sampling.cpp sample_hierarchy(), superposition.cpp; lib/shitsukan/raster/rasterizer.cpp draw_mesh()',
     figures: ['fujimoto2000/fig14b', 'fujimoto2000/fig17a4', 'fujimoto2000/fig18a5'],
     interaction: { control: 'wr-delta', value: 0.7, canvas: 'canvas.sk-wr' },
@@ -146,38 +146,44 @@
         delta: SK.slider(box, { label: 'delta (eq. 19)', min: 0.05, max: 0.95, step: 0.01, value: 0.35, key: 'wr-delta' }),
         K: SK.slider(box, { label: 'K (levels)', min: 0, max: 5, step: 1, value: 3, key: 'wr-K' }),
         seed: SK.slider(box, { label: 'heights seed', min: 0, max: 999, step: 1, value: 14, key: 'wr-seed' }),
+        // §5's Gaussian jitter on the height samples, x(1 + jitter g): fig. 17's 0.5 by default
+        // (fig. 18 takes 0.12), g drawn from the heights seed; the superposed form's alone.
+        jitter: SK.slider(box, { label: 'jitter (§5)', min: 0, max: 1, step: 0.01, value: 0.5, key: 'wr-jitter' }),
       };
       const view = {
         yaw: SK.slider(box, { label: 'turn (yaw)', min: -3.14, max: 3.14, step: 0.01, value: 0, key: 'wr-yaw' }),
         pitch: SK.slider(box, { label: 'tilt (pitch)', min: -1.2, max: 1.2, step: 0.01, value: 0, key: 'wr-pitch' }),
       };
       const note = SK.el('p', { class: 'sk-note' }, box);
-      note.textContent = 'Drag the picture (or use the turn / tilt sliders) to turn the surface (the tessellation is kept; only the view is redrawn). The control heights h_i are chosen here (a hashed field), not the paper\'s meshes.';
+      note.textContent = 'Drag the picture (or use the turn / tilt sliders) to turn the surface (the tessellation is kept; only the view is redrawn). The control heights h_i are chosen here (a hashed field), not the paper\'s meshes. The jitter applies to the superposed form only (it is greyed out for the others): each hierarchical sample\'s height is multiplied by (1 + jitter g), g Gaussian drawn from the heights seed (§5; fig. 17 takes 0.5, fig. 18 0.12). Set it to 0 on the IST-Bezier surface: the unit-IST tiles the patch with small copies of the whole H, a regular quilt; the jitter breaks it.';
       const readout = SK.el('div', { class: 'sk-readout' }, box);
       const f = SK.figure(figs, 'the surface, Z-buffered and Lambert-lit by the library\'s rasterizer', 512, 512);
       f.canvas.classList.add('sk-wr');
       const update = SK.coalesce(async () => {
-        const r = await SK.call('sk_fujimoto2000_wr', [c.figure.value, c.form.value, c.delta.value, c.K.value, c.seed.value, view.yaw.value, view.pitch.value, 512], ['picture', 'text']);
-        const bad = /delta/.test(r.message) ? c.delta : /\bK\b|level/.test(r.message) ? c.K : /form/.test(r.message) ? c.form : c.figure;
-        [c.delta, c.K, c.form, c.figure].forEach((x) => SK.clearReport(x));
+        const superposed = c.form.value === 2;
+        c.jitter.range.disabled = c.jitter.box.disabled = !superposed;
+        c.jitter.row.title = superposed ? '' : 'the jitter applies to the superposed form only';
+        const r = await SK.call('sk_fujimoto2000_wr', [c.figure.value, c.form.value, c.delta.value, c.K.value, c.seed.value, c.jitter.value, view.yaw.value, view.pitch.value, 512], ['picture', 'text']);
+        const bad = /jitter/.test(r.message) ? c.jitter : /delta/.test(r.message) ? c.delta : /\bK\b|level/.test(r.message) ? c.K : /form/.test(r.message) ? c.form : c.figure;
+        [c.delta, c.K, c.form, c.figure, c.jitter].forEach((x) => SK.clearReport(x));
         if (!SK.report(bad, r)) return;
         SK.draw(f.canvas, r.picture);
         const t = JSON.parse(r.text);
         readout.textContent = t.vertices + ' vertices, ' + t.triangles + ' triangles (grid ' + t.grid.join(' x ') + ')' +
-          (c.form.value === 2 ? ', deepest step used ' + t.levels_used : '') + '\ntessellated in ' + t.tessellate_ms.toFixed(0) +
+          (superposed ? ', deepest step used ' + t.levels_used + ', jitter ' + c.jitter.value : '') + '\ntessellated in ' + t.tessellate_ms.toFixed(0) +
           ' ms, drawn in ' + t.draw_ms.toFixed(0) + ' ms (WASM, wall clock)';
       });
       Object.values(c).forEach((x) => { x.onchange = update; });
       // make bench-web: fig. 14(b)'s surface (IST-Bezier, unit-IST N = 3, WR eq. (15) at K = 2,
-      // 512 x 512): each new heights seed re-tessellates and redraws it.
+      // 512 x 512; the WR form takes no jitter): each new heights seed re-tessellates and redraws it.
       panel.benches = [{
         label: 'WR surface, fig. 14(b) size (K = 2, 512 x 512) re-tessellated and drawn', goal: 100, control: 'wr-seed',
         values: Array.from({ length: 12 }, (_, i) => 100 + i), fns: ['sk_fujimoto2000_wr'],
-        prepare: async () => { c.figure.sel.value = 0; c.form.sel.value = 1; c.K.set(2); await update(); },
+        prepare: async () => { c.figure.sel.value = 0; c.form.sel.value = 1; c.K.set(2); c.jitter.set(0.5); await update(); },
       }];
       Object.values(view).forEach((x) => { x.onchange = update; });
       SK.turnable(f.canvas, view.yaw, view.pitch, update);
-      await SK.call('sk_fujimoto2000_wr', [0, 0, 0.35, 1, 14, 0, 0, 64], []);  // warm-up
+      await SK.call('sk_fujimoto2000_wr', [0, 2, 0.35, 1, 14, 0.5, 0, 0, 64], []);  // warm-up, the jitter's code too
       await update();
     },
   });
