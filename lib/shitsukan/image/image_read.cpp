@@ -109,11 +109,14 @@ Status png_chunks_inside(const char* path, const Bytes& file) {
 // without that bound and writes past its 257-entry size list (fuzz_readers: a 28-byte file,
 // counts summing to 1,578). Between the segments after a scan (SOS) the entropy-coded bytes are
 // skipped (0xFF there is followed by 0x00 or a restart marker). The end of image (EOI) must
-// come. Not a JPEG: success, for stb_image to judge.
+// come. A start of image after fill bytes (0xFF 0xFF 0xD8) is a JPEG to stb_image too (the
+// rerun's second finding). Not a JPEG: success, for stb_image to judge.
 Status jpeg_segments_inside(const char* path, const Bytes& file) {
     const std::size_t n = file.size();
-    if (n < 2 || file[0] != 0xFF || file[1] != 0xD8) return Status::success();
-    std::size_t at = 2;
+    std::size_t at = 0;  // SOI: 0xFF, any fill bytes 0xFF, 0xD8 (as stb_image reads a marker)
+    while (at < n && file[at] == 0xFF) ++at;
+    if (at == 0 || at >= n || file[at] != 0xD8) return Status::success();
+    ++at;
     while (at + 1 < n) {
         if (file[at] != 0xFF) {  // entropy-coded data after a scan
             ++at;
