@@ -365,3 +365,19 @@ TEST_CASE("read_image: JPEG Huffman tables over 256 codes, segments past the end
     }
     std::remove(path.c_str());
 }
+
+// stb_image's GIF, PSD, PIC and HDR readers are compiled out: a valid 1 x 1 GIF is not read.
+TEST_CASE("read_image: formats outside PNG, JPEG, BMP, TGA and PNM are refused") {
+    if (!image_reading_available()) return;
+    const unsigned char gif[] = {0x47, 0x49, 0x46, 0x38, 0x39, 0x61, 0x01, 0x00, 0x01, 0x00, 0x80,
+                                 0x00, 0x00, 0xff, 0xff, 0xff, 0x00, 0x00, 0x00, 0x2c, 0x00, 0x00,
+                                 0x00, 0x00, 0x01, 0x00, 0x01, 0x00, 0x00, 0x02, 0x02, 0x44, 0x01,
+                                 0x00, 0x3b};
+    const std::string path = temp_path("one.gif");
+    write_bytes(path, gif, sizeof gif);
+    LoadedImage img;
+    const Status s = read_image(path.c_str(), img);
+    CHECK(s.code() == StatusCode::io_error);
+    CHECK(std::string(s.message()).find(path) != std::string::npos);
+    std::remove(path.c_str());
+}

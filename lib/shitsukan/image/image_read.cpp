@@ -18,6 +18,13 @@
 
 #ifdef SHITSUKAN_USE_STB_IMAGE
 #define STB_IMAGE_STATIC
+// The formats a height map or a photo comes in; stb_image's GIF, PSD, PIC and HDR readers are left
+// out (chosen here: less of a third-party decoder exposed to hostile files; PFM carries floats).
+#define STBI_ONLY_PNG
+#define STBI_ONLY_JPEG
+#define STBI_ONLY_BMP
+#define STBI_ONLY_TGA
+#define STBI_ONLY_PNM
 #define STB_IMAGE_IMPLEMENTATION
 #if defined(__GNUC__)
 #pragma GCC diagnostic push

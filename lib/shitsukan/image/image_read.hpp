@@ -1,6 +1,6 @@
-// shitsukan/image/image_read.hpp — reading images (PNG 8 and 16 bit, JPEG, BMP, TGA, PGM/PPM,
-// ...) through stb_image, compiled privately like stb_image_write (no stbi_* symbol leaves
-// the library).
+// shitsukan/image/image_read.hpp — reading images (PNG 8 and 16 bit, JPEG, BMP, TGA, PGM/PPM)
+// through stb_image, compiled privately like stb_image_write (no stbi_* symbol leaves the
+// library); its GIF, PSD, PIC and HDR readers are left out (floats come as PFM, image/pfm.hpp).
 //
 // Manual
 //   RgbImage photo(8, 8, Rgb8{10, 20, 30});
