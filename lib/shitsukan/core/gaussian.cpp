@@ -164,19 +164,18 @@ float gaussian_from_bits_float(std::uint64_t bits) {
     return q * horner(kAShifted, t) / horner(kBShifted, t);
 }
 
-#if (defined(__GNUC__) || defined(__clang__)) && (defined(__SSE2__) || defined(__ARM_NEON))
+#if (defined(__GNUC__) || defined(__clang__)) && (defined(__SSE2__) || defined(__aarch64__))
 namespace {
-// Four lanes of plain IEEE float arithmetic (GCC/Clang vector extension). No contraction:
+// Four lanes of plain IEEE float arithmetic (GCC/Clang vector extension; SSE2 and AArch64's
+// NEON are IEEE in every lane, 32-bit Arm's NEON is not and is not used). No contraction:
 // -ffp-contract=off.
 typedef float Float4 __attribute__((vector_size(16)));
 inline Float4 splat(float v) { return Float4{v, v, v, v}; }
 // horner() in four lanes: the same operations in the same order.
 inline Float4 horner4(const PolyF& p, Float4 x) {
-    return ((((splat(p.v[0]) * x + splat(p.v[1])) * x + splat(p.v[2])) * x + splat(p.v[3])) *
-                x +
-            splat(p.v[4])) *
-               x +
-           splat(p.v[5]);
+    Float4 r = splat(p.v[0]);
+    for (int k = 1; k < 6; ++k) r = r * x + splat(p.v[k]);
+    return r;
 }
 }  // namespace
 

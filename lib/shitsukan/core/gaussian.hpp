@@ -32,7 +32,7 @@ float gaussian_from_bits(std::uint64_t bits);
 float gaussian_from_bits_float(std::uint64_t bits);
 
 // n draws at once: out[i] == gaussian_from_bits_float(bits[i]) bit for bit, for every i in
-// [0, n). With a four-lane SIMD unit (SSE2, NEON) four draws of the central region go through
+// [0, n). With a four-lane SIMD unit (SSE2, AArch64) four draws of the central region go through
 // its rational function as one vector: the same IEEE operations in the same order in each lane,
 // so the same bits, with the latency of one draw (the rational function is a chain of ~15
 // dependent float operations and a division; one draw at a time, the Type I lattice build

@@ -173,8 +173,8 @@ Status turbulence_checked(const LatticeView& lattice, Vec3 p, float& out);
 // cell share its eight nodes and are interpolated as one vector (the same operations in the
 // same order as eq. (6) above, so the same bits). On x86-64 with GCC or Clang the vector loop
 // is compiled twice, for SSE2 and for AVX, and the processor's choice is taken at run time
-// (the same IEEE operations either way). A 512 x 512 slice at 1/8 cell per pixel: 12.3
-// instructions per sample with AVX, 16.3 with SSE2, against 77 by single calls (callgrind;
+// (the same IEEE operations either way). A 512 x 512 slice at 1/8 cell per pixel: 12.4
+// instructions per sample with AVX, 15.7 with SSE2, against 77 by single calls (callgrind;
 // tests/bench/bench_solid.cpp times both).
 void turbulence_row(const LatticeView& lattice, Vec3 start, float step_x, int n, float* out);
 namespace detail {
