@@ -155,7 +155,8 @@ SHITSUKAN_TURBULENCE_INLINE int row_in_groups(const LatticeView& lattice, Vec3 s
     return i;
 }
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+// Not under clang-cl (_MSC_VER): its __builtin_cpu_supports needs compiler-rt at link time.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(_MSC_VER)
 #define SHITSUKAN_ROW_AVX 1
 // row_in_groups compiled for AVX: the same operations, VEX-encoded (three operands, so none of
 // SSE's register copies: 12.4 instead of 15.7 instructions a sample on the bench's slice,
