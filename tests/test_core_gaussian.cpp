@@ -1,6 +1,7 @@
 // core/gaussian: gaussian_from_bits_float, all in float arithmetic, stays within 8
 // float ulps of gaussian_from_bits (the double definition) at the region edges, deep in both
-// tails and everywhere else; its integer tail test is the double one's.
+// tails and everywhere else; its integer tail test is the double one's; many draws at once
+// (gaussians_from_bits_float) are the single draws bit for bit.
 #include <doctest/doctest.h>
 #include "measured.hpp"
 
@@ -96,4 +97,47 @@ TEST_CASE("gaussian_from_bits_float: within 8 float ulps of gaussian_from_bits e
     CHECK(std::isfinite(gaussian_from_bits_float(~std::uint64_t(0))));
     CHECK(gaussian_from_bits_float(~std::uint64_t(0)) > 8.0f);
     CHECK(gaussian_from_bits_float(0) < -8.0f);
+}
+
+TEST_CASE("gaussians_from_bits_float: the single draws bit for bit, tails in every lane") {
+    // Draws at the region edges and deep in both tails, placed at every position of a group of
+    // four and in the leftover draws of a batch whose length is not a multiple of four, among
+    // uniform draws; batches of every length 0..9 and a long one.
+    const std::uint64_t special[] = {0,
+                                     (kLowTail - 1) << 11,
+                                     kLowTail << 11,
+                                     ((kLowTail + 1) << 11) | 2047u,
+                                     (kTop / 2) << 11,
+                                     ((std::uint64_t(1) << 52) - 1) << 11,
+                                     (std::uint64_t(1) << 52) << 11,
+                                     kHighTail << 11,
+                                     (kHighTail + 1) << 11,
+                                     ~std::uint64_t(0)};
+    Pcg32 rng(2024u, 5u);
+    auto uniform_bits = [&rng] { return (std::uint64_t(rng.next_u32()) << 32) | rng.next_u32(); };
+    long mismatches = 0, draws = 0, tail_draws = 0;
+    std::uint64_t bits[4099];
+    float got[4099];
+    auto check_batch = [&](int n) {
+        gaussians_from_bits_float(bits, n, got);
+        for (int i = 0; i < n; ++i, ++draws) {
+            const float want = gaussian_from_bits_float(bits[i]);
+            mismatches += std::memcmp(&want, &got[i], sizeof want) != 0;
+            const std::uint64_t m = bits[i] >> 11;
+            tail_draws += m < kLowTail || m > kHighTail;
+        }
+    };
+    for (std::uint64_t s : special)
+        for (int n = 1; n <= 9; ++n)
+            for (int at = 0; at < n; ++at) {
+                for (int i = 0; i < n; ++i) bits[i] = uniform_bits();
+                bits[at] = s;
+                check_batch(n);
+            }
+    for (int i = 0; i < 4099; ++i) bits[i] = uniform_bits();
+    check_batch(4099);
+    check_batch(0);
+    CHECK(draws == 10 * 285 + 4099);  // 285 = 1^2 + ... + 9^2
+    CHECK(tail_draws >= 4 * 45);      // four of the special draws are in the tails
+    CHECK(mismatches == 0);
 }

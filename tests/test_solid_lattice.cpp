@@ -195,6 +195,82 @@ TEST_CASE("partial builds and the sequential noise source") {
     CHECK(t3.init(q).code() == StatusCode::not_supported);
 }
 
+TEST_CASE("Type I at R = 7: every node is eq. (1), (3) or (4) of its parents and its own g") {
+    // Rows of 64 and 65 nodes: longer than the build's runs along x, so runs are split.
+    FractalParams p;
+    p.R = 7;
+    p.corners[1] = 0.5f;
+    p.corners[7] = -0.75f;
+    LatticeView v;
+    std::vector<float> values = build_type1(p, &v);
+    long mismatches = 0, nodes = 0;
+    for (int z = 0; z <= 128; ++z)
+        for (int y = 0; y <= 128; ++y)
+            for (int x = 0; x <= 128; ++x) {
+                const NodeClass c = classify_node(p.R, x, y, z);
+                if (c.level == 0) continue;
+                float parents[6];
+                for (int k = 0; k < 2 * c.odd_count; ++k) {
+                    const ParentStep s = parent_step(c.odd_axes, k);
+                    parents[k] = v.at(x + (s.axis == 0 ? s.sign * c.half : 0),
+                                      y + (s.axis == 1 ? s.sign * c.half : 0),
+                                      z + (s.axis == 2 ? s.sign * c.half : 0));
+                }
+                const float g = node_gaussian(p.seed, x, y, z) * level_amplitude(c.level, p.beta);
+                mismatches += !same_bits(v.at(x, y, z), node_from_parents(c.odd_count, parents, g));
+                ++nodes;
+            }
+    CHECK(nodes == 129L * 129 * 129 - 8);
+    CHECK(mismatches == 0);
+}
+
+TEST_CASE("NoiseSource::sequential draws g in the documented order") {
+    // fractal_lattice.hpp: level by level; step (1), (2), (3); pattern by pattern in increasing
+    // odd-axis mask; each pattern z, y, x upwards; one Pcg32(seed, kLatticeStream) draw a node.
+    for (int R : {3, 7}) {
+        FractalParams p;
+        p.R = R;
+        p.noise = NoiseSource::sequential;
+        p.corners[2] = 1.5f;
+        LatticeView v;
+        std::vector<float> values = build_type1(p, &v);
+        const int side = (1 << R) + 1;
+        std::vector<float> want(values.size());
+        auto at = [&](int x, int y, int z) -> float& {
+            return want[(std::size_t(z) * std::size_t(side) + std::size_t(y)) * std::size_t(side) +
+                        std::size_t(x)];
+        };
+        for (int k = 0; k < 8; ++k)
+            at((k & 1) * (side - 1), ((k >> 1) & 1) * (side - 1), (k >> 2) * (side - 1)) =
+                p.corners[k];
+        Pcg32 rng(p.seed, kLatticeStream);
+        for (int n = 1; n <= R; ++n) {
+            const int h = 1 << (R - n);
+            const float L = level_amplitude(n, p.beta);
+            for (int odd = 1; odd <= 3; ++odd)
+                for (int mask = 1; mask < 8; ++mask) {
+                    if ((mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) != odd) continue;
+                    for (int z = (mask & 4) ? h : 0; z < side; z += 2 * h)
+                        for (int y = (mask & 2) ? h : 0; y < side; y += 2 * h)
+                            for (int x = (mask & 1) ? h : 0; x < side; x += 2 * h) {
+                                float parents[6];
+                                for (int k = 0; k < 2 * odd; ++k) {
+                                    const ParentStep s = parent_step(mask, k);
+                                    parents[k] = at(x + (s.axis == 0 ? s.sign * h : 0),
+                                                    y + (s.axis == 1 ? s.sign * h : 0),
+                                                    z + (s.axis == 2 ? s.sign * h : 0));
+                                }
+                                at(x, y, z) = node_from_parents(odd, parents, rng.gaussian() * L);
+                            }
+                }
+        }
+        long mismatches = 0;
+        for (std::size_t i = 0; i < values.size(); ++i)
+            mismatches += !same_bits(values[i], want[i]);
+        CHECK(mismatches == 0);
+    }
+}
+
 TEST_CASE("Type III works at R = 20 in O(R) memory and agrees with Type II there") {
     FractalParams p;
     p.R = 20;

@@ -132,30 +132,42 @@ TEST_CASE("turbulence_row and turbulence_points: the same bits as single calls")
 
 TEST_CASE("turbulence_row: whole 512 x 512 slices, the same bits as single calls") {
     const LatticeView v = test_lattice().view();
-    std::vector<float> row(512);
+    std::vector<float> row(512), baseline(512);
     // Slices as the figures and the bench take them (1/8 cell per pixel), others with steps
     // that do not divide a cell, starting before the lattice or ending beyond it, and slices
-    // on the faces z = 0 and z = 64 and just outside them.
+    // on the faces z = 0 and z = 64 and just outside them; steps with many groups of four in a
+    // cell, with groups straddling a face most of the time, and with every group spanning
+    // faces; rows whose length leaves one to three samples after the last group of four.
     struct Slice {
         float x0, step, y0, y_step, z;
+        int n;
     };
-    const Slice slices[] = {{0.5f / 8.0f, 1.0f / 8.0f, 0.5f / 8.0f, 1.0f / 8.0f, 32.3f},
-                            {0.0f, 1.0f / 8.0f, 0.0f, 1.0f / 8.0f, 0.0f},
-                            {-3.3f, 0.15f, -2.0f, 0.14f, 64.0f},
-                            {-0.7f, 1.0f / 3.0f, 1.0f, 0.1f, 17.5f},
-                            {60.1f, 0.01f, 63.9f, 0.001f, -0.0f},
-                            {-0.0f, 0.0625f, 10.0f, 0.1f, 64.5f}};
-    long mismatches = 0, samples = 0;
+    const Slice slices[] = {{0.5f / 8.0f, 1.0f / 8.0f, 0.5f / 8.0f, 1.0f / 8.0f, 32.3f, 512},
+                            {0.0f, 1.0f / 8.0f, 0.0f, 1.0f / 8.0f, 0.0f, 512},
+                            {-3.3f, 0.15f, -2.0f, 0.14f, 64.0f, 512},
+                            {-0.7f, 1.0f / 3.0f, 1.0f, 0.1f, 17.5f, 512},
+                            {60.1f, 0.01f, 63.9f, 0.001f, -0.0f, 512},
+                            {-0.0f, 0.0625f, 10.0f, 0.1f, 64.5f, 512},
+                            {0.3f, 1.0f / 1024.0f, 0.2f, 0.125f, 5.25f, 511},
+                            {1.05f, 0.3f, 0.0f, 0.126f, 40.7f, 510},
+                            {-20.0f, 0.17f, 3.3f, 0.11f, 63.999f, 509},
+                            {0.25f, 1.7f, 0.5f, 0.12f, 12.0f, 37}};
+    long mismatches = 0, baseline_mismatches = 0, samples = 0;
     for (const Slice& s : slices)
         for (int y = 0; y < 512; ++y) {
             const float py = s.y0 + float(y) * s.y_step;
-            turbulence_row(v, Vec3{s.x0, py, s.z}, s.step, 512, row.data());
-            for (int x = 0; x < 512; ++x, ++samples)
-                mismatches += !same_bits(
-                    row[std::size_t(x)], turbulence(v, Vec3{s.x0 + float(x) * s.step, py, s.z}));
+            turbulence_row(v, Vec3{s.x0, py, s.z}, s.step, s.n, row.data());
+            detail::turbulence_row_baseline(v, Vec3{s.x0, py, s.z}, s.step, s.n,
+                                            baseline.data());
+            for (int x = 0; x < s.n; ++x, ++samples) {
+                const float want = turbulence(v, Vec3{s.x0 + float(x) * s.step, py, s.z});
+                mismatches += !same_bits(row[std::size_t(x)], want);
+                baseline_mismatches += !same_bits(baseline[std::size_t(x)], want);
+            }
         }
-    CHECK(samples == 6L * 512 * 512);
+    CHECK(samples == 512L * (6 * 512 + 511 + 510 + 509 + 37));
     CHECK(mismatches == 0);
+    CHECK(baseline_mismatches == 0);
 }
 
 TEST_CASE("turbulence: the fast path gives the clamped path's bits, on the faces and beside") {

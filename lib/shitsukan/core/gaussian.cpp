@@ -121,35 +121,84 @@ float lower_tail_float(float t) {
     const float q = std::sqrt(-2.0f * det_logf_fast(t));
     return horner(kCf, q) / horner(kDf, q);
 }
+
+// p = open_unit_from_bits(bits) = (double(m) + 0.5)·2^-53 with m = bits >> 11, a
+// non-decreasing function of m; the tails p < 0.02425 and p > 1 - 0.02425 are exactly
+// m < kLowTail and m > kHighTail (found by bisection on that double expression, checked at both
+// edges by tests/test_core_gaussian.cpp). No double arithmetic anywhere: on a Cortex-M4F the
+// int64 -> double conversion, the compares, p - 0.5 and the tails' det_log were software double
+// per lattice node. p, 1 - p and p - 0.5 are formed exactly from m in integers and rounded once
+// to float, as float(p), float(1 - p), float(p - 0.5) would be.
+constexpr std::uint64_t kLowTail = 218424581927469ull, kHighTail = 8788774672813522ull;
+constexpr std::int64_t kTwo53 = std::int64_t(1) << 53;
+
+inline bool in_tails(std::uint64_t m) { return m < kLowTail || m > kHighTail; }
+
+// The draw of a tail m (in_tails(m)): Acklam's tail function, lower or upper.
+float tails_float(std::uint64_t m) {
+    if (m < kLowTail)  // lower tail: p = (m + 0.5)·2^-53 = (2m + 1)·2^-54, m < 2^48
+        return lower_tail_float(int53_to_float(std::int64_t(2 * m + 1)) * 0x1p-54f);
+    // upper tail, by symmetry: m > 2^52, so double(m) + 0.5 is the even one of m and m + 1 (a
+    // tie) and 1 - p = (2^53 - that)·2^-53, exact; m = 2^53 - 1 would give p = 1, which
+    // open_unit_from_bits turns into 1 - 2^-53 (1 - p = 2^-53).
+    const std::int64_t n = kTwo53 - std::int64_t(m + (m & 1u));
+    return -lower_tail_float(int53_to_float(n > 0 ? n : 1) * 0x1p-53f);
+}
+
+// q = float(p - 0.5), the central region's variable before squaring: p - 0.5 = n·2^-54
+// exactly: below 2^52, m + 0.5 is exact (n = 2m + 1 - 2^53); from 2^52 on, double(m) + 0.5 ties
+// to the even one of m and m + 1 (n = 2·that - 2^53). Any m gives a finite q.
+inline float centre_q(std::uint64_t m) {
+    const std::int64_t n = m < (std::uint64_t(1) << 52)
+                               ? std::int64_t(2 * m + 1) - kTwo53
+                               : std::int64_t(2 * (m + (m & 1u))) - kTwo53;
+    return int53_to_float(n) * 0x1p-54f;  // one rounding, as float(p - 0.5)
+}
 }  // namespace
 
 float gaussian_from_bits_float(std::uint64_t bits) {
-    // p = open_unit_from_bits(bits) = (double(m) + 0.5)·2^-53 with m = bits >> 11, a
-    // non-decreasing function of m; the tails p < 0.02425 and p > 1 - 0.02425 are exactly
-    // m < kLowTail and m > kHighTail (found by bisection on that double expression, checked
-    // at both edges by tests/test_core_gaussian.cpp). No double arithmetic anywhere: on a
-    // Cortex-M4F the int64 -> double conversion, the compares, p - 0.5 and the tails' det_log
-    // were software double per lattice node. p, 1 - p and p - 0.5 are formed exactly from m in
-    // integers and rounded once to float, as float(p), float(1 - p), float(p - 0.5) would be.
-    constexpr std::uint64_t kLowTail = 218424581927469ull, kHighTail = 8788774672813522ull;
     const std::uint64_t m = bits >> 11;
-    const std::int64_t two53 = std::int64_t(1) << 53;
-    if (m < kLowTail)  // lower tail (2.4 %): p = (m + 0.5)·2^-53 = (2m + 1)·2^-54, m < 2^48
-        return lower_tail_float(int53_to_float(std::int64_t(2 * m + 1)) * 0x1p-54f);
-    if (m > kHighTail) {  // upper tail (2.4 %), by symmetry: m > 2^52, so double(m) + 0.5 is
-        // the even one of m and m + 1 (a tie) and 1 - p = (2^53 - that)·2^-53, exact; m = 2^53 - 1
-        // would give p = 1, which open_unit_from_bits turns into 1 - 2^-53 (1 - p = 2^-53).
-        const std::int64_t n = two53 - std::int64_t(m + (m & 1u));
-        return -lower_tail_float(int53_to_float(n > 0 ? n : 1) * 0x1p-53f);
-    }
-    // p - 0.5 = n·2^-54 exactly: below 2^52, m + 0.5 is exact (n = 2m + 1 - 2^53); from
-    // 2^52 on, double(m) + 0.5 ties to the even one of m and m + 1 (n = 2·that - 2^53).
-    const std::int64_t n = m < (std::uint64_t(1) << 52)
-                               ? std::int64_t(2 * m + 1) - two53
-                               : std::int64_t(2 * (m + (m & 1u))) - two53;
-    const float q = int53_to_float(n) * 0x1p-54f;  // one rounding, as float(p - 0.5)
-    const float t = q * q - kCentreR0;             // r - r0, the central region's variable
+    if (in_tails(m)) return tails_float(m);
+    const float q = centre_q(m);
+    const float t = q * q - kCentreR0;  // r - r0, the central region's variable
     return q * horner(kAShifted, t) / horner(kBShifted, t);
 }
+
+#if (defined(__GNUC__) || defined(__clang__)) && (defined(__SSE2__) || defined(__aarch64__))
+namespace {
+// Four lanes of plain IEEE float arithmetic (GCC/Clang vector extension; SSE2 and AArch64's
+// NEON are IEEE in every lane, 32-bit Arm's NEON is not and is not used). No contraction:
+// -ffp-contract=off.
+typedef float Float4 __attribute__((vector_size(16)));
+inline Float4 splat(float v) { return Float4{v, v, v, v}; }
+// horner() in four lanes: the same operations in the same order.
+inline Float4 horner4(const PolyF& p, Float4 x) {
+    Float4 r = splat(p.v[0]);
+    for (int k = 1; k < 6; ++k) r = r * x + splat(p.v[k]);
+    return r;
+}
+}  // namespace
+
+void gaussians_from_bits_float(const std::uint64_t* bits, int n, float* out) {
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+        const std::uint64_t m[4] = {bits[i] >> 11, bits[i + 1] >> 11, bits[i + 2] >> 11,
+                                    bits[i + 3] >> 11};
+        // A tail lane's q is finite but its value below is not the draw: redone alone.
+        const Float4 q{centre_q(m[0]), centre_q(m[1]), centre_q(m[2]), centre_q(m[3])};
+        const Float4 t = q * q - splat(kCentreR0);
+        const Float4 g = q * horner4(kAShifted, t) / horner4(kBShifted, t);
+        std::memcpy(out + i, &g, sizeof g);
+        if (in_tails(m[0]) || in_tails(m[1]) || in_tails(m[2]) || in_tails(m[3]))
+            for (int l = 0; l < 4; ++l)
+                if (in_tails(m[l])) out[i + l] = tails_float(m[l]);
+    }
+    for (; i < n; ++i) out[i] = gaussian_from_bits_float(bits[i]);
+}
+#else
+void gaussians_from_bits_float(const std::uint64_t* bits, int n, float* out) {
+    for (int i = 0; i < n; ++i) out[i] = gaussian_from_bits_float(bits[i]);
+}
+#endif
 
 }  // namespace shitsukan

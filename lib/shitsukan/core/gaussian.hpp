@@ -10,6 +10,10 @@
 //                                             // measured 7), about 10x fewer instructions on a
 //                                             // single-precision FPU (the fractal lattice's
 //                                             // noise, solid/fractal_node.hpp)
+//   const std::uint64_t many[3] = {bits, 7u << 11, ~std::uint64_t(0)};
+//   float gs[3];
+//   gaussians_from_bits_float(many, 3, gs);   // gs[i] == gaussian_from_bits_float(many[i]),
+//                                             // bit for bit, four at a time where it can
 // Why not the C++ library's normal distribution: its algorithm is implementation-defined, so
 // the same seed gives different numbers under libstdc++, libc++ and MSVC. Why not Box-Muller: it
 // consumes two uniforms and keeps state. The inverse CDF maps one uniform to one Gaussian,
@@ -26,6 +30,15 @@ namespace shitsukan {
 double inverse_normal_cdf(double p);
 float gaussian_from_bits(std::uint64_t bits);
 float gaussian_from_bits_float(std::uint64_t bits);
+
+// n draws at once: out[i] == gaussian_from_bits_float(bits[i]) bit for bit, for every i in
+// [0, n). With a four-lane SIMD unit (SSE2, AArch64) four draws of the central region go through
+// its rational function as one vector: the same IEEE operations in the same order in each lane,
+// so the same bits, with the latency of one draw (the rational function is a chain of ~15
+// dependent float operations and a division; one draw at a time, the Type I lattice build
+// waited on it). A group holding a draw in the tails (2.4 % each side) redoes that draw alone.
+// Without SIMD it is the loop of single draws.
+void gaussians_from_bits_float(const std::uint64_t* bits, int n, float* out);
 
 // 53 random bits -> a double strictly inside (0, 1): (k + 0.5) / 2^53, rounded to double
 // (above 2^52, k + 0.5 rounds to the even one of k and k + 1), except that k = 2^53 - 1, whose

@@ -22,9 +22,33 @@ struct LevelStep {
     std::uint64_t hash_start;  // of (seed, kLatticeStream), computed once
 };
 
-// One pattern of one step (the nodes whose odd axes are `mask`), z, y, x upwards: each node
-// from its 2·OddCount parents (the parent rule of fractal_node.hpp, resolved into index
-// offsets once per pattern, not once per node) and g, eq. (1), (3) or (4).
+// The nodes of one pattern are taken in runs along x, of at most kRun nodes of one row (chosen
+// here: 33, a whole row of the R = 6 lattice; 33 · 28 bytes of stack): first the run's numbers
+// g, then each node from its parents.
+constexpr int kRun = 33;
+
+// One run: the nodes first, first + step, ... (count of them) from their 2·OddCount parents
+// (index offsets from the parent rule of fractal_node.hpp) and g[], eq. (1), (3) or (4).
+template <int OddCount>
+void compute_run(const LevelStep& s, const std::int64_t* offset, float* first, int count,
+                 const float* g) {
+    const int step = 2 * s.h;
+    for (int c = 0; c < count; ++c) {
+        float* node = first + std::int64_t(c) * step;
+        float parents[2 * OddCount];
+        for (int k = 0; k < 2 * OddCount; ++k) parents[k] = node[offset[k]];
+        *node = node_from_parents(OddCount, parents, g[c] * s.amplitude);
+    }
+}
+
+// One pattern of one step (the nodes whose odd axes are `mask`): the parent rule resolved into
+// index offsets once per pattern, not once per node. With NoiseSource::sequential the rows are
+// scanned z, y, x upwards, drawing g from the generator in that order. With NoiseSource::hash
+// no node of a step depends on another of the same step (its parents are older), so the order
+// is free: runs of x, then y, then z upwards. The node's number is node_gaussian_from(start,
+// x, y, z), whose hash adds x, then y, then z (core/hash.hpp): the x parts are computed once per
+// run, the (x, y) parts once per row of the run, so one hash_add per node; the run's numbers
+// then come four at a time (gaussians_from_bits_float), the same bits as one by one.
 template <int OddCount>
 void compute_pattern(const LevelStep& s, int mask) {
     std::int64_t offset[2 * OddCount];
@@ -35,30 +59,35 @@ void compute_pattern(const LevelStep& s, int mask) {
     const int h = s.h, step = 2 * h, side = int(s.side);
     const int x_start = (mask & 1) ? h : 0, y_start = (mask & 2) ? h : 0,
               z_start = (mask & 4) ? h : 0;
-    // Every row of the pattern has the same x: hash_add(start, x), the first third of a node's
-    // hash, is computed once per pattern for the first kCachedX of them (all of a row up to
-    // R = 7; chosen here: 512 bytes of stack).
-    constexpr int kCachedX = 64;
-    std::uint64_t hash_x[kCachedX];
-    int cached = 0;
-    for (int x = x_start; x < side && cached < kCachedX; x += step)
-        hash_x[cached++] = hash_add(s.hash_start, std::uint32_t(x));
-    const bool hashed = s.noise == NoiseSource::hash;
-    for (int z = z_start; z < side; z += step)
+    const int columns = (side - 1 - x_start) / step + 1;  // nodes per row
+    float g[kRun];
+    if (s.noise == NoiseSource::sequential) {
+        for (int z = z_start; z < side; z += step)
+            for (int y = y_start; y < side; y += step)
+                for (int c0 = 0; c0 < columns; c0 += kRun) {
+                    const int count = columns - c0 < kRun ? columns - c0 : kRun;
+                    for (int c = 0; c < count; ++c) g[c] = s.rng->gaussian();
+                    compute_run<OddCount>(s, offset, s.v + (z * s.side + y) * s.side + x_start +
+                                                         std::int64_t(c0) * step,
+                                          count, g);
+                }
+        return;
+    }
+    std::uint64_t hash_x[kRun], hash_xy[kRun], bits[kRun];
+    for (int c0 = 0; c0 < columns; c0 += kRun) {
+        const int count = columns - c0 < kRun ? columns - c0 : kRun;
+        const int x0 = x_start + c0 * step;
+        for (int c = 0; c < count; ++c)
+            hash_x[c] = hash_add(s.hash_start, std::uint32_t(x0 + c * step));
         for (int y = y_start; y < side; y += step) {
-            float* row = s.v + (std::int64_t(z) * s.side + y) * s.side;
-            int column = 0;
-            for (int x = x_start; x < side; x += step, ++column) {
-                float* node = row + x;
-                float parents[2 * OddCount];
-                for (int k = 0; k < 2 * OddCount; ++k) parents[k] = node[offset[k]];
-                const std::uint64_t hx = column < cached
-                                             ? hash_x[column]
-                                             : hash_add(s.hash_start, std::uint32_t(x));
-                const float gauss = hashed ? node_gaussian_after_x(hx, y, z) : s.rng->gaussian();
-                *node = node_from_parents(OddCount, parents, gauss * s.amplitude);
+            for (int c = 0; c < count; ++c) hash_xy[c] = hash_add(hash_x[c], std::uint32_t(y));
+            for (int z = z_start; z < side; z += step) {
+                for (int c = 0; c < count; ++c) bits[c] = hash_add(hash_xy[c], std::uint32_t(z));
+                gaussians_from_bits_float(bits, count, g);
+                compute_run<OddCount>(s, offset, s.v + (z * s.side + y) * s.side + x0, count, g);
             }
         }
+    }
 }
 
 // One step of okada1987 §2.2: every new node with `OddCount` odd axes, pattern by pattern

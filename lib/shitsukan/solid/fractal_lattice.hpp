@@ -18,8 +18,10 @@
 // kTypeIMaxDepth. Layout: x fastest, then y, then z: index (z·side + y)·side + x.
 // Order of one level n (h = 2^(R-n)): step (1) all edge midpoints, step (2) all face
 // centres, step (3) all cube centres; within a step pattern by pattern (which axes are odd:
-// x, y, z for edges; xy, xz, yz for faces), each scanning z, y, x upwards. With
-// NoiseSource::sequential the numbers g are drawn from Pcg32(seed) in exactly that order.
+// x, y, z for edges; xy, xz, yz for faces). With NoiseSource::sequential each pattern scans
+// z, y, x upwards and the numbers g are drawn from Pcg32(seed) in exactly that order. With
+// NoiseSource::hash (g a function of the node) the order within a step changes nothing: the
+// nodes of a step depend only on older ones.
 // small-device: yes (caller buffer, no allocation)
 #pragma once
 

@@ -68,16 +68,11 @@ inline float node_gaussian(std::uint32_t seed, std::int32_t x, std::int32_t y, s
 
 // The same number with the seed's hash start computed once (a lattice draws millions):
 // node_gaussian_from(hash_start(seed, kLatticeStream), x, y, z) == node_gaussian(seed, x, y, z).
+// The hash adds x, then y, then z (core/hash.hpp): the Type I build computes the x and (x, y)
+// parts once for many nodes and draws a run's numbers together (gaussians_from_bits_float).
 inline float node_gaussian_from(std::uint64_t start, std::int32_t x, std::int32_t y,
                                 std::int32_t z) {
     return gaussian_from_bits_float(hash_coords_from(start, x, y, z));
-}
-
-// The same number from hx = hash_add(start, x), for a caller that reuses one x across a
-// pattern's rows (the Type I build): node_gaussian_after_x(hash_add(start, x), y, z) ==
-// node_gaussian_from(start, x, y, z).
-inline float node_gaussian_after_x(std::uint64_t hx, std::int32_t y, std::int32_t z) {
-    return gaussian_from_bits_float(hash_coords_after_x(hx, y, z));
 }
 
 // The parent rule, written once (Types I, II and III, the tests and example 10 all use it):
