@@ -85,16 +85,21 @@ Status leather_maps(const ScalePattern& pattern, int w, int h, const BezierChain
     return make_leather_maps(pattern, w, h, section, options, *out);  // the library's one call
 }
 
-void shade_flat_texture(const LeatherMaps& maps, Vec2 lo, Vec2 hi, const RgbView& out,
-                        const Blinn1977Material& m, float key_height) {
+void flat_texture_lights(Vec2 lo, Vec2 hi, float key_height, PointLight out[2]) {
     Vec2 size = hi - lo;
     float span = std::fmax(size.x, size.y);
     // Two point lights: a key light high at the upper left, a fill light low at the right
     // (chosen here), at distances proportional to the window so a close-up is lit alike.
-    PointLight lights[2] = {
-        {{lo.x - 0.5f * span, hi.y + 0.5f * span, key_height * span}, {1.1f, 1.05f, 1.0f}},
-        {{hi.x + 0.9f * span, lo.y + 0.1f * span, 0.5f * span}, {0.30f, 0.32f, 0.38f}},
-    };
+    out[0] = {{lo.x - 0.5f * span, hi.y + 0.5f * span, key_height * span}, {1.1f, 1.05f, 1.0f}};
+    out[1] = {{hi.x + 0.9f * span, lo.y + 0.1f * span, 0.5f * span}, {0.30f, 0.32f, 0.38f}};
+}
+
+void shade_flat_texture(const LeatherMaps& maps, Vec2 lo, Vec2 hi, const RgbView& out,
+                        const Blinn1977Material& m, float key_height) {
+    Vec2 size = hi - lo;
+    float span = std::fmax(size.x, size.y);
+    PointLight lights[2];
+    flat_texture_lights(lo, hi, key_height, lights);
     for (int j = 0; j < out.height; ++j) {
         Rgb8* row = out.row(j);
         float y = hi.y - (float(j) + 0.5f) / float(out.height) * size.y;

@@ -49,6 +49,8 @@ Status leather_maps(const ScalePattern& pattern, int w, int h, const BezierChain
 // light's height above the texture in window spans (kDefaultKeyHeight: about 21 degrees above
 // the window's centre); a lower, grazing key light brings out shallow slopes.
 constexpr float kDefaultKeyHeight = 0.55f;
+// Those two lights for the window [lo, hi], the key light first.
+void flat_texture_lights(Vec2 lo, Vec2 hi, float key_height, PointLight out[2]);
 void shade_flat_texture(const LeatherMaps& maps, Vec2 lo, Vec2 hi, const RgbView& out,
                         const Blinn1977Material& material = leather_material(),
                         float key_height = kDefaultKeyHeight);
