@@ -219,7 +219,7 @@ SHITSUKAN_FIGURE(
                "a flame fading at its edges; the paper gives per-point values but does not "
                "print them");
     ctx.chosen("frame", "1.17x closer than a frame holding the flame with room around it",
-               "the flame fills its 1200 x 1200 panel, as in the paper's fig. 23");
+               "the 1200 x 1200 panel (Table 4) shows the flame, not the black around it");
     ctx.chosen("jitter", "height x(1 + 0.3 g), colour + 0.06 g, transparency + 0.08 g",
                "§5 gives no deviation");
     ctx.chosen("layout",
