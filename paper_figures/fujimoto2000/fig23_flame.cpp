@@ -28,7 +28,11 @@ using figures::FigureContext;
 using figures::fmt;
 
 constexpr int kLevels = 3;       // K, given
+constexpr float kSideFade = 0.95f;  // chosen: the sides keep 1 - kSideFade of the front's opacity
 constexpr float kDelta = 0.60f;  // given
+// Chosen: the frame closes in 1.17x on y = 2.45 so the tallest flame, (c-3), spans the frame's
+// height (rows 74..1196 of 1200), the same frame for all panels so a -> b -> c compare.
+constexpr float kFrameZoom = 1.17f;
 
 // The three settings a, b, c (chosen): lean of the flame tongues (radians, + = to the right),
 // height scale towards the tip, and the phase of the tongue pattern around the flame.
@@ -38,13 +42,18 @@ struct Setting {
 constexpr Setting kSettings[3] = {{0.0f, 1.0f, 0.0f}, {-0.35f, 1.35f, 0.9f}, {0.30f, 1.7f, 1.8f}};
 
 // Chosen: 11 x 9 B-spline points (8 x 6 spans) on a cone open only at the back (theta from
-// -160 to 160 degrees; radius 0.9 at the bottom to 0.22 at the top, 3.2 high): the flame has a
+// -160 to 160 degrees; radius 1.3 at the bottom to 0.39 at the top, 3.2 high): the flame has a
 // back wall to be seen through its front (§5 gives the control points a transparency; a half
 // cone facing the camera had nothing behind it but black, so the transparency only darkened
-// it: in (a-3) 10 % of the flame's pixels took more than 0.15 of their colour from behind,
-// against 32-50 % now, measured in the notes). Heights grow towards the top, directions point up
-// and outwards, leaning sideways by the setting; colours white-yellow (bottom) -> orange ->
-// red (top), transparency 0.05 (bottom) -> 0.75 (top).
+// it). Heights grow towards the top, directions point up and outwards, leaning sideways by
+// the setting; colours white-yellow (bottom) -> orange -> red (top). Opacity 0.95 (bottom) ->
+// 0.25 (top) at the front, and towards the sides (theta = +-90 degrees, the silhouette from
+// the camera) down to 1 - kSideFade of that: the flame's edges fade into the black behind
+// (measured: the background showing through the outer tenth of each row 0.56-0.59 against
+// 0.45-0.46 in the middle half of (a,b,c-3); with one opacity all round the edges hid it most,
+// 0.10-0.12 against 0.31-0.34, the layers piling up where the surface is seen edge-on).
+// The 0.9-radius cone in the former wider frame filled 13-16 % of it, a narrow column; the
+// radius 1.3 and the frame closed on the tallest flame (c) fill 27-31 % (checked).
 WrControlMesh flame_mesh(const Setting& s) {
     const int cols = 11, rows = 9;
     WrControlMesh m = make_control_mesh(cols, rows);
@@ -53,7 +62,7 @@ WrControlMesh flame_mesh(const Setting& s) {
             WrControlPoint& p = m.at(c, r);
             const float t = float(r) / float(rows - 1);  // 0 bottom .. 1 top
             const float theta = (-160.0f + 320.0f * float(c) / float(cols - 1)) * kPi / 180.0f;
-            const float radius = 0.9f * (1.0f - 0.75f * t);
+            const float radius = 1.3f * (1.0f - 0.7f * t);
             p.position = {radius * det_sin(theta), 3.2f * t, radius * det_cos(theta)};
             const float tongue = 0.45f + 0.55f * det_cos(1.5f * float(c) + s.phase);
             p.height = 0.1f + 1.3f * det_pow(t, 1.5f) * tongue * (1.0f + (s.tip_scale - 1.0f) * t);
@@ -62,13 +71,18 @@ WrControlMesh flame_mesh(const Setting& s) {
                 Vec3{det_sin(lean) + 0.3f * det_sin(theta), det_cos(lean), 0.3f * det_cos(theta)});
             const Vec3 base{1.0f, 0.95f, 0.62f}, mid{1.0f, 0.55f, 0.10f}, tip{0.85f, 0.12f, 0.03f};
             p.color = t < 0.5f ? lerp(base, mid, 2.0f * t) : lerp(mid, tip, 2.0f * t - 1.0f);
-            p.transparency = 0.05f + 0.7f * t;
+            // Opacity (1 - transparency) falls from the bottom to the top and from the front
+            // (theta = 0) to the sides (theta = +-90 degrees, the silhouette from the camera),
+            // so the flame's edges fade into what is behind.
+            const float side = det_sin(theta) * det_sin(theta);
+            p.transparency = 1.0f - (0.95f - 0.7f * t) * (1.0f - kSideFade * side);
             p.delta = kDelta;
         }
     return m;
 }
 
-const Shot kShot{{0.0f, 2.6f, 7.2f}, {0.0f, 2.3f, 0.0f}, {0, 1, 0}, 42.0f};
+const Shot kShot = zoom_shot(Shot{{0.0f, 2.6f, 7.2f}, {0.0f, 2.3f, 0.0f}, {0, 1, 0}, 42.0f},
+                             {0.0f, 2.45f, 0.0f}, kFrameZoom);
 
 // kind: 'x' span colours, '1' mesh, '2' plain, '3' superposed; setting 0..2 = a..c.
 Status draw_panel(bool quick, char kind, int setting, RgbView view, StageTimes* t, WrMesh* keep) {
@@ -84,13 +98,16 @@ Status draw_panel(bool quick, char kind, int setting, RgbView view, StageTimes* 
     const Camera camera = shot_camera(kShot, view.width, view.height);
     if (kind == '1') {
         // Wider than the surface panels: the height sticks reach above the flame.
-        const Camera wide = shot_camera(zoom_shot(kShot, kShot.target + Vec3{0, 0.8f, 0}, 0.75f),
-                                        view.width, view.height);
+        const Shot wide_shot = zoom_shot(kShot, kShot.target + Vec3{0, 0.8f, 0}, 0.6f / kFrameZoom);
+        const Camera wide = shot_camera(wide_shot, view.width, view.height);
         draw_control_mesh(view, wide, mesh, surface, true, Rgb8{255, 255, 255});
         return Status::success();
     }
     const float ppu = shot_pixels_per_unit(kShot, view.height);
-    const AdaptiveLevels a = choose_adaptive_levels(surface, mesh, ppu, 2.0f, 0.5f, kLevels);
+    // Grid cells up to 2.5 px (chosen): the 1200 x 1200 panels stop at K anyway (cells of about
+    // 6 px there); the 150 x 150 (x) keeps grid level 2 (cells 2.1 px on the 1.3-radius cone;
+    // at 2 px it took level 3 and a sixth more surface evaluations for the whole figure).
+    const AdaptiveLevels a = choose_adaptive_levels(surface, mesh, ppu, 2.5f, 0.5f, kLevels);
     WrTessellationOptions o;
     o.grid_level = quick ? 1 : a.grid_level;
     o.subdivisions = quick ? 1 : 2;
@@ -120,7 +137,10 @@ Status draw_panel(bool quick, char kind, int setting, RgbView view, StageTimes* 
         color_by_source_span(&wm, surface, 0);
         SHITSUKAN_TRY(render_opaque(camera, wm.mesh, view, shading));
     } else {
-        SHITSUKAN_TRY(render_transparent(camera, wm, view, shading, nullptr, &t->seen));
+        // What the transparency shows is measured on the panels the note reports: (a-2), -3.
+        const bool measured = kind == '3' || setting == 0;
+        SHITSUKAN_TRY(
+            render_transparent(camera, wm, view, shading, nullptr, measured ? &t->seen : nullptr));
     }
     t->rendering = seconds_since(t0);
     t->triangles = wm.mesh.triangle_count();
@@ -185,15 +205,21 @@ SHITSUKAN_FIGURE(
     ctx.given("delta", "0.60", "fig. 23 caption");
     ctx.given("sample interpolation", "linear", "fig. 23 caption");
     ctx.chosen("control mesh",
-               "11 x 9 (8 x 6 spans) on a cone open at the back (320 degrees), heights "
-               "0.1..~2.2 growing to the top, directions up and outwards with a lean",
+               "11 x 9 (8 x 6 spans) on a cone open at the back (320 degrees, radius 1.3 -> "
+               "0.39), heights 0.1..~2.2 growing to the top, directions up and outwards with "
+               "a lean",
                "not printed");
     ctx.chosen("settings a, b, c",
                "lean 0 / -0.35 / +0.30 rad, tip height x1.0 / 1.35 / 1.7, tongue "
                "phase 0 / 0.9 / 1.8",
                "three changes of heights and directions");
-    ctx.chosen("colours, transparency", "white-yellow -> orange -> red; 0.05 -> 0.75 bottom to top",
-               "a flame; the paper gives per-point values but does not print them");
+    ctx.chosen("colours, transparency",
+               "white-yellow -> orange -> red; opacity 0.95 -> 0.25 bottom to top at the front, "
+               "x(1 - 0.95 sin^2 theta) towards the sides",
+               "a flame fading at its edges; the paper gives per-point values but does not "
+               "print them");
+    ctx.chosen("frame", "1.17x closer than a frame holding the flame with room around it",
+               "the 1200 x 1200 panel (Table 4) shows the flame, not the black around it");
     ctx.chosen("jitter", "height x(1 + 0.3 g), colour + 0.06 g, transparency + 0.08 g",
                "§5 gives no deviation");
     ctx.chosen("layout",
@@ -218,17 +244,28 @@ SHITSUKAN_FIGURE(
     // much of each panel's colour comes from the flame's layers behind its front.
     std::string seen =
         "Transparency, measured (coverage of the frame; mean share of the colour "
-        "from layers behind the front one; pixels where that share exceeds 0.15):";
+        "from layers behind the front one; pixels where that share exceeds 0.15; mean "
+        "share of the black background showing through at the edges / in the core):";
     for (const char* label : {"(a-2)", "(a-3)", "(b-3)", "(c-3)"}) {
         const TransparencySeen& v = times[label].seen;
-        seen += fmt(" %s %.1f %%, %.2f, %.0f %%;", label, 100.0 * v.coverage, v.see_through,
-                    100.0 * v.see_through_pixels);
+        seen += fmt(" %s %.1f %%, %.2f, %.0f %%, edges %.2f / core %.2f;", label,
+                    100.0 * v.coverage, v.see_through, 100.0 * v.see_through_pixels,
+                    v.edge_background, v.core_background);
         // Checked in the full run (--quick tessellates one step coarser).
         if (!ctx.quick() && label[3] == '3' && v.see_through_pixels < 0.2)
             return Status::error(StatusCode::not_supported,
                                  "fig23 %s: only %.0f %% of the flame shows what is behind it "
                                  "(the paper's flames are transparent, §5)",
                                  label, 100.0 * v.see_through_pixels);
+        if (!ctx.quick() && label[3] == '3' && v.edge_background < v.core_background + 0.05)
+            return Status::error(StatusCode::not_supported,
+                                 "fig23 %s: the flame's edges do not fade (background through "
+                                 "the edges %.2f, the core %.2f)",
+                                 label, v.edge_background, v.core_background);
+        if (!ctx.quick() && v.coverage < 0.22)
+            return Status::error(StatusCode::not_supported,
+                                 "fig23 %s: the flame fills only %.0f %% of its frame", label,
+                                 100.0 * v.coverage);
     }
     ctx.note(seen);
     if (!ctx.quick()) {

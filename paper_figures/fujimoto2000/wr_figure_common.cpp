@@ -95,6 +95,35 @@ std::vector<int> far_first_order(const std::vector<float>& depth) {
     return index;
 }
 
+// The flame's edges against its core (TransparencySeen::edge_background): per image row, the
+// covered span from the first to the last covered pixel; its outer tenth at either side is
+// the edge, its middle half the core; the mean background share over each.
+void measure_edge_fade(const std::vector<float>& background_share, int width, int height,
+                       TransparencySeen* seen) {
+    double edge = 0, edge_n = 0, core = 0, core_n = 0;
+    for (int y = 0; y < height; ++y) {
+        const float* row = &background_share[std::size_t(y) * std::size_t(width)];
+        int x0 = 0, x1 = width - 1;
+        while (x0 < width && row[x0] >= 1.0f) ++x0;
+        while (x1 >= x0 && row[x1] >= 1.0f) --x1;
+        const int span = x1 - x0 + 1;
+        if (span < 20) continue;  // too few pixels to tell an edge from a core
+        for (int x = x0; x <= x1; ++x) {
+            const int from_side = std::min(x - x0, x1 - x);
+            if (row[x] >= 1.0f) continue;
+            if (from_side < span / 10) {
+                edge += row[x];
+                edge_n += 1;
+            } else if (from_side >= span / 4) {
+                core += row[x];
+                core_n += 1;
+            }
+        }
+    }
+    seen->edge_background = edge_n > 0 ? edge / edge_n : 0.0;
+    seen->core_background = core_n > 0 ? core / core_n : 0.0;
+}
+
 }  // namespace
 
 Status render_transparent(const Camera& camera, const WrMesh& wm, RgbView target,
@@ -162,6 +191,7 @@ Status render_transparent(const Camera& camera, const WrMesh& wm, RgbView target
         seen->see_through = covered > 0 ? behind / covered : 0.0;
         seen->see_through_pixels = covered > 0 ? showing / covered : 0.0;
         seen->background = covered > 0 ? through / covered : 0.0;
+        measure_edge_fade(background_share, target.width, target.height, seen);
     }
     return st;
 }

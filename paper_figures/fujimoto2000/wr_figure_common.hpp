@@ -60,6 +60,10 @@ Status render_opaque(const Camera& camera, const TriangleMesh& mesh, RgbView tar
 // background's (what shows through the whole surface).
 struct TransparencySeen {
     double coverage = 0, see_through = 0, see_through_pixels = 0, background = 0;
+    // The mean background share (what shows through) in the outer tenth of each row's covered
+    // span, at either side, and in its middle half: a surface fading at its edges shows more
+    // of what is behind there than in its core.
+    double edge_background = 0, core_background = 0;
 };
 Status render_transparent(const Camera& camera, const WrMesh& mesh, RgbView target,
                           const Shading& shading, RasterStats* stats = nullptr,
