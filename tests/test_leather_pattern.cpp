@@ -198,10 +198,10 @@ TEST_CASE("stage 2: no sliver scales at the left and right edges (a = 0.5)") {
 
 namespace {
 
-// A scale's mean width (area / its extent in y) and mean height (area / its extent in x), and
-// which borders it touches.
+// A scale's area, mean width (area / its extent in y), mean height (area / its extent in x),
+// extent in y, and which borders it touches.
 struct ScaleExtent {
-    double width = 0.0, height = 0.0;
+    double area = 0.0, width = 0.0, height = 0.0, extent_y = 0.0;
     bool left_right = false, top_bottom = false;
 };
 
@@ -219,6 +219,8 @@ std::vector<ScaleExtent> scale_extents(const ScalePattern& pat) {
             y0 = std::min(y0, double(p.y)), y1 = std::max(y1, double(p.y));
         }
         ScaleExtent e;
+        e.area = area;
+        e.extent_y = y1 - y0;
         e.width = area / (y1 - y0);
         e.height = area / (x1 - x0);
         e.left_right = x0 <= eps || x1 >= double(pat.width) - eps;
@@ -295,23 +297,10 @@ TEST_CASE("stage 1: no sliver scales along the top and bottom borders (figs. 7-1
             std::vector<double> areas;
             std::vector<bool> on_border;
             double lowest_height = 1.0;
-            for (int i = 0; i < pat.polygon_count(); ++i) {
-                int n = 0;
-                const Vec2* v = pat.polygon(i, &n);
-                double area = 0.0, lo = 2.0, hi = -1.0, left = 2.0, right = -1.0;
-                for (int k = 0; k < n; ++k) {
-                    const Vec2 p = v[k], q = v[(k + 1) % n];
-                    area += 0.5 * (double(p.x) * double(q.y) - double(q.x) * double(p.y));
-                    left = std::min(left, double(p.x));
-                    right = std::max(right, double(p.x));
-                    lo = std::min(lo, double(p.y));
-                    hi = std::max(hi, double(p.y));
-                }
-                areas.push_back(area);
-                const bool cut_in_x = left <= 1e-6 || right >= double(prm.width) - 1e-6;
-                on_border.push_back(!cut_in_x &&
-                                    (lo <= 1e-6 || hi >= double(prm.height) - 1e-6));
-                lowest_height = std::min(lowest_height, hi - lo);
+            for (const ScaleExtent& e : scale_extents(pat)) {
+                areas.push_back(e.area);
+                on_border.push_back(!e.left_right && e.top_bottom);
+                lowest_height = std::min(lowest_height, e.extent_y);
             }
             std::vector<double> sorted = areas;
             std::sort(sorted.begin(), sorted.end());
