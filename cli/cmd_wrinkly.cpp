@@ -14,6 +14,7 @@
 #include "shitsukan/core/scalar.hpp"
 #include "shitsukan/geom/mesh_builders.hpp"
 #include "shitsukan/geom/obj.hpp"
+#include "shitsukan/image/height_map.hpp"
 #include "shitsukan/image/image_io.hpp"
 #include "shitsukan/raster/camera.hpp"
 #include "shitsukan/raster/rasterizer.hpp"

@@ -7,8 +7,6 @@
 #include <string>
 
 #include "shitsukan/core/hash.hpp"
-#include "shitsukan/image/pfm.hpp"
-#include "shitsukan/image/png16.hpp"
 #include "shitsukan/wrinkly/terrain_maps.hpp"
 #include "shitsukan/wrinkly/terrain_mesh.hpp"
 #include "shitsukan/wrinkly/wr_ist_axis.hpp"
@@ -224,25 +222,4 @@ TEST_CASE("the open surface's superposed map is the library's eq. (20) at the pi
     CHECK(!make_terrain_maps(t.surface, nullptr, o, maps));  // needs the sampling
     o.width = 0;
     CHECK(!make_terrain_maps(t.surface, &t.hs, o, maps));
-}
-
-TEST_CASE("read_height_map: 16-bit PNG and PFM") {
-    Gray16Image img(4, 2);
-    for (int i = 0; i < 8; ++i) img.data()[i] = std::uint16_t(i * 9000);
-    const std::string png = "test_wrinkly_terrain_h16.png", pfm = "test_wrinkly_terrain_h.pfm";
-    REQUIRE(write_png16(png.c_str(), img.view()));
-    std::vector<float> h;
-    int w = 0, rows = 0;
-    REQUIRE(read_height_map(png.c_str(), h, w, rows));
-    CHECK(w == 4);
-    CHECK(rows == 2);
-    CHECK(h[7] == doctest::Approx(63000.0f / 65535.0f));
-    const float values[4] = {0.5f, -2.0f, 3.25f, 1e-3f};
-    REQUIRE(write_pfm(pfm.c_str(), values, 2, 2, 1));
-    REQUIRE(read_height_map(pfm.c_str(), h, w, rows));
-    CHECK(h[1] == -2.0f);
-    CHECK(h[2] == 3.25f);
-    CHECK(!read_height_map("/nonexistent/h.pfm", h, w, rows));
-    std::remove(png.c_str());
-    std::remove(pfm.c_str());
 }

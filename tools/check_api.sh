@@ -8,6 +8,7 @@
 #   5. a dropped Status is a compile error under -Werror (and the checked form compiles)
 #   6. README.md's module map lists what the tree holds, and nothing else
 #   7. required outputs are references, not pointers every function null-checks
+#   8. every module includes only the modules docs/DESIGN.md's dependency graph allows
 #
 # Usage: tools/check_api.sh LIBRARY API_DIR   (environment: CXX, CPPFLAGS, CXXFLAGS, JOBS; the
 #                                             Makefile passes its values)
@@ -69,3 +70,6 @@ echo "check-api: a dropped Status does not compile under -Werror (nodiscard)"
 # 6. and 7.
 python3 tools/check_module_map.py || exit 1
 python3 tools/check_output_params.py || exit 1
+
+# 8.
+python3 tools/check_modules.py || exit 1

@@ -50,6 +50,7 @@
 #include "shitsukan/image/exr.hpp"
 #include "shitsukan/image/float_convert.hpp"
 #include "shitsukan/image/font.hpp"
+#include "shitsukan/image/height_map.hpp"
 #include "shitsukan/image/image.hpp"
 #include "shitsukan/image/image_io.hpp"
 #include "shitsukan/image/image_read.hpp"

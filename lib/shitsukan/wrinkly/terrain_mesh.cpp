@@ -8,8 +8,6 @@
 #include <string>
 
 #include "shitsukan/core/scalar.hpp"
-#include "shitsukan/image/image_read.hpp"
-#include "shitsukan/image/pfm.hpp"
 
 namespace shitsukan {
 
@@ -172,29 +170,6 @@ Status control_mesh_from_height_map(const float* map, int w, int h, const Terrai
         return Status::success();
     }
     return wrap_control_mesh(period, o.degree, {o.extent, 0, 0}, {0, 0, -o.extent}, out);
-}
-
-Status read_height_map(const char* path, std::vector<float>& out, int& width, int& height) {
-    const std::string p = path ? path : "";
-    const bool pfm = p.size() > 4 && (p.compare(p.size() - 4, 4, ".pfm") == 0 ||
-                                      p.compare(p.size() - 4, 4, ".PFM") == 0);
-    if (pfm) {
-        PfmImage img;
-        SHITSUKAN_TRY(read_pfm(p.c_str(), img));
-        width = img.width, height = img.height;
-        out.resize(std::size_t(width) * std::size_t(height));
-        for (std::size_t i = 0; i < out.size(); ++i) out[i] = img.data[i * std::size_t(img.channels)];
-        return Status::success();
-    }
-    LoadedImage img;
-    SHITSUKAN_TRY(read_image(p.c_str(), img));
-    width = img.width, height = img.height;
-    out.resize(std::size_t(width) * std::size_t(height));
-    const float scale = img.bits == 16 ? 1.0f / 65535.0f : 1.0f / 255.0f;
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x)
-            out[std::size_t(y) * std::size_t(width) + std::size_t(x)] = float(img.sample(x, y, 0)) * scale;
-    return Status::success();
 }
 
 }  // namespace shitsukan

@@ -1,7 +1,8 @@
 // shitsukan/wrinkly/terrain_mesh.hpp — the "shell" of fujimoto2000 §3.1 from a height map: a
 // WR control mesh whose heights h_i come from the map and whose colours c_i from a colour
 // ramp over the heights; a periodic control mesh (one period of a tiling terrain) wrapped so
-// a uniform B-spline over it tiles; the map read from a 16-bit PNG or a PFM.
+// a uniform B-spline over it tiles; the map read from a 16-bit PNG or a PFM by
+// image/height_map.hpp's read_height_map.
 //
 // Manual
 //   std::vector<float> h(32 * 32);
@@ -71,10 +72,5 @@ Status control_mesh_from_height_map(const float* map, int width, int height,
 // The uniform B-spline of that degree over it has m_u x m_v spans and repeats with the period.
 Status wrap_control_mesh(const WrControlMesh& period, int degree, Vec3 period_u, Vec3 period_v,
                          WrControlMesh& out);
-
-// A height map from a 16-bit (or 8-bit) PNG, value / 65535 (/ 255), or a PFM (first channel,
-// as stored); row 0 at the top. Errors: the readers' (io_error naming the file), a
-// non-finite PFM sample (invalid_argument with its pixel).
-Status read_height_map(const char* path, std::vector<float>& out, int& width, int& height);
 
 }  // namespace shitsukan
