@@ -84,6 +84,8 @@ Status section_plot(FigureContext& ctx, Table1Section which) {
 //    eye reads the highlight: on a raised scale it lies on the near slope (s > 0), in a dish
 //    on the far inner slope (s < 0). A thin bright rim on the near side (the dish's steep
 //    outer wall) puts it at s > 0 and the dish reads as a raised plate.
+// Fig. 15's inner part holds both walls of its ridge, which face opposite ways: the
+// correlation mixes them (about +0.1) and fig. 15 is read by ridge_walls below instead.
 struct LightSide {
     double correlation = 0;        // luma against s, inner part
     double near_minus_far = 0;     // mean luma (0..255) where s > 0.3 minus where s < -0.3
@@ -95,7 +97,8 @@ struct ShadedPixel {
     float luma, s, rho;
 };
 
-// The scales' pixels (every other pixel: the statistics, at a quarter of the cost).
+// The scales' pixels (every other pixel: the statistics, at a quarter of the cost; every
+// pixel below 256 x 256, where a scale of the quick figures is only about 11 pixels wide).
 std::vector<std::vector<ShadedPixel>> scale_pixels(const ScalePattern& pattern,
                                                    const BezierChain& section, RgbImage& img,
                                                    Vec2 lo, Vec2 hi, Vec2 light,
@@ -103,8 +106,9 @@ std::vector<std::vector<ShadedPixel>> scale_pixels(const ScalePattern& pattern,
     const int w = img.width(), h = img.height();
     const Vec2 size = hi - lo;
     std::vector<std::vector<ShadedPixel>> per_scale(std::size_t(pattern.polygon_count()));
-    for (int j = 0; j < h; j += 2)
-        for (int i = 0; i < w; i += 2) {
+    const int step = w < 256 ? 1 : 2;
+    for (int j = 0; j < h; j += step)
+        for (int i = 0; i < w; i += step) {
             const Vec2 x{lo.x + (float(i) + 0.5f) / float(w) * size.x,
                          hi.y - (float(j) + 0.5f) / float(h) * size.y};
             const int li = int(x.x / pattern.width * float(lw));
@@ -165,6 +169,168 @@ LightSide light_side_profile(const std::vector<std::vector<ShadedPixel>>& per_sc
                      highlights.end());
     out.highlight_s = highlights[highlights.size() / 2];
     return out;
+}
+
+// The look of a section under the key light, read from its own slope: seen from above with
+// a light at zenith angle b, a pixel whose surface tilts by phi towards the scale's edge is
+// lit by about cos(b - phi) on the side facing the light and cos(b + phi) on the far side, so
+// the near-minus-far luma at a relative distance rho goes as 2·sin(b)·sin(phi), with
+// sin(phi) = -z'(r) / sqrt(1 + z'^2) the outward tilt of eq. (4)'s normal. Per rho bin (0.05
+// wide, 0.05-0.90), the luma where the pixel lies towards the light (cos theta = s / rho >
+// 0.5) minus where it lies away (< -0.5), pooled over the scales; its correlation over the
+// bins with the predicted sin(phi). A flat section gives no difference to correlate; a
+// section drawn upside down gives a negative correlation.
+struct RadialAgreement {
+    double correlation = 0;  // over the bins, measured against predicted
+    double gain = 0;         // least-squares luma per unit sin(phi), through the origin
+};
+
+RadialAgreement radial_profile_agreement(const std::vector<std::vector<ShadedPixel>>& per_scale,
+                                const BezierChain& section) {
+    constexpr int kBins = 17;
+    double near[kBins] = {}, far[kBins] = {}, nn[kBins] = {}, nf[kBins] = {};
+    for (const std::vector<ShadedPixel>& px : per_scale)
+        for (const ShadedPixel& p : px) {
+            const int b = int((p.rho - 0.05f) / 0.05f);
+            if (p.rho < 0.05f || b < 0 || b >= kBins) continue;
+            const float c = p.s / p.rho;
+            if (c > 0.5f) near[b] += p.luma, nn[b] += 1;
+            if (c < -0.5f) far[b] += p.luma, nf[b] += 1;
+        }
+    double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0, n = 0;
+    for (int b = 0; b < kBins; ++b) {
+        if (nn[b] < 1 || nf[b] < 1) continue;
+        const SectionSample q = section_at_r(section, 0.05f + 0.05f * (float(b) + 0.5f));
+        const double slope = std::fabs(q.dr) > 1e-9f ? double(q.dz) / double(q.dr) : 0.0;
+        const double x = -slope / std::sqrt(1.0 + slope * slope);
+        const double y = near[b] / nn[b] - far[b] / nf[b];
+        sx += x, sy += y, sxx += x * x, syy += y * y, sxy += x * y, n += 1;
+    }
+    RadialAgreement out;
+    if (n < 3 || sxx <= 0) return out;
+    const double vx = sxx / n - (sx / n) * (sx / n), vy = syy / n - (sy / n) * (sy / n);
+    out.correlation = vx > 0 && vy > 0 ? (sxy / n - (sx / n) * (sy / n)) / std::sqrt(vx * vy) : 0.0;
+    out.gain = sxy / sxx;
+    return out;
+}
+
+// Fig. 15's section (Table 1, two segments): the first segment falls from the middle
+// (z = 0.25) to a moat (z = 0.115 at r = 0.34) and climbs again to 0.25 at r = 0.6, where
+// the second segment starts falling to the groove at r = 0.9. The join is a ridge with a
+// corner (dz/dr +1.38 inside, -0.38 outside): the "discontinuous section" of §3.2. Its two
+// walls face opposite ways, so the light swaps them: on a scale's side towards the light the
+// outer wall (facing out, towards the light) is brighter than the inner one; on the far side
+// the inner wall (facing in, towards the light again) is. Per scale, the mean luma of the
+// inner wall (from just above the moat's bottom to just inside the join) and of the outer
+// wall (from just outside the join to just inside the groove), where cos theta = s / rho >
+// 0.5 (near) and < -0.5 (far).
+struct RidgeWalls {
+    double near_step = 0;  // median over the scales: outer minus inner wall, near side
+    double far_step = 0;   // median: inner minus outer wall, far side
+    double both = 0;       // fraction of the scales with both steps > 0
+    int scales = 0;
+};
+
+double median_of(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
+
+RidgeWalls ridge_walls(const std::vector<std::vector<ShadedPixel>>& per_scale,
+                       const BezierChain& section) {
+    RidgeWalls out;
+    if (section.count < 2) return out;
+    const float join = section.segments[0].p[3].x, end = section_r_last(section);
+    float moat = 0.0f, low = 1e30f;  // the first segment's lowest point
+    for (int k = 0; k <= 200; ++k) {
+        const float r = join * float(k) / 200.0f;
+        const float z = section_at_r(section, r).z;
+        if (z < low) low = z, moat = r;
+    }
+    const float in0 = moat + 0.05f, in1 = join - 0.02f, out0 = join + 0.02f, out1 = end - 0.04f;
+    std::vector<double> near_steps, far_steps;
+    std::size_t both = 0;
+    for (const std::vector<ShadedPixel>& px : per_scale) {
+        double sum[4] = {}, cnt[4] = {};  // inner near, outer near, inner far, outer far
+        for (const ShadedPixel& p : px) {
+            const int wall = p.rho >= in0 && p.rho <= in1 ? 0 : p.rho >= out0 && p.rho <= out1 ? 1 : -1;
+            if (wall < 0) continue;
+            const float c = p.s / p.rho;
+            const int side = c > 0.5f ? 0 : c < -0.5f ? 2 : -1;
+            if (side < 0) continue;
+            sum[side + wall] += p.luma, cnt[side + wall] += 1;
+        }
+        if (cnt[0] < 3 || cnt[1] < 3 || cnt[2] < 3 || cnt[3] < 3) continue;
+        const double near = sum[1] / cnt[1] - sum[0] / cnt[0];
+        const double far = sum[2] / cnt[2] - sum[3] / cnt[3];
+        near_steps.push_back(near);
+        far_steps.push_back(far);
+        both += near > 0 && far > 0 ? 1 : 0;
+    }
+    out.scales = int(near_steps.size());
+    if (out.scales == 0) return out;
+    out.both = double(both) / double(out.scales);
+    out.near_step = median_of(near_steps);
+    out.far_step = median_of(far_steps);
+    return out;
+}
+
+// Measures the shading across the scales (notes) and checks it reads as the section.
+Status check_section_shading(FigureContext& ctx, Table1Section which,
+                             const std::vector<std::vector<ShadedPixel>>& pixels) {
+    const LightSide side = light_side_profile(pixels);
+    const RadialAgreement agreement = radial_profile_agreement(pixels, table1_section(which));
+    const RidgeWalls ridge = ridge_walls(pixels, table1_section(which));
+    ctx.note(fmt("Near-minus-far luma per relative distance (0.05-0.90) against the section's "
+                 "predicted outward tilt sin(phi) = -z'/sqrt(1 + z'^2): correlation %+.2f, "
+                 "%+.1f luma (0..255) per unit sin(phi).",
+                 agreement.correlation, agreement.gain));
+    if (ridge.scales > 0)
+        ctx.note(fmt("The ridge where the two segments meet (r = 0.6): on the light's side the "
+                     "outer wall is brighter than the inner one by %+.1f, on the far side the "
+                     "inner wall brighter than the outer by %+.1f (luma 0..255, median over %d "
+                     "scales); both in %.0f %% of the scales.",
+                     ridge.near_step, ridge.far_step, ridge.scales, 100.0 * ridge.both));
+    ctx.note(
+        fmt("Shading across the scales, s the position towards the key light (-1 far edge, +1 "
+            "near edge): over each scale's inner part (rho 0.3-0.85) the luma's correlation "
+            "with s %+.2f, mean luma on the light's side minus the far side %+.1f (0..255); "
+            "each scale's brightest tenth lies at s = %+.2f (median), on the light's side in "
+            "%.0f %% of the scales. Raised scales: > 0, highlight on the near slope; sunken "
+            "(dish): < 0, highlight on the far inner slope.",
+            side.correlation, side.near_minus_far, side.highlight_s, 100.0 * side.highlight_near));
+    // The property the figures exist for (§3.2, figs. 13-14): raised against sunken scales,
+    // both in the shading of the inner part and in where each scale's highlight falls.
+    // Thresholds chosen here: a correlation of 0.3 and the highlight a third of the way to
+    // the edge (35 degrees up, figs. 14(b)/(c) had their highlights at -0.23 and -0.13).
+    const bool raised = side.correlation >= 0.3 && side.highlight_s > 0.3;
+    const bool sunken = side.correlation <= -0.3 && side.highlight_s < -0.3;
+    if ((which == Table1Section::convex && !raised) ||
+        (which == Table1Section::concave && !sunken))
+        return Status::error(StatusCode::not_supported,
+                             "%s: the shading across the scales (correlation %+.2f, highlight "
+                             "at s = %+.2f) does not read as %s",
+                             table1_section_name(which), side.correlation, side.highlight_s,
+                             which == Table1Section::convex ? "raised" : "sunken");
+    // All three sections: the light's side against the far side follows the section's own
+    // slope, bin by bin (a flat or an upside-down section fails). Fig. 15 (§3.2: two curves
+    // joined into a section with a corner): the ridge's walls swap brightness across the
+    // scale. Thresholds chosen here, against a correlation of +0.63 to +0.97 and 37-236 luma
+    // per unit sin(phi) for the three sections, and ridge steps of +10 to +29 (the sections
+    // drawn flat: at most 7 luma and +1.0; drawn upside down: negative).
+    if (agreement.correlation < 0.5 || agreement.gain < 20.0)
+        return Status::error(StatusCode::not_supported,
+                             "%s: the light's side against the far side does not follow the "
+                             "section's slope (correlation %+.2f, %+.1f luma per unit sin(phi))",
+                             table1_section_name(which), agreement.correlation, agreement.gain);
+    if (which == Table1Section::two_segment && (ridge.near_step < 5.0 || ridge.far_step < 5.0))
+        return Status::error(StatusCode::not_supported,
+                             "%s: the ridge where the two segments meet does not show (outer "
+                             "minus inner wall %+.1f on the light's side, inner minus outer "
+                             "%+.1f on the far side)",
+                             table1_section_name(which), ridge.near_step, ridge.far_step);
+    return Status::success();
 }
 
 Status section_texture(FigureContext& ctx, Table1Section which, bool close_up) {
@@ -235,30 +401,10 @@ Status section_texture(FigureContext& ctx, Table1Section which, bool close_up) {
             std::sqrt(std::fmax(0.0, sum2 / n - mean * mean))));
     PointLight lights[2];
     tokai_relief::flat_texture_lights(lo, hi, kSectionKeyHeight, lights);
-    const LightSide side = light_side_profile(scale_pixels(
-        pattern, table1_section(which), img, lo, hi, {lights[0].position.x, lights[0].position.y},
-        labels, mw, mw));
-    ctx.note(
-        fmt("Shading across the scales, s the position towards the key light (-1 far edge, +1 "
-            "near edge): over each scale's inner part (rho 0.3-0.85) the luma's correlation "
-            "with s %+.2f, mean luma on the light's side minus the far side %+.1f (0..255); "
-            "each scale's brightest tenth lies at s = %+.2f (median), on the light's side in "
-            "%.0f %% of the scales. Raised scales: > 0, highlight on the near slope; sunken "
-            "(dish): < 0, highlight on the far inner slope.",
-            side.correlation, side.near_minus_far, side.highlight_s, 100.0 * side.highlight_near));
-    // The property the figures exist for (§3.2, figs. 13-14): raised against sunken scales,
-    // both in the shading of the inner part and in where each scale's highlight falls.
-    // Thresholds chosen here: a correlation of 0.3 and the highlight a third of the way to
-    // the edge (35 degrees up, figs. 14(b)/(c) had their highlights at -0.23 and -0.13).
-    const bool raised = side.correlation >= 0.3 && side.highlight_s > 0.3;
-    const bool sunken = side.correlation <= -0.3 && side.highlight_s < -0.3;
-    if ((which == Table1Section::convex && !raised) ||
-        (which == Table1Section::concave && !sunken))
-        return Status::error(StatusCode::not_supported,
-                             "%s: the shading across the scales (correlation %+.2f, highlight "
-                             "at s = %+.2f) does not read as %s",
-                             table1_section_name(which), side.correlation, side.highlight_s,
-                             which == Table1Section::convex ? "raised" : "sunken");
+    const std::vector<std::vector<ShadedPixel>> pixels =
+        scale_pixels(pattern, table1_section(which), img, lo, hi,
+                     {lights[0].position.x, lights[0].position.y}, labels, mw, mw);
+    SHITSUKAN_TRY(check_section_shading(ctx, which, pixels));
     return ctx.save_png(img.view());
 }
 
