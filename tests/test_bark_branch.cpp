@@ -65,7 +65,8 @@ TEST_CASE("branch cracks: around the trunk where hoop growth dominates, denser o
             CHECK(p.growth.duration * strain_rate(b.net, s) <= b.net.springs[s].eps_c * 1.0001f);
     // §5.3 "cracks connect naturally between trunk and branch": a crack network (as the picture
     // draws it) reaches kCrotchDepth into both limbs. The crotch itself cracks less than the
-    // trunk (its saddle shortens along the crotch curve): pinned where it stands.
+    // trunk (the normal offset shortens its concave fillet across the junction): pinned where
+    // it stands.
     CrotchCrackStats crotch;
     REQUIRE(crotch_crack_stats(b, p.growth.duration, kCrotchDepth, crotch).ok());
     MEASURED("crossing networks " << crotch.crossing << " of " << crotch.networks

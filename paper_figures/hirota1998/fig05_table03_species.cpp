@@ -120,8 +120,8 @@ Status draw_species_column(FigureContext& ctx, const SpeciesRun& s, int i, const
         for (int x = 0; x < L.col; ++x) out.at(i * L.col + x, L.header + y) = render.at(x, y);
     // The window: one of Table 3's photograph views (a third of the circumference: the
     // middle of the map), full height.
-    const float view_cm =
-        float(photograph_view_columns(s.params.N_R)) * s.bark.a_h * (1.0f + hoop_strain(s.params, T));
+    const float view_cm = float(photograph_view_columns(s.params.N_R)) * s.bark.a_h *
+                          (1.0f + hoop_strain(s.params, T));
     const int ww = std::min(int(std::lround(view_cm * px_per_cm)), map.width());
     const int x0 = (map.width() - ww) / 2;
     const int ox = i * L.col + (L.col - ww) / 2, oy = L.header + L.render_h + L.gap;
