@@ -65,7 +65,8 @@ TEST_CASE("branch cracks: around the trunk where hoop growth dominates, denser o
             CHECK(p.growth.duration * strain_rate(b.net, s) <= b.net.springs[s].eps_c * 1.0001f);
     // §5.3 "cracks connect naturally between trunk and branch": a crack network (as the picture
     // draws it) reaches kCrotchDepth into both limbs. The crotch itself cracks less than the
-    // trunk (its saddle shortens along the crotch curve): pinned where it stands.
+    // trunk (the normal offset shortens its concave fillet across the junction): pinned where
+    // it stands.
     CrotchCrackStats crotch;
     REQUIRE(crotch_crack_stats(b, p.growth.duration, kCrotchDepth, crotch).ok());
     MEASURED("crossing networks " << crotch.crossing << " of " << crotch.networks
@@ -112,6 +113,87 @@ TEST_CASE("the crotch-crossing measure on prescribed cracks") {
     CHECK(st.crossing == 1);
     CHECK(st.largest_crossing == int(b.net.springs.size()));
     CHECK(crotch_crack_stats(b, -1.0f, kCrotchDepth, st).code() == StatusCode::invalid_argument);
+}
+
+namespace {
+
+// Breaks every intact spring of b that crosses the plane dot(x, n) = c and passes `keep`
+// (tested on its reference midpoint).
+template <class Keep>
+void cut_plane(BranchBark& b, Vec3 n, float c, Keep keep) {
+    for (std::uint32_t s = 0; s < std::uint32_t(b.net.springs.size()); ++s) {
+        const BarkSpring& sp = b.net.springs[s];
+        const Vec3 xi = b.mesh.positions[sp.i], xj = b.mesh.positions[sp.j];
+        if (sp.intact() && (dot(xi, n) - c) * (dot(xj, n) - c) < 0.0f && keep((xi + xj) * 0.5f))
+            break_spring(b.net, s, 0.5f);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("crossing paths count the cracks across the crotch, networks what they join") {
+    BranchBarkParams p;
+    p.edge_length = 0.6f;
+    BranchBark b;
+    REQUIRE(build_branch_bark(p, b).ok());
+    // The plane y = 0 (a hair off, clear of vertices on it) holds both axes. On the branch's
+    // side (x > 1) it meets the bark in two curves, each from a cut end to a cut end: up the
+    // trunk, under the branch and out along it; and down the branch's upper side, through the
+    // saddle of the crotch and up the trunk. Each crosses the crotch once.
+    cut_plane(b, Vec3{0, 1, 0}, 0.013f, [](Vec3 m) { return m.x > 1.0f; });
+    CrotchCrackStats st;
+    REQUIRE(crotch_crack_stats(b, 1.0f, kCrotchDepth, st).ok());
+    CHECK(st.crossing_paths == 2);
+    CHECK(st.crossing == 2);
+    // A ring round the branch, 8 cm along its axis and well inside the branch zone, joins the
+    // two curves: one network, still two cracks across the crotch.
+    const Vec3 u = branch_axis_direction(p.shape), o = p.shape.branch_origin;
+    cut_plane(b, u, dot(o, u) + 8.0f, [&](Vec3 m) {
+        const LimbDistances d = limb_distances(p.shape, m);
+        return d.f_branch < d.f_trunk - 1.0f;
+    });
+    REQUIRE(crotch_crack_stats(b, 1.0f, kCrotchDepth, st).ok());
+    CHECK(st.crossing == 1);
+    CHECK(st.crossing_paths == 2);
+    // The ring alone crosses nothing.
+    BranchBark ring;
+    REQUIRE(build_branch_bark(p, ring).ok());
+    cut_plane(ring, u, dot(o, u) + 8.0f, [&](Vec3 m) {
+        const LimbDistances d = limb_distances(p.shape, m);
+        return d.f_branch < d.f_trunk - 1.0f;
+    });
+    REQUIRE(crotch_crack_stats(ring, 1.0f, kCrotchDepth, st).ok());
+    CHECK(st.networks == 1);
+    CHECK(st.crossing == 0);
+    CHECK(st.crossing_paths == 0);
+}
+
+TEST_CASE("§5.2's normal offset shortens the concave crotch; isotropic scaling alone does not") {
+    BranchBarkParams p;
+    p.edge_length = 0.6f;
+    BranchBark b;
+    REQUIRE(build_branch_bark(p, b).ok());
+    CrotchCrackStats st;
+    REQUIRE(crotch_crack_stats(b, 0.0f, kCrotchDepth, st).ok());
+    MEASURED("mean edge growth at T: trunk " << st.growth_trunk << ", crotch " << st.growth_crotch
+                                             << ", branch " << st.growth_branch);
+    // On the limbs r_h + r_n / R around and r_h along; the crotch's fillet is concave across
+    // the junction (radius about the blend), where the offset shortens the edges.
+    CHECK(st.growth_branch > st.growth_trunk);
+    CHECK(st.growth_crotch < 0.5 * st.growth_trunk);
+    // Across the junction the fillet (radius about the blend, 1 cm) is concave: r_h - r_n / 1
+    // = -0.04; along it, convex round the branch's base.
+    MEASURED("crotch edges: across " << st.growth_crotch_across << ", along "
+                                     << st.growth_crotch_along);
+    CHECK(st.growth_crotch_across < 0.0);
+    CHECK(st.growth_crotch_along > 0.0);
+    p.growth.r_n = 0.0f;  // isotropic enlargement only: every edge grows by r_h
+    REQUIRE(build_branch_bark(p, b).ok());
+    REQUIRE(crotch_crack_stats(b, 0.0f, kCrotchDepth, st).ok());
+    CHECK(st.growth_trunk == doctest::Approx(p.growth.r_h).epsilon(1e-4));
+    CHECK(st.growth_crotch == doctest::Approx(p.growth.r_h).epsilon(1e-4));
+    CHECK(st.growth_branch == doctest::Approx(p.growth.r_h).epsilon(1e-4));
+    CHECK(st.growth_crotch_across == doctest::Approx(p.growth.r_h).epsilon(1e-4));
 }
 
 TEST_CASE("springs on a mesh refuse NaN, degenerate and non-manifold input") {

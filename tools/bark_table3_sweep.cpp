@@ -6,12 +6,15 @@
 //   make build/libshitsukan.a
 //   g++ -std=c++17 -O2 -ffp-contract=off -Ilib tools/bark_table3_sweep.cpp build/libshitsukan.a
 //       -o build/bark_table3_sweep  &&  build/bark_table3_sweep [seeds]
+//   build/bark_table3_sweep views [seeds]   # the max in photograph views 32, 43 and 64
+//                                           # columns wide (photograph_views.hpp), as chosen
 //
 // Every setting changes one value for all three species at once (no per-species tuning):
 // sigma, D, the final hoop and axial strains, a common scale on every kappa - 1, the relaxation
 // tolerance. docs/papers/hirota1998.md §4 prints its output.
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 #include "shitsukan/bark/bark.hpp"
 
@@ -26,7 +29,10 @@ struct Setting {
 
 struct Cell {
     double w = 0, h = 0, max_w = 0, max_h = 0;
+    double view_max_w[3] = {0, 0, 0}, view_max_h[3] = {0, 0, 0};  // kViewColumns' views
 };
+
+const int kViewColumns[3] = {32, 43, 64};
 
 Status species_cell(Species species, const Setting& s, int seeds, Cell* out) {
     for (int k = 0; k < seeds; ++k) {
@@ -50,13 +56,44 @@ Status species_cell(Species species, const Setting& s, int seeds, Cell* out) {
         SHITSUKAN_TRY(measure_regions(bark, p.T, bark.net.W.data(), r, section));
         out->w += r.mean_width / seeds, out->h += r.mean_height / seeds;
         out->max_w += r.max_width / seeds, out->max_h += r.max_height / seeds;
+        for (int v = 0; v < 3; ++v) {
+            PhotographViews views;
+            SHITSUKAN_TRY(measure_photograph_views(bark, r, kViewColumns[v], views));
+            out->view_max_w[v] += views.max_width / seeds;
+            out->view_max_h[v] += views.max_height / seeds;
+        }
     }
     return Status::success();
 }
 
 }  // namespace
 
+// The max in photograph views of three widths, at the chosen values.
+int print_views(int seeds) {
+    const Species species[3] = {Species::camphor, Species::chinese_tallow, Species::pine};
+    Cell c[3];
+    for (int i = 0; i < 3; ++i) {
+        const Status st = species_cell(species[i], Setting{"as chosen"}, seeds, &c[i]);
+        if (!st) {
+            std::fprintf(stderr, "bark_table3_sweep: views: %s\n", st.message());
+            return 1;
+        }
+    }
+    std::printf("| view (%d seeds) | camphor max | Chinese tallow max | pine max |\n"
+                "|---|---|---|---|\n",
+                seeds);
+    std::printf("| whole section | %.2f x %.2f | %.2f x %.2f | %.2f x %.2f |\n", c[0].max_w,
+                c[0].max_h, c[1].max_w, c[1].max_h, c[2].max_w, c[2].max_h);
+    for (int v = 0; v < 3; ++v)
+        std::printf("| %d columns | %.2f x %.2f | %.2f x %.2f | %.2f x %.2f |\n", kViewColumns[v],
+                    c[0].view_max_w[v], c[0].view_max_h[v], c[1].view_max_w[v],
+                    c[1].view_max_h[v], c[2].view_max_w[v], c[2].view_max_h[v]);
+    return 0;
+}
+
 int main(int argc, char** argv) {
+    if (argc > 1 && std::strcmp(argv[1], "views") == 0)
+        return print_views(argc > 2 ? std::atoi(argv[2]) : 5);
     const int seeds = argc > 1 ? std::atoi(argv[1]) : 3;
     Setting list[] = {{"as chosen"},      {"sigma 0.0125"},   {"sigma 0.025"},
                       {"D 0.45"},         {"D 0.70"},         {"hoop strain x0.85"},

@@ -170,6 +170,7 @@
 #include "shitsukan/bark/event_tree.hpp"
 #include "shitsukan/bark/layer_schedule.hpp"
 #include "shitsukan/bark/layered_bark.hpp"
+#include "shitsukan/bark/photograph_views.hpp"
 #include "shitsukan/bark/spacing_estimate.hpp"
 #include "shitsukan/bark/spring_network.hpp"
 

@@ -15,6 +15,7 @@
 //                      event_tree.hpp        (its next-event tree, canonical ties)
 //   §3.1, Fig. 4       crack_drawing.hpp     a broken spring drawn as a crack of width l - l0
 //   Table 3            crack_regions.hpp     regions bounded by cracks, crack spacings
+//                      photograph_views.hpp  (their mean and max in photograph-sized views)
 //   §3.2               spacing_estimate.hpp  the (reconstructed) largest-spacing estimate
 //                      bark_export.hpp       CSV, SVG and the deformed trunk as a mesh
 //   §4.1, Figs. 6-7    layer_schedule.hpp    the four layers' radii over time (role changes)
@@ -47,5 +48,6 @@
 #include "shitsukan/bark/layer_schedule.hpp"
 #include "shitsukan/bark/layered_bark.hpp"
 #include "shitsukan/bark/cylinder_lattice.hpp"
+#include "shitsukan/bark/photograph_views.hpp"
 #include "shitsukan/bark/spacing_estimate.hpp"
 #include "shitsukan/bark/spring_network.hpp"

@@ -194,6 +194,14 @@ int limb_zone(const BranchShapeParams& shape, Vec3 x, float depth) {  // 1 trunk
     return d.f_trunk < d.f_branch - depth ? 1 : (d.f_branch < d.f_trunk - depth ? 2 : 0);
 }
 
+// Does the spring run across the junction (f_trunk - f_branch changing by more than its
+// length along it) rather than along it?
+bool across_junction(const BranchBark& bark, const BarkSpring& sp) {
+    const LimbDistances a = limb_distances(bark.params.shape, bark.mesh.positions[sp.i]);
+    const LimbDistances b = limb_distances(bark.params.shape, bark.mesh.positions[sp.j]);
+    return std::fabs((a.f_trunk - a.f_branch) - (b.f_trunk - b.f_branch)) > sp.l0;
+}
+
 int find_network(std::vector<int>& parent, int a) {
     while (parent[std::size_t(a)] != a)
         a = parent[std::size_t(a)] = parent[std::size_t(parent[std::size_t(a)])];
@@ -215,6 +223,41 @@ std::vector<std::uint8_t> cracked_springs(const BranchBark& bark, float t) {
     return cracked;
 }
 
+namespace {
+
+// Crossing paths: components of the crotch zone's cracked springs (joined through shared
+// triangles) that share a triangle with a cracked spring of each limb's zone.
+int crotch_crossing_paths(const BranchBark& bark, const std::vector<std::uint8_t>& cracked,
+                          const std::vector<int>& zone) {
+    const std::size_t m = cracked.size();
+    std::vector<int> parent(m), touches(m, 0);
+    for (std::size_t s = 0; s < m; ++s) parent[s] = int(s);
+    auto in_crotch = [&](std::uint32_t s) { return cracked[s] && zone[s] == 0; };
+    for (const ConnectionTriangle& tri : bark.triangles)
+        for (int k = 0; k < 3; ++k)
+            for (int j = k + 1; j < 3; ++j)
+                if (in_crotch(tri.spring[k]) && in_crotch(tri.spring[j])) {
+                    const int a = find_network(parent, int(tri.spring[k]));
+                    const int b = find_network(parent, int(tri.spring[j]));
+                    if (a != b) parent[std::size_t(a)] = b;
+                }
+    for (const ConnectionTriangle& tri : bark.triangles)  // the limbs' cracks each path meets
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t s = tri.spring[k];
+            if (!in_crotch(s)) continue;
+            for (std::uint32_t o : tri.spring)
+                if (cracked[o] && zone[o] != 0)
+                    touches[std::size_t(find_network(parent, int(s)))] |= zone[o];
+        }
+    int paths = 0;
+    for (std::size_t s = 0; s < m; ++s)
+        paths += in_crotch(std::uint32_t(s)) && find_network(parent, int(s)) == int(s) &&
+                 touches[s] == 3;
+    return paths;
+}
+
+}  // namespace
+
 Status crotch_crack_stats(const BranchBark& bark, float t, float depth, CrotchCrackStats& out) {
     if (!(is_finite(t) && t >= 0.0f) || !(is_finite(depth) && depth >= 0.0f))
         return Status::error(StatusCode::invalid_argument,
@@ -223,7 +266,8 @@ Status crotch_crack_stats(const BranchBark& bark, float t, float depth, CrotchCr
     out = CrotchCrackStats{};
     const auto& springs = bark.net.springs;
     const auto& x = bark.mesh.positions;
-    double area[3] = {0, 0, 0}, broken[3] = {0, 0, 0};
+    double area[3] = {0, 0, 0}, broken[3] = {0, 0, 0}, growth[3] = {0, 0, 0}, edges[3] = {0, 0, 0};
+    double crotch_growth[2] = {0, 0}, crotch_edges[2] = {0, 0};  // across, along the junction
     for (std::size_t i = 0; i < x.size(); ++i)
         area[limb_zone(bark.params.shape, x[i], depth)] += bark.node_area[i];
     const std::vector<std::uint8_t> cracked = cracked_springs(bark, t);
@@ -232,6 +276,12 @@ Status crotch_crack_stats(const BranchBark& bark, float t, float depth, CrotchCr
         parent[s] = int(s);
         zone[s] = limb_zone(bark.params.shape, (x[springs[s].i] + x[springs[s].j]) * 0.5f, depth);
         if (!intact_at(springs[s], t)) broken[zone[s]] += 1;
+        const double g = double(springs[s].growth_rate) * bark.params.growth.duration;
+        growth[zone[s]] += g, edges[zone[s]] += 1;
+        if (zone[s] == 0) {
+            const int k = across_junction(bark, springs[s]) ? 0 : 1;
+            crotch_growth[k] += g, crotch_edges[k] += 1;
+        }
     }
     for (const ConnectionTriangle& tri : bark.triangles)  // networks: share a triangle
         for (int k = 0; k < 3; ++k)
@@ -252,8 +302,14 @@ Status crotch_crack_stats(const BranchBark& bark, float t, float depth, CrotchCr
     for (std::size_t r = 0; r < springs.size(); ++r)
         if (mask[r] == 3)
             ++out.crossing, out.largest_crossing = std::max(out.largest_crossing, count[r]);
+    out.crossing_paths = crotch_crossing_paths(bark, cracked, zone);
     auto density = [&](int z) { return area[z] > 0 ? broken[z] / area[z] : 0.0; };
+    auto mean_growth = [&](int z) { return edges[z] > 0 ? growth[z] / edges[z] : 0.0; };
     out.density_trunk = density(1), out.density_crotch = density(0), out.density_branch = density(2);
+    out.growth_trunk = mean_growth(1), out.growth_crotch = mean_growth(0);
+    out.growth_branch = mean_growth(2);
+    if (crotch_edges[0] > 0) out.growth_crotch_across = crotch_growth[0] / crotch_edges[0];
+    if (crotch_edges[1] > 0) out.growth_crotch_along = crotch_growth[1] / crotch_edges[1];
     return Status::success();
 }
 

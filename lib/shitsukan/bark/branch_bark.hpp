@@ -86,18 +86,30 @@ std::vector<std::uint8_t> cracked_springs(const BranchBark& bark, float t);
 
 // §5.3 "cracks connect naturally between trunk and branch", measured. A point of the reference
 // shape lies in the trunk zone when f_trunk < f_branch - depth, in the branch zone when
-// f_branch < f_trunk - depth, and in the crotch between (limb_distances). A crack network is a
-// set of springs broken by t joined when two of them share a triangle; it crosses the crotch
-// when it holds springs (by midpoint) of both the trunk and the branch zone. Springs count as
-// cracked as cracked_springs says. Densities are
-// broken springs per cm^2 of node area (by node position) in each zone.
+// f_branch < f_trunk - depth, and in the crotch between (limb_distances). Springs count as
+// cracked as cracked_springs says, and belong to the zone of their midpoint. Two measures:
+//   - networks: cracked springs joined when two of them share a triangle; a network crosses
+//     the crotch when it holds springs of both the trunk and the branch zone (it may go round
+//     the junction, and one network spanning the bark crosses once however it does);
+//   - crossing paths: the same joining within the crotch zone only; a path crosses when it
+//     shares a triangle with a cracked spring of the trunk zone and one of the branch zone:
+//     how many separate cracks run across the crotch.
+// Densities are broken springs per cm^2 of node area (by node position) in each zone; the
+// growth strains the mean of each zone's edge growth at the end (edge_growth_rate x T), the
+// drive the cracks answer to (§5.2: the normal offset shortens a concave crotch); the crotch's
+// edges also split by direction: across the junction when f_trunk - f_branch changes along the
+// edge by more than its length (it changes by about twice the length straight across, not at
+// all along the junction), along it otherwise.
 constexpr float kCrotchDepth = 0.5f;  // chosen here: 1.5 L0, past the crotch's blend
 
 struct CrotchCrackStats {
     int networks = 0;    // crack networks (any size)
     int crossing = 0;    // of them, reaching depth into both limbs
     int largest_crossing = 0;  // springs in the largest crossing network
+    int crossing_paths = 0;    // cracks within the crotch zone joining both limbs' cracks
     double density_trunk = 0, density_crotch = 0, density_branch = 0;
+    double growth_trunk = 0, growth_crotch = 0, growth_branch = 0;  // mean edge growth at T
+    double growth_crotch_across = 0, growth_crotch_along = 0;
 };
 Status crotch_crack_stats(const BranchBark& bark, float t, float depth, CrotchCrackStats& out);
 

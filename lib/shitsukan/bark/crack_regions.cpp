@@ -143,6 +143,32 @@ void region_extents(const BarkCylinder& bark, float t, const Vec3* W,
                 : -1;
 }
 
+// Step 5: each region's arc of columns. Its occupied columns, sorted; the largest circular gap
+// between two occupied columns is what the region leaves out, the rest is its arc.
+void region_columns(const BarkCylinder& bark, RegionReport* out) {
+    const int N_R = bark.params.N_R;
+    std::vector<std::uint64_t> occupied;  // (region, column) pairs
+    for (std::size_t p = 0; p < out->label.size(); ++p)
+        if (out->label[p] >= 0)
+            occupied.push_back(std::uint64_t(out->label[p]) << 32 |
+                               std::uint32_t(bark.column_of(int(p))));
+    std::sort(occupied.begin(), occupied.end());
+    occupied.erase(std::unique(occupied.begin(), occupied.end()), occupied.end());
+    for (std::size_t a = 0; a < occupied.size();) {
+        std::size_t b = a;
+        while (b < occupied.size() && occupied[b] >> 32 == occupied[a] >> 32) ++b;
+        BarkRegion& region = out->regions[std::size_t(occupied[a] >> 32)];
+        auto column = [&](std::size_t k) { return int(occupied[k] & 0xffffffffu); };
+        // The gap after the last occupied column runs round to the first.
+        int gap = column(a) + N_R - column(b - 1), first = column(a);
+        for (std::size_t k = a + 1; k < b; ++k)
+            if (column(k) - column(k - 1) > gap) gap = column(k) - column(k - 1), first = column(k);
+        region.first_column = first;
+        region.columns = region.wraps ? N_R : N_R - gap + 1;
+        a = b;
+    }
+}
+
 // Table 3: mean and max of width and of height, separately.
 void table3_statistics(RegionReport* out) {
     double sw = 0, sh = 0;
@@ -221,6 +247,7 @@ Status measure_regions(const BarkCylinder& bark, float t, const Vec3* W, RegionR
     strong_components(bark.net, strong, &component, &size);  // step 2
     out.components = int(size.size());
     region_extents(bark, t, W, strong, component, size, options, &out);  // steps 3-4
+    region_columns(bark, &out);                                          // step 5
     table3_statistics(&out);
     crack_intercepts(bark, t, options.end_rows, component, &out);
     return Status::success();

@@ -35,6 +35,8 @@
 //      that closes around the trunk wraps (width = the circumference); a region spanning the
 //      whole height (within 1.5 rows) is full height;
 //   4. regions of fewer than min_nodes (chosen here: 3) are crumbs at crack junctions.
+//   5. each region's columns: the shortest arc of lattice columns around the trunk holding its
+//      nodes (for the photograph views Table 3 is compared in, photograph_views.hpp).
 // Mean and max of width and height are taken separately, as Table 3 does. The figures measure
 // a section away from the cylinder's cut ends (RegionOptions::end_rows, kSectionEndRows).
 //
@@ -53,6 +55,10 @@ struct BarkRegion {
     int nodes = 0;
     float width = 0, height = 0;  // cm at the measured time
     bool wraps = false, full_height = false;
+    // The lattice columns it covers: first_column .. first_column + columns - 1 (mod N_R), the
+    // shortest arc around the trunk holding all its nodes; columns = N_R when it wraps.
+    // photograph_views.hpp uses it to tell which regions a view shows whole.
+    int first_column = 0, columns = 0;
 };
 
 struct RegionReport {
