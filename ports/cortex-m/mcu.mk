@@ -66,7 +66,7 @@ MCU_CPU_m0  := -mcpu=cortex-m0 -mthumb -mfloat-abi=soft -DSHITSUKAN_TYPE3_ROW_CA
 MCU_LD_m0   := $(MCU_ARM_LD) -T ports/cortex-m/microbit.ld
 MCU_STACK_m0 := -Wl,--defsym=STACK_SIZE=4096
 MCU_LDS_m0  := ports/cortex-m/microbit.ld ports/cortex-m/sections.ld
-MCU_PORT_m0 := $(MCU_ARM_PORT)
+MCU_PORT_m0 := $(MCU_ARM_PORT) ports/cortex-m/soft_float_sub.cpp
 MCU_SIZE_m0 := arm-none-eabi-size
 MCU_BENCH_m0 := -DBENCH_CORE='"M0"' -DBENCH_SMALL_RAM -DBOARD_MICROBIT
 MCU_CXX_rv32  := riscv64-unknown-elf-g++
@@ -75,7 +75,7 @@ MCU_CPU_rv32  := -march=rv32imac -mabi=ilp32 -mcmodel=medany --specs=picolibc.sp
                  -isystem $(MCU_RV_CXXINC) -isystem $(MCU_RV_CXXINC)/arm-none-eabi/thumb/v6-m/nofp
 MCU_LD_rv32   := -nostartfiles -Wl,--gc-sections -T ports/riscv/virt.ld
 MCU_LDS_rv32  := ports/riscv/virt.ld
-MCU_PORT_rv32 := ports/riscv/semihosting.cpp ports/riscv/startup.cpp
+MCU_PORT_rv32 := ports/riscv/semihosting.cpp ports/riscv/startup.cpp ports/riscv/soft_float_sub.cpp
 MCU_SIZE_rv32 := riscv64-unknown-elf-size
 MCU_BENCH_rv32 := -DBENCH_CORE='"RV32"'
 
