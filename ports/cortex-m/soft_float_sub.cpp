@@ -11,6 +11,8 @@
 // M0's transcript against the host's, byte for byte.
 // Linked on Armv6-M only (mcu.mk): the Armv7-M cores add and subtract floats in hardware,
 // and their libgcc's double subtraction is already an entry into the addition.
+// `used`: the compiler calls these after link-time optimisation has run, which would otherwise
+// drop them as unreferenced.
 #include <cstdint>
 #include <cstring>
 
@@ -38,5 +40,5 @@ double negated(double v) {
 }
 }  // namespace
 
-float __aeabi_fsub(float a, float b) { return __aeabi_fadd(a, negated(b)); }
-double __aeabi_dsub(double a, double b) { return __aeabi_dadd(a, negated(b)); }
+__attribute__((used)) float __aeabi_fsub(float a, float b) { return __aeabi_fadd(a, negated(b)); }
+__attribute__((used)) double __aeabi_dsub(double a, double b) { return __aeabi_dadd(a, negated(b)); }

@@ -8,6 +8,8 @@
 // (signed zeros and infinities included; only a NaN's sign may differ, and no result of the
 // library is a NaN it prints). `make test-mcu` checks the RV32 transcript against the
 // host's, byte for byte. (ports/cortex-m/soft_float_sub.cpp is the same for the Cortex-M0.)
+// `used`: the compiler calls these after link-time optimisation has run, which would otherwise
+// drop them as unreferenced.
 #include <cstdint>
 #include <cstring>
 
@@ -35,5 +37,5 @@ double negated(double v) {
 }
 }  // namespace
 
-float __subsf3(float a, float b) { return __addsf3(a, negated(b)); }
-double __subdf3(double a, double b) { return __adddf3(a, negated(b)); }
+__attribute__((used)) float __subsf3(float a, float b) { return __addsf3(a, negated(b)); }
+__attribute__((used)) double __subdf3(double a, double b) { return __adddf3(a, negated(b)); }
