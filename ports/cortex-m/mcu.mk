@@ -66,7 +66,11 @@ MCU_CPU_m0  := -mcpu=cortex-m0 -mthumb -mfloat-abi=soft -DSHITSUKAN_TYPE3_ROW_CA
 MCU_LD_m0   := $(MCU_ARM_LD) -T ports/cortex-m/microbit.ld
 MCU_STACK_m0 := -Wl,--defsym=STACK_SIZE=4096
 MCU_LDS_m0  := ports/cortex-m/microbit.ld ports/cortex-m/sections.ld
-MCU_PORT_m0 := $(MCU_ARM_PORT) ports/cortex-m/soft_float_sub.cpp ports/cortex-m/soft_float_compare.cpp
+# The M0's soft-float run-time pieces in place of libgcc's larger ones (same results; see each
+# file): subtraction, comparisons, double add/multiply/divide.
+MCU_SOFT_m0 := ports/cortex-m/soft_float_sub.cpp ports/cortex-m/soft_float_compare.cpp \
+               ports/cortex-m/soft_double.cpp ports/cortex-m/signed_divide.cpp
+MCU_PORT_m0 := $(MCU_ARM_PORT) $(MCU_SOFT_m0)
 MCU_SIZE_m0 := arm-none-eabi-size
 MCU_BENCH_m0 := -DBENCH_CORE='"M0"' -DBENCH_SMALL_RAM -DBOARD_MICROBIT
 MCU_CXX_rv32  := riscv64-unknown-elf-g++
@@ -75,14 +79,21 @@ MCU_CPU_rv32  := -march=rv32imac -mabi=ilp32 -mcmodel=medany --specs=picolibc.sp
                  -isystem $(MCU_RV_CXXINC) -isystem $(MCU_RV_CXXINC)/arm-none-eabi/thumb/v6-m/nofp
 MCU_LD_rv32   := -nostartfiles -Wl,--gc-sections -T ports/riscv/virt.ld
 MCU_LDS_rv32  := ports/riscv/virt.ld
-MCU_PORT_rv32 := ports/riscv/semihosting.cpp ports/riscv/startup.cpp ports/riscv/soft_float_sub.cpp ports/riscv/soft_float_compare.cpp
+MCU_SOFT_rv32 := ports/riscv/soft_float_sub.cpp ports/riscv/soft_float_compare.cpp \
+                 ports/riscv/soft_double.cpp
+MCU_PORT_rv32 := ports/riscv/semihosting.cpp ports/riscv/startup.cpp $(MCU_SOFT_rv32)
 MCU_SIZE_rv32 := riscv64-unknown-elf-size
 MCU_BENCH_rv32 := -DBENCH_CORE='"RV32"'
 
 MCU_TRANSCRIPTS := $(foreach c,$(MCU_CORES),$(MCU_DIR)/$(c)/transcript.elf)
+# tests/mcu/soft_double_check.cpp: ports/cortex-m/soft_double.hpp against the device's own
+# libgcc (linked without the port's replacements), on the two soft-float cores.
+MCU_SOFT_CHECKS := $(foreach c,m0 rv32,$(MCU_DIR)/$(c)/soft_double_check.elf)
 test-mcu: mcu-deps
-	@$(SUBMAKE) $(MCU_TRANSCRIPTS) $(MCU_DIR)/host_transcript $(MCU_DIR)/host_clang_O0 \
-	  $(MCU_DIR)/png_fnv $(BUILD)/paper_figures
+	@$(SUBMAKE) $(MCU_TRANSCRIPTS) $(MCU_SOFT_CHECKS) $(MCU_DIR)/host_transcript \
+	  $(MCU_DIR)/host_clang_O0 $(MCU_DIR)/png_fnv $(BUILD)/paper_figures
+	bash ports/cortex-m/qemu_run.sh m0 $(MCU_DIR)/m0/soft_double_check.elf
+	bash ports/cortex-m/qemu_run.sh rv32 $(MCU_DIR)/rv32/soft_double_check.elf
 	bash ports/cortex-m/test_mcu.sh $(MCU_DIR) $(BUILD)/paper_figures
 
 # Instructions per lattice node / marble pixel / rasterized pixel / triangle on each core
@@ -138,6 +149,10 @@ $(MCU_DIR)/$(1)/ports/cortex-m/bench_main.o: MCU_EXTRA := $(MCU_BENCH_$(1))
 $(MCU_DIR)/$(1)/bench.elf: $(patsubst %.cpp,$(MCU_DIR)/$(1)/%.o,$(MCU_BENCH_SRCS) $(MCU_PORT_$(1))) $(MCU_LDS_$(1))
 	$(MCU_LINK_$(1)) $(MCU_CPU_$(1)) $(MCU_LD_$(1)) $(MCU_STACK_$(1)) -o $$@ \
 	  $(patsubst %.cpp,$(MCU_DIR)/$(1)/%.o,$(MCU_BENCH_SRCS) $(MCU_PORT_$(1)))
+
+$(MCU_DIR)/$(1)/soft_double_check.elf: $(patsubst %.cpp,$(MCU_DIR)/$(1)/%.o,tests/mcu/soft_double_check.cpp $(filter-out $(MCU_SOFT_$(1)),$(MCU_PORT_$(1)))) $(MCU_LDS_$(1))
+	$(MCU_LINK_$(1)) $(MCU_CPU_$(1)) $(MCU_LD_$(1)) $(MCU_STACK_$(1)) -o $$@ \
+	  $(patsubst %.cpp,$(MCU_DIR)/$(1)/%.o,tests/mcu/soft_double_check.cpp $(filter-out $(MCU_SOFT_$(1)),$(MCU_PORT_$(1))))
 
 $(MCU_DIR)/$(1)/transcript.elf: $(patsubst %.cpp,$(MCU_DIR)/$(1)/%.o,$(MCU_COMMON_SRCS) $(MCU_PORT_$(1))) $(MCU_LDS_$(1))
 	$(MCU_LINK_$(1)) $(MCU_CPU_$(1)) $(MCU_LD_$(1)) $(MCU_STACK_$(1)) -Wl,-Map=$$(@:.elf=.map) -o $$@ \
