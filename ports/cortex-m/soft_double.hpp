@@ -82,6 +82,55 @@ inline u64 nan_result(u64 a, u64 b) {
 #endif
 }
 
+// n rounded to the nearest double, ties to even (what double(n) does).
+inline u64 from_unsigned(u64 n) {
+    if (n == 0) return 0;
+    int top = 63;  // the leading 1
+    while ((n >> top) == 0) --top;
+    // to the leading 1 at bit 55, the bits shifted out ORed into the sticky bit 0
+    const u64 m = top <= 55 ? n << (55 - top)
+                            : (n >> (top - 55)) | u64((n << (64 - (top - 55))) != 0);
+    return round_pack(0, top + 1023, m);
+}
+
+// The float with bits f as a double (exact: what double(f) does).
+inline u64 from_float(u32 f) {
+    const u64 sign = u64(f & 0x80000000u) << 32;
+    int exponent = int((f >> 23) & 0xffu);
+    u64 fraction = f & 0x7fffffu;
+    if (exponent == 0xff) {
+        // a NaN keeps its sign and payload, made quiet (libgcc's, measured, on both targets)
+        const u64 x = sign | kInf | (fraction << 29);
+        return fraction == 0 ? x : x | (u64(1) << 51);
+    }
+    if (exponent == 0) {  // a subnormal float is a normal double
+        if (fraction == 0) return sign;
+        exponent = 1;
+        while ((fraction & 0x800000u) == 0) {
+            fraction <<= 1;
+            --exponent;
+        }
+        fraction &= 0x7fffffu;
+    }
+    return sign | (u64(exponent - 127 + 1023) << 52) | (fraction << 29);
+}
+
+// The binary128 number with words high (sign, 15-bit exponent, 48 fraction bits) and low (64
+// fraction bits) rounded once to a double, ties to even.
+inline u64 from_quad(u64 high, u64 low) {
+    const u64 sign = high & kSign;
+    const int exponent = int((high >> 48) & 0x7fffu);
+    high &= (u64(1) << 48) - 1;
+    if (exponent == 0x7fff)  // a NaN: the canonical one (libgcc's, measured)
+        return high == 0 && low == 0 ? sign | kInf : kNaN;
+    if (exponent == 0 && high == 0 && low == 0) return sign;
+    // the leading 1 (none for a binary128 subnormal: far below the doubles, it rounds to 0)
+    // at bit 55, 55 fraction bits, the other 57 ORed into the sticky bit
+    const u64 m = (exponent == 0 ? 0 : kLead) | (high << 7) | (low >> 57) |
+                  u64((low & ((u64(1) << 57) - 1)) != 0);
+    return round_pack(sign, exponent - 16383 + 1023, m);
+}
+
 inline u64 add(u64 a, u64 b) {
     if (is_nan(a) || is_nan(b)) return nan_result(a, b);
     u64 ma = a & ~kSign, mb = b & ~kSign;

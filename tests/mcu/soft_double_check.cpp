@@ -1,5 +1,5 @@
-// tests/mcu/soft_double_check.cpp — checks ports/cortex-m/soft_double.hpp (and, on the
-// Cortex-M0, signed_divide.hpp) against the device's libgcc, bit for bit (NaNs included), on
+// tests/mcu/soft_double_check.cpp — checks ports/cortex-m/soft_double.hpp, soft_single.hpp
+// (and, on the Cortex-M0, signed_divide.hpp) against the device's libgcc, bit for bit (NaNs included), on
 // the Cortex-M0 and the RV32 under QEMU (run by `make test-mcu`; built WITHOUT the port's
 // replacements of libgcc's routines, so `x + y` and `a / b` here are libgcc's). Operands: special values crossed with each other, then
 // pseudo-random pairs biased to cancellation, subnormals, underflow and overflow.
@@ -8,6 +8,7 @@
 
 #include "semihosting.hpp"
 #include "soft_double.hpp"
+#include "soft_single.hpp"
 #if defined(__ARM_ARCH_6M__)
 #include "signed_divide.hpp"
 #endif
@@ -49,8 +50,50 @@ u64 with_exponent(u64 v, unsigned e) { return (v & ~(u64(0x7ff) << 52)) | (u64(e
 __attribute__((noinline)) double lib_add(double a, double b) { return a + b; }
 __attribute__((noinline)) double lib_mul(double a, double b) { return a * b; }
 __attribute__((noinline)) double lib_div(double a, double b) { return a / b; }
+__attribute__((noinline)) double lib_u64_to_double(u64 n) { return double(n); }
+__attribute__((noinline)) double lib_float_to_double(float f) { return double(f); }
+#if defined(__riscv)
+__attribute__((noinline)) double lib_quad_to_double(long double q) { return double(q); }
+#endif
 
 long g_bad = 0, g_count = 0;
+
+namespace ss = shitsukan::port::soft_single;
+float from32(ss::u32 u) {
+    float f;
+    std::memcpy(&f, &u, sizeof f);
+    return f;
+}
+ss::u32 bits32(float f) {
+    ss::u32 u;
+    std::memcpy(&u, &f, sizeof u);
+    return u;
+}
+__attribute__((noinline)) float lib_fadd(float a, float b) { return a + b; }
+__attribute__((noinline)) float lib_fmul(float a, float b) { return a * b; }
+__attribute__((noinline)) float lib_fdiv(float a, float b) { return a / b; }
+void check_single(ss::u32 a, ss::u32 b) {
+    const ss::u32 mine[3] = {ss::add(a, b), ss::mul(a, b), ss::div(a, b)};
+    const ss::u32 theirs[3] = {bits32(lib_fadd(from32(a), from32(b))),
+                               bits32(lib_fmul(from32(a), from32(b))),
+                               bits32(lib_fdiv(from32(a), from32(b)))};
+    for (int k = 0; k < 3; ++k) {
+        ++g_count;
+        if (mine[k] != theirs[k] && g_bad++ < 8) {
+            put("soft-single: op ");
+            put(k == 0 ? "add" : k == 1 ? "mul" : "div");
+            put(" a ");
+            put_hex(a);
+            put(" b ");
+            put_hex(b);
+            put(" soft_single ");
+            put_hex(mine[k]);
+            put(" libgcc ");
+            put_hex(theirs[k]);
+            put("\n");
+        }
+    }
+}
 
 #if defined(__ARM_ARCH_6M__)
 __attribute__((noinline)) std::int32_t lib_idiv(std::int32_t a, std::int32_t b) { return a / b; }
@@ -94,6 +137,13 @@ int main() {
                            0x7fefffffffffffffull, 0x7fe0000000000000ull, sd::kInf,
                            0x7ff8000000000000ull, 0x7ff0000000000001ull, 0x7ffc000000000123ull,
                            0x0020000000000000ull, 0x3cb0000000000000ull};
+    const ss::u32 special32[] = {0, 1, 0x007fffffu, 0x00800000u, 0x3f800000u, 0x3f800001u,
+                                 0x3f7fffffu, 0x7f7fffffu, 0x7f800000u, 0x7fc00000u, 0x7f800001u,
+                                 0x7fe00123u, 0x33800000u};
+    for (ss::u32 a : special32)
+        for (ss::u32 b : special32)
+            for (int s = 0; s < 4; ++s)
+                check_single(a ^ ((s & 1) ? ss::kSign : 0), b ^ ((s & 2) ? ss::kSign : 0));
     for (u64 a : special)
         for (u64 b : special)
             for (int s = 0; s < 4; ++s)
@@ -110,6 +160,54 @@ int main() {
         }
         check(a, b);
         check(b, a);
+        const u64 integers[4] = {a, a >> (b % 64), a & ~u64(0x3ff), a >> 11};  // ties, exact
+        for (const u64 n : integers) {
+            ++g_count;
+            if (sd::from_unsigned(n) != bits(lib_u64_to_double(n)) && g_bad++ < 8)
+                put("soft-double: unsigned 64-bit to double: a mismatch\n");
+        }
+#if defined(__riscv)
+        {  // binary128 (RV32's long double) to double: the Status formatter's %Lg
+            u64 w[2] = {b, (a & ~(u64(0x7fff) << 48)) | (u64(15360 + a % 2048) << 48)};
+            if (i % 7 == 0) w[1] = a;  // any exponent: overflow, subnormal
+            if (i % 11 == 0) w[1] |= u64(0x7fff) << 48;  // NaN (and inf below)
+            if (i % 13 == 0) w[1] &= ~(u64(0x7fff) << 48);  // subnormal
+            if (i % 17 == 0) w[0] = 0, w[1] &= ~((u64(1) << 48) - 1);  // inf, zero, powers of 2
+            long double q;
+            std::memcpy(&q, w, sizeof q);
+            ++g_count;
+            if (sd::from_quad(w[1], w[0]) != bits(lib_quad_to_double(q)) && g_bad++ < 8) {
+                put("soft-double: binary128 ");
+                put_hex(w[1]);
+                put_hex(w[0]);
+                put(" to double: ");
+                put_hex(sd::from_quad(w[1], w[0]));
+                put(" libgcc ");
+                put_hex(bits(lib_quad_to_double(q)));
+                put("\n");
+            }
+        }
+#endif
+        const sd::u32 floats[3] = {sd::u32(a), sd::u32(b) & 0x80ffffffu, sd::u32(b) | 0x7f800000u};
+        for (const sd::u32 f : floats) {  // any, tiny and subnormal, inf and NaN
+            ++g_count;
+            if (sd::from_float(f) != bits(lib_float_to_double(from32(f))) && g_bad++ < 8) {
+                put("soft-double: float to double of ");
+                put_hex(f);
+                put(": ");
+                put_hex(sd::from_float(f));
+                put(" libgcc ");
+                put_hex(bits(lib_float_to_double(from32(f))));
+                put("\n");
+            }
+        }
+        // the float ones: the two halves, and the top halves' exponents moved like the doubles'
+        const ss::u32 fa = ss::u32(a), fb = ss::u32(b >> 32);
+        const ss::u32 ga = (ss::u32(a >> 32) & 0x807fffffu) | (ss::u32(a % 254) << 23);
+        check_single(fa, fb);
+        check_single(fb, fa);
+        check_single(ga, fb & 0x81ffffffu);
+        check_single(fa & 0x80ffffffu, ga);
 #if defined(__ARM_ARCH_6M__)
         const std::int32_t ia = std::int32_t(a >> (a % 32)), ib = std::int32_t(b >> (b % 40));
         check_divide(ia, ib);
@@ -117,7 +215,7 @@ int main() {
         check_divide(INT32_MIN, ib);
 #endif
     }
-    put(g_bad == 0 ? "soft-double: all " : "soft-double: MISMATCHES in ");
+    put(g_bad == 0 ? "soft-float: all " : "soft-float: MISMATCHES in ");
     char digits[12];
     int n = 0;
     for (unsigned long v = (unsigned long)g_count; v != 0 || n == 0; v /= 10) digits[n++] = char('0' + v % 10);
