@@ -102,18 +102,18 @@ namespace {
 // (-x)·y·z exactly), and a - p is a + (-p) in IEEE arithmetic: the same roundings, in the
 // same order, as the formula written out term by term (which cost 3.6 KB of Cortex-M0 flash).
 double cofactor(const double* s, int row, int col) {
-    int r[3], c[3];
+    const double* r[3];  // the minor's rows and columns
+    int c[3];
     for (int i = 0, nr = 0, nc = 0; i < 4; ++i) {
-        if (i != row) r[nr++] = i;
+        if (i != row) r[nr++] = s + 4 * i;
         if (i != col) c[nc++] = i;
     }
-    auto e = [&](int i, int j) { return s[4 * r[i] + c[j]]; };
     const bool negative = ((row + col) & 1) != 0;
     double sum = 0.0;
     for (int first = 0; first < 3; ++first) {  // the row of the column-0 factor
         const int lo = first == 0 ? 1 : 0, hi = first == 2 ? 1 : 2;  // the other two rows
         for (int swap = 0; swap < 2; ++swap) {
-            const double p = e(first, 0) * e(lo, 1 + swap) * e(hi, 2 - swap);
+            const double p = r[first][c[0]] * r[lo][c[1 + swap]] * r[hi][c[2 - swap]];
             const bool minus = (((first & 1) != 0) != (swap != 0)) != negative;
             const double term = minus ? -p : p;
             sum = first == 0 && swap == 0 ? term : sum + term;
