@@ -83,8 +83,8 @@ MCU_CPU_rv32  := -march=rv32imac -mabi=ilp32 -mcmodel=medany --specs=picolibc.sp
 MCU_LD_rv32   := -nostartfiles -Wl,--gc-sections -T ports/riscv/virt.ld
 MCU_LDS_rv32  := ports/riscv/virt.ld
 # RV32: the same, and the float add/multiply/divide (soft_single.hpp: 1.3 KB less flash, which
-# the marble firmware's goal needs; 3-8 % more instructions per lattice node and marble pixel,
-# 13 % fewer per rasterized pixel: make bench-mcu).
+# the marble firmware's goal needs; 5-12 % more instructions per lattice node and marble or wood
+# pixel, 13 % fewer per rasterized pixel: make bench-mcu).
 MCU_SOFT_rv32 := ports/riscv/soft_float_sub.cpp ports/riscv/soft_float_compare.cpp \
                  ports/riscv/soft_double.cpp ports/riscv/soft_single.cpp
 MCU_PORT_rv32 := ports/riscv/semihosting.cpp ports/riscv/startup.cpp $(MCU_SOFT_rv32)
