@@ -221,6 +221,28 @@ TEST_CASE("marble eq. (8): trapezoid with exponential skirt, sum of stripes, pix
     CHECK(std::string(bad2.message()).find("got -3") != std::string::npos);
 }
 
+TEST_CASE("marble_density: G' = 1 - min(G, 1), solid_density_at's marble case bit for bit") {
+    const MarbleStripe two[2] = {{10.0f, 4.0f, 0.5f}, {13.0f, 2.0f, 1.0f}};
+    const MarbleParams m{two, 2, 16.0f};
+    // inside a layer G >= 1: the impurity's colour end (G' = 0); overlapping skirts add up
+    // past 1 and are clamped
+    CHECK(marble_density(Vec3{0.0f, 0.0f, 10.0f}, 0.0f, m) == 0.0f);
+    CHECK(marble_original(11.5f, two, 2) > 1.0f);
+    CHECK(marble_density(Vec3{0.0f, 0.0f, 11.5f}, 0.0f, m) == 0.0f);
+    // far from both: limestone, G' -> 1
+    CHECK(marble_density(Vec3{0.0f, 0.0f, 60.0f}, 0.0f, m) > 0.999f);
+    SolidMaterial material;
+    material.pattern = SolidPattern::marble;
+    material.marble = m;
+    for (int i = 0; i < 200; ++i) {
+        const Vec3 p{0.5f * float(i % 7), 0.25f * float(i % 5), 0.1f * float(i)};
+        const float d = 0.01f * float(i % 37) - 0.18f;
+        const float g = marble_density(p, d, m);
+        CHECK(g == 1.0f - std::fmin(marble_texture(p, d, m), 1.0f));
+        CHECK(g == solid_density_at(material, p, d));
+    }
+}
+
 TEST_CASE("wood eqs. (10), (11): radial sine, radial displacement, r = 0") {
     WoodParams w;
     w.x0 = 10.0f;

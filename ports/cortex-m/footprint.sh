@@ -21,7 +21,8 @@ goal() {
 }
 
 firmwares() {
-    local dir="$1" fail=0 core variant elf out stack size_tool name g
+    local dir="$1" fail=0 core variant elf out stack size_tool name g digest first
+    local digest_lattice='' digest_marble=''
     for core in m4 m0 rv32; do
         case "$core" in
             m4) name="Cortex-M4F, -Os, newlib-nano"; size_tool=arm-none-eabi-size ;;
@@ -32,6 +33,14 @@ firmwares() {
             elf="$dir/$core-$variant.elf"
             out=$(bash "$here/qemu_run.sh" "$core" "$elf") || { echo "footprint-mcu: $core $variant failed: $out"; fail=1; continue; }
             echo "$out"
+            # the same frame and lattice on every core (the firmwares are built with -flto,
+            # the transcripts without: these digests are the transcript's bits too)
+            digest=$(echo "$out" | sed -n 's/.* fnv \([0-9a-f]*\),.*/\1/p')
+            first="digest_$variant"
+            if [ -z "${!first:-}" ]; then printf -v "$first" '%s' "$digest"
+            elif [ "${!first}" != "$digest" ]; then
+                echo "footprint-mcu: $core $variant digest $digest differs from the first core's ${!first}"; fail=1
+            fi
             stack=$(echo "$out" | sed -n 's/.*main stack used \([0-9]*\) bytes/\1/p')
             reserved=$(( $(nm "$elf" 2>/dev/null | awk '$3 == "_estack" { e = $1 } $3 == "_sstack" { s = $1 } END { print "0x" e " - 0x" s }') ))
             g=$(goal "$core" "$variant")
@@ -71,6 +80,7 @@ function add(sec, size, obj,   kind, mod, n) {
     n = hex(size)
     kind = sec ~ /^\.bss/ ? "bss" : (sec ~ /^\.data/ ? "data" : "flash")
     if (obj ~ /\/lib\/shitsukan\//) { mod = obj; sub(/.*\/lib\/shitsukan\//, "", mod); sub(/\/.*/, "", mod) }
+    else if (obj ~ /ports\/(cortex-m|riscv)\/soft_float/) mod = "C/C++ runtime (C library, libgcc)"
     else if (obj ~ /ports\/(cortex-m|riscv)/) mod = "port (startup, transcript, buffers)"
     else mod = "C/C++ runtime (C library, libgcc)"
     total[mod, kind] += n; mods[mod] = 1

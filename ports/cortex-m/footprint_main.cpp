@@ -17,6 +17,7 @@
 #include "shitsukan/geom/mesh_arrays.hpp"
 #include "shitsukan/raster/camera.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
+#include "shitsukan/solid/marble.hpp"
 #include "shitsukan/solid/object_mapping.hpp"
 #include "shitsukan/solid/solid_material.hpp"
 #endif
@@ -83,8 +84,10 @@ struct TypeIIIMarbleShader {
     Vec3 light;
     Rgb8 operator()(const Fragment& f) {
         const Vec3 p = object_to_lattice(f.object_position, mapping);
-        const Vec3 c =
-            solid_density_color(material, solid_density_at(material, p, g_lattice.turbulence(p)));
+        // marble_density: solid_density_at's marble case (the material has no layer period),
+        // without the wood code a dispatch on the pattern would link
+        const float density = marble_density(p, g_lattice.turbulence(p), material.marble);
+        const Vec3 c = solid_density_color(material, density);
         Vec3 n = f.normal;
         if (!f.front_facing) n = -n;
         const float lambert = dot(n, light) > 0.0f ? dot(n, light) : 0.0f;

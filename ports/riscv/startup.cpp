@@ -13,7 +13,8 @@ extern void (*__init_array_start[])();
 extern void (*__init_array_end[])();
 int main();
 
-[[noreturn]] void reset_handler() {
+// used: referenced only from the asm entry below (which -flto does not see)
+[[noreturn]] __attribute__((used)) void reset_handler() {
     for (std::uint32_t *src = &_sidata, *dst = &_sdata; dst < &_edata;) *dst++ = *src++;
     for (std::uint32_t* dst = &_sbss; dst < &_ebss;) *dst++ = 0;
     for (void (**f)() = __init_array_start; f < __init_array_end; ++f) (*f)();
@@ -40,7 +41,7 @@ _start:
     .text
 )");
 
-[[noreturn]] void trap_handler() __attribute__((aligned(4)));
+[[noreturn]] void trap_handler() __attribute__((aligned(4), used));
 void trap_handler() {
     static const char text[] = "fault: trap (illegal instruction, misaligned or bad access)\n";
     shitsukan::port::semihosting_write(text, int(sizeof text - 1));

@@ -92,42 +92,43 @@ Mat4 transpose(const Mat4& a) {
     return r;
 }
 
-// Inverse by cofactors (Cramer's rule), computed in double for a stable determinant.
+namespace {
+// The cofactor of entry (row, col) of the 4x4 matrix s (row-major, in double): (-1)^(row+col)
+// times the determinant of the 3x3 minor without that row and column, expanded along the
+// minor's first column as six products (x·y)·z summed left to right:
+//   + a0·b1·c2 - a0·b2·c1 - b0·a1·c2 + b0·a2·c1 + c0·a1·b2 - c0·a2·b1
+// (a, b, c: the minor's rows; 0, 1, 2: its columns; each product's first factor from column
+// 0, then the rest by row). A negative cofactor negates every product instead (-x·y·z is
+// (-x)·y·z exactly), and a - p is a + (-p) in IEEE arithmetic: the same roundings, in the
+// same order, as the formula written out term by term (which cost 3.6 KB of Cortex-M0 flash).
+double cofactor(const double* s, int row, int col) {
+    const double* r[3];  // the minor's rows and columns
+    int c[3];
+    for (int i = 0, nr = 0, nc = 0; i < 4; ++i) {
+        if (i != row) r[nr++] = s + 4 * i;
+        if (i != col) c[nc++] = i;
+    }
+    const bool negative = ((row + col) & 1) != 0;
+    double sum = 0.0;
+    for (int first = 0; first < 3; ++first) {  // the row of the column-0 factor
+        const int lo = first == 0 ? 1 : 0, hi = first == 2 ? 1 : 2;  // the other two rows
+        for (int swap = 0; swap < 2; ++swap) {
+            const double p = r[first][c[0]] * r[lo][c[1 + swap]] * r[hi][c[2 - swap]];
+            const bool minus = (((first & 1) != 0) != (swap != 0)) != negative;
+            const double term = minus ? -p : p;
+            sum = first == 0 && swap == 0 ? term : sum + term;
+        }
+    }
+    return sum;
+}
+}  // namespace
+
+// Inverse by cofactors (Cramer's rule), computed in double for a stable determinant: the
+// adjugate inv[4i + j] is the cofactor of entry (j, i).
 Mat4 inverse(const Mat4& a, bool* ok) {
     double s[16], inv[16];
     for (int i = 0; i < 16; ++i) s[i] = a.m[i / 4][i % 4];
-    inv[0] = s[5] * s[10] * s[15] - s[5] * s[11] * s[14] - s[9] * s[6] * s[15] +
-             s[9] * s[7] * s[14] + s[13] * s[6] * s[11] - s[13] * s[7] * s[10];
-    inv[4] = -s[4] * s[10] * s[15] + s[4] * s[11] * s[14] + s[8] * s[6] * s[15] -
-             s[8] * s[7] * s[14] - s[12] * s[6] * s[11] + s[12] * s[7] * s[10];
-    inv[8] = s[4] * s[9] * s[15] - s[4] * s[11] * s[13] - s[8] * s[5] * s[15] +
-             s[8] * s[7] * s[13] + s[12] * s[5] * s[11] - s[12] * s[7] * s[9];
-    inv[12] = -s[4] * s[9] * s[14] + s[4] * s[10] * s[13] + s[8] * s[5] * s[14] -
-              s[8] * s[6] * s[13] - s[12] * s[5] * s[10] + s[12] * s[6] * s[9];
-    inv[1] = -s[1] * s[10] * s[15] + s[1] * s[11] * s[14] + s[9] * s[2] * s[15] -
-             s[9] * s[3] * s[14] - s[13] * s[2] * s[11] + s[13] * s[3] * s[10];
-    inv[5] = s[0] * s[10] * s[15] - s[0] * s[11] * s[14] - s[8] * s[2] * s[15] +
-             s[8] * s[3] * s[14] + s[12] * s[2] * s[11] - s[12] * s[3] * s[10];
-    inv[9] = -s[0] * s[9] * s[15] + s[0] * s[11] * s[13] + s[8] * s[1] * s[15] -
-             s[8] * s[3] * s[13] - s[12] * s[1] * s[11] + s[12] * s[3] * s[9];
-    inv[13] = s[0] * s[9] * s[14] - s[0] * s[10] * s[13] - s[8] * s[1] * s[14] +
-              s[8] * s[2] * s[13] + s[12] * s[1] * s[10] - s[12] * s[2] * s[9];
-    inv[2] = s[1] * s[6] * s[15] - s[1] * s[7] * s[14] - s[5] * s[2] * s[15] + s[5] * s[3] * s[14] +
-             s[13] * s[2] * s[7] - s[13] * s[3] * s[6];
-    inv[6] = -s[0] * s[6] * s[15] + s[0] * s[7] * s[14] + s[4] * s[2] * s[15] -
-             s[4] * s[3] * s[14] - s[12] * s[2] * s[7] + s[12] * s[3] * s[6];
-    inv[10] = s[0] * s[5] * s[15] - s[0] * s[7] * s[13] - s[4] * s[1] * s[15] +
-              s[4] * s[3] * s[13] + s[12] * s[1] * s[7] - s[12] * s[3] * s[5];
-    inv[14] = -s[0] * s[5] * s[14] + s[0] * s[6] * s[13] + s[4] * s[1] * s[14] -
-              s[4] * s[2] * s[13] - s[12] * s[1] * s[6] + s[12] * s[2] * s[5];
-    inv[3] = -s[1] * s[6] * s[11] + s[1] * s[7] * s[10] + s[5] * s[2] * s[11] -
-             s[5] * s[3] * s[10] - s[9] * s[2] * s[7] + s[9] * s[3] * s[6];
-    inv[7] = s[0] * s[6] * s[11] - s[0] * s[7] * s[10] - s[4] * s[2] * s[11] + s[4] * s[3] * s[10] +
-             s[8] * s[2] * s[7] - s[8] * s[3] * s[6];
-    inv[11] = -s[0] * s[5] * s[11] + s[0] * s[7] * s[9] + s[4] * s[1] * s[11] - s[4] * s[3] * s[9] -
-              s[8] * s[1] * s[7] + s[8] * s[3] * s[5];
-    inv[15] = s[0] * s[5] * s[10] - s[0] * s[6] * s[9] - s[4] * s[1] * s[10] + s[4] * s[2] * s[9] +
-              s[8] * s[1] * s[6] - s[8] * s[2] * s[5];
+    for (int i = 0; i < 16; ++i) inv[i] = cofactor(s, i % 4, i / 4);
     double det = s[0] * inv[0] + s[1] * inv[4] + s[2] * inv[8] + s[3] * inv[12];
     Mat4 r;
     if (det == 0.0 || !std::isfinite(det)) {

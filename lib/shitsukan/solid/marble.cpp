@@ -29,6 +29,11 @@ float marble_texture(Vec3 p, float d, const MarbleParams& params) {
     return marble_original(q.z, params.stripes, params.count);
 }
 
+float marble_density(Vec3 p, float d, const MarbleParams& params) {
+    const float g = marble_texture(p, d, params);
+    return 1.0f - (g < 1.0f ? g : 1.0f);  // G' (chosen here, see solid_material.hpp)
+}
+
 Status validate_marble_stripe(const MarbleStripe& s) {
     if (!is_finite(s.c))
         return Status::error(StatusCode::invalid_argument, "marble stripe: centre c is not finite");

@@ -11,6 +11,7 @@
 //   s = validate_marble(m);
 //   float g  = marble_original(p.z, stripes, 2);         // G(P), eq. (8)
 //   float gp = marble_texture(p, turbulence(lattice.view(), p), m);  // G(P + k·D(P)·(0,0,1))
+//   float density = marble_density(p, turbulence(lattice.view(), p), m);  // 1 - min(gp, 1)
 //   return s;
 //   #include "shitsukan/solid/lattice_store.hpp"
 //   #include "shitsukan/solid/turbulence.hpp"
@@ -47,6 +48,10 @@ float trapezoid_skirt(float z, const MarbleStripe& stripe);
 float marble_original(float z, const MarbleStripe* stripes, int count);
 // The marble texture at P: G(P') with P' = P + k·D(P)·(0, 0, 1) (eqs. (7), (9) as pixel shift).
 float marble_texture(Vec3 p, float d, const MarbleParams& params);
+// The density G' = 1 - min(G(P + k·D·(0, 0, 1)), 1) of the layered marble, D = d (see
+// solid_material.hpp: what solid_density_at gives a marble material without a layer period).
+// A firmware that draws only marble calls this and links no wood code.
+float marble_density(Vec3 p, float d, const MarbleParams& params);
 
 Status validate_marble_stripe(const MarbleStripe& stripe);
 Status validate_marble(const MarbleParams& params);

@@ -39,10 +39,7 @@ float solid_density_at(const SolidMaterial& m, Vec3 p, float d) {
         const float g = trapezoid_skirt(t, layer) + trapezoid_skirt(t - m.layer_period, layer);
         return 1.0f - (g < 1.0f ? g : 1.0f);
     }
-    if (m.pattern == SolidPattern::marble) {
-        const float g = marble_texture(p, d, m.marble);  // G(P + k·D(P)·(0, 0, 1))
-        return 1.0f - (g < 1.0f ? g : 1.0f);
-    }
+    if (m.pattern == SolidPattern::marble) return marble_density(p, d, m.marble);
     return wood_unit_range(wood_texture(p, d, m.wood));  // (sin(k2·r') + 1)/2
 }
 
