@@ -372,13 +372,17 @@ Status insert_in_order(const Vec2d* points, int count, const std::vector<Hilbert
     for (const int step : {64, 16, 4, 1})
         for (int k = 0; k < count; k += step) {
             if (step < 64 && k % (4 * step) == 0) continue;  // inserted in an earlier round
-            const int i = order[std::size_t(k)].i;
-            if (out->duplicate_of[std::size_t(i)] >= 0) continue;
-            if (!builder.insert(k))
+            // a duplicate (the same point as the one before it along the curve, found above):
+            // not inserted; tested in Hilbert numbering (duplicate_of is in input order, and
+            // random reads of it cost 10 % of the time at 1e6 uniform points)
+            if (k > 0 && out->points[std::size_t(k) - 1] == out->points[std::size_t(k)]) continue;
+            if (!builder.insert(k)) {
+                const int i = order[std::size_t(k)].i;
                 return Status::error(StatusCode::degenerate,
                                      "build_delaunay: point %d = (%.17g, %.17g) could not be "
                                      "inserted (its triangle's circle does not hold it)",
                                      i, points[i].x, points[i].y);
+            }
         }
     return Status::success();
 }
