@@ -20,15 +20,20 @@ bool lex_less(Vec2d a, Vec2d b) { return a.x < b.x || (a.x == b.x && a.y < b.y);
 
 // Whether a, b, c are three corners of an axis-parallel rectangle (two distinct x values and
 // two distinct y values among them): *x, *y get those values (the rectangle's box).
-bool rectangle_corners(Vec2d a, Vec2d b, Vec2d c, double x[2], double y[2]) {
+// The conditions are combined with & and | (no branch to mispredict: a lattice's triangles
+// take their corners in every order).
+inline bool rectangle_corners(Vec2d a, Vec2d b, Vec2d c, double x[2], double y[2]) {
     x[0] = a.x, y[0] = a.y;
     x[1] = a.x != b.x ? b.x : c.x, y[1] = a.y != b.y ? b.y : c.y;
-    return (b.x == a.x || b.x == x[1]) && (c.x == a.x || c.x == x[1]) && x[1] != a.x &&
-           (b.y == a.y || b.y == y[1]) && (c.y == a.y || c.y == y[1]) && y[1] != a.y;
+    const int xs = (int(b.x == a.x) | int(b.x == x[1])) & (int(c.x == a.x) | int(c.x == x[1])) &
+                   int(x[1] != a.x);
+    const int ys = (int(b.y == a.y) | int(b.y == y[1])) & (int(c.y == a.y) | int(c.y == y[1])) &
+                   int(y[1] != a.y);
+    return (xs & ys) != 0;
 }
 
-bool on_box(Vec2d p, const double x[2], const double y[2]) {
-    return (p.x == x[0] || p.x == x[1]) && (p.y == y[0] || p.y == y[1]);
+inline bool on_box(Vec2d p, const double x[2], const double y[2]) {
+    return ((int(p.x == x[0]) | int(p.x == x[1])) & (int(p.y == y[0]) | int(p.y == y[1]))) != 0;
 }
 
 int find_root(std::vector<int>& parent, int t) {
