@@ -167,7 +167,8 @@ private:
                     const int* o = dt_.triangles[std::size_t(nb)].n;
                     slot = o[0] == t ? 0 : (o[1] == t ? 1 : 2);
                 }
-                boundary_.push_back({tri.v[i == 2 ? 0 : i + 1], tri.v[i == 0 ? 2 : i - 1], nb, slot});
+                const int u = tri.v[i == 2 ? 0 : i + 1], w = tri.v[i == 0 ? 2 : i - 1];
+                boundary_.push_back({u, w, nb, slot});
             }
         }
     }

@@ -1,4 +1,4 @@
-// small-device: yes (no allocation; every frame under 2.4 KB of stack, see predicates.hpp)
+// small-device: yes (no allocation; every frame under 2.5 KB of stack, see predicates.hpp)
 #include "shitsukan/geom/predicates.hpp"
 
 #include <algorithm>
