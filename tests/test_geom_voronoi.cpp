@@ -8,6 +8,7 @@
 
 #include "shitsukan/core/prng.hpp"
 #include "shitsukan/geom/delaunay.hpp"
+#include "shitsukan/geom/double_double.hpp"
 #include "shitsukan/geom/planar_subdivision.hpp"
 #include "shitsukan/geom/polygon.hpp"
 #include "shitsukan/geom/predicates.hpp"
@@ -111,6 +112,49 @@ TEST_CASE("predicates: in-circle on a rounded lattice, every stage against the e
     }
     CHECK(zero > 100);  // the cases exist: exactly cocircular ...
     CHECK(near_zero > 100);  // ... and cocircular on the lattice but not in doubles
+}
+
+TEST_CASE("predicates: in-circle with inexact coordinate differences, against the exact sum") {
+    // Near the origin of a rounded lattice ((i + 0.5) / side, i < 40) the sites differ in
+    // magnitude (0.005 against 0.035): their differences are not exact in doubles, and the
+    // double-double stage for inexact differences decides the quadruples that lie on one
+    // circle of the lattice (off it by rounding only; before, the fixed-point sum alone
+    // decided them). Every sign must be the exact one, also with a coordinate one ulp off.
+    const int side = 100;
+    auto p = [&](int i, int j) { return Vec2d{(i + 0.5) / side, (j + 0.5) / side}; };
+    Pcg32 rng(18, 6);
+    int inexact = 0, near_zero = 0, zero = 0;
+    for (int k = 0; k < 4000; ++k) {
+        // the lattice points on the circle through a random one, about a random centre (in
+        // doubled coordinates 2i + 1, where the squared radii are integers)
+        const int ai = int(rng.uniform_int(40)), aj = int(rng.uniform_int(40));
+        const int cx = int(rng.uniform_int(80)), cy = int(rng.uniform_int(80));
+        auto r2 = [&](int i, int j) {
+            return (2 * i + 1 - cx) * (2 * i + 1 - cx) + (2 * j + 1 - cy) * (2 * j + 1 - cy);
+        };
+        std::vector<Vec2d> on;
+        for (int i = 0; i < 40; ++i)
+            for (int j = 0; j < 40; ++j)
+                if (r2(i, j) == r2(ai, aj) && (i != ai || j != aj)) on.push_back(p(i, j));
+        if (on.size() < 3) continue;
+        Vec2d v[4] = {p(ai, aj), on[0], on[on.size() / 2], on.back()};
+        if (v[1] == v[2] || v[2] == v[3]) continue;
+        std::swap(v[int(rng.uniform_int(4))], v[3]);
+        if (k % 2) v[3].x = std::nextafter(v[3].x, 1.0);
+        const double f = incircle_unfiltered(v[0], v[1], v[2], v[3]);
+        const double e = incircle_exact(v[0], v[1], v[2], v[3]);
+        REQUIRE((f > 0) == (e > 0));
+        REQUIRE((f < 0) == (e < 0));
+        bool exact = true;
+        for (int m = 0; m < 3; ++m)
+            exact = exact && dd_diff(v[m].x, v[3].x).lo == 0.0 && dd_diff(v[m].y, v[3].y).lo == 0.0;
+        inexact += !exact;
+        near_zero += !exact && e != 0.0;
+        zero += !exact && e == 0.0;
+    }
+    CHECK(inexact > 1000);    // the differences really are inexact ...
+    CHECK(near_zero > 1000);  // ... on quadruples the filter cannot decide
+    CHECK(zero > 20);         // and some are exactly cocircular even so
 }
 
 TEST_CASE("predicates: mirrored chords of a rounded lattice are 0, one ulp off them is not") {

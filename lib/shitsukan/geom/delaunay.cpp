@@ -74,7 +74,6 @@ struct BoundaryEdge {
     int u, w;          // the edge u -> w as it runs in the cavity triangle (counter-clockwise)
     int outside;       // triangle beyond it, -1 at the frame
     int outside_slot;  // index j with triangles[outside].n[j] == the cavity triangle
-    int created;       // the new triangle (p, u, w)
 };
 
 class Builder {
@@ -89,36 +88,39 @@ public:
         dt_.triangles.clear();
         dt_.triangles.reserve(most);
         mark_.reserve(most);
-        out_mark_.reserve(most);
         // frame points n..n+3 counter-clockwise: (-,-) (+,-) (+,+) (-,+)
         dt_.triangles.push_back({{n, n + 1, n + 2}, {-1, 1, -1}});
         dt_.triangles.push_back({{n, n + 2, n + 3}, {-1, -1, 0}});
         mark_.assign(2, -1);
-        out_mark_.assign(2, -1);
         starting_at_.assign(dt_.points.size(), -1);
-        ending_at_.assign(dt_.points.size(), -1);
         last_ = 0;
     }
 
-    int locate(int p) {
+    // The visibility walk from the last new triangle: across the first edge (in an order
+    // rotated at every step: no cycling) that has q strictly on its far side. The edge the walk
+    // came in through is never that edge (q is strictly on this side of it): not tested.
+    int locate(int p) const {
         const Vec2d q = dt_.points[std::size_t(p)];
-        int t = last_;
-        unsigned step = 0;
+        const DelaunayTriangle* tris = dt_.triangles.data();
+        const Vec2d* pts = dt_.points.data();
+        static constexpr int kMod3[5] = {0, 1, 2, 0, 1};  // i % 3 for i < 5
+        int t = last_, from = -1, first = 0;                // first: the step count % 3
         for (;;) {
-            const DelaunayTriangle& tri = dt_.triangles[std::size_t(t)];
+            const DelaunayTriangle& tri = tris[t];
             int moved = -1;
             for (int k = 0; k < 3; ++k) {
-                int i = int((k + step) % 3u);  // rotate the first edge tried: no cycling
-                Vec2d a = dt_.points[std::size_t(tri.v[(i + 1) % 3])];
-                Vec2d b = dt_.points[std::size_t(tri.v[(i + 2) % 3])];
+                const int i = kMod3[first + k];
+                if (tri.n[i] == from && from >= 0) continue;
+                const Vec2d a = pts[tri.v[kMod3[i + 1]]], b = pts[tri.v[kMod3[i + 2]]];
                 if (orient2d(a, b, q) < 0.0) {
                     moved = tri.n[i];
                     break;
                 }
             }
             if (moved < 0) return t;
+            from = t;
             t = moved;
-            ++step;
+            first = kMod3[first + 1];
         }
     }
 
@@ -133,78 +135,80 @@ public:
     bool insert(int p) {
         const int start = locate(p);
         if (!circle_contains(start, p)) return false;
-        // Collect the cavity: the connected triangles whose circumcircle strictly holds p.
+        collect_cavity(start, p);
+        return fill_cavity(p);
+    }
+
+private:
+    // The cavity: the connected triangles whose circumcircle strictly holds p, found from the
+    // start triangle across their edges, and its boundary edges in the order found. One mark
+    // per triangle: p inside the cavity, -(p + 2) tested and outside (no test twice).
+    void collect_cavity(int start, int p) {
         cavity_.clear();
         boundary_.clear();
         cavity_.push_back(start);
         mark_[std::size_t(start)] = p;
+        const int outside = -(p + 2);
         for (std::size_t k = 0; k < cavity_.size(); ++k) {
-            int t = cavity_[k];
+            const int t = cavity_[k];
+            const DelaunayTriangle tri = dt_.triangles[std::size_t(t)];
             for (int i = 0; i < 3; ++i) {
-                int nb = dt_.triangles[std::size_t(t)].n[i];
-                if (nb >= 0 && mark_[std::size_t(nb)] == p) continue;
-                if (nb >= 0 && out_mark_[std::size_t(nb)] != p && circle_contains(nb, p)) {
-                    mark_[std::size_t(nb)] = p;
-                    cavity_.push_back(nb);
-                    continue;
+                const int nb = tri.n[i];
+                int slot = -1;
+                if (nb >= 0) {
+                    const int m = mark_[std::size_t(nb)];
+                    if (m == p) continue;
+                    if (m != outside && circle_contains(nb, p)) {
+                        mark_[std::size_t(nb)] = p;
+                        cavity_.push_back(nb);
+                        continue;
+                    }
+                    mark_[std::size_t(nb)] = outside;
+                    const int* o = dt_.triangles[std::size_t(nb)].n;
+                    slot = o[0] == t ? 0 : (o[1] == t ? 1 : 2);
                 }
-                if (nb >= 0) out_mark_[std::size_t(nb)] = p;
-                BoundaryEdge e;
-                e.u = dt_.triangles[std::size_t(t)].v[(i + 1) % 3];
-                e.w = dt_.triangles[std::size_t(t)].v[(i + 2) % 3];
-                e.outside = nb;
-                e.outside_slot = -1;
-                if (nb >= 0)
-                    for (int j = 0; j < 3; ++j)
-                        if (dt_.triangles[std::size_t(nb)].n[j] == t) e.outside_slot = j;
-                e.created = -1;
-                boundary_.push_back(e);
+                const int u = tri.v[i == 2 ? 0 : i + 1], w = tri.v[i == 0 ? 2 : i - 1];
+                boundary_.push_back({u, w, nb, slot});
             }
         }
-        // Re-triangulate: one triangle (p, u, w) per boundary edge, reusing the cavity slots.
+    }
+
+    // Re-triangulate: one triangle (p, u, w) per boundary edge, in the cavity's slots first.
+    // The boundary is one cycle: each vertex starts one boundary edge and ends one, so the new
+    // triangle across w -> p is the one starting at w (a vertex-indexed table; a scan of the
+    // boundary per edge was quadratic in the cavity size), and that one's edge p -> w is
+    // across from this one. False if the cycle does not close (reported, not trusted).
+    bool fill_cavity(int p) {
+        for (std::size_t k = cavity_.size(); k < boundary_.size(); ++k) {
+            cavity_.push_back(int(dt_.triangles.size()));
+            dt_.triangles.push_back({{0, 0, 0}, {-1, -1, -1}});
+            mark_.push_back(-1);
+        }
+        DelaunayTriangle* tris = dt_.triangles.data();
         for (std::size_t k = 0; k < boundary_.size(); ++k) {
-            int slot;
-            if (k < cavity_.size()) {
-                slot = cavity_[k];
-            } else {
-                slot = int(dt_.triangles.size());
-                dt_.triangles.push_back({{0, 0, 0}, {-1, -1, -1}});
-                mark_.push_back(-1);
-                out_mark_.push_back(-1);
-            }
-            boundary_[k].created = slot;
+            const BoundaryEdge& e = boundary_[k];
+            const int created = cavity_[k];
+            tris[created] = {{p, e.u, e.w}, {e.outside, -1, -1}};
+            if (e.outside >= 0) tris[e.outside].n[e.outside_slot] = created;
+            starting_at_[std::size_t(e.u)] = created;
         }
-        // The cavity's boundary is one cycle: each vertex starts one boundary edge and ends
-        // one, so the new triangles find their neighbours through two vertex-indexed tables
-        // (a scan of the boundary per edge was quadratic in the cavity size).
-        for (const BoundaryEdge& e : boundary_) {
-            starting_at_[std::size_t(e.u)] = -1;
-            ending_at_[std::size_t(e.w)] = -1;
+        for (std::size_t k = 0; k < boundary_.size(); ++k) {
+            const int created = cavity_[k];
+            const int w = boundary_[k].w;
+            const int next = starting_at_[std::size_t(w)];
+            if (next < 0 || tris[next].v[0] != p || tris[next].v[1] != w) return false;
+            tris[created].n[1] = next;
+            tris[next].n[2] = created;
         }
-        for (const BoundaryEdge& e : boundary_) {
-            starting_at_[std::size_t(e.u)] = e.created;
-            ending_at_[std::size_t(e.w)] = e.created;
-        }
-        for (const BoundaryEdge& e : boundary_) {
-            DelaunayTriangle& tri = dt_.triangles[std::size_t(e.created)];
-            tri.v[0] = p;
-            tri.v[1] = e.u;
-            tri.v[2] = e.w;
-            tri.n[0] = e.outside;
-            if (e.outside >= 0) dt_.triangles[std::size_t(e.outside)].n[e.outside_slot] = e.created;
-            tri.n[1] = starting_at_[std::size_t(e.w)];  // across w -> p: the edge from w
-            tri.n[2] = ending_at_[std::size_t(e.u)];    // across p -> u: the edge into u
-            if (tri.n[1] < 0 || tri.n[2] < 0) return false;
-            mark_[std::size_t(e.created)] = -1;
-        }
-        last_ = boundary_[0].created;
+        for (std::size_t k = 0; k < boundary_.size(); ++k)
+            if (tris[cavity_[k]].n[2] < 0) return false;
+        last_ = cavity_[0];
         return true;
     }
 
-private:
     DelaunayTriangulation& dt_;
-    std::vector<int> mark_, out_mark_, cavity_;
-    std::vector<int> starting_at_, ending_at_;  // per point: new triangle of its boundary edge
+    std::vector<int> mark_, cavity_;
+    std::vector<int> starting_at_;  // per point: the new triangle of its boundary edge
     std::vector<BoundaryEdge> boundary_;
     int last_ = 0;
 };
@@ -345,27 +349,42 @@ std::vector<HilbertKey> hilbert_order(const Vec2d* points, int count, Box data) 
 // Step 4, the incremental insertion (Bowyer 1981 / Watson 1981) in Hilbert numbering (point
 // k = points[order[k].i]), so neighbouring points are neighbours in memory. A duplicate point
 // is not inserted: it is recorded in duplicate_of.
+// The order, coarse to fine: every 64th point of the Hilbert order first, then the other
+// 16th, 4th and the rest, each round along the curve (the rounds of Amenta, Choi & Rote's
+// biased randomized insertion order, 2003, made deterministic: chosen here). Each round then
+// spans the whole data and the far frame is walled off after the first, so a point's cavity
+// stays small (in one pass along the curve the triangles between the filled part and the
+// frame made a lattice point's cavity 6.2 triangles, now 3.2; uniform points 5.2, now 3.8).
+// Rounds of every k-th point keep a lattice's regular patterns: random rounds took 20 % more
+// time at 1024 lattice sites for fewer instructions (mispredicted branches).
 Status insert_in_order(const Vec2d* points, int count, const std::vector<HilbertKey>& order,
                        DelaunayTriangulation* out) {
     out->duplicate_of.assign(std::size_t(count), -1);
     for (std::size_t k = 0; k < order.size(); ++k) out->points[k] = points[order[k].i];
+    for (std::size_t k = 1; k < order.size(); ++k) {
+        if (!(out->points[k - 1] == out->points[k])) continue;  // sequential, not random reads
+        const int i = order[k].i, first = order[k - 1].i;
+        out->duplicate_of[std::size_t(i)] = out->duplicate_of[std::size_t(first)] >= 0
+                                                ? out->duplicate_of[std::size_t(first)]
+                                                : first;
+    }
     Builder builder(out);
     builder.start_frame();
-    for (std::size_t k = 0; k < order.size(); ++k) {
-        int i = order[k].i;
-        if (k > 0 && out->points[k - 1] == out->points[k]) {  // sequential, not random reads
-            int first = order[k - 1].i;
-            out->duplicate_of[std::size_t(i)] = out->duplicate_of[std::size_t(first)] >= 0
-                                                    ? out->duplicate_of[std::size_t(first)]
-                                                    : first;
-            continue;
+    for (const int step : {64, 16, 4, 1})
+        for (int k = 0; k < count; k += step) {
+            if (step < 64 && k % (4 * step) == 0) continue;  // inserted in an earlier round
+            // a duplicate (the same point as the one before it along the curve, found above):
+            // not inserted; tested in Hilbert numbering (duplicate_of is in input order, and
+            // random reads of it cost 10 % of the time at 1e6 uniform points)
+            if (k > 0 && out->points[std::size_t(k) - 1] == out->points[std::size_t(k)]) continue;
+            if (!builder.insert(k)) {
+                const int i = order[std::size_t(k)].i;
+                return Status::error(StatusCode::degenerate,
+                                     "build_delaunay: point %d = (%.17g, %.17g) could not be "
+                                     "inserted (its triangle's circle does not hold it)",
+                                     i, points[i].x, points[i].y);
+            }
         }
-        if (!builder.insert(int(k)))
-            return Status::error(StatusCode::degenerate,
-                                 "build_delaunay: point %d = (%.17g, %.17g) could not be inserted "
-                                 "(its triangle's circle does not hold it)",
-                                 i, points[i].x, points[i].y);
-    }
     return Status::success();
 }
 

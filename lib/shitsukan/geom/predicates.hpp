@@ -22,7 +22,11 @@
 // for a microcontroller; ~2x slower, on the rare calls with inexact differences).
 // The square lattice's cocircular cases are decided before any exact stage: an axis-parallel
 // rectangle by comparisons, two chords mirrored about a horizontal, vertical or diagonal line
-// (an isosceles trapezoid) by exact sums of four doubles. Every stack frame here stays under 2.4 KB.
+// (an isosceles trapezoid) by exact sums of four doubles. Then a double-double evaluation
+// from the exact coordinate differences (doubles, or double-doubles where the differences
+// are not exact) with a proven error bound decides the nearly cocircular sets (a rounded
+// lattice's); only exact zeros and what it cannot prove reach the exact sums. Every stack
+// frame here stays under 2.5 KB.
 // The filters are inline (the triangulation and the Voronoi cells call them millions of times;
 // a call per test cost more than the test), the exact stages are not.
 #pragma once

@@ -18,6 +18,24 @@ namespace {
 
 bool lex_less(Vec2d a, Vec2d b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
 
+// Whether a, b, c are three corners of an axis-parallel rectangle (two distinct x values and
+// two distinct y values among them): *x, *y get those values (the rectangle's box).
+// The conditions are combined with & and | (no branch to mispredict: a lattice's triangles
+// take their corners in every order).
+inline bool rectangle_corners(Vec2d a, Vec2d b, Vec2d c, double x[2], double y[2]) {
+    x[0] = a.x, y[0] = a.y;
+    x[1] = a.x != b.x ? b.x : c.x, y[1] = a.y != b.y ? b.y : c.y;
+    const int xs = (int(b.x == a.x) | int(b.x == x[1])) & (int(c.x == a.x) | int(c.x == x[1])) &
+                   int(x[1] != a.x);
+    const int ys = (int(b.y == a.y) | int(b.y == y[1])) & (int(c.y == a.y) | int(c.y == y[1])) &
+                   int(y[1] != a.y);
+    return (xs & ys) != 0;
+}
+
+inline bool on_box(Vec2d p, const double x[2], const double y[2]) {
+    return ((int(p.x == x[0]) | int(p.x == x[1])) & (int(p.y == y[0]) | int(p.y == y[1]))) != 0;
+}
+
 int find_root(std::vector<int>& parent, int t) {
     while (parent[std::size_t(t)] != t) {
         parent[std::size_t(t)] = parent[std::size_t(parent[std::size_t(t)])];  // path halving
@@ -165,10 +183,8 @@ Vec2d circumcentre(Vec2d a, Vec2d b, Vec2d c) {
     // centre is the midpoint of the rectangle's diagonal, (x0 + x1) / 2 and (y0 + y1) / 2 of
     // the two distinct x and y values; halving is exact, so rounding the sum once gives the
     // correctly rounded centre (the same bits as the filters below)
-    const double x1 = a.x != b.x ? b.x : c.x, y1 = a.y != b.y ? b.y : c.y;
-    if ((b.x == a.x || b.x == x1) && (c.x == a.x || c.x == x1) && x1 != a.x &&
-        (b.y == a.y || b.y == y1) && (c.y == a.y || c.y == y1) && y1 != a.y)
-        return {0.5 * (a.x + x1), 0.5 * (a.y + y1)};
+    double x[2], y[2];
+    if (rectangle_corners(a, b, c, x, y)) return {0.5 * (x[0] + x[1]), 0.5 * (y[0] + y[1])};
     const DoubleDouble dbx = dd_diff(b.x, a.x), dby = dd_diff(b.y, a.y);
     const DoubleDouble dcx = dd_diff(c.x, a.x), dcy = dd_diff(c.y, a.y);
     Vec2d r;
@@ -230,9 +246,8 @@ std::vector<int> merge_cocircular_triangles(const DelaunayTriangulation& dt, boo
             int nb = tri.n[i];
             if (nb <= t) continue;  // each edge once (nb == -1: the frame)
             const DelaunayTriangle& other = tris[std::size_t(nb)];
-            int d = -1;
-            for (int j = 0; j < 3; ++j)
-                if (other.n[j] == t) d = other.v[j];
+            // the vertex of nb across the shared edge (no branch to mispredict)
+            const int d = other.v[int(other.n[1] == t) + 2 * int(other.n[2] == t)];
             if (incircle(pts[std::size_t(tri.v[0])], pts[std::size_t(tri.v[1])],
                          pts[std::size_t(tri.v[2])], pts[std::size_t(d)]) == 0.0) {
                 int ra = find_root(parent, t), rb = find_root(parent, nb);
@@ -245,21 +260,42 @@ std::vector<int> merge_cocircular_triangles(const DelaunayTriangulation& dt, boo
     return parent;
 }
 
-// The 3 lexicographically smallest sites of every group of more than one triangle, in
-// best[3 * root .. 3 * root + 2] (sorted); untouched (-1) for the other triangles.
+// The groups of more than one triangle: best[3 * root] = -3 where every site of the group
+// is a corner of the root triangle's axis-parallel rectangle (at most its 4 corners: every
+// square of a square lattice), else -2. Any three corners give the same centre bits
+// (circumcentre's rectangle case), so such a group needs no search for its smallest sites.
+void mark_merged_groups(const DelaunayTriangulation& dt, const std::vector<int>& root,
+                        std::vector<int>* best) {
+    const std::vector<DelaunayTriangle>& tris = dt.triangles;
+    const std::vector<Vec2d>& pts = dt.points;
+    const int tcount = int(tris.size());
+    for (int t = 0; t < tcount; ++t) {
+        const int r = root[std::size_t(t)];
+        if (r == t) continue;
+        int& mark = (*best)[std::size_t(r) * 3];
+        if (mark == -2) continue;  // not a rectangle (seen before)
+        const int* v = tris[std::size_t(r)].v;
+        double x[2], y[2];
+        bool box = rectangle_corners(pts[std::size_t(v[0])], pts[std::size_t(v[1])],
+                                     pts[std::size_t(v[2])], x, y);
+        for (int k = 0; k < 3 && box; ++k) box = on_box(pts[std::size_t(tris[t].v[k])], x, y);
+        mark = box ? -3 : -2;
+    }
+}
+
+// The 3 lexicographically smallest sites of every group of more than one triangle that is
+// not a rectangle, in best[3 * root .. 3 * root + 2] (sorted); best[3 * root] < 0 for the
+// other triangles (-1 a single triangle, -3 a rectangle: sorted directly by the caller).
 std::vector<int> smallest_sites_of_groups(const DelaunayTriangulation& dt,
                                           const std::vector<int>& root) {
     const std::vector<DelaunayTriangle>& tris = dt.triangles;
     const std::vector<Vec2d>& pts = dt.points;
     const int tcount = int(tris.size());
     std::vector<int> best(std::size_t(tcount) * 3, -1);
-    for (int t = 0; t < tcount; ++t) {
-        if (root[std::size_t(t)] == t) continue;
-        best[std::size_t(root[std::size_t(t)]) * 3] = -2;  // a merged group (seen below)
-    }
+    mark_merged_groups(dt, root, &best);
     for (int t = 0; t < tcount; ++t) {
         int* b = &best[std::size_t(root[std::size_t(t)]) * 3];
-        if (b[0] == -1) continue;  // a single triangle: sorted directly by the caller
+        if (b[0] == -1 || b[0] == -3) continue;  // a single triangle or a rectangle
         if (b[0] == -2) b[0] = -1;
         for (int v : tris[std::size_t(t)].v) {
             if (v == b[0] || v == b[1] || v == b[2]) continue;
@@ -291,6 +327,14 @@ Status voronoi_vertices(const DelaunayTriangulation& dt, const std::vector<int>&
         if (root[std::size_t(t)] != t) continue;
         const int* v = tris[std::size_t(t)].v;
         Vec2d p0 = pts[std::size_t(v[0])], p1 = pts[std::size_t(v[1])], p2 = pts[std::size_t(v[2])];
+        double x[2], y[2];
+        // a single triangle or a rectangle group whose sites make an axis-parallel rectangle:
+        // its midpoint (any three corners, in any order, give the same bits)
+        const bool own_sites = !any_merged || best[std::size_t(t) * 3] < 0;
+        if (own_sites && rectangle_corners(p0, p1, p2, x, y)) {
+            (*centre)[std::size_t(t)] = {0.5 * (x[0] + x[1]), 0.5 * (y[0] + y[1])};
+            continue;
+        }
         if (any_merged && best[std::size_t(t) * 3] >= 0) {
             const int* b = &best[std::size_t(t) * 3];
             p0 = pts[std::size_t(b[0])], p1 = pts[std::size_t(b[1])], p2 = pts[std::size_t(b[2])];
@@ -417,7 +461,8 @@ void write_inside_cell(const int* groups, int n, const std::vector<Vec2d>& centr
         const Vec2d p = centre[std::size_t(groups[k])];
         if (lex_less(p, smallest)) m = k, smallest = p;
     }
-    for (int k = 0; k < n; ++k) cell[k] = centre[std::size_t(groups[(m + k) % n])];
+    for (int k = m; k < n; ++k) *cell++ = centre[std::size_t(groups[k])];
+    for (int k = 0; k < m; ++k) *cell++ = centre[std::size_t(groups[k])];
 }
 
 // The cells that reach the region's boundary (few: O(sqrt n) on spread-out sites), clipped,

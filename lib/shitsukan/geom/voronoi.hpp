@@ -36,7 +36,8 @@
 // their lexicographically smallest vertex.
 //
 // Algorithm: Delaunay triangulation (delaunay.hpp), union of cocircular triangles, one
-// centre per group (filtered in doubles or x87 extended precision, double-double where the
+// centre per group (the midpoint when the group's sites are corners of one axis-parallel
+// rectangle, else filtered in doubles or x87 extended precision, double-double where the
 // filters cannot prove the rounding: the same bits), the exact test of each centre against
 // the region, the dual walk around each site, then Sutherland-Hodgman clipping (polygon.hpp)
 // with canonical intersections (shared cell edges stay bit-identical) of the cells that have
