@@ -22,6 +22,16 @@
 #include "shitsukan/raster/clip.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
 
+// bin_triangle is flattened (speed: it runs for every triangle of a frame); snapped_area2 is
+// kept out of line elsewhere (flash: it has four call sites).
+#if defined(__GNUC__) || defined(__clang__)
+#define SHITSUKAN_RASTER_FLATTEN __attribute__((flatten))
+#define SHITSUKAN_RASTER_NOINLINE __attribute__((noinline))
+#else
+#define SHITSUKAN_RASTER_FLATTEN
+#define SHITSUKAN_RASTER_NOINLINE
+#endif
+
 namespace shitsukan {
 
 namespace {
@@ -45,7 +55,6 @@ struct SourceTriangle {
     VertexData v[3];
     VertexData dq, dr;  // v[1] - v[0] and v[2] - v[0], attribute by attribute
     const std::uint32_t* corner_index = nullptr;  // the three mesh indices
-    Vec3 plane_direction;  // (p1 - p0) x (p2 - p0) rounded to float, or a power-of-two multiple
     int index = 0;
     bool flat = false;  // the mesh has no normals
     bool ready = false;
@@ -120,13 +129,13 @@ inline i64 ceil_div_subpixel(i64 a) { return -((-a) >> kSubpixelBits); }
 // (centre 256·x + 128 >= x_edge <=> x >= N / D); from one row to the next N grows by
 // 256·dx, so the walk keeps the quotient and remainder and adds that step's quotient and
 // remainder: two divisions when the walk starts, none per row, the same columns exactly.
-struct EdgeWalk {
-    i64 column = 0;              // ceil(N / D) on the current row
-    i64 slack = 0;               // column·D - N, in [0, D)
-    i64 d = 0;                   // D = 256·dy
-    i64 step_q = 0, step_r = 0;  // 256·dx = step_q·D + step_r, 0 <= step_r < D
-    i64 next_y = 0;              // the row the walk is on
-    bool started = false;
+struct EdgeWalk {  // no default member values: three per piece, zeroing them cost a memset
+    i64 column;          // ceil(N / D) on the current row
+    i64 slack;           // column·D - N, in [0, D)
+    i64 d;               // D = 256·dy
+    i64 step_q, step_r;  // 256·dx = step_q·D + step_r, 0 <= step_r < D
+    i64 next_y;          // the row the walk is on
+    bool started;        // set false before the first at_row
 
     // The column on row y; rows must come in increasing order, one by one.
     i64 at_row(const ScreenVertex& e0, const ScreenVertex& e1, i64 y) {
@@ -178,17 +187,24 @@ inline bool to_fixed(float v, i64* out) {
 // squared length leaves the normal floats (a model scaled by 1e22 has a normal matrix of
 // 1e-22, whose products square to denormals and lose their digits) is first divided by its
 // largest component, so that the result still has unit length; zero, NaN and inf give the
-// fallback.
-inline Vec3 normalize_or(Vec3 v, Vec3 fallback) {
+// fallback (normalize: false, nothing stored).
+inline bool normalize(Vec3 v, Vec3* unit) {
     float l2 = v.x * v.x + v.y * v.y + v.z * v.z;
-    if (l2 >= std::numeric_limits<float>::min() && l2 < 3.0e38f)
-        return v * (1.0f / std::sqrt(l2));
-    if (!(l2 >= 0.0f)) return fallback;  // NaN
+    if (l2 >= std::numeric_limits<float>::min() && l2 < 3.0e38f) {
+        *unit = v * (1.0f / std::sqrt(l2));
+        return true;
+    }
+    if (!(l2 >= 0.0f)) return false;  // NaN
     const float ax = std::fabs(v.x), ay = std::fabs(v.y), az = std::fabs(v.z);
     const float m = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
-    if (!(m > 0.0f) || !(m <= std::numeric_limits<float>::max())) return fallback;
+    if (!(m > 0.0f) || !(m <= std::numeric_limits<float>::max())) return false;
     v = v / m;  // largest component +-1: the squared length lies in [1, 3]
-    return v * (1.0f / std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z));
+    *unit = v * (1.0f / std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z));
+    return true;
+}
+inline Vec3 normalize_or(Vec3 v, Vec3 fallback) {
+    Vec3 unit;
+    return normalize(v, &unit) ? unit : fallback;
 }
 
 // M·(p, 1) without the divide (inline: three of these per triangle).
@@ -211,27 +227,36 @@ inline Vec3 model_vector(const Mat4& m, Vec3 v) {
             m.m[2][0] * v.x + m.m[2][1] * v.y + m.m[2][2] * v.z};
 }
 
+bool plane_direction(Vec3 e1, Vec3 e2, Vec3* direction);
+
 // The per-vertex attributes of the original triangle: world position, world and object
-// normals (the plane's when the mesh has none), uv and colour.
+// normals (the plane's when the mesh has none), uv and colour. The plane's unit normal is
+// made only when a vertex needs it (a mesh without normals, or a normal that cannot be
+// normalised): a mesh with normals skips its exact cross product.
 void prepare(const MeshContext& mc, SourceTriangle* t) {
     const MeshView& mesh = *mc.mesh;
-    // The plane's unit normal, normalized in float (fetch_corners made the direction nonzero
-    // and finite). Was the double length and three double divisions: software on a
-    // single-precision FPU; the direction moves by float ulps.
-    const Vec3 object_n = normalize_or(t->plane_direction, Vec3{0.0f, 0.0f, 1.0f});
-    Vec3 world_n = normalize_or(model_vector(*mc.normal_matrix, object_n), object_n);
+    int needs_plane[3];  // 0: no; 1: for the world normal; 2: for both normals
     for (int k = 0; k < 3; ++k) {
         std::uint32_t i = t->corner_index[k];
         VertexData& v = t->v[k];
         // v.world_position: set by fetch_corners (step 1), the same model_point.
         v.uv = mesh.uvs ? mesh.uvs[i] : Vec2{0, 0};
         v.color = mesh.colors ? mesh.colors[i] : Vec3{1, 1, 1};
-        if (mesh.normals) {
-            v.object_normal = normalize_or(mesh.normals[i], object_n);
-            v.normal = normalize_or(model_vector(*mc.normal_matrix, v.object_normal), world_n);
-        } else {
-            v.object_normal = object_n;  // flat: the plane's normal
-            v.normal = world_n;
+        needs_plane[k] = !(mesh.normals && normalize(mesh.normals[i], &v.object_normal))
+                             ? 2
+                             : !normalize(model_vector(*mc.normal_matrix, v.object_normal), &v.normal);
+    }
+    if (needs_plane[0] + needs_plane[1] + needs_plane[2] > 0) {
+        // The direction is nonzero and finite (fetch_corners checked it), normalized in float.
+        Vec3 direction{0.0f, 0.0f, 1.0f};
+        (void)plane_direction(t->v[1].object_position - t->v[0].object_position,
+                              t->v[2].object_position - t->v[0].object_position, &direction);
+        const Vec3 object_n = normalize_or(direction, Vec3{0.0f, 0.0f, 1.0f});
+        const Vec3 world_n = normalize_or(model_vector(*mc.normal_matrix, object_n), object_n);
+        for (int k = 0; k < 3; ++k) {
+            // 2: the plane's normals (normalising M·object_n again would give world_n).
+            if (needs_plane[k] == 2) t->v[k].object_normal = object_n;
+            if (needs_plane[k] != 0) t->v[k].normal = world_n;
         }
     }
     for (int k = 0; k < 2; ++k) {
@@ -262,9 +287,11 @@ void interpolate(const SourceTriangle& t, Vec3 b, Fragment* f) {
         f->normal = p.normal;
         f->object_normal = p.object_normal;
     } else {
-        f->normal = normalize_or(p.normal + dq.normal * b.y + dr.normal * b.z, p.normal);
-        f->object_normal = normalize_or(
-            p.object_normal + dq.object_normal * b.y + dr.object_normal * b.z, p.object_normal);
+        if (!normalize(p.normal + dq.normal * b.y + dr.normal * b.z, &f->normal))
+            f->normal = p.normal;
+        if (!normalize(p.object_normal + dq.object_normal * b.y + dr.object_normal * b.z,
+                       &f->object_normal))
+            f->object_normal = p.object_normal;
     }
     f->uv = p.uv + dq.uv * b.y + dr.uv * b.z;
     f->color = p.color + dq.color * b.y + dr.color * b.z;
@@ -289,7 +316,8 @@ inline float to_float_via_int32(i64 n) {
 
 // Twice the signed area of a snapped triangle, in (1/256 pixel)^2. Screen y points down, so
 // a counter-clockwise (front) triangle of the world has a negative area here.
-inline i64 snapped_area2(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+SHITSUKAN_RASTER_NOINLINE i64 snapped_area2(const ScreenVertex& a, const ScreenVertex& b,
+                                             const ScreenVertex& c) {
     return (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
 }
 
@@ -363,6 +391,7 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
     f.front_facing = front;
     const i64 width = band.frame_width;
     EdgeWalk long_edge, upper_edge, lower_edge;
+    long_edge.started = upper_edge.started = lower_edge.started = false;
     for (i64 y = row_begin; y < row_end; ++y) {
         i64 yc = y * kSubpixel + kHalfPixel;
         // The short edge on this row: v0 -> v1 above the middle vertex, v1 -> v2 below.
@@ -462,6 +491,49 @@ inline bool in_exact_product_range(float v) {
     return a == 0.0f || (a >= 0x1p-50f && a <= 0x1p60f);
 }
 
+// The plane's direction (p1 - p0) x (p2 - p0), and whether it is zero (degenerate), with
+// every product exact: in float as hi + lo pairs when the edges' components allow it (the
+// common case), else in double, where products of two floats are exact (a huge or tiny
+// mesh; scaled by a power of two into float range there). Exact products keep a sliver's
+// normal from cancelling and make "nonzero" a reliable test. (Was always double: about
+// 1,000 instructions per triangle and band in software on a Cortex-M4F.) false: zero (or not
+// finite), nothing stored.
+bool plane_direction(Vec3 e1, Vec3 e2, Vec3* direction) {
+    if (in_exact_product_range(e1.x) && in_exact_product_range(e1.y) &&
+        in_exact_product_range(e1.z) && in_exact_product_range(e2.x) &&
+        in_exact_product_range(e2.y) && in_exact_product_range(e2.z)) {
+        bool zx, zy, zz;
+        const Vec3 d{cross_component(e1.y, e2.z, e1.z, e2.y, &zx),
+                     cross_component(e1.z, e2.x, e1.x, e2.z, &zy),
+                     cross_component(e1.x, e2.y, e1.y, e2.x, &zz)};
+        if (zx && zy && zz) return false;
+        *direction = d;
+        return true;
+    }
+    const Vec3d c = cross(to_double(e1), to_double(e2));
+    const double ax = std::fabs(c.x), ay = std::fabs(c.y), az = std::fabs(c.z);
+    const double m = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
+    if (!(m > 0.0 && is_finite(m))) return false;
+    int e = 0;
+    (void)std::frexp(m, &e);
+    *direction = to_float(c * std::ldexp(1.0, -e));  // largest in [0.5, 1)
+    return true;
+}
+
+// Whether plane_direction finds the plane nonzero, mostly without its exact products:
+// rounding is monotonic, so when the rounded products of a component, u·v and w·z, differ
+// (neither NaN), the exact ones differ too and that component is nonzero. Only a triangle
+// whose rounded products all agree (degenerate, or nearly) takes the exact test.
+inline bool plane_is_nonzero(Vec3 e1, Vec3 e2) {
+    auto differ = [](float a, float b) { return a < b || a > b; };
+    if (is_finite(e1) && is_finite(e2) &&
+        (differ(e1.y * e2.z, e1.z * e2.y) || differ(e1.z * e2.x, e1.x * e2.z) ||
+         differ(e1.x * e2.y, e1.y * e2.x)))
+        return true;
+    Vec3 unused;
+    return plane_direction(e1, e2, &unused);
+}
+
 // ---- 1. Fetch the three corners, into clip space ----
 // false for a degenerate triangle (zero area, NaN/inf corner). The plane normal stays in
 // double (once per triangle): products of two floats are exact there, so the cross product of
@@ -479,34 +551,9 @@ bool fetch_corners(const MeshView& mesh, const Mat4& model, const Mat4& mvp, int
         corners[k].clip = transform_homogeneous(mvp, p);
         corners[k].bary = Vec3{k == 0 ? 1.0f : 0.0f, k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f};
     }
-    // The plane's direction (p1 - p0) x (p2 - p0), and whether it is zero (degenerate), with
-    // every product exact: in float as hi + lo pairs when the edges' components allow it (the
-    // common case), else in double, where products of two floats are exact (a huge or tiny
-    // mesh; scaled by a power of two into float range there). Exact products keep a sliver's
-    // normal from cancelling and make "nonzero" a reliable test. (Was always double: about
-    // 1,000 instructions per triangle and band in software on a Cortex-M4F.)
     const Vec3 e1 = src->v[1].object_position - src->v[0].object_position;
     const Vec3 e2 = src->v[2].object_position - src->v[0].object_position;
-    bool has_plane = false;
-    if (in_exact_product_range(e1.x) && in_exact_product_range(e1.y) &&
-        in_exact_product_range(e1.z) && in_exact_product_range(e2.x) &&
-        in_exact_product_range(e2.y) && in_exact_product_range(e2.z)) {
-        bool zx, zy, zz;
-        src->plane_direction = Vec3{cross_component(e1.y, e2.z, e1.z, e2.y, &zx),
-                                    cross_component(e1.z, e2.x, e1.x, e2.z, &zy),
-                                    cross_component(e1.x, e2.y, e1.y, e2.x, &zz)};
-        has_plane = !(zx && zy && zz);
-    } else {
-        const Vec3d c = cross(to_double(e1), to_double(e2));
-        const double ax = std::fabs(c.x), ay = std::fabs(c.y), az = std::fabs(c.z);
-        const double m = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
-        has_plane = m > 0.0 && is_finite(m);
-        if (has_plane) {
-            int e = 0;
-            (void)std::frexp(m, &e);
-            src->plane_direction = to_float(c * std::ldexp(1.0, -e));  // largest in [0.5, 1)
-        }
-    }
+    const bool has_plane = plane_is_nonzero(e1, e2);
     // A projective model can send a corner to w ~ 0: world positions (and the differences the
     // fragments interpolate) overflow to inf and NaN (fuzz_raster finding). Such a triangle
     // has no place in the world: rejected like a degenerate one.
@@ -596,6 +643,10 @@ void add_stats(const RasterStats& local, long fragments, RasterStats* stats) {
 // as draw_mesh, so the rows are those raster_triangle would walk. A triangle that needs
 // clipping keeps every row (the band pass decides); one that cannot be drawn (outside one
 // side of the view, a corner that cannot be mapped, zero snapped area, culled) gets none.
+// Flattened (its helpers inlined into it, in this function only): it runs for every triangle of
+// the frame, and the calls cost as much as the arithmetic (bin_mesh alone was 870 instructions
+// per triangle of the 48 x 24 UV sphere on a Cortex-M4F).
+SHITSUKAN_RASTER_FLATTEN
 TriangleRows bin_triangle(const Camera& camera, const MeshView& mesh, const Mat4& mvp,
                           CullMode cull, int t, ClipSpaceVertex corners[3]) {
     const TriangleRows all{0, std::uint16_t(camera.height)}, none{0, 0};
@@ -633,14 +684,37 @@ TriangleRows bin_triangle(const Camera& camera, const MeshView& mesh, const Mat4
     return TriangleRows{std::uint16_t(begin), std::uint16_t(end)};
 }
 
+// binned: the mesh's indices were checked by bin_mesh, and each triangle handed to the band is
+// checked again before it is read (in_range_indices): every index of the mesh once per band
+// was 190 instructions per triangle of the frame on a Cortex-M4F.
 Status check_draw_inputs(const Camera& camera, const FrameBand& band, const MeshView& mesh,
-                         const DrawOptions& options, FragmentShader shader, Mat4* normal_matrix) {
+                         const DrawOptions& options, FragmentShader shader, bool binned,
+                         Mat4* normal_matrix) {
     if (shader == nullptr)
         return Status::error(StatusCode::invalid_argument, "draw_mesh: the shader is null");
     SHITSUKAN_TRY(validate_camera(camera));
     SHITSUKAN_TRY(validate_band(camera, band));
-    SHITSUKAN_TRY(validate_mesh(mesh));
+    SHITSUKAN_TRY(binned ? validate_mesh_arrays(mesh) : validate_mesh(mesh));
     return validate_model(options.model, *normal_matrix);
+}
+
+// The first triangle from t on whose rows meet the band [band_begin, band_end) (n when none; t
+// itself without rows): a loop of its own, so that the walk over a band's binned-away
+// triangles (most of the mesh) keeps its few values in registers (22 instructions per
+// triangle and band on a Cortex-M4F inside draw_mesh_rows' loop).
+int next_in_band(const TriangleRows* rows, int t, int n, int band_begin, int band_end) {
+    if (rows == nullptr) return t;
+    for (; t < n; ++t) {
+        const TriangleRows r = rows[t];
+        if (r.end > band_begin && r.begin < band_end && r.begin < r.end) return t;
+    }
+    return n;
+}
+
+inline bool in_range_indices(const MeshView& mesh, int t) {
+    const std::uint32_t* index = mesh.indices + 3 * std::size_t(t);
+    const std::uint32_t n = std::uint32_t(mesh.vertex_count);
+    return index[0] < n && index[1] < n && index[2] < n;
 }
 
 // draw_mesh and draw_binned_mesh: rows == nullptr draws every triangle.
@@ -649,7 +723,8 @@ Status draw_mesh_rows(const Camera& camera, const FrameBand& band, const MeshVie
                       FragmentShader shader, void* user, RasterStats* stats) {
     // ---- Check everything before drawing anything ----
     Mat4 normal_matrix;
-    SHITSUKAN_TRY(check_draw_inputs(camera, band, mesh, options, shader, &normal_matrix));
+    SHITSUKAN_TRY(check_draw_inputs(camera, band, mesh, options, shader, rows != nullptr,
+                                    &normal_matrix));
 
     const Mat4 mvp = camera.projection * (camera.view * options.model);
     DrawContext ctx{{&mesh, &options.model, &normal_matrix}, &band, shader, user, 0, Fragment{}};
@@ -658,10 +733,14 @@ Status draw_mesh_rows(const Camera& camera, const FrameBand& band, const MeshVie
     SourceTriangle src;  // one, reused: fetch_corners and prepare write what is read
     ClipSpaceVertex corners[3];
 
-    for (int t = 0; t < mesh.triangle_count; ++t) {
-        if (rows != nullptr && (rows[t].begin >= rows[t].end || rows[t].begin >= band_end ||
-                                rows[t].end <= band_begin))
-            continue;  // binned away: it touches no row of this band
+    const int n = mesh.triangle_count;
+    for (int t = next_in_band(rows, 0, n, band_begin, band_end); t < n;
+         t = next_in_band(rows, t + 1, n, band_begin, band_end)) {
+        if (rows != nullptr) {
+            if (!in_range_indices(mesh, t))
+                return Status::error(StatusCode::invalid_argument,
+                                     "draw_binned_mesh: triangle %d has an index out of range", t);
+        }
         ++local.triangles_in;
         src.ready = false;
         if (!fetch_corners(mesh, options.model, mvp, t, &src, corners)) {

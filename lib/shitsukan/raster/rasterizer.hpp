@@ -113,6 +113,9 @@ void clear_band(const FrameBand& band, Rgb8 background);
 // matrix, the inverse transpose).
 Status validate_band(const Camera& camera, const FrameBand& band);
 Status validate_mesh(const MeshView& mesh);
+// validate_mesh without the indices (counts and arrays only): draw_binned_mesh runs it per band
+// and checks the indices of the triangles it is handed (bin_mesh checked them all).
+Status validate_mesh_arrays(const MeshView& mesh);
 Status validate_model(const Mat4& model, Mat4& normal_matrix);
 
 // Draws the mesh into the band. Shades only fragments that pass the depth test
