@@ -155,6 +155,9 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
 // come from the same clip-space corners and snapping (a triangle that needs near-plane or
 // guard-band clipping keeps every row). The rows must come from bin_mesh with the same
 // camera, mesh and options. RasterStats: triangles_in counts the triangles handed to the band.
+// draw_binned_mesh checks the camera, band, model and the mesh's counts up front, and the
+// indices of each triangle it is handed before reading them (bin_mesh checked every index): a
+// mesh changed since with a bad index gives invalid_argument, possibly after part of the band.
 struct TriangleRows {
     std::uint16_t begin = 0, end = 0;  // frame rows [begin, end); empty: nothing to draw
 };
