@@ -38,17 +38,10 @@ void fill_color_row(Rgb8* row, int width, Rgb8 value) {
     }
 }
 
-// One row of depth, four stores per step.
+// One row of depth: +inf.
 void fill_depth_row(float* row, int width) {
     const float inf = std::numeric_limits<float>::infinity();
-    int x = 0;
-    for (; x + 4 <= width; x += 4) {
-        row[x] = inf;
-        row[x + 1] = inf;
-        row[x + 2] = inf;
-        row[x + 3] = inf;
-    }
-    for (; x < width; ++x) row[x] = inf;
+    for (int x = 0; x < width; ++x) row[x] = inf;
 }
 
 }  // namespace

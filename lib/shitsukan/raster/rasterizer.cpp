@@ -22,8 +22,9 @@
 #include "shitsukan/raster/clip.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
 
-// bin_triangle is flattened (speed: it runs for every triangle of a frame); snapped_area2 is
-// kept out of line elsewhere (flash: it has four call sites).
+// bin_triangle is flattened (speed: it runs for every triangle of a frame); snapped_area2 (four
+// call sites) and next_in_band are kept out of line (flash; and the band's walk over its
+// binned-away triangles stays in registers).
 #if defined(__GNUC__) || defined(__clang__)
 #define SHITSUKAN_RASTER_FLATTEN __attribute__((flatten))
 #define SHITSUKAN_RASTER_NOINLINE __attribute__((noinline))
@@ -514,9 +515,16 @@ bool plane_direction(Vec3 e1, Vec3 e2, Vec3* direction) {
     const double ax = std::fabs(c.x), ay = std::fabs(c.y), az = std::fabs(c.z);
     const double m = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
     if (!(m > 0.0 && is_finite(m))) return false;
-    int e = 0;
-    (void)std::frexp(m, &e);
-    *direction = to_float(c * std::ldexp(1.0, -e));  // largest in [0.5, 1)
+    // c·2^-e with m = f·2^e, f in [0.5, 1) (frexp's e), the power of two built from m's
+    // exponent bits: m is a normal double (products of floats lie in [2^-298, 2^256]), and
+    // frexp/ldexp/scalbn would be about 480 bytes of flash on a microcontroller.
+    std::uint64_t bits;
+    std::memcpy(&bits, &m, sizeof bits);
+    const int e = int((bits >> 52) & 0x7ffu) - 1022;
+    const std::uint64_t scale_bits = std::uint64_t(1023 - e) << 52;
+    double scale;
+    std::memcpy(&scale, &scale_bits, sizeof scale);
+    *direction = to_float(c * scale);  // largest in [0.5, 1)
     return true;
 }
 
@@ -702,7 +710,8 @@ Status check_draw_inputs(const Camera& camera, const FrameBand& band, const Mesh
 // itself without rows): a loop of its own, so that the walk over a band's binned-away
 // triangles (most of the mesh) keeps its few values in registers (22 instructions per
 // triangle and band on a Cortex-M4F inside draw_mesh_rows' loop).
-int next_in_band(const TriangleRows* rows, int t, int n, int band_begin, int band_end) {
+SHITSUKAN_RASTER_NOINLINE int next_in_band(const TriangleRows* rows, int t, int n, int band_begin,
+                                           int band_end) {
     if (rows == nullptr) return t;
     for (; t < n; ++t) {
         const TriangleRows r = rows[t];
@@ -739,7 +748,7 @@ Status draw_mesh_rows(const Camera& camera, const FrameBand& band, const MeshVie
         if (rows != nullptr) {
             if (!in_range_indices(mesh, t))
                 return Status::error(StatusCode::invalid_argument,
-                                     "draw_binned_mesh: triangle %d has an index out of range", t);
+                                     "draw_binned_mesh: triangle %d: index out of range", t);
         }
         ++local.triangles_in;
         src.ready = false;
