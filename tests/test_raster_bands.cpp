@@ -202,7 +202,7 @@ TriangleMesh edge_case_mesh() {
 
 }  // namespace
 
-TEST_CASE("binned bands == full frame on edge cases: slivers, band borders, off-screen, back faces") {
+TEST_CASE("binned bands == full frame on edge cases (slivers, off-screen, back faces), vertices kept or not") {
     const Camera cam = perspective_camera({0.4f, 0.9f, 3.2f}, {0, 0, 0}, {0, 1, 0}, 50.0f, 101, 77);
     const int W = cam.width, H = cam.height;
     const TriangleMesh mesh = edge_case_mesh();
@@ -221,31 +221,64 @@ TEST_CASE("binned bands == full frame on edge cases: slivers, band borders, off-
             REQUIRE(draw_mesh(cam, whole, view, opt, shade, nullptr, &full_stats).ok());
             CHECK(full_stats.triangles_rejected > 0);  // the collinear ones
             CHECK(full_stats.triangles_clipped > 0);   // across the near plane
-            std::vector<TriangleRows> rows(std::size_t(view.triangle_count));
+            std::vector<TriangleRows> rows(std::size_t(view.triangle_count)), kept_rows = rows;
+            std::vector<BinnedVertex> kept(std::size_t(view.vertex_count));
             REQUIRE(bin_mesh(cam, view, opt, rows.data(), int(rows.size())).ok());
-            for (int band_height : {16, 5, 1}) {
+            REQUIRE(bin_mesh(cam, view, opt, kept_rows.data(), int(kept_rows.size()), kept.data(),
+                             int(kept.size()))
+                        .ok());
+            bool same_rows = true;
+            for (std::size_t t = 0; t < rows.size(); ++t)
+                same_rows = same_rows && rows[t].begin == kept_rows[t].begin &&
+                            rows[t].end == kept_rows[t].end;
+            CHECK(same_rows);  // the vertices kept or not, the same rows
+            for (int band_height : {16, 5, 1}) for (bool with_kept : {false, true}) {
                 RgbImage band_color(W, band_height);
                 FloatImage band_depth(W, band_height);
                 bool same = true;
-                long fragments = 0;
+                long fragments = 0, rejected = 0, clipped = 0;
                 for (int y0 = 0; y0 < H; y0 += band_height) {
                     const int h = std::min(band_height, H - y0);
                     const FrameBand band = make_band(band_color.view().subview(0, 0, W, h),
                                                      band_depth.view().subview(0, 0, W, h), y0, W, H);
                     clear_band(band, Rgb8{10, 20, 30});
-                    RasterStats st;
-                    REQUIRE(draw_binned_mesh(cam, band, view, opt, rows.data(), int(rows.size()),
-                                             shade, nullptr, &st)
-                                .ok());
+                    RasterStats st, plain;
+                    if (with_kept) {
+                        REQUIRE(draw_binned_mesh(cam, band, view, opt, rows.data(), int(rows.size()),
+                                                 kept.data(), int(kept.size()), shade, nullptr, &st)
+                                    .ok());
+                        // the same counts as without the kept vertices
+                        std::vector<Rgb8> c2(std::size_t(W * h));
+                        std::vector<float> d2(std::size_t(W * h));
+                        const FrameBand b2 = make_band(RgbView{c2.data(), W, h, W},
+                                                       FloatView{d2.data(), W, h, W}, y0, W, H);
+                        clear_band(b2, Rgb8{10, 20, 30});
+                        REQUIRE(draw_binned_mesh(cam, b2, view, opt, rows.data(), int(rows.size()),
+                                                 shade, nullptr, &plain)
+                                    .ok());
+                        CHECK(st.triangles_in == plain.triangles_in);
+                        CHECK(st.triangles_drawn == plain.triangles_drawn);
+                        CHECK(st.triangles_rejected == plain.triangles_rejected);
+                        CHECK(st.triangles_clipped == plain.triangles_clipped);
+                    } else {
+                        REQUIRE(draw_binned_mesh(cam, band, view, opt, rows.data(), int(rows.size()),
+                                                 shade, nullptr, &st)
+                                    .ok());
+                    }
                     fragments += st.fragments_shaded;
+                    rejected += st.triangles_rejected;
+                    clipped += st.triangles_clipped;
                     for (int y = 0; y < h; ++y)
                         same = same &&
                                std::memcmp(band.color.row(y), full.view().row(y0 + y), sizeof(Rgb8) * W) == 0 &&
                                std::memcmp(band.depth.row(y), full_depth.view().row(y0 + y), sizeof(float) * W) == 0;
                 }
-                INFO("flat " << flat << ", cull " << int(cull) << ", band height " << band_height);
+                INFO("flat " << flat << ", cull " << int(cull) << ", band height " << band_height
+                             << ", kept vertices " << with_kept);
                 CHECK(same);
                 CHECK(fragments == full_stats.fragments_shaded);
+                CHECK(rejected > 0);
+                CHECK(clipped > 0);
             }
         }
     }
@@ -295,4 +328,21 @@ TEST_CASE("clear_band == fill, row by row, for any width and a stride wider than
         CHECK(std::memcmp(color.data(), expected_color.data(), sizeof(Rgb8) * color.size()) == 0);
         CHECK(std::memcmp(depth.data(), expected_depth.data(), sizeof(float) * depth.size()) == 0);
     }
+}
+
+TEST_CASE("bin_mesh and draw_binned_mesh refuse too few kept vertices") {
+    Scene scene;
+    const MeshView box = scene.box.view();
+    std::vector<TriangleRows> rows(std::size_t(box.triangle_count));
+    std::vector<BinnedVertex> kept(std::size_t(box.vertex_count - 1));
+    const Status s = bin_mesh(scene.cam, box, DrawOptions{}, rows.data(), int(rows.size()),
+                              kept.data(), int(kept.size()));
+    CHECK(s.code() == StatusCode::invalid_argument);
+    CHECK(std::string(s.message()).find("room for 23 vertices, the mesh has 24") != std::string::npos);
+    RgbImage color(scene.cam.width, scene.cam.height);
+    FloatImage depth(scene.cam.width, scene.cam.height);
+    const Status d = draw_binned_mesh(scene.cam, full_frame_band(color.view(), depth.view()), box,
+                                      DrawOptions{}, rows.data(), int(rows.size()), kept.data(),
+                                      int(kept.size()), shade, nullptr);
+    CHECK(d.code() == StatusCode::invalid_argument);
 }

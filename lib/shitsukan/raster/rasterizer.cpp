@@ -81,6 +81,7 @@ struct DrawContext {
     const FrameBand* band;
     FragmentShader shader;
     void* user;
+    CullMode cull;
     long fragments = 0;
     Fragment f;  // one per draw call, not per triangle (raster_triangle sets what it reads)
 };
@@ -542,6 +543,22 @@ inline bool plane_is_nonzero(Vec3 e1, Vec3 e2) {
     return plane_direction(e1, e2, &unused);
 }
 
+// The rest of step 1 once the object positions are in src: the plane test and the world
+// positions. A projective model can send a corner to w ~ 0: world positions (and the
+// differences the fragments interpolate) overflow to inf and NaN (fuzz_raster finding). Such a
+// triangle has no place in the world: rejected like a degenerate one (false). The world
+// positions are kept for prepare(), which would otherwise compute them again.
+bool place_in_world(const Mat4& model, SourceTriangle* src) {
+    const Vec3 e1 = src->v[1].object_position - src->v[0].object_position;
+    const Vec3 e2 = src->v[2].object_position - src->v[0].object_position;
+    const bool has_plane = plane_is_nonzero(e1, e2);
+    for (int k = 0; k < 3; ++k)
+        src->v[k].world_position = model_point(model, src->v[k].object_position);
+    const Vec3 w0 = src->v[0].world_position;
+    return has_plane && is_finite(w0) && is_finite(src->v[1].world_position - w0) &&
+           is_finite(src->v[2].world_position - w0);
+}
+
 // ---- 1. Fetch the three corners, into clip space ----
 // false for a degenerate triangle (zero area, NaN/inf corner). The plane normal stays in
 // double (once per triangle): products of two floats are exact there, so the cross product of
@@ -559,19 +576,8 @@ bool fetch_corners(const MeshView& mesh, const Mat4& model, const Mat4& mvp, int
         corners[k].clip = transform_homogeneous(mvp, p);
         corners[k].bary = Vec3{k == 0 ? 1.0f : 0.0f, k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f};
     }
-    const Vec3 e1 = src->v[1].object_position - src->v[0].object_position;
-    const Vec3 e2 = src->v[2].object_position - src->v[0].object_position;
-    const bool has_plane = plane_is_nonzero(e1, e2);
-    // A projective model can send a corner to w ~ 0: world positions (and the differences the
-    // fragments interpolate) overflow to inf and NaN (fuzz_raster finding). Such a triangle
-    // has no place in the world: rejected like a degenerate one.
-    // The world positions are kept for prepare(), which would otherwise compute them again.
-    for (int k = 0; k < 3; ++k)
-        src->v[k].world_position = model_point(model, src->v[k].object_position);
-    const Vec3 w0 = src->v[0].world_position;
-    finite = finite && is_finite(w0) && is_finite(src->v[1].world_position - w0) &&
-             is_finite(src->v[2].world_position - w0);
-    return finite && has_plane;
+    const bool placed = place_in_world(model, src);
+    return finite && placed;
 }
 
 enum class Projected { drawable, outside, rejected };
@@ -654,6 +660,8 @@ void add_stats(const RasterStats& local, long fragments, RasterStats* stats) {
 // Flattened (its helpers inlined into it, in this function only): it runs for every triangle of
 // the frame, and the calls cost as much as the arithmetic (bin_mesh alone was 870 instructions
 // per triangle of the 48 x 24 UV sphere on a Cortex-M4F).
+TriangleRows rows_of(const Camera& camera, CullMode cull, const ScreenVertex s[3]);
+
 SHITSUKAN_RASTER_FLATTEN
 TriangleRows bin_triangle(const Camera& camera, const MeshView& mesh, const Mat4& mvp,
                           CullMode cull, int t, ClipSpaceVertex corners[3]) {
@@ -676,6 +684,13 @@ TriangleRows bin_triangle(const Camera& camera, const MeshView& mesh, const Mat4
         if (!finite_clip(corners[k].clip) || !(corners[k].clip.w >= kMinClipW)) return all;
         if (!to_screen(camera, corners[k], &s[k])) return none;  // rejected
     }
+    return rows_of(camera, cull, s);
+}
+
+// The rows of a triangle drawn without clipping, from its snapped corners (none: zero area or
+// culled).
+TriangleRows rows_of(const Camera& camera, CullMode cull, const ScreenVertex s[3]) {
+    const TriangleRows none{0, 0};
     const i64 area2 = snapped_area2(s[0], s[1], s[2]);
     const bool front = area2 < 0;
     if (area2 == 0 || (cull == CullMode::back && !front) || (cull == CullMode::front && front))
@@ -692,6 +707,75 @@ TriangleRows bin_triangle(const Camera& camera, const MeshView& mesh, const Mat4
     return TriangleRows{std::uint16_t(begin), std::uint16_t(end)};
 }
 
+// ---- Binning with the vertices kept: each vertex transformed, divided and snapped once ----
+constexpr std::int32_t kUnmapped = std::numeric_limits<std::int32_t>::min();  // never snapped
+
+// A vertex's clip-space outcode and, when a triangle of it could take the fast path there
+// (finite, inside the guard band and the near plane, w >= kMinClipW, mappable), its screen
+// position: the values clip_and_snap's to_screen gives. Else x = kUnmapped.
+SHITSUKAN_RASTER_FLATTEN
+void bin_vertex(const Camera& camera, const Mat4& mvp, Vec3 p, BinnedVertex* v) {
+    v->x = kUnmapped;
+    v->outcode = 0;
+    if (!is_finite(p)) return;
+    const ClipSpaceVertex c{transform_homogeneous(mvp, p), Vec3{0, 0, 0}};
+    v->outcode = clip_outcode(c.clip);
+    ScreenVertex screen;  // no default member values: not zeroed
+    if ((v->outcode & kClipPlaneBits) != 0 || !finite_clip(c.clip) || !(c.clip.w >= kMinClipW) ||
+        !to_screen(camera, c, &screen))
+        return;
+    v->x = std::int32_t(screen.x);  // |x|, |y| < kMaxFixed = 2^28
+    v->y = std::int32_t(screen.y);
+    v->z = screen.z;
+    v->inv_w = screen.inv_w;
+}
+
+inline ScreenVertex kept_corner(const BinnedVertex& v, int k) {
+    return ScreenVertex{v.x, v.y, v.z, v.inv_w,
+                        Vec3{k == 0 ? 1.0f : 0.0f, k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f}};
+}
+
+// bin_triangle from the kept vertices (a vertex left unmapped: bin_triangle itself).
+TriangleRows bin_kept_triangle(const Camera& camera, const MeshView& mesh, const Mat4& mvp,
+                               CullMode cull, int t, const BinnedVertex* vertices,
+                               ClipSpaceVertex corners[3]) {
+    const std::uint32_t* index = mesh.indices + 3 * std::size_t(t);
+    const BinnedVertex &a = vertices[index[0]], &b = vertices[index[1]], &c = vertices[index[2]];
+    if (a.x == kUnmapped || b.x == kUnmapped || c.x == kUnmapped)
+        return bin_triangle(camera, mesh, mvp, cull, t, corners);
+    if ((a.outcode & b.outcode & c.outcode & kOutsideBits) != 0) return TriangleRows{0, 0};
+    const ScreenVertex s[3] = {kept_corner(a, 0), kept_corner(b, 1), kept_corner(c, 2)};
+    return rows_of(camera, cull, s);
+}
+
+// Steps 1-5 for a handed triangle whose three vertices bin_mesh kept: the object positions,
+// plane test and world positions (place_in_world), then the kept screen positions instead of
+// transforming, testing and dividing the corners again. false: a vertex was not kept (the
+// general path then draws the triangle).
+bool draw_kept_triangle(DrawContext& ctx, SourceTriangle* src, const BinnedVertex* vertices,
+                        int t, RasterStats* local) {
+    const CullMode cull = ctx.cull;
+    const MeshView& mesh = *ctx.mesh.mesh;
+    const std::uint32_t* index = mesh.indices + 3 * std::size_t(t);
+    const BinnedVertex &a = vertices[index[0]], &b = vertices[index[1]], &c = vertices[index[2]];
+    if (a.x == kUnmapped || b.x == kUnmapped || c.x == kUnmapped) return false;
+    src->index = t;
+    src->corner_index = index;
+    for (int k = 0; k < 3; ++k) src->v[k].object_position = mesh.positions[index[k]];
+    if (!place_in_world(*ctx.mesh.model, src)) {
+        ++local->triangles_rejected;
+        return true;
+    }
+    if ((a.outcode & b.outcode & c.outcode & kOutsideBits) != 0) return true;
+    const ScreenVertex s[3] = {kept_corner(a, 0), kept_corner(b, 1), kept_corner(c, 2)};
+    const i64 area2 = snapped_area2(s[0], s[1], s[2]);  // decide_facing, unclipped
+    const bool front = area2 < 0;
+    if (area2 == 0 || (cull == CullMode::back && !front) || (cull == CullMode::front && front))
+        return true;
+    if (raster_triangle(ctx, *src, s[0], s[1], s[2], front)) ++local->triangles_drawn;
+    return true;
+}
+
 // binned: the mesh's indices were checked by bin_mesh, and each triangle handed to the band is
 // checked again before it is read (in_range_indices): every index of the mesh once per band
 // was 190 instructions per triangle of the frame on a Cortex-M4F.
@@ -706,13 +790,12 @@ Status check_draw_inputs(const Camera& camera, const FrameBand& band, const Mesh
     return validate_model(options.model, *normal_matrix);
 }
 
-// The first triangle from t on whose rows meet the band [band_begin, band_end) (n when none; t
-// itself without rows): a loop of its own, so that the walk over a band's binned-away
+// The first triangle from t on whose rows meet the band [band_begin, band_end) (n when none):
+// a loop of its own, so that the walk over a band's binned-away
 // triangles (most of the mesh) keeps its few values in registers (22 instructions per
 // triangle and band on a Cortex-M4F inside draw_mesh_rows' loop).
 SHITSUKAN_RASTER_NOINLINE int next_in_band(const TriangleRows* rows, int t, int n, int band_begin,
                                            int band_end) {
-    if (rows == nullptr) return t;
     for (; t < n; ++t) {
         const TriangleRows r = rows[t];
         if (r.end > band_begin && r.begin < band_end && r.begin < r.end) return t;
@@ -726,51 +809,65 @@ inline bool in_range_indices(const MeshView& mesh, int t) {
     return index[0] < n && index[1] < n && index[2] < n;
 }
 
-// draw_mesh and draw_binned_mesh: rows == nullptr draws every triangle.
+// Steps 1-5 for triangle t of the mesh.
+void draw_triangle(DrawContext& ctx, SourceTriangle* src, const Camera& camera, const Mat4& mvp,
+                   int t, RasterStats* local) {
+    const MeshView& mesh = *ctx.mesh.mesh;
+    ClipSpaceVertex corners[3];
+    if (!fetch_corners(mesh, *ctx.mesh.model, mvp, t, src, corners)) {
+        ++local->triangles_rejected;
+        return;
+    }
+    ScreenVertex s[kMaxClipVertices];
+    int count = 0;
+    bool clipped = false, front = false;
+    Projected projected = clip_and_snap(camera, corners, s, &count, &clipped, local);
+    if (projected == Projected::rejected) ++local->triangles_rejected;
+    if (projected != Projected::drawable) return;
+    if (!decide_facing(clipped, corners, s, count, &front)) return;
+    const CullMode cull = ctx.cull;
+    if ((cull == CullMode::back && !front) || (cull == CullMode::front && front)) return;
+    // ---- 5. Walk each piece of the fan ----
+    bool drawn = false;
+    for (int k = 1; k + 1 < count; ++k)
+        drawn = raster_triangle(ctx, *src, s[0], s[k], s[k + 1], front) || drawn;
+    if (drawn) ++local->triangles_drawn;
+}
+
+// draw_mesh (kBinned false: every triangle) and draw_binned_mesh (the triangles whose rows meet
+// the band; with the vertices bin_mesh kept when vertices is not null). A template, so that
+// draw_mesh's code carries none of the binned paths.
+template <bool kBinned>
 Status draw_mesh_rows(const Camera& camera, const FrameBand& band, const MeshView& mesh,
                       const DrawOptions& options, const TriangleRows* rows,
-                      FragmentShader shader, void* user, RasterStats* stats) {
+                      const BinnedVertex* vertices, FragmentShader shader, void* user,
+                      RasterStats* stats) {
     // ---- Check everything before drawing anything ----
     Mat4 normal_matrix;
-    SHITSUKAN_TRY(check_draw_inputs(camera, band, mesh, options, shader, rows != nullptr,
-                                    &normal_matrix));
+    SHITSUKAN_TRY(check_draw_inputs(camera, band, mesh, options, shader, kBinned, &normal_matrix));
 
     const Mat4 mvp = camera.projection * (camera.view * options.model);
-    DrawContext ctx{{&mesh, &options.model, &normal_matrix}, &band, shader, user, 0, Fragment{}};
+    DrawContext ctx{{&mesh, &options.model, &normal_matrix}, &band, shader, user, options.cull,
+                    0, Fragment{}};
     RasterStats local;
     const int band_begin = band.y0, band_end = band.y0 + band.color.height;
     SourceTriangle src;  // one, reused: fetch_corners and prepare write what is read
-    ClipSpaceVertex corners[3];
 
     const int n = mesh.triangle_count;
-    for (int t = next_in_band(rows, 0, n, band_begin, band_end); t < n;
-         t = next_in_band(rows, t + 1, n, band_begin, band_end)) {
-        if (rows != nullptr) {
+    for (int t = kBinned ? next_in_band(rows, 0, n, band_begin, band_end) : 0; t < n;
+         t = kBinned ? next_in_band(rows, t + 1, n, band_begin, band_end) : t + 1) {
+        if constexpr (kBinned) {
             if (!in_range_indices(mesh, t))
                 return Status::error(StatusCode::invalid_argument,
                                      "draw_binned_mesh: triangle %d: index out of range", t);
         }
         ++local.triangles_in;
         src.ready = false;
-        if (!fetch_corners(mesh, options.model, mvp, t, &src, corners)) {
-            ++local.triangles_rejected;
-            continue;
+        if constexpr (kBinned) {
+            if (vertices != nullptr && draw_kept_triangle(ctx, &src, vertices, t, &local))
+                continue;
         }
-        ScreenVertex s[kMaxClipVertices];
-        int count = 0;
-        bool clipped = false, front = false;
-        Projected projected = clip_and_snap(camera, corners, s, &count, &clipped, &local);
-        if (projected == Projected::rejected) ++local.triangles_rejected;
-        if (projected != Projected::drawable) continue;
-        if (!decide_facing(clipped, corners, s, count, &front)) continue;
-        if ((options.cull == CullMode::back && !front) ||
-            (options.cull == CullMode::front && front))
-            continue;
-        // ---- 5. Walk each piece of the fan ----
-        bool drawn = false;
-        for (int k = 1; k + 1 < count; ++k)
-            drawn = raster_triangle(ctx, src, s[0], s[k], s[k + 1], front) || drawn;
-        if (drawn) ++local.triangles_drawn;
+        draw_triangle(ctx, &src, camera, mvp, t, &local);
     }
     add_stats(local, ctx.fragments, stats);
     return Status::success();
@@ -779,7 +876,7 @@ Status draw_mesh_rows(const Camera& camera, const FrameBand& band, const MeshVie
 }  // namespace
 
 Status bin_mesh(const Camera& camera, const MeshView& mesh, const DrawOptions& options,
-                TriangleRows* rows, int capacity) {
+                TriangleRows* rows, int capacity, BinnedVertex* vertices, int vertex_capacity) {
     SHITSUKAN_TRY(validate_camera(camera));
     SHITSUKAN_TRY(validate_mesh(mesh));
     Mat4 normal_matrix;
@@ -788,17 +885,34 @@ Status bin_mesh(const Camera& camera, const MeshView& mesh, const DrawOptions& o
         return Status::error(StatusCode::invalid_argument,
                              "bin_mesh: room for %d triangles' rows, the mesh has %d",
                              rows == nullptr ? 0 : capacity, mesh.triangle_count);
+    if (vertices != nullptr && vertex_capacity < mesh.vertex_count)
+        return Status::error(StatusCode::invalid_argument,
+                             "bin_mesh: room for %d vertices, the mesh has %d", vertex_capacity,
+                             mesh.vertex_count);
     const Mat4 mvp = camera.projection * (camera.view * options.model);
     ClipSpaceVertex corners[3];  // scratch, not zeroed per triangle
+    if (vertices == nullptr) {
+        for (int t = 0; t < mesh.triangle_count; ++t)
+            rows[t] = bin_triangle(camera, mesh, mvp, options.cull, t, corners);
+        return Status::success();
+    }
+    for (int i = 0; i < mesh.vertex_count; ++i)
+        bin_vertex(camera, mvp, mesh.positions[i], &vertices[i]);
     for (int t = 0; t < mesh.triangle_count; ++t)
-        rows[t] = bin_triangle(camera, mesh, mvp, options.cull, t, corners);
+        rows[t] = bin_kept_triangle(camera, mesh, mvp, options.cull, t, vertices, corners);
     return Status::success();
+}
+
+Status bin_mesh(const Camera& camera, const MeshView& mesh, const DrawOptions& options,
+                TriangleRows* rows, int capacity) {
+    return bin_mesh(camera, mesh, options, rows, capacity, nullptr, 0);
 }
 
 Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
                  const DrawOptions& options, FragmentShader shader, void* user,
                  RasterStats* stats) {
-    return draw_mesh_rows(camera, band, mesh, options, nullptr, shader, user, stats);
+    return draw_mesh_rows<false>(camera, band, mesh, options, nullptr, nullptr, shader, user,
+                                 stats);
 }
 
 Status draw_binned_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
@@ -809,7 +923,21 @@ Status draw_binned_mesh(const Camera& camera, const FrameBand& band, const MeshV
                              "draw_binned_mesh: rows for %d triangles, the mesh has %d (bin_mesh "
                              "fills them)",
                              rows == nullptr ? 0 : capacity, mesh.triangle_count);
-    return draw_mesh_rows(camera, band, mesh, options, rows, shader, user, stats);
+    return draw_mesh_rows<true>(camera, band, mesh, options, rows, nullptr, shader, user, stats);
+}
+
+Status draw_binned_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
+                        const DrawOptions& options, const TriangleRows* rows, int capacity,
+                        const BinnedVertex* vertices, int vertex_capacity, FragmentShader shader,
+                        void* user, RasterStats* stats) {
+    if (vertices == nullptr || vertex_capacity < mesh.vertex_count)
+        return Status::error(StatusCode::invalid_argument,
+                             "draw_binned_mesh: kept vertices for %d, the mesh has %d (bin_mesh "
+                             "fills them)",
+                             vertices == nullptr ? 0 : vertex_capacity, mesh.vertex_count);
+    if (rows == nullptr || capacity < mesh.triangle_count)
+        return draw_binned_mesh(camera, band, mesh, options, rows, capacity, shader, user, stats);
+    return draw_mesh_rows<true>(camera, band, mesh, options, rows, vertices, shader, user, stats);
 }
 
 }  // namespace shitsukan
