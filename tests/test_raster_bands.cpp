@@ -202,7 +202,7 @@ TriangleMesh edge_case_mesh() {
 
 }  // namespace
 
-TEST_CASE("binned bands == full frame on edge cases (slivers, off-screen, back faces), vertices kept or not") {
+TEST_CASE("binned bands == full frame on edge cases (slivers, off-screen, back faces), kept") {
     const Camera cam = perspective_camera({0.4f, 0.9f, 3.2f}, {0, 0, 0}, {0, 1, 0}, 50.0f, 101, 77);
     const int W = cam.width, H = cam.height;
     const TriangleMesh mesh = edge_case_mesh();
@@ -239,13 +239,15 @@ TEST_CASE("binned bands == full frame on edge cases (slivers, off-screen, back f
                 long fragments = 0, rejected = 0, clipped = 0;
                 for (int y0 = 0; y0 < H; y0 += band_height) {
                     const int h = std::min(band_height, H - y0);
-                    const FrameBand band = make_band(band_color.view().subview(0, 0, W, h),
-                                                     band_depth.view().subview(0, 0, W, h), y0, W, H);
+                    const FrameBand band =
+                        make_band(band_color.view().subview(0, 0, W, h),
+                                  band_depth.view().subview(0, 0, W, h), y0, W, H);
                     clear_band(band, Rgb8{10, 20, 30});
                     RasterStats st, plain;
                     if (with_kept) {
-                        REQUIRE(draw_binned_mesh(cam, band, view, opt, rows.data(), int(rows.size()),
-                                                 kept.data(), int(kept.size()), shade, nullptr, &st)
+                        REQUIRE(draw_binned_mesh(cam, band, view, opt, rows.data(),
+                                                 int(rows.size()), kept.data(), int(kept.size()),
+                                                 shade, nullptr, &st)
                                     .ok());
                         // the same counts as without the kept vertices
                         std::vector<Rgb8> c2(std::size_t(W * h));
@@ -253,16 +255,16 @@ TEST_CASE("binned bands == full frame on edge cases (slivers, off-screen, back f
                         const FrameBand b2 = make_band(RgbView{c2.data(), W, h, W},
                                                        FloatView{d2.data(), W, h, W}, y0, W, H);
                         clear_band(b2, Rgb8{10, 20, 30});
-                        REQUIRE(draw_binned_mesh(cam, b2, view, opt, rows.data(), int(rows.size()),
-                                                 shade, nullptr, &plain)
+                        REQUIRE(draw_binned_mesh(cam, b2, view, opt, rows.data(),
+                                                 int(rows.size()), shade, nullptr, &plain)
                                     .ok());
                         CHECK(st.triangles_in == plain.triangles_in);
                         CHECK(st.triangles_drawn == plain.triangles_drawn);
                         CHECK(st.triangles_rejected == plain.triangles_rejected);
                         CHECK(st.triangles_clipped == plain.triangles_clipped);
                     } else {
-                        REQUIRE(draw_binned_mesh(cam, band, view, opt, rows.data(), int(rows.size()),
-                                                 shade, nullptr, &st)
+                        REQUIRE(draw_binned_mesh(cam, band, view, opt, rows.data(),
+                                                 int(rows.size()), shade, nullptr, &st)
                                     .ok());
                     }
                     fragments += st.fragments_shaded;
@@ -270,8 +272,10 @@ TEST_CASE("binned bands == full frame on edge cases (slivers, off-screen, back f
                     clipped += st.triangles_clipped;
                     for (int y = 0; y < h; ++y)
                         same = same &&
-                               std::memcmp(band.color.row(y), full.view().row(y0 + y), sizeof(Rgb8) * W) == 0 &&
-                               std::memcmp(band.depth.row(y), full_depth.view().row(y0 + y), sizeof(float) * W) == 0;
+                               std::memcmp(band.color.row(y), full.view().row(y0 + y),
+                                           sizeof(Rgb8) * W) == 0 &&
+                               std::memcmp(band.depth.row(y), full_depth.view().row(y0 + y),
+                                           sizeof(float) * W) == 0;
                 }
                 INFO("flat " << flat << ", cull " << int(cull) << ", band height " << band_height
                              << ", kept vertices " << with_kept);
@@ -316,7 +320,8 @@ TEST_CASE("draw_binned_mesh checks the indices of the triangles it is handed, an
 TEST_CASE("clear_band == fill, row by row, for any width and a stride wider than the band") {
     for (int width = 1; width <= 13; ++width) {
         const int stride = width + 3, height = 3;
-        std::vector<Rgb8> color(std::size_t(stride * height), Rgb8{1, 2, 3}), expected_color = color;
+        std::vector<Rgb8> color(std::size_t(stride * height), Rgb8{1, 2, 3});
+        std::vector<Rgb8> expected_color = color;
         std::vector<float> depth(std::size_t(stride * height), 7.0f), expected_depth = depth;
         const RgbView cv{color.data(), width, height, stride};
         const FloatView dv{depth.data(), width, height, stride};
@@ -338,7 +343,8 @@ TEST_CASE("bin_mesh and draw_binned_mesh refuse too few kept vertices") {
     const Status s = bin_mesh(scene.cam, box, DrawOptions{}, rows.data(), int(rows.size()),
                               kept.data(), int(kept.size()));
     CHECK(s.code() == StatusCode::invalid_argument);
-    CHECK(std::string(s.message()).find("room for 23 vertices, the mesh has 24") != std::string::npos);
+    CHECK(std::string(s.message()).find("room for 23 vertices, the mesh has 24") !=
+          std::string::npos);
     RgbImage color(scene.cam.width, scene.cam.height);
     FloatImage depth(scene.cam.width, scene.cam.height);
     const Status d = draw_binned_mesh(scene.cam, full_frame_band(color.view(), depth.view()), box,

@@ -90,7 +90,8 @@ TEST_CASE("a triangle is rejected exactly when its edges' cross product is zero 
         m.add_triangle(a, b, c);
         const Vec3 f1 = m.positions[b] - m.positions[a], f2 = m.positions[c] - m.positions[a];
         const double x1 = f1.x, y1 = f1.y, z1 = f1.z, x2 = f2.x, y2 = f2.y, z2 = f2.z;
-        degenerate += y1 * z2 - z1 * y2 == 0.0 && z1 * x2 - x1 * z2 == 0.0 && x1 * y2 - y1 * x2 == 0.0;
+        degenerate +=
+            y1 * z2 - z1 * y2 == 0.0 && z1 * x2 - x1 * z2 == 0.0 && x1 * y2 - y1 * x2 == 0.0;
     }
     Frame f;
     RasterStats stats;

@@ -197,7 +197,8 @@ bool bench_sphere(const Camera& cam) {
     if (!draw_in_bands([&](const FrameBand& b) {
             for (float& d : g_depth) d = -std::numeric_limits<float>::infinity();
             return bool(draw_binned_mesh(cam, b, sphere, opt, g_sphere_rows, kSphereIndices / 3,
-                                         g_sphere_kept, kSphereVertices, flat_shader, nullptr, &hidden));
+                                         g_sphere_kept, kSphereVertices, flat_shader, nullptr,
+                                         &hidden));
         }))
         return false;
     const std::uint64_t ns = port::icount_since_start();

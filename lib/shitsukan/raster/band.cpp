@@ -53,7 +53,8 @@ void clear_band(const FrameBand& band, Rgb8 background) {
         for (int y = 0; y < band.color.height; ++y)
             fill_color_row(band.color.row(y), band.color.width, background);
     if (!band.depth.empty())
-        for (int y = 0; y < band.depth.height; ++y) fill_depth_row(band.depth.row(y), band.depth.width);
+        for (int y = 0; y < band.depth.height; ++y)
+            fill_depth_row(band.depth.row(y), band.depth.width);
 }
 
 }  // namespace shitsukan

@@ -139,26 +139,30 @@ struct EdgeWalk {  // no default member values: three per piece, zeroing them co
     i64 next_y;          // the row the walk is on
     bool started;        // set false before the first at_row
 
-    // The column on row y; rows must come in increasing order, one by one.
+    // The column on row y; rows must come in increasing order, one by one. The step is
+    // inline (a call per row and edge cost as much as the step), the start out of line.
     i64 at_row(const ScreenVertex& e0, const ScreenVertex& e1, i64 y) {
-        if (!started || y != next_y) {
-            const i64 dy = e1.y - e0.y, yc = y * kSubpixel + kHalfPixel;
-            d = kSubpixel * dy;
-            const i64 n = e0.x * dy + (e1.x - e0.x) * (yc - e0.y) - kHalfPixel * dy;
-            i64 q, r;
-            floor_divmod(n, d, &q, &r);
-            column = r == 0 ? q : q + 1;
-            slack = r == 0 ? 0 : d - r;
-            floor_divmod(kSubpixel * (e1.x - e0.x), d, &step_q, &step_r);
-            started = true;
-        } else {  // N += step: ceil moves by step_q, and by one more when the slack runs out
-            column += step_q;
-            slack -= step_r;
-            if (slack < 0) {
-                slack += d;
-                column += 1;
-            }
+        if (!started || y != next_y) return start(e0, e1, y);
+        // N += step: ceil moves by step_q, and by one more when the slack runs out
+        column += step_q;
+        slack -= step_r;
+        if (slack < 0) {
+            slack += d;
+            column += 1;
         }
+        next_y = y + 1;
+        return column;
+    }
+    SHITSUKAN_RASTER_NOINLINE i64 start(const ScreenVertex& e0, const ScreenVertex& e1, i64 y) {
+        const i64 dy = e1.y - e0.y, yc = y * kSubpixel + kHalfPixel;
+        d = kSubpixel * dy;
+        const i64 n = e0.x * dy + (e1.x - e0.x) * (yc - e0.y) - kHalfPixel * dy;
+        i64 q, r;
+        floor_divmod(n, d, &q, &r);
+        column = r == 0 ? q : q + 1;
+        slack = r == 0 ? 0 : d - r;
+        floor_divmod(kSubpixel * (e1.x - e0.x), d, &step_q, &step_r);
+        started = true;
         next_y = y + 1;
         return column;
     }
@@ -244,9 +248,11 @@ void prepare(const MeshContext& mc, SourceTriangle* t) {
         // v.world_position: set by fetch_corners (step 1), the same model_point.
         v.uv = mesh.uvs ? mesh.uvs[i] : Vec2{0, 0};
         v.color = mesh.colors ? mesh.colors[i] : Vec3{1, 1, 1};
-        needs_plane[k] = !(mesh.normals && normalize(mesh.normals[i], &v.object_normal))
-                             ? 2
-                             : !normalize(model_vector(*mc.normal_matrix, v.object_normal), &v.normal);
+        if (!(mesh.normals && normalize(mesh.normals[i], &v.object_normal)))
+            needs_plane[k] = 2;
+        else
+            needs_plane[k] =
+                normalize(model_vector(*mc.normal_matrix, v.object_normal), &v.normal) ? 0 : 1;
     }
     if (needs_plane[0] + needs_plane[1] + needs_plane[2] > 0) {
         // The direction is nonzero and finite (fetch_corners checked it), normalized in float.
@@ -414,8 +420,11 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
         float ry = float(std::int32_t(yc - a.y));
         float lb_row = ry * lb_dy, lc_row = ry * lc_dy;
         f.y = int(y);
-        for (i64 x = x_begin; x < x_end; ++x) {
-            float rx = float(std::int32_t(x * kSubpixel + kHalfPixel - a.x));
+        // 256·x + 128 - a.x in 32 bits (|a.x| < 2^28, x < 2^14), stepped by 256: same integers.
+        std::int32_t rx_fixed = std::int32_t(x_begin) * std::int32_t(kSubpixel) +
+                                std::int32_t(kHalfPixel) - std::int32_t(a.x);
+        for (int x = int(x_begin); x < int(x_end); ++x, rx_fixed += std::int32_t(kSubpixel)) {
+            float rx = float(rx_fixed);
             float lb = lb_row + rx * lb_dx;  // screen-space (affine) barycentrics
             float lc = lc_row + rx * lc_dx;
             float la = 1.0f - lb - lc;
@@ -660,7 +669,7 @@ void add_stats(const RasterStats& local, long fragments, RasterStats* stats) {
 // Flattened (its helpers inlined into it, in this function only): it runs for every triangle of
 // the frame, and the calls cost as much as the arithmetic (bin_mesh alone was 870 instructions
 // per triangle of the 48 x 24 UV sphere on a Cortex-M4F).
-TriangleRows rows_of(const Camera& camera, CullMode cull, const ScreenVertex s[3]);
+TriangleRows rows_of(const Camera& camera, CullMode cull, i64 area2, i64 y0, i64 y1, i64 y2);
 
 SHITSUKAN_RASTER_FLATTEN
 TriangleRows bin_triangle(const Camera& camera, const MeshView& mesh, const Mat4& mvp,
@@ -684,22 +693,18 @@ TriangleRows bin_triangle(const Camera& camera, const MeshView& mesh, const Mat4
         if (!finite_clip(corners[k].clip) || !(corners[k].clip.w >= kMinClipW)) return all;
         if (!to_screen(camera, corners[k], &s[k])) return none;  // rejected
     }
-    return rows_of(camera, cull, s);
+    return rows_of(camera, cull, snapped_area2(s[0], s[1], s[2]), s[0].y, s[1].y, s[2].y);
 }
 
-// The rows of a triangle drawn without clipping, from its snapped corners (none: zero area or
-// culled).
-TriangleRows rows_of(const Camera& camera, CullMode cull, const ScreenVertex s[3]) {
+// The rows of a triangle drawn without clipping, from its snapped area (twice, signed) and
+// the rows of its corners (none: zero area or culled).
+TriangleRows rows_of(const Camera& camera, CullMode cull, i64 area2, i64 y0, i64 y1, i64 y2) {
     const TriangleRows none{0, 0};
-    const i64 area2 = snapped_area2(s[0], s[1], s[2]);
     const bool front = area2 < 0;
     if (area2 == 0 || (cull == CullMode::back && !front) || (cull == CullMode::front && front))
         return none;
-    i64 top = s[0].y, bottom = s[0].y;
-    for (int k = 1; k < 3; ++k) {
-        if (s[k].y < top) top = s[k].y;
-        if (s[k].y > bottom) bottom = s[k].y;
-    }
+    const i64 top = y0 < y1 ? (y0 < y2 ? y0 : y2) : (y1 < y2 ? y1 : y2);
+    const i64 bottom = y0 > y1 ? (y0 > y2 ? y0 : y2) : (y1 > y2 ? y1 : y2);
     i64 begin = ceil_div_subpixel(top - kHalfPixel), end = ceil_div_subpixel(bottom - kHalfPixel);
     if (begin < 0) begin = 0;
     if (end > camera.height) end = camera.height;
@@ -744,8 +749,9 @@ TriangleRows bin_kept_triangle(const Camera& camera, const MeshView& mesh, const
     if (a.x == kUnmapped || b.x == kUnmapped || c.x == kUnmapped)
         return bin_triangle(camera, mesh, mvp, cull, t, corners);
     if ((a.outcode & b.outcode & c.outcode & kOutsideBits) != 0) return TriangleRows{0, 0};
-    const ScreenVertex s[3] = {kept_corner(a, 0), kept_corner(b, 1), kept_corner(c, 2)};
-    return rows_of(camera, cull, s);
+    // snapped_area2 of the kept corners, in the same 64-bit integers
+    const i64 area2 = (i64(b.x) - a.x) * (i64(c.y) - a.y) - (i64(c.x) - a.x) * (i64(b.y) - a.y);
+    return rows_of(camera, cull, area2, a.y, b.y, c.y);
 }
 
 // Steps 1-5 for a handed triangle whose three vertices bin_mesh kept: the object positions,
@@ -798,6 +804,7 @@ SHITSUKAN_RASTER_NOINLINE int next_in_band(const TriangleRows* rows, int t, int 
                                            int band_end) {
     for (; t < n; ++t) {
         const TriangleRows r = rows[t];
+        if (r.end == 0) continue;  // binned away from every band (most of a mesh: culled)
         if (r.end > band_begin && r.begin < band_end && r.begin < r.end) return t;
     }
     return n;
