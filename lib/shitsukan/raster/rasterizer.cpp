@@ -415,14 +415,12 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
         Rgb8* color_row = band.color.row(band_row);
         float* depth_row = band.depth.row(band_row);
         // |yc - a.y| and |256·x + 128 - a.x| stay below 2^29 (coordinates below kMaxFixed =
-        // 2^28): through int32 the conversion is the FPU's (an int64 one is libgcc's
-        // __aeabi_l2f per pixel on a Cortex-M4F), rounding the same integer the same way.
+        // 2^28): in int32 (the latter stepped by 256 per pixel), converted by the FPU (an int64
+        // one is libgcc's __aeabi_l2f per pixel on a Cortex-M4F): the same integers and floats.
         float ry = float(std::int32_t(yc - a.y));
         float lb_row = ry * lb_dy, lc_row = ry * lc_dy;
         f.y = int(y);
-        // 256·x + 128 - a.x in 32 bits (|a.x| < 2^28, x < 2^14), stepped by 256: same integers.
-        std::int32_t rx_fixed = std::int32_t(x_begin) * std::int32_t(kSubpixel) +
-                                std::int32_t(kHalfPixel) - std::int32_t(a.x);
+        std::int32_t rx_fixed = std::int32_t(x_begin * kSubpixel + kHalfPixel - a.x);
         for (int x = int(x_begin); x < int(x_end); ++x, rx_fixed += std::int32_t(kSubpixel)) {
             float rx = float(rx_fixed);
             float lb = lb_row + rx * lb_dx;  // screen-space (affine) barycentrics
