@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -156,5 +157,198 @@ TEST_CASE("bin_mesh and draw_binned_mesh refuse too few rows") {
     FloatImage depth(scene.cam.width, scene.cam.height);
     const Status d = draw_binned_mesh(scene.cam, full_frame_band(color.view(), depth.view()), box,
                                       DrawOptions{}, nullptr, 0, shade, nullptr);
+    CHECK(d.code() == StatusCode::invalid_argument);
+}
+
+namespace {
+
+// Small triangles, slivers (thin to exactly collinear), triangles off every side of the view,
+// across the near plane, either winding (back-facing half), some vertices with a zero normal;
+// from a fixed linear congruential sequence.
+TriangleMesh edge_case_mesh() {
+    TriangleMesh m;
+    std::uint32_t state = 12345u;
+    auto next = [&state](float lo, float hi) {
+        state = state * 1664525u + 1013904223u;
+        return lo + (hi - lo) * float(state >> 8) / 16777216.0f;
+    };
+    for (int i = 0; i < 400; ++i) {
+        const Vec3 p{next(-2.5f, 2.5f), next(-2.0f, 2.0f), next(-1.5f, 3.5f)};  // z 3.5: behind
+        const Vec3 e{next(-0.4f, 0.4f), next(-0.4f, 0.4f), next(-0.2f, 0.2f)};
+        Vec3 q = p + Vec3{next(-0.4f, 0.4f), next(-0.4f, 0.4f), next(-0.2f, 0.2f)};
+        const int kind = i % 4;
+        if (kind == 1) q = p + e * 2.0f + Vec3{0.0f, next(-1e-6f, 1e-6f), 0.0f};  // sliver
+        if (kind == 2) q = p + e * 2.0f;  // collinear in floats or nearly: both kinds occur
+        const Vec3 n = kind == 3 ? Vec3{0, 0, 0} : Vec3{0, 0, 1};
+        const std::uint32_t a = m.add_vertex(p, n, {next(0, 1), next(0, 1)});
+        const std::uint32_t b = m.add_vertex(p + e, Vec3{0, 1, 0}, {next(0, 1), next(0, 1)});
+        const std::uint32_t c = m.add_vertex(q, Vec3{1, 0, 0}, {next(0, 1), next(0, 1)});
+        if (i % 2 == 0) m.add_triangle(a, b, c);
+        else m.add_triangle(a, c, b);
+    }
+    // Floors and a wall reaching behind the eye: clipped at the near plane.
+    for (float y : {-0.8f, -0.3f}) {
+        const std::uint32_t a = m.add_vertex({-6, y, 6}, {0, 1, 0}, {0, 0});
+        const std::uint32_t b = m.add_vertex({6, y, 6}, {0, 1, 0}, {1, 0});
+        const std::uint32_t c = m.add_vertex({0, y, -8}, {0, 1, 0}, {0.5f, 1});
+        m.add_triangle(a, b, c);
+    }
+    const std::uint32_t a = m.add_vertex({0.9f, -3, 6}, {-1, 0, 0}, {0, 0});
+    const std::uint32_t b = m.add_vertex({0.9f, 0, -6}, {-1, 0, 0}, {1, 0});
+    const std::uint32_t c = m.add_vertex({0.9f, 3, 6}, {-1, 0, 0}, {0, 1});
+    m.add_triangle(a, b, c);
+    return m;
+}
+
+}  // namespace
+
+TEST_CASE("binned bands == full frame on edge cases (slivers, off-screen, back faces), kept") {
+    const Camera cam = perspective_camera({0.4f, 0.9f, 3.2f}, {0, 0, 0}, {0, 1, 0}, 50.0f, 101, 77);
+    const int W = cam.width, H = cam.height;
+    const TriangleMesh mesh = edge_case_mesh();
+    for (bool flat : {false, true}) {
+        MeshView view = mesh.view();
+        if (flat) view.normals = nullptr;  // the plane's normal, made on first use
+        for (CullMode cull : {CullMode::back, CullMode::none}) {
+            DrawOptions opt;
+            opt.cull = cull;
+            opt.model = Mat4::rotate_y(0.2f);
+            RgbImage full(W, H);
+            FloatImage full_depth(W, H);
+            const FrameBand whole = full_frame_band(full.view(), full_depth.view());
+            clear_band(whole, Rgb8{10, 20, 30});
+            RasterStats full_stats;
+            REQUIRE(draw_mesh(cam, whole, view, opt, shade, nullptr, &full_stats).ok());
+            CHECK(full_stats.triangles_rejected > 0);  // the collinear ones
+            CHECK(full_stats.triangles_clipped > 0);   // across the near plane
+            std::vector<TriangleRows> rows(std::size_t(view.triangle_count)), kept_rows = rows;
+            std::vector<BinnedVertex> kept(std::size_t(view.vertex_count));
+            REQUIRE(bin_mesh(cam, view, opt, rows.data(), int(rows.size())).ok());
+            REQUIRE(bin_mesh(cam, view, opt, kept_rows.data(), int(kept_rows.size()), kept.data(),
+                             int(kept.size()))
+                        .ok());
+            bool same_rows = true;
+            for (std::size_t t = 0; t < rows.size(); ++t)
+                same_rows = same_rows && rows[t].begin == kept_rows[t].begin &&
+                            rows[t].end == kept_rows[t].end;
+            CHECK(same_rows);  // the vertices kept or not, the same rows
+            for (int band_height : {16, 5, 1}) for (bool with_kept : {false, true}) {
+                RgbImage band_color(W, band_height);
+                FloatImage band_depth(W, band_height);
+                bool same = true;
+                long fragments = 0, rejected = 0, clipped = 0;
+                for (int y0 = 0; y0 < H; y0 += band_height) {
+                    const int h = std::min(band_height, H - y0);
+                    const FrameBand band =
+                        make_band(band_color.view().subview(0, 0, W, h),
+                                  band_depth.view().subview(0, 0, W, h), y0, W, H);
+                    clear_band(band, Rgb8{10, 20, 30});
+                    RasterStats st, plain;
+                    if (with_kept) {
+                        REQUIRE(draw_binned_mesh(cam, band, view, opt, rows.data(),
+                                                 int(rows.size()), kept.data(), int(kept.size()),
+                                                 shade, nullptr, &st)
+                                    .ok());
+                        // the same counts as without the kept vertices
+                        std::vector<Rgb8> c2(std::size_t(W * h));
+                        std::vector<float> d2(std::size_t(W * h));
+                        const FrameBand b2 = make_band(RgbView{c2.data(), W, h, W},
+                                                       FloatView{d2.data(), W, h, W}, y0, W, H);
+                        clear_band(b2, Rgb8{10, 20, 30});
+                        REQUIRE(draw_binned_mesh(cam, b2, view, opt, rows.data(),
+                                                 int(rows.size()), shade, nullptr, &plain)
+                                    .ok());
+                        CHECK(st.triangles_in == plain.triangles_in);
+                        CHECK(st.triangles_drawn == plain.triangles_drawn);
+                        CHECK(st.triangles_rejected == plain.triangles_rejected);
+                        CHECK(st.triangles_clipped == plain.triangles_clipped);
+                    } else {
+                        REQUIRE(draw_binned_mesh(cam, band, view, opt, rows.data(),
+                                                 int(rows.size()), shade, nullptr, &st)
+                                    .ok());
+                    }
+                    fragments += st.fragments_shaded;
+                    rejected += st.triangles_rejected;
+                    clipped += st.triangles_clipped;
+                    for (int y = 0; y < h; ++y)
+                        same = same &&
+                               std::memcmp(band.color.row(y), full.view().row(y0 + y),
+                                           sizeof(Rgb8) * W) == 0 &&
+                               std::memcmp(band.depth.row(y), full_depth.view().row(y0 + y),
+                                           sizeof(float) * W) == 0;
+                }
+                INFO("flat " << flat << ", cull " << int(cull) << ", band height " << band_height
+                             << ", kept vertices " << with_kept);
+                CHECK(same);
+                CHECK(fragments == full_stats.fragments_shaded);
+                CHECK(rejected > 0);
+                CHECK(clipped > 0);
+            }
+        }
+    }
+}
+
+TEST_CASE("draw_binned_mesh checks the indices of the triangles it is handed, and only those") {
+    Scene scene;
+    TriangleMesh box = scene.box;
+    const MeshView good = box.view();
+    std::vector<TriangleRows> rows(std::size_t(good.triangle_count));
+    REQUIRE(bin_mesh(scene.cam, good, DrawOptions{}, rows.data(), int(rows.size())).ok());
+    // A mesh changed after bin_mesh: one index out of range, in a binned-away triangle (culled:
+    // empty rows) and then in a drawn one.
+    int culled = -1, drawn = -1;
+    for (int t = 0; t < good.triangle_count; ++t) {
+        if (rows[std::size_t(t)].begin >= rows[std::size_t(t)].end) culled = t;
+        else drawn = t;
+    }
+    REQUIRE(culled >= 0);
+    REQUIRE(drawn >= 0);
+    RgbImage color(scene.cam.width, scene.cam.height);
+    FloatImage depth(scene.cam.width, scene.cam.height);
+    const FrameBand band = full_frame_band(color.view(), depth.view());
+    for (int t : {culled, drawn}) {
+        TriangleMesh broken = box;
+        broken.indices[3 * std::size_t(t) + 1] = std::uint32_t(good.vertex_count);
+        const Status s = draw_binned_mesh(scene.cam, band, broken.view(), DrawOptions{},
+                                          rows.data(), int(rows.size()), shade, nullptr);
+        INFO("triangle " << t);
+        if (t == culled) CHECK(s.ok());  // never read: bin_mesh checked the mesh it binned
+        else CHECK(s.code() == StatusCode::invalid_argument);
+    }
+}
+
+TEST_CASE("clear_band == fill, row by row, for any width and a stride wider than the band") {
+    for (int width = 1; width <= 13; ++width) {
+        const int stride = width + 3, height = 3;
+        std::vector<Rgb8> color(std::size_t(stride * height), Rgb8{1, 2, 3});
+        std::vector<Rgb8> expected_color = color;
+        std::vector<float> depth(std::size_t(stride * height), 7.0f), expected_depth = depth;
+        const RgbView cv{color.data(), width, height, stride};
+        const FloatView dv{depth.data(), width, height, stride};
+        clear_band(make_band(cv, dv, 0, width, height), Rgb8{24, 26, 32});
+        fill(RgbView{expected_color.data(), width, height, stride}, Rgb8{24, 26, 32});
+        fill(FloatView{expected_depth.data(), width, height, stride},
+             std::numeric_limits<float>::infinity());
+        INFO("width " << width);
+        CHECK(std::memcmp(color.data(), expected_color.data(), sizeof(Rgb8) * color.size()) == 0);
+        CHECK(std::memcmp(depth.data(), expected_depth.data(), sizeof(float) * depth.size()) == 0);
+    }
+}
+
+TEST_CASE("bin_mesh and draw_binned_mesh refuse too few kept vertices") {
+    Scene scene;
+    const MeshView box = scene.box.view();
+    std::vector<TriangleRows> rows(std::size_t(box.triangle_count));
+    std::vector<BinnedVertex> kept(std::size_t(box.vertex_count - 1));
+    const Status s = bin_mesh(scene.cam, box, DrawOptions{}, rows.data(), int(rows.size()),
+                              kept.data(), int(kept.size()));
+    CHECK(s.code() == StatusCode::invalid_argument);
+    CHECK(std::string(s.message()).find("room for 23 vertices, the mesh has 24") !=
+          std::string::npos);
+    RgbImage color(scene.cam.width, scene.cam.height);
+    FloatImage depth(scene.cam.width, scene.cam.height);
+    const Status d = draw_binned_mesh(scene.cam, full_frame_band(color.view(), depth.view()), box,
+                                      DrawOptions{}, rows.data(), int(rows.size()), kept.data(),
+                                      int(kept.size()), shade, nullptr);
     CHECK(d.code() == StatusCode::invalid_argument);
 }

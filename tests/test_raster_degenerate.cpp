@@ -64,6 +64,45 @@ TEST_CASE("degeneracy is decided on exact products: a float-cancelling sliver is
     CHECK(stats.triangles_rejected == 2);
 }
 
+TEST_CASE("a triangle is rejected exactly when its edges' cross product is zero (random slivers)") {
+    // The rasterizer decides most triangles from the rounded products (rounded ones that differ
+    // are exact ones that differ) and only the rest from exact ones; the reference here is the
+    // cross product of the same float edges in double (products of floats are exact there, and
+    // a difference of doubles is zero only when they are equal).
+    TriangleMesh m;
+    std::uint32_t state = 2024u;
+    auto next = [&state](int range) {
+        state = state * 1664525u + 1013904223u;
+        return int(state >> 16) % range;
+    };
+    long degenerate = 0;
+    for (int i = 0; i < 600; ++i) {
+        const float unit = std::ldexp(1.0f, -next(30));  // edges from 1 down to 2^-29
+        const Vec3 p{0.1f * float(next(9) - 4), 0.1f * float(next(9) - 4), 0.0f};
+        const Vec3 e1 = Vec3{float(next(4097) - 2048), float(next(4097) - 2048),
+                             float(next(5) - 2)} * unit;
+        // e2 = 2^k·e1 (collinear), nudged by an ulp in one component or by nothing.
+        Vec3 e2 = e1 * std::ldexp(1.0f, next(5) - 2);
+        const int nudge = next(4);
+        if (nudge == 1) e2.x = std::nextafter(e2.x, 1e30f);
+        if (nudge == 2) e2.y = std::nextafter(e2.y, -1e30f);
+        const std::uint32_t a = m.add_vertex(p), b = m.add_vertex(p + e1), c = m.add_vertex(p + e2);
+        m.add_triangle(a, b, c);
+        const Vec3 f1 = m.positions[b] - m.positions[a], f2 = m.positions[c] - m.positions[a];
+        const double x1 = f1.x, y1 = f1.y, z1 = f1.z, x2 = f2.x, y2 = f2.y, z2 = f2.z;
+        degenerate +=
+            y1 * z2 - z1 * y2 == 0.0 && z1 * x2 - x1 * z2 == 0.0 && x1 * y2 - y1 * x2 == 0.0;
+    }
+    Frame f;
+    RasterStats stats;
+    DrawOptions opt;
+    opt.cull = CullMode::none;
+    CHECK(draw_mesh(camera32(), f.band, m.view(), opt, white, nullptr, &stats).ok());
+    CHECK(degenerate > 100);
+    CHECK(degenerate < 500);
+    CHECK(stats.triangles_rejected == degenerate);
+}
+
 TEST_CASE("zero-area, NaN and inf triangles are skipped and counted, the rest is drawn") {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();

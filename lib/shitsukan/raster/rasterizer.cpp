@@ -22,6 +22,17 @@
 #include "shitsukan/raster/clip.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
 
+// bin_triangle is flattened (speed: it runs for every triangle of a frame); snapped_area2 (four
+// call sites) and next_in_band are kept out of line (flash; and the band's walk over its
+// binned-away triangles stays in registers).
+#if defined(__GNUC__) || defined(__clang__)
+#define SHITSUKAN_RASTER_FLATTEN __attribute__((flatten))
+#define SHITSUKAN_RASTER_NOINLINE __attribute__((noinline))
+#else
+#define SHITSUKAN_RASTER_FLATTEN
+#define SHITSUKAN_RASTER_NOINLINE
+#endif
+
 namespace shitsukan {
 
 namespace {
@@ -45,7 +56,6 @@ struct SourceTriangle {
     VertexData v[3];
     VertexData dq, dr;  // v[1] - v[0] and v[2] - v[0], attribute by attribute
     const std::uint32_t* corner_index = nullptr;  // the three mesh indices
-    Vec3 plane_direction;  // (p1 - p0) x (p2 - p0) rounded to float, or a power-of-two multiple
     int index = 0;
     bool flat = false;  // the mesh has no normals
     bool ready = false;
@@ -71,6 +81,7 @@ struct DrawContext {
     const FrameBand* band;
     FragmentShader shader;
     void* user;
+    CullMode cull;
     long fragments = 0;
     Fragment f;  // one per draw call, not per triangle (raster_triangle sets what it reads)
 };
@@ -120,34 +131,38 @@ inline i64 ceil_div_subpixel(i64 a) { return -((-a) >> kSubpixelBits); }
 // (centre 256·x + 128 >= x_edge <=> x >= N / D); from one row to the next N grows by
 // 256·dx, so the walk keeps the quotient and remainder and adds that step's quotient and
 // remainder: two divisions when the walk starts, none per row, the same columns exactly.
-struct EdgeWalk {
-    i64 column = 0;              // ceil(N / D) on the current row
-    i64 slack = 0;               // column·D - N, in [0, D)
-    i64 d = 0;                   // D = 256·dy
-    i64 step_q = 0, step_r = 0;  // 256·dx = step_q·D + step_r, 0 <= step_r < D
-    i64 next_y = 0;              // the row the walk is on
-    bool started = false;
+struct EdgeWalk {  // no default member values: three per piece, zeroing them cost a memset
+    i64 column;          // ceil(N / D) on the current row
+    i64 slack;           // column·D - N, in [0, D)
+    i64 d;               // D = 256·dy
+    i64 step_q, step_r;  // 256·dx = step_q·D + step_r, 0 <= step_r < D
+    i64 next_y;          // the row the walk is on
+    bool started;        // set false before the first at_row
 
-    // The column on row y; rows must come in increasing order, one by one.
+    // The column on row y; rows must come in increasing order, one by one. The step is
+    // inline (a call per row and edge cost as much as the step), the start out of line.
     i64 at_row(const ScreenVertex& e0, const ScreenVertex& e1, i64 y) {
-        if (!started || y != next_y) {
-            const i64 dy = e1.y - e0.y, yc = y * kSubpixel + kHalfPixel;
-            d = kSubpixel * dy;
-            const i64 n = e0.x * dy + (e1.x - e0.x) * (yc - e0.y) - kHalfPixel * dy;
-            i64 q, r;
-            floor_divmod(n, d, &q, &r);
-            column = r == 0 ? q : q + 1;
-            slack = r == 0 ? 0 : d - r;
-            floor_divmod(kSubpixel * (e1.x - e0.x), d, &step_q, &step_r);
-            started = true;
-        } else {  // N += step: ceil moves by step_q, and by one more when the slack runs out
-            column += step_q;
-            slack -= step_r;
-            if (slack < 0) {
-                slack += d;
-                column += 1;
-            }
+        if (!started || y != next_y) return start(e0, e1, y);
+        // N += step: ceil moves by step_q, and by one more when the slack runs out
+        column += step_q;
+        slack -= step_r;
+        if (slack < 0) {
+            slack += d;
+            column += 1;
         }
+        next_y = y + 1;
+        return column;
+    }
+    SHITSUKAN_RASTER_NOINLINE i64 start(const ScreenVertex& e0, const ScreenVertex& e1, i64 y) {
+        const i64 dy = e1.y - e0.y, yc = y * kSubpixel + kHalfPixel;
+        d = kSubpixel * dy;
+        const i64 n = e0.x * dy + (e1.x - e0.x) * (yc - e0.y) - kHalfPixel * dy;
+        i64 q, r;
+        floor_divmod(n, d, &q, &r);
+        column = r == 0 ? q : q + 1;
+        slack = r == 0 ? 0 : d - r;
+        floor_divmod(kSubpixel * (e1.x - e0.x), d, &step_q, &step_r);
+        started = true;
         next_y = y + 1;
         return column;
     }
@@ -178,17 +193,24 @@ inline bool to_fixed(float v, i64* out) {
 // squared length leaves the normal floats (a model scaled by 1e22 has a normal matrix of
 // 1e-22, whose products square to denormals and lose their digits) is first divided by its
 // largest component, so that the result still has unit length; zero, NaN and inf give the
-// fallback.
-inline Vec3 normalize_or(Vec3 v, Vec3 fallback) {
+// fallback (normalize: false, nothing stored).
+inline bool normalize(Vec3 v, Vec3* unit) {
     float l2 = v.x * v.x + v.y * v.y + v.z * v.z;
-    if (l2 >= std::numeric_limits<float>::min() && l2 < 3.0e38f)
-        return v * (1.0f / std::sqrt(l2));
-    if (!(l2 >= 0.0f)) return fallback;  // NaN
+    if (l2 >= std::numeric_limits<float>::min() && l2 < 3.0e38f) {
+        *unit = v * (1.0f / std::sqrt(l2));
+        return true;
+    }
+    if (!(l2 >= 0.0f)) return false;  // NaN
     const float ax = std::fabs(v.x), ay = std::fabs(v.y), az = std::fabs(v.z);
     const float m = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
-    if (!(m > 0.0f) || !(m <= std::numeric_limits<float>::max())) return fallback;
+    if (!(m > 0.0f) || !(m <= std::numeric_limits<float>::max())) return false;
     v = v / m;  // largest component +-1: the squared length lies in [1, 3]
-    return v * (1.0f / std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z));
+    *unit = v * (1.0f / std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z));
+    return true;
+}
+inline Vec3 normalize_or(Vec3 v, Vec3 fallback) {
+    Vec3 unit;
+    return normalize(v, &unit) ? unit : fallback;
 }
 
 // M·(p, 1) without the divide (inline: three of these per triangle).
@@ -211,27 +233,38 @@ inline Vec3 model_vector(const Mat4& m, Vec3 v) {
             m.m[2][0] * v.x + m.m[2][1] * v.y + m.m[2][2] * v.z};
 }
 
+bool plane_direction(Vec3 e1, Vec3 e2, Vec3* direction);
+
 // The per-vertex attributes of the original triangle: world position, world and object
-// normals (the plane's when the mesh has none), uv and colour.
+// normals (the plane's when the mesh has none), uv and colour. The plane's unit normal is
+// made only when a vertex needs it (a mesh without normals, or a normal that cannot be
+// normalised): a mesh with normals skips its exact cross product.
 void prepare(const MeshContext& mc, SourceTriangle* t) {
     const MeshView& mesh = *mc.mesh;
-    // The plane's unit normal, normalized in float (fetch_corners made the direction nonzero
-    // and finite). Was the double length and three double divisions: software on a
-    // single-precision FPU; the direction moves by float ulps.
-    const Vec3 object_n = normalize_or(t->plane_direction, Vec3{0.0f, 0.0f, 1.0f});
-    Vec3 world_n = normalize_or(model_vector(*mc.normal_matrix, object_n), object_n);
+    int needs_plane[3];  // 0: no; 1: for the world normal; 2: for both normals
     for (int k = 0; k < 3; ++k) {
         std::uint32_t i = t->corner_index[k];
         VertexData& v = t->v[k];
         // v.world_position: set by fetch_corners (step 1), the same model_point.
         v.uv = mesh.uvs ? mesh.uvs[i] : Vec2{0, 0};
         v.color = mesh.colors ? mesh.colors[i] : Vec3{1, 1, 1};
-        if (mesh.normals) {
-            v.object_normal = normalize_or(mesh.normals[i], object_n);
-            v.normal = normalize_or(model_vector(*mc.normal_matrix, v.object_normal), world_n);
-        } else {
-            v.object_normal = object_n;  // flat: the plane's normal
-            v.normal = world_n;
+        if (!(mesh.normals && normalize(mesh.normals[i], &v.object_normal)))
+            needs_plane[k] = 2;
+        else
+            needs_plane[k] =
+                normalize(model_vector(*mc.normal_matrix, v.object_normal), &v.normal) ? 0 : 1;
+    }
+    if (needs_plane[0] + needs_plane[1] + needs_plane[2] > 0) {
+        // The direction is nonzero and finite (fetch_corners checked it), normalized in float.
+        Vec3 direction{0.0f, 0.0f, 1.0f};
+        (void)plane_direction(t->v[1].object_position - t->v[0].object_position,
+                              t->v[2].object_position - t->v[0].object_position, &direction);
+        const Vec3 object_n = normalize_or(direction, Vec3{0.0f, 0.0f, 1.0f});
+        const Vec3 world_n = normalize_or(model_vector(*mc.normal_matrix, object_n), object_n);
+        for (int k = 0; k < 3; ++k) {
+            // 2: the plane's normals (normalising M·object_n again would give world_n).
+            if (needs_plane[k] == 2) t->v[k].object_normal = object_n;
+            if (needs_plane[k] != 0) t->v[k].normal = world_n;
         }
     }
     for (int k = 0; k < 2; ++k) {
@@ -262,9 +295,11 @@ void interpolate(const SourceTriangle& t, Vec3 b, Fragment* f) {
         f->normal = p.normal;
         f->object_normal = p.object_normal;
     } else {
-        f->normal = normalize_or(p.normal + dq.normal * b.y + dr.normal * b.z, p.normal);
-        f->object_normal = normalize_or(
-            p.object_normal + dq.object_normal * b.y + dr.object_normal * b.z, p.object_normal);
+        if (!normalize(p.normal + dq.normal * b.y + dr.normal * b.z, &f->normal))
+            f->normal = p.normal;
+        if (!normalize(p.object_normal + dq.object_normal * b.y + dr.object_normal * b.z,
+                       &f->object_normal))
+            f->object_normal = p.object_normal;
     }
     f->uv = p.uv + dq.uv * b.y + dr.uv * b.z;
     f->color = p.color + dq.color * b.y + dr.color * b.z;
@@ -289,7 +324,8 @@ inline float to_float_via_int32(i64 n) {
 
 // Twice the signed area of a snapped triangle, in (1/256 pixel)^2. Screen y points down, so
 // a counter-clockwise (front) triangle of the world has a negative area here.
-inline i64 snapped_area2(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+SHITSUKAN_RASTER_NOINLINE i64 snapped_area2(const ScreenVertex& a, const ScreenVertex& b,
+                                             const ScreenVertex& c) {
     return (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
 }
 
@@ -363,6 +399,7 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
     f.front_facing = front;
     const i64 width = band.frame_width;
     EdgeWalk long_edge, upper_edge, lower_edge;
+    long_edge.started = upper_edge.started = lower_edge.started = false;
     for (i64 y = row_begin; y < row_end; ++y) {
         i64 yc = y * kSubpixel + kHalfPixel;
         // The short edge on this row: v0 -> v1 above the middle vertex, v1 -> v2 below.
@@ -378,13 +415,14 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
         Rgb8* color_row = band.color.row(band_row);
         float* depth_row = band.depth.row(band_row);
         // |yc - a.y| and |256·x + 128 - a.x| stay below 2^29 (coordinates below kMaxFixed =
-        // 2^28): through int32 the conversion is the FPU's (an int64 one is libgcc's
-        // __aeabi_l2f per pixel on a Cortex-M4F), rounding the same integer the same way.
+        // 2^28): in int32 (the latter stepped by 256 per pixel), converted by the FPU (an int64
+        // one is libgcc's __aeabi_l2f per pixel on a Cortex-M4F): the same integers and floats.
         float ry = float(std::int32_t(yc - a.y));
         float lb_row = ry * lb_dy, lc_row = ry * lc_dy;
         f.y = int(y);
-        for (i64 x = x_begin; x < x_end; ++x) {
-            float rx = float(std::int32_t(x * kSubpixel + kHalfPixel - a.x));
+        std::int32_t rx_fixed = std::int32_t(x_begin * kSubpixel + kHalfPixel - a.x);
+        for (int x = int(x_begin); x < int(x_end); ++x, rx_fixed += std::int32_t(kSubpixel)) {
+            float rx = float(rx_fixed);
             float lb = lb_row + rx * lb_dx;  // screen-space (affine) barycentrics
             float lc = lc_row + rx * lc_dx;
             float la = 1.0f - lb - lc;
@@ -462,6 +500,72 @@ inline bool in_exact_product_range(float v) {
     return a == 0.0f || (a >= 0x1p-50f && a <= 0x1p60f);
 }
 
+// The plane's direction (p1 - p0) x (p2 - p0), and whether it is zero (degenerate), with
+// every product exact: in float as hi + lo pairs when the edges' components allow it (the
+// common case), else in double, where products of two floats are exact (a huge or tiny
+// mesh; scaled by a power of two into float range there). Exact products keep a sliver's
+// normal from cancelling and make "nonzero" a reliable test. (Was always double: about
+// 1,000 instructions per triangle and band in software on a Cortex-M4F.) false: zero (or not
+// finite), nothing stored.
+bool plane_direction(Vec3 e1, Vec3 e2, Vec3* direction) {
+    if (in_exact_product_range(e1.x) && in_exact_product_range(e1.y) &&
+        in_exact_product_range(e1.z) && in_exact_product_range(e2.x) &&
+        in_exact_product_range(e2.y) && in_exact_product_range(e2.z)) {
+        bool zx, zy, zz;
+        const Vec3 d{cross_component(e1.y, e2.z, e1.z, e2.y, &zx),
+                     cross_component(e1.z, e2.x, e1.x, e2.z, &zy),
+                     cross_component(e1.x, e2.y, e1.y, e2.x, &zz)};
+        if (zx && zy && zz) return false;
+        *direction = d;
+        return true;
+    }
+    const Vec3d c = cross(to_double(e1), to_double(e2));
+    const double ax = std::fabs(c.x), ay = std::fabs(c.y), az = std::fabs(c.z);
+    const double m = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
+    if (!(m > 0.0 && is_finite(m))) return false;
+    // c·2^-e with m = f·2^e, f in [0.5, 1) (frexp's e), the power of two built from m's
+    // exponent bits: m is a normal double (products of floats lie in [2^-298, 2^256]), and
+    // frexp/ldexp/scalbn would be about 480 bytes of flash on a microcontroller.
+    std::uint64_t bits;
+    std::memcpy(&bits, &m, sizeof bits);
+    const int e = int((bits >> 52) & 0x7ffu) - 1022;
+    const std::uint64_t scale_bits = std::uint64_t(1023 - e) << 52;
+    double scale;
+    std::memcpy(&scale, &scale_bits, sizeof scale);
+    *direction = to_float(c * scale);  // largest in [0.5, 1)
+    return true;
+}
+
+// Whether plane_direction finds the plane nonzero, mostly without its exact products:
+// rounding is monotonic, so when the rounded products of a component, u·v and w·z, differ
+// (neither NaN), the exact ones differ too and that component is nonzero. Only a triangle
+// whose rounded products all agree (degenerate, or nearly) takes the exact test.
+inline bool plane_is_nonzero(Vec3 e1, Vec3 e2) {
+    auto differ = [](float a, float b) { return a < b || a > b; };
+    if (is_finite(e1) && is_finite(e2) &&
+        (differ(e1.y * e2.z, e1.z * e2.y) || differ(e1.z * e2.x, e1.x * e2.z) ||
+         differ(e1.x * e2.y, e1.y * e2.x)))
+        return true;
+    Vec3 unused;
+    return plane_direction(e1, e2, &unused);
+}
+
+// The rest of step 1 once the object positions are in src: the plane test and the world
+// positions. A projective model can send a corner to w ~ 0: world positions (and the
+// differences the fragments interpolate) overflow to inf and NaN (fuzz_raster finding). Such a
+// triangle has no place in the world: rejected like a degenerate one (false). The world
+// positions are kept for prepare(), which would otherwise compute them again.
+bool place_in_world(const Mat4& model, SourceTriangle* src) {
+    const Vec3 e1 = src->v[1].object_position - src->v[0].object_position;
+    const Vec3 e2 = src->v[2].object_position - src->v[0].object_position;
+    const bool has_plane = plane_is_nonzero(e1, e2);
+    for (int k = 0; k < 3; ++k)
+        src->v[k].world_position = model_point(model, src->v[k].object_position);
+    const Vec3 w0 = src->v[0].world_position;
+    return has_plane && is_finite(w0) && is_finite(src->v[1].world_position - w0) &&
+           is_finite(src->v[2].world_position - w0);
+}
+
 // ---- 1. Fetch the three corners, into clip space ----
 // false for a degenerate triangle (zero area, NaN/inf corner). The plane normal stays in
 // double (once per triangle): products of two floats are exact there, so the cross product of
@@ -479,44 +583,8 @@ bool fetch_corners(const MeshView& mesh, const Mat4& model, const Mat4& mvp, int
         corners[k].clip = transform_homogeneous(mvp, p);
         corners[k].bary = Vec3{k == 0 ? 1.0f : 0.0f, k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f};
     }
-    // The plane's direction (p1 - p0) x (p2 - p0), and whether it is zero (degenerate), with
-    // every product exact: in float as hi + lo pairs when the edges' components allow it (the
-    // common case), else in double, where products of two floats are exact (a huge or tiny
-    // mesh; scaled by a power of two into float range there). Exact products keep a sliver's
-    // normal from cancelling and make "nonzero" a reliable test. (Was always double: about
-    // 1,000 instructions per triangle and band in software on a Cortex-M4F.)
-    const Vec3 e1 = src->v[1].object_position - src->v[0].object_position;
-    const Vec3 e2 = src->v[2].object_position - src->v[0].object_position;
-    bool has_plane = false;
-    if (in_exact_product_range(e1.x) && in_exact_product_range(e1.y) &&
-        in_exact_product_range(e1.z) && in_exact_product_range(e2.x) &&
-        in_exact_product_range(e2.y) && in_exact_product_range(e2.z)) {
-        bool zx, zy, zz;
-        src->plane_direction = Vec3{cross_component(e1.y, e2.z, e1.z, e2.y, &zx),
-                                    cross_component(e1.z, e2.x, e1.x, e2.z, &zy),
-                                    cross_component(e1.x, e2.y, e1.y, e2.x, &zz)};
-        has_plane = !(zx && zy && zz);
-    } else {
-        const Vec3d c = cross(to_double(e1), to_double(e2));
-        const double ax = std::fabs(c.x), ay = std::fabs(c.y), az = std::fabs(c.z);
-        const double m = ax > ay ? (ax > az ? ax : az) : (ay > az ? ay : az);
-        has_plane = m > 0.0 && is_finite(m);
-        if (has_plane) {
-            int e = 0;
-            (void)std::frexp(m, &e);
-            src->plane_direction = to_float(c * std::ldexp(1.0, -e));  // largest in [0.5, 1)
-        }
-    }
-    // A projective model can send a corner to w ~ 0: world positions (and the differences the
-    // fragments interpolate) overflow to inf and NaN (fuzz_raster finding). Such a triangle
-    // has no place in the world: rejected like a degenerate one.
-    // The world positions are kept for prepare(), which would otherwise compute them again.
-    for (int k = 0; k < 3; ++k)
-        src->v[k].world_position = model_point(model, src->v[k].object_position);
-    const Vec3 w0 = src->v[0].world_position;
-    finite = finite && is_finite(w0) && is_finite(src->v[1].world_position - w0) &&
-             is_finite(src->v[2].world_position - w0);
-    return finite && has_plane;
+    const bool placed = place_in_world(model, src);
+    return finite && placed;
 }
 
 enum class Projected { drawable, outside, rejected };
@@ -596,6 +664,12 @@ void add_stats(const RasterStats& local, long fragments, RasterStats* stats) {
 // as draw_mesh, so the rows are those raster_triangle would walk. A triangle that needs
 // clipping keeps every row (the band pass decides); one that cannot be drawn (outside one
 // side of the view, a corner that cannot be mapped, zero snapped area, culled) gets none.
+// Flattened (its helpers inlined into it, in this function only): it runs for every triangle of
+// the frame, and the calls cost as much as the arithmetic (bin_mesh alone was 870 instructions
+// per triangle of the 48 x 24 UV sphere on a Cortex-M4F).
+TriangleRows rows_of(const Camera& camera, CullMode cull, i64 area2, i64 y0, i64 y1, i64 y2);
+
+SHITSUKAN_RASTER_FLATTEN
 TriangleRows bin_triangle(const Camera& camera, const MeshView& mesh, const Mat4& mvp,
                           CullMode cull, int t, ClipSpaceVertex corners[3]) {
     const TriangleRows all{0, std::uint16_t(camera.height)}, none{0, 0};
@@ -617,15 +691,18 @@ TriangleRows bin_triangle(const Camera& camera, const MeshView& mesh, const Mat4
         if (!finite_clip(corners[k].clip) || !(corners[k].clip.w >= kMinClipW)) return all;
         if (!to_screen(camera, corners[k], &s[k])) return none;  // rejected
     }
-    const i64 area2 = snapped_area2(s[0], s[1], s[2]);
+    return rows_of(camera, cull, snapped_area2(s[0], s[1], s[2]), s[0].y, s[1].y, s[2].y);
+}
+
+// The rows of a triangle drawn without clipping, from its snapped area (twice, signed) and
+// the rows of its corners (none: zero area or culled).
+TriangleRows rows_of(const Camera& camera, CullMode cull, i64 area2, i64 y0, i64 y1, i64 y2) {
+    const TriangleRows none{0, 0};
     const bool front = area2 < 0;
     if (area2 == 0 || (cull == CullMode::back && !front) || (cull == CullMode::front && front))
         return none;
-    i64 top = s[0].y, bottom = s[0].y;
-    for (int k = 1; k < 3; ++k) {
-        if (s[k].y < top) top = s[k].y;
-        if (s[k].y > bottom) bottom = s[k].y;
-    }
+    const i64 top = y0 < y1 ? (y0 < y2 ? y0 : y2) : (y1 < y2 ? y1 : y2);
+    const i64 bottom = y0 > y1 ? (y0 > y2 ? y0 : y2) : (y1 > y2 ? y1 : y2);
     i64 begin = ceil_div_subpixel(top - kHalfPixel), end = ceil_div_subpixel(bottom - kHalfPixel);
     if (begin < 0) begin = 0;
     if (end > camera.height) end = camera.height;
@@ -633,56 +710,169 @@ TriangleRows bin_triangle(const Camera& camera, const MeshView& mesh, const Mat4
     return TriangleRows{std::uint16_t(begin), std::uint16_t(end)};
 }
 
+// ---- Binning with the vertices kept: each vertex transformed, divided and snapped once ----
+constexpr std::int32_t kUnmapped = std::numeric_limits<std::int32_t>::min();  // never snapped
+
+// A vertex's clip-space outcode and, when a triangle of it could take the fast path there
+// (finite, inside the guard band and the near plane, w >= kMinClipW, mappable), its screen
+// position: the values clip_and_snap's to_screen gives. Else x = kUnmapped.
+SHITSUKAN_RASTER_FLATTEN
+void bin_vertex(const Camera& camera, const Mat4& mvp, Vec3 p, BinnedVertex* v) {
+    v->x = kUnmapped;
+    v->outcode = 0;
+    if (!is_finite(p)) return;
+    const ClipSpaceVertex c{transform_homogeneous(mvp, p), Vec3{0, 0, 0}};
+    v->outcode = clip_outcode(c.clip);
+    ScreenVertex screen;  // no default member values: not zeroed
+    if ((v->outcode & kClipPlaneBits) != 0 || !finite_clip(c.clip) || !(c.clip.w >= kMinClipW) ||
+        !to_screen(camera, c, &screen))
+        return;
+    v->x = std::int32_t(screen.x);  // |x|, |y| < kMaxFixed = 2^28
+    v->y = std::int32_t(screen.y);
+    v->z = screen.z;
+    v->inv_w = screen.inv_w;
+}
+
+inline ScreenVertex kept_corner(const BinnedVertex& v, int k) {
+    return ScreenVertex{v.x, v.y, v.z, v.inv_w,
+                        Vec3{k == 0 ? 1.0f : 0.0f, k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f}};
+}
+
+// bin_triangle from the kept vertices (a vertex left unmapped: bin_triangle itself).
+TriangleRows bin_kept_triangle(const Camera& camera, const MeshView& mesh, const Mat4& mvp,
+                               CullMode cull, int t, const BinnedVertex* vertices,
+                               ClipSpaceVertex corners[3]) {
+    const std::uint32_t* index = mesh.indices + 3 * std::size_t(t);
+    const BinnedVertex &a = vertices[index[0]], &b = vertices[index[1]], &c = vertices[index[2]];
+    if (a.x == kUnmapped || b.x == kUnmapped || c.x == kUnmapped)
+        return bin_triangle(camera, mesh, mvp, cull, t, corners);
+    if ((a.outcode & b.outcode & c.outcode & kOutsideBits) != 0) return TriangleRows{0, 0};
+    // snapped_area2 of the kept corners, in the same 64-bit integers
+    const i64 area2 = (i64(b.x) - a.x) * (i64(c.y) - a.y) - (i64(c.x) - a.x) * (i64(b.y) - a.y);
+    return rows_of(camera, cull, area2, a.y, b.y, c.y);
+}
+
+// Steps 1-5 for a handed triangle whose three vertices bin_mesh kept: the object positions,
+// plane test and world positions (place_in_world), then the kept screen positions instead of
+// transforming, testing and dividing the corners again. false: a vertex was not kept (the
+// general path then draws the triangle).
+bool draw_kept_triangle(DrawContext& ctx, SourceTriangle* src, const BinnedVertex* vertices,
+                        int t, RasterStats* local) {
+    const CullMode cull = ctx.cull;
+    const MeshView& mesh = *ctx.mesh.mesh;
+    const std::uint32_t* index = mesh.indices + 3 * std::size_t(t);
+    const BinnedVertex &a = vertices[index[0]], &b = vertices[index[1]], &c = vertices[index[2]];
+    if (a.x == kUnmapped || b.x == kUnmapped || c.x == kUnmapped) return false;
+    src->index = t;
+    src->corner_index = index;
+    for (int k = 0; k < 3; ++k) src->v[k].object_position = mesh.positions[index[k]];
+    if (!place_in_world(*ctx.mesh.model, src)) {
+        ++local->triangles_rejected;
+        return true;
+    }
+    if ((a.outcode & b.outcode & c.outcode & kOutsideBits) != 0) return true;
+    const ScreenVertex s[3] = {kept_corner(a, 0), kept_corner(b, 1), kept_corner(c, 2)};
+    const i64 area2 = snapped_area2(s[0], s[1], s[2]);  // decide_facing, unclipped
+    const bool front = area2 < 0;
+    if (area2 == 0 || (cull == CullMode::back && !front) || (cull == CullMode::front && front))
+        return true;
+    if (raster_triangle(ctx, *src, s[0], s[1], s[2], front)) ++local->triangles_drawn;
+    return true;
+}
+
+// binned: the mesh's indices were checked by bin_mesh, and each triangle handed to the band is
+// checked again before it is read (in_range_indices): every index of the mesh once per band
+// was 190 instructions per triangle of the frame on a Cortex-M4F.
 Status check_draw_inputs(const Camera& camera, const FrameBand& band, const MeshView& mesh,
-                         const DrawOptions& options, FragmentShader shader, Mat4* normal_matrix) {
+                         const DrawOptions& options, FragmentShader shader, bool binned,
+                         Mat4* normal_matrix) {
     if (shader == nullptr)
         return Status::error(StatusCode::invalid_argument, "draw_mesh: the shader is null");
     SHITSUKAN_TRY(validate_camera(camera));
     SHITSUKAN_TRY(validate_band(camera, band));
-    SHITSUKAN_TRY(validate_mesh(mesh));
+    SHITSUKAN_TRY(binned ? validate_mesh_arrays(mesh) : validate_mesh(mesh));
     return validate_model(options.model, *normal_matrix);
 }
 
-// draw_mesh and draw_binned_mesh: rows == nullptr draws every triangle.
+// The first triangle from t on whose rows meet the band [band_begin, band_end) (n when none):
+// a loop of its own, so that the walk over a band's binned-away
+// triangles (most of the mesh) keeps its few values in registers (22 instructions per
+// triangle and band on a Cortex-M4F inside draw_mesh_rows' loop).
+SHITSUKAN_RASTER_NOINLINE int next_in_band(const TriangleRows* rows, int t, int n, int band_begin,
+                                           int band_end) {
+    for (; t < n; ++t) {
+        const TriangleRows r = rows[t];
+        if (r.end == 0) continue;  // binned away from every band (most of a mesh: culled)
+        if (r.end > band_begin && r.begin < band_end && r.begin < r.end) return t;
+    }
+    return n;
+}
+
+inline bool in_range_indices(const MeshView& mesh, int t) {
+    const std::uint32_t* index = mesh.indices + 3 * std::size_t(t);
+    const std::uint32_t n = std::uint32_t(mesh.vertex_count);
+    return index[0] < n && index[1] < n && index[2] < n;
+}
+
+// Steps 1-5 for triangle t of the mesh.
+void draw_triangle(DrawContext& ctx, SourceTriangle* src, const Camera& camera, const Mat4& mvp,
+                   int t, RasterStats* local) {
+    const MeshView& mesh = *ctx.mesh.mesh;
+    ClipSpaceVertex corners[3];
+    if (!fetch_corners(mesh, *ctx.mesh.model, mvp, t, src, corners)) {
+        ++local->triangles_rejected;
+        return;
+    }
+    ScreenVertex s[kMaxClipVertices];
+    int count = 0;
+    bool clipped = false, front = false;
+    Projected projected = clip_and_snap(camera, corners, s, &count, &clipped, local);
+    if (projected == Projected::rejected) ++local->triangles_rejected;
+    if (projected != Projected::drawable) return;
+    if (!decide_facing(clipped, corners, s, count, &front)) return;
+    const CullMode cull = ctx.cull;
+    if ((cull == CullMode::back && !front) || (cull == CullMode::front && front)) return;
+    // ---- 5. Walk each piece of the fan ----
+    bool drawn = false;
+    for (int k = 1; k + 1 < count; ++k)
+        drawn = raster_triangle(ctx, *src, s[0], s[k], s[k + 1], front) || drawn;
+    if (drawn) ++local->triangles_drawn;
+}
+
+// draw_mesh (kBinned false: every triangle) and draw_binned_mesh (the triangles whose rows meet
+// the band; with the vertices bin_mesh kept when vertices is not null). A template, so that
+// draw_mesh's code carries none of the binned paths.
+template <bool kBinned>
 Status draw_mesh_rows(const Camera& camera, const FrameBand& band, const MeshView& mesh,
                       const DrawOptions& options, const TriangleRows* rows,
-                      FragmentShader shader, void* user, RasterStats* stats) {
+                      const BinnedVertex* vertices, FragmentShader shader, void* user,
+                      RasterStats* stats) {
     // ---- Check everything before drawing anything ----
     Mat4 normal_matrix;
-    SHITSUKAN_TRY(check_draw_inputs(camera, band, mesh, options, shader, &normal_matrix));
+    SHITSUKAN_TRY(check_draw_inputs(camera, band, mesh, options, shader, kBinned, &normal_matrix));
 
     const Mat4 mvp = camera.projection * (camera.view * options.model);
-    DrawContext ctx{{&mesh, &options.model, &normal_matrix}, &band, shader, user, 0, Fragment{}};
+    DrawContext ctx{{&mesh, &options.model, &normal_matrix}, &band, shader, user, options.cull,
+                    0, Fragment{}};
     RasterStats local;
     const int band_begin = band.y0, band_end = band.y0 + band.color.height;
     SourceTriangle src;  // one, reused: fetch_corners and prepare write what is read
-    ClipSpaceVertex corners[3];
 
-    for (int t = 0; t < mesh.triangle_count; ++t) {
-        if (rows != nullptr && (rows[t].begin >= rows[t].end || rows[t].begin >= band_end ||
-                                rows[t].end <= band_begin))
-            continue;  // binned away: it touches no row of this band
+    const int n = mesh.triangle_count;
+    for (int t = kBinned ? next_in_band(rows, 0, n, band_begin, band_end) : 0; t < n;
+         t = kBinned ? next_in_band(rows, t + 1, n, band_begin, band_end) : t + 1) {
+        if constexpr (kBinned) {
+            if (!in_range_indices(mesh, t))
+                return Status::error(StatusCode::invalid_argument,
+                                     "draw_binned_mesh: triangle %d: index out of range", t);
+        }
         ++local.triangles_in;
         src.ready = false;
-        if (!fetch_corners(mesh, options.model, mvp, t, &src, corners)) {
-            ++local.triangles_rejected;
-            continue;
+        if constexpr (kBinned) {
+            if (vertices != nullptr && draw_kept_triangle(ctx, &src, vertices, t, &local))
+                continue;
         }
-        ScreenVertex s[kMaxClipVertices];
-        int count = 0;
-        bool clipped = false, front = false;
-        Projected projected = clip_and_snap(camera, corners, s, &count, &clipped, &local);
-        if (projected == Projected::rejected) ++local.triangles_rejected;
-        if (projected != Projected::drawable) continue;
-        if (!decide_facing(clipped, corners, s, count, &front)) continue;
-        if ((options.cull == CullMode::back && !front) ||
-            (options.cull == CullMode::front && front))
-            continue;
-        // ---- 5. Walk each piece of the fan ----
-        bool drawn = false;
-        for (int k = 1; k + 1 < count; ++k)
-            drawn = raster_triangle(ctx, src, s[0], s[k], s[k + 1], front) || drawn;
-        if (drawn) ++local.triangles_drawn;
+        draw_triangle(ctx, &src, camera, mvp, t, &local);
     }
     add_stats(local, ctx.fragments, stats);
     return Status::success();
@@ -691,7 +881,7 @@ Status draw_mesh_rows(const Camera& camera, const FrameBand& band, const MeshVie
 }  // namespace
 
 Status bin_mesh(const Camera& camera, const MeshView& mesh, const DrawOptions& options,
-                TriangleRows* rows, int capacity) {
+                TriangleRows* rows, int capacity, BinnedVertex* vertices, int vertex_capacity) {
     SHITSUKAN_TRY(validate_camera(camera));
     SHITSUKAN_TRY(validate_mesh(mesh));
     Mat4 normal_matrix;
@@ -700,17 +890,34 @@ Status bin_mesh(const Camera& camera, const MeshView& mesh, const DrawOptions& o
         return Status::error(StatusCode::invalid_argument,
                              "bin_mesh: room for %d triangles' rows, the mesh has %d",
                              rows == nullptr ? 0 : capacity, mesh.triangle_count);
+    if (vertices != nullptr && vertex_capacity < mesh.vertex_count)
+        return Status::error(StatusCode::invalid_argument,
+                             "bin_mesh: room for %d vertices, the mesh has %d", vertex_capacity,
+                             mesh.vertex_count);
     const Mat4 mvp = camera.projection * (camera.view * options.model);
     ClipSpaceVertex corners[3];  // scratch, not zeroed per triangle
+    if (vertices == nullptr) {
+        for (int t = 0; t < mesh.triangle_count; ++t)
+            rows[t] = bin_triangle(camera, mesh, mvp, options.cull, t, corners);
+        return Status::success();
+    }
+    for (int i = 0; i < mesh.vertex_count; ++i)
+        bin_vertex(camera, mvp, mesh.positions[i], &vertices[i]);
     for (int t = 0; t < mesh.triangle_count; ++t)
-        rows[t] = bin_triangle(camera, mesh, mvp, options.cull, t, corners);
+        rows[t] = bin_kept_triangle(camera, mesh, mvp, options.cull, t, vertices, corners);
     return Status::success();
+}
+
+Status bin_mesh(const Camera& camera, const MeshView& mesh, const DrawOptions& options,
+                TriangleRows* rows, int capacity) {
+    return bin_mesh(camera, mesh, options, rows, capacity, nullptr, 0);
 }
 
 Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
                  const DrawOptions& options, FragmentShader shader, void* user,
                  RasterStats* stats) {
-    return draw_mesh_rows(camera, band, mesh, options, nullptr, shader, user, stats);
+    return draw_mesh_rows<false>(camera, band, mesh, options, nullptr, nullptr, shader, user,
+                                 stats);
 }
 
 Status draw_binned_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
@@ -721,7 +928,21 @@ Status draw_binned_mesh(const Camera& camera, const FrameBand& band, const MeshV
                              "draw_binned_mesh: rows for %d triangles, the mesh has %d (bin_mesh "
                              "fills them)",
                              rows == nullptr ? 0 : capacity, mesh.triangle_count);
-    return draw_mesh_rows(camera, band, mesh, options, rows, shader, user, stats);
+    return draw_mesh_rows<true>(camera, band, mesh, options, rows, nullptr, shader, user, stats);
+}
+
+Status draw_binned_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
+                        const DrawOptions& options, const TriangleRows* rows, int capacity,
+                        const BinnedVertex* vertices, int vertex_capacity, FragmentShader shader,
+                        void* user, RasterStats* stats) {
+    if (vertices == nullptr || vertex_capacity < mesh.vertex_count)
+        return Status::error(StatusCode::invalid_argument,
+                             "draw_binned_mesh: kept vertices for %d, the mesh has %d (bin_mesh "
+                             "fills them)",
+                             vertices == nullptr ? 0 : vertex_capacity, mesh.vertex_count);
+    if (rows == nullptr || capacity < mesh.triangle_count)
+        return draw_binned_mesh(camera, band, mesh, options, rows, capacity, shader, user, stats);
+    return draw_mesh_rows<true>(camera, band, mesh, options, rows, vertices, shader, user, stats);
 }
 
 }  // namespace shitsukan

@@ -113,6 +113,9 @@ void clear_band(const FrameBand& band, Rgb8 background);
 // matrix, the inverse transpose).
 Status validate_band(const Camera& camera, const FrameBand& band);
 Status validate_mesh(const MeshView& mesh);
+// validate_mesh without the indices (counts and arrays only): draw_binned_mesh runs it per band
+// and checks the indices of the triangles it is handed (bin_mesh checked them all).
+Status validate_mesh_arrays(const MeshView& mesh);
 Status validate_model(const Mat4& model, Mat4& normal_matrix);
 
 // Draws the mesh into the band. Shades only fragments that pass the depth test
@@ -152,6 +155,9 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
 // come from the same clip-space corners and snapping (a triangle that needs near-plane or
 // guard-band clipping keeps every row). The rows must come from bin_mesh with the same
 // camera, mesh and options. RasterStats: triangles_in counts the triangles handed to the band.
+// draw_binned_mesh checks the camera, band, model and the mesh's counts up front, and the
+// indices of each triangle it is handed before reading them (bin_mesh checked every index): a
+// mesh changed since with a bad index gives invalid_argument, possibly after part of the band.
 struct TriangleRows {
     std::uint16_t begin = 0, end = 0;  // frame rows [begin, end); empty: nothing to draw
 };
@@ -160,6 +166,27 @@ Status bin_mesh(const Camera& camera, const MeshView& mesh, const DrawOptions& o
 Status draw_binned_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
                         const DrawOptions& options, const TriangleRows* rows, int capacity,
                         FragmentShader shader, void* user, RasterStats* stats = nullptr);
+
+// With the vertices kept (20 bytes per vertex of caller memory more): bin_mesh transforms,
+// divides and snaps each vertex once (a vertex is shared by about six triangles) and keeps its
+// screen position; draw_binned_mesh then sets a triangle up from its vertices' kept positions
+// instead of its corners again (a triangle with a vertex that needs clipping or cannot be
+// mapped takes the general path). Same pixels and statistics as draw_mesh.
+//   BinnedVertex kept[kMaxVertices];
+//   s = bin_mesh(camera, mesh, opt, rows, kMaxTriangles, kept, kMaxVertices);
+//   s = draw_binned_mesh(camera, band, mesh, opt, rows, kMaxTriangles, kept, kMaxVertices, shader,
+//                        user);
+struct BinnedVertex {  // written by bin_mesh; read by draw_binned_mesh
+    std::int32_t x = 0, y = 0;  // snapped screen position (1/256 pixel), or "not kept"
+    float z = 0, inv_w = 0;     // depth and 1 / w_clip
+    std::uint32_t outcode = 0;  // the clip-space outcode
+};
+Status bin_mesh(const Camera& camera, const MeshView& mesh, const DrawOptions& options,
+                TriangleRows* rows, int capacity, BinnedVertex* vertices, int vertex_capacity);
+Status draw_binned_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
+                        const DrawOptions& options, const TriangleRows* rows, int capacity,
+                        const BinnedVertex* vertices, int vertex_capacity, FragmentShader shader,
+                        void* user, RasterStats* stats = nullptr);
 template <class F, class = decltype(std::declval<F&>()(std::declval<const Fragment&>()))>
 Status draw_binned_mesh(const Camera& camera, const FrameBand& band, const MeshView& mesh,
                         const DrawOptions& options, const TriangleRows* rows, int capacity,
