@@ -48,8 +48,8 @@ void check_same_stream(std::vector<unsigned char> data, int quality) {
     CHECK(a == b);
     if (data.empty()) return;  // stb writes no block at all then (header and Adler-32 only)
     int back_size = -1;
-    char* back = stbi_zlib_decode_malloc(reinterpret_cast<const char*>(a.data()), int(a.size()),
-                                         &back_size);
+    char* back =
+        stbi_zlib_decode_malloc(reinterpret_cast<const char*>(a.data()), int(a.size()), &back_size);
     REQUIRE(back != nullptr);
     CHECK(std::vector<unsigned char>(back, back + back_size) == data);
     std::free(back);
@@ -65,7 +65,8 @@ std::uint32_t next(std::uint32_t& state) {  // xorshift32
 }  // namespace
 
 TEST_CASE("fixed_huffman_zlib: stb's stream on short inputs, noise (stored blocks) and text") {
-    for (int n = 0; n <= 8; ++n) check_same_stream(std::vector<unsigned char>(std::size_t(n), 7), 8);
+    for (int n = 0; n <= 8; ++n)
+        check_same_stream(std::vector<unsigned char>(std::size_t(n), 7), 8);
     std::uint32_t s = 12345;
     std::vector<unsigned char> noise(100000);
     for (unsigned char& c : noise) c = static_cast<unsigned char>(next(s) >> 24);
@@ -73,7 +74,8 @@ TEST_CASE("fixed_huffman_zlib: stb's stream on short inputs, noise (stored block
     std::vector<unsigned char> text;
     const char* words[] = {"bark ", "crack ", "marble ", "wood ", "leather ", "wave "};
     while (text.size() < 50000)
-        for (const char* c = words[next(s) % 6]; *c; ++c) text.push_back(static_cast<unsigned char>(*c));
+        for (const char* c = words[next(s) % 6]; *c; ++c)
+            text.push_back(static_cast<unsigned char>(*c));
     for (int quality : {1, 5, 8, 16}) check_same_stream(text, quality);
 }
 
@@ -101,13 +103,15 @@ TEST_CASE("fixed_huffman_zlib: stb's stream on image rows (long runs, full bucke
     check_same_stream(far, 8);
 }
 
-TEST_CASE("fixed_huffman_zlib: stb's window edges (32767 back for a match, one less for the "
-          "lazy look at the next byte)") {
+TEST_CASE(
+    "fixed_huffman_zlib: stb's window edges (32767 back for a match, one less for the "
+    "lazy look at the next byte)") {
     // Zeros (compressible, so no stored blocks) with random bytes planted: they match nothing
     // but their planted copies.
     std::uint32_t s = 7;
     auto plant = [&](std::vector<unsigned char>& v, std::size_t at, int n) {
-        for (int k = 0; k < n; ++k) v[at + std::size_t(k)] = static_cast<unsigned char>(1 + next(s) % 255);
+        for (int k = 0; k < n; ++k)
+            v[at + std::size_t(k)] = static_cast<unsigned char>(1 + next(s) % 255);
     };
     for (int distance : {32766, 32767, 32768}) {  // a 12-byte repeat exactly that far back
         std::vector<unsigned char> v(40000, 0);

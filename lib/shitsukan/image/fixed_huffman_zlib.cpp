@@ -19,8 +19,8 @@ const int kLenBase[29] = {3,  4,  5,  6,  7,  8,  9,  10, 11,  13,  15,  17,  19
                           31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258};
 const int kLenExtra[29] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2,
                            2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
-const int kDistBase[30] = {1,    2,    3,    4,    5,    7,     9,     13,    17,  25,
-                           33,   49,   65,   97,   129,  193,   257,   385,   513, 769,
+const int kDistBase[30] = {1,    2,    3,    4,    5,    7,    9,    13,    17,    25,
+                           33,   49,   65,   97,   129,  193,  257,  385,   513,   769,
                            1025, 1537, 2049, 3073, 4097, 6145, 8193, 12289, 16385, 24577};
 const int kDistExtra[30] = {0, 0, 0, 0, 1, 1, 2, 2,  3,  3,  4,  4,  5,  5,  6,
                             6, 7, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12, 13, 13};
@@ -46,12 +46,17 @@ struct Tables {
     std::uint8_t distance_code[kWindow];
     Code distance[30];  // the 5-bit code, reversed; length with the extra bits
     Tables() {
-        for (int j = 0; j < 30; ++j) distance[j] = {reversed(std::uint32_t(j), 5), 5 + kDistExtra[j]};
+        for (int j = 0; j < 30; ++j)
+            distance[j] = {reversed(std::uint32_t(j), 5), 5 + kDistExtra[j]};
         for (int n = 0; n < 288; ++n) {
-            if (n <= 143) literal[n] = {reversed(0x30u + std::uint32_t(n), 8), 8};
-            else if (n <= 255) literal[n] = {reversed(0x190u + std::uint32_t(n - 144), 9), 9};
-            else if (n <= 279) literal[n] = {reversed(std::uint32_t(n - 256), 7), 7};
-            else literal[n] = {reversed(0xC0u + std::uint32_t(n - 280), 8), 8};
+            if (n <= 143)
+                literal[n] = {reversed(0x30u + std::uint32_t(n), 8), 8};
+            else if (n <= 255)
+                literal[n] = {reversed(0x190u + std::uint32_t(n - 144), 9), 9};
+            else if (n <= 279)
+                literal[n] = {reversed(std::uint32_t(n - 256), 7), 7};
+            else
+                literal[n] = {reversed(0xC0u + std::uint32_t(n - 280), 8), 8};
         }
         for (int len = 3, j = 0; len <= kMaxMatch; ++len) {
             while (j < 28 && len >= kLenBase[j + 1]) ++j;
@@ -114,7 +119,8 @@ inline int match_length(const unsigned char* a, const unsigned char* b, int limi
 
 // stb's hash of the three bytes at p, to a bucket.
 inline int bucket_of(const unsigned char* p) {
-    std::uint32_t h = std::uint32_t(p[0]) + (std::uint32_t(p[1]) << 8) + (std::uint32_t(p[2]) << 16);
+    std::uint32_t h =
+        std::uint32_t(p[0]) + (std::uint32_t(p[1]) << 8) + (std::uint32_t(p[2]) << 16);
     h ^= h << 3;
     h += h >> 5;
     h ^= h << 4;
@@ -144,8 +150,7 @@ struct Buckets {
 // The longest match for position i among its bucket's positions within the window (ties: the
 // newest), or -1 when none has 3 bytes; *best its length. A candidate must share the first
 // *best bytes to tie or win, so the byte at *best - 1 rules most out before a full compare.
-int longest_match(const unsigned char* data, int size, const Buckets& b, int h, int i,
-                  int* best) {
+int longest_match(const unsigned char* data, int size, const Buckets& b, int h, int i, int* best) {
     const unsigned char* cur = data + i;
     const int limit = size - i < kMaxMatch ? size - i : kMaxMatch;
     const int* l = b.list(h);
@@ -215,8 +220,7 @@ bool compress_block(const unsigned char* data, int size, int quality, BitSink& s
 
 }  // namespace
 
-unsigned char* fixed_huffman_zlib(const unsigned char* data, int size, int* out_size,
-                                  int quality) {
+unsigned char* fixed_huffman_zlib(const unsigned char* data, int size, int* out_size, int quality) {
     if (size < 0 || (size > 0 && data == nullptr) || out_size == nullptr) return nullptr;
     if (quality < 5) quality = 5;
     // At most 9 bits a byte in the block (a literal; a match costs less per byte), and stb's

@@ -5,9 +5,11 @@
 // Manual
 //   const unsigned char data[] = "a row, a row, a row of bytes";
 //   int size = 0;
-//   unsigned char* z = fixed_huffman_zlib(data, int(sizeof data), &size, 8);
-//   // ... z[0 .. size) is the zlib stream; nullptr = out of memory
+//   unsigned char* z = fixed_huffman_zlib(data, int(sizeof data), &size, 8);  // stb's quality 8
+//   if (z == nullptr) return Status::error(StatusCode::too_large, "out of memory");
+//   bool zlib_header = size > 6 && z[0] == 0x78;  // z[0 .. size): the zlib stream
 //   std::free(z);
+//   return zlib_header ? Status::success() : Status::error(StatusCode::io_error, "no stream");
 //
 // The stream (RFC 1950/1951): header 78 5E, one block with the fixed Huffman codes (BTYPE 1),
 // Adler-32; stored blocks instead when that would be longer. The matches are stb's: each
@@ -26,7 +28,6 @@ namespace shitsukan {
 // data[0 .. size) compressed as stbi_zlib_compress(data, size, out_size, quality) does, in a
 // buffer from std::malloc (the caller frees it); nullptr when out of memory or size < 0.
 // quality below 5 counts as 5, as in stb.
-unsigned char* fixed_huffman_zlib(const unsigned char* data, int size, int* out_size,
-                                  int quality);
+unsigned char* fixed_huffman_zlib(const unsigned char* data, int size, int* out_size, int quality);
 
 }  // namespace shitsukan
