@@ -60,7 +60,6 @@
 #include "shitsukan/image/pfm.hpp"
 #include "shitsukan/image/plot.hpp"
 #include "shitsukan/image/png16.hpp"
-#include "shitsukan/image/png_row_filters.hpp"
 #include "shitsukan/image/raster_canvas.hpp"
 #include "shitsukan/image/svg_canvas.hpp"
 

@@ -10,10 +10,8 @@
 // Failures (empty image, unwritable path, a failed write) come back as a Status with the path
 // and the reason in the message; nothing is silent. Files are written through
 // core/output_file.hpp: complete under their name, or not there (an old file is kept). Views with a stride are handled.
-// PNG: compressed as stb_image_write compresses it (the same bytes: its row filters and zlib
-// stream, computed by png_row_filters.hpp and fixed_huffman_zlib.hpp) when the library was
-// built with stb's header (compiled privately, no stbi_* symbol leaves the library);
-// otherwise by the library's own encoder
+// PNG: compressed by stb_image_write when the library was built with its header (compiled
+// privately, no stbi_* symbol leaves the library); otherwise by the library's own encoder
 // in stored (uncompressed) deflate blocks: same pixels, bigger files. png_compressed() says
 // which. Host side: PNG encoding allocates.
 #pragma once
