@@ -48,6 +48,7 @@
 #include "shitsukan/image/colormap.hpp"
 #include "shitsukan/image/deflate.hpp"
 #include "shitsukan/image/exr.hpp"
+#include "shitsukan/image/fixed_huffman_zlib.hpp"
 #include "shitsukan/image/float_convert.hpp"
 #include "shitsukan/image/font.hpp"
 #include "shitsukan/image/height_map.hpp"

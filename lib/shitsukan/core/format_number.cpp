@@ -455,6 +455,110 @@ void shortest_digits(Nat r, const Nat& s, Nat mplus, Nat mminus, bool even, Digi
     }
 }
 
+// The float m·2^e (24-bit m, e >= -149) scaled for free-format digits: r / s = v / 10^k
+// with 1 <= that and (r + m+) / s < 10 (<= with even), m+ and m- the gaps to the neighbouring
+// floats (halved, scaled like r). Done on 64-bit numbers where every step fits (typical
+// coordinates, about 1e-9 .. 1e9, with 10·s < 2^63 so the digits fit too): the same integers
+// as scaled_big, far faster; false where it does not fit.
+bool scaled_u64(std::uint64_t m, int e, bool even, bool unequal_gaps, std::uint64_t* r,
+                std::uint64_t* s, std::uint64_t* mplus, std::uint64_t* mminus, int* k) {
+    static const std::uint64_t pow10[20] = {1u,
+                                            10u,
+                                            100u,
+                                            1000u,
+                                            10000u,
+                                            100000u,
+                                            1000000u,
+                                            10000000u,
+                                            100000000u,
+                                            1000000000u,
+                                            10000000000u,
+                                            100000000000u,
+                                            1000000000000u,
+                                            10000000000000u,
+                                            100000000000000u,
+                                            1000000000000000u,
+                                            10000000000000000u,
+                                            100000000000000000u,
+                                            1000000000000000000u,
+                                            10000000000000000000u};
+    const std::uint64_t max = ~std::uint64_t(0);
+    const int g = unequal_gaps ? 2 : 1;
+    *r = m << g, *s = std::uint64_t(1) << g, *mplus = unequal_gaps ? 2u : 1u, *mminus = 1u;
+    if (e >= 0) {
+        if (e > 63 - 26) return false;  // r < 2^26 before the shift
+        *r <<= e, *mplus <<= e, *mminus <<= e;
+    } else {
+        if (-e > 63 - 3) return false;  // s <= 4 before the shift
+        *s <<= -e;
+    }
+    *k = floor_log10_pow2(bit_length(m) - 1 + e);
+    if (*k >= 0) {
+        if (*k > 19 || *s > max / pow10[*k]) return false;
+        *s *= pow10[*k];
+    } else {
+        if (-*k > 19 || *r > max / pow10[-*k]) return false;  // r is the largest of the three
+        *r *= pow10[-*k], *mplus *= pow10[-*k], *mminus *= pow10[-*k];
+    }
+    for (;;) {
+        if (*r > max - *mplus || *s > max / 10u) return false;
+        const std::uint64_t high = *r + *mplus, ten = *s * 10u;
+        if (!(high > ten || (high == ten && even))) break;
+        *s = ten;
+        ++*k;
+    }
+    return *s <= ((std::uint64_t(1) << 63) - 1u) / 10u;  // 10·s < 2^63: the digits' 64-bit path
+}
+
+// The same scaling on BigNat (any float), then the digits (on 64 bits where they fit).
+void scaled_big_digits(std::uint64_t m, int e, bool even, bool unequal_gaps, Digits& g) {
+    BigNat r, sden, mplus, mminus;
+    big_set(r, m);
+    big_set(sden, 1);
+    big_set(mplus, 1);
+    big_set(mminus, 1);
+    big_shift_left(r, unequal_gaps ? 2 : 1);
+    big_shift_left(sden, unequal_gaps ? 2 : 1);
+    if (unequal_gaps) big_shift_left(mplus, 1);
+    if (e >= 0) {
+        big_shift_left(r, e);
+        big_shift_left(mplus, e);
+        big_shift_left(mminus, e);
+    } else {
+        big_shift_left(sden, -e);
+    }
+    int k = floor_log10_pow2(bit_length(m) - 1 + e);
+    if (k >= 0) {
+        big_mul_pow10(sden, k);
+    } else {
+        big_mul_pow10(r, -k);
+        big_mul_pow10(mplus, -k);
+        big_mul_pow10(mminus, -k);
+    }
+    // Now r / sden = v / 10^k with 1 <= that; raise k until the high end is <= 1 * 10^(k+1)
+    // i.e. digits start at 10^k: want (r + m+) / sden < 10 (<= with even).
+    for (;;) {
+        BigNat high = r;
+        big_add(high, mplus);
+        BigNat ten = sden;
+        big_mul_small(ten, 10);
+        int c = big_compare(high, ten);
+        if (c > 0 || (c == 0 && even)) {
+            sden = ten;
+            ++k;
+        } else {
+            break;
+        }
+    }
+    g.exponent = k;
+    BigNat ten_s = sden;
+    big_mul_small(ten_s, 10);
+    if (ten_s.n <= 2 && (ten_s.n < 2 || ten_s.w[1] < 0x80000000u))
+        shortest_digits(to_u64(r), to_u64(sden), to_u64(mplus), to_u64(mminus), even, g);
+    else
+        shortest_digits(r, sden, mplus, mminus, even, g);
+}
+
 }  // namespace
 
 // Steele & White's free-format digits (as in Burger & Dybvig): generate digits of v until
@@ -487,52 +591,14 @@ int format_float_round_trip(char* out, int capacity, float value) {
         }
         bool even = (m & 1u) == 0;
         bool unequal_gaps = m == (1u << 23) && e > -149;  // the gap below is half the gap above
-        BigNat r, sden, mplus, mminus;
-        big_set(r, m);
-        big_set(sden, 1);
-        big_set(mplus, 1);
-        big_set(mminus, 1);
-        big_shift_left(r, unequal_gaps ? 2 : 1);
-        big_shift_left(sden, unequal_gaps ? 2 : 1);
-        if (unequal_gaps) big_shift_left(mplus, 1);
-        if (e >= 0) {
-            big_shift_left(r, e);
-            big_shift_left(mplus, e);
-            big_shift_left(mminus, e);
-        } else {
-            big_shift_left(sden, -e);
-        }
-        int k = floor_log10_pow2(bit_length(m) - 1 + e);
-        if (k >= 0) {
-            big_mul_pow10(sden, k);
-        } else {
-            big_mul_pow10(r, -k);
-            big_mul_pow10(mplus, -k);
-            big_mul_pow10(mminus, -k);
-        }
-        // Now r / sden = v / 10^k with 1 <= that; raise k until the high end is <= 1 * 10^(k+1)
-        // i.e. digits start at 10^k: want (r + m+) / sden < 10 (<= with even).
-        for (;;) {
-            BigNat high = r;
-            big_add(high, mplus);
-            BigNat ten = sden;
-            big_mul_small(ten, 10);
-            int c = big_compare(high, ten);
-            if (c > 0 || (c == 0 && even)) {
-                sden = ten;
-                ++k;
-            } else {
-                break;
-            }
-        }
-        g.exponent = k;
-        // Typical coordinates (about 1e-9 .. 1e9) fit 64 bits: the same digits, far faster.
-        BigNat ten_s = sden;
-        big_mul_small(ten_s, 10);
-        if (ten_s.n <= 2 && (ten_s.n < 2 || ten_s.w[1] < 0x80000000u))
-            shortest_digits(to_u64(r), to_u64(sden), to_u64(mplus), to_u64(mminus), even, g);
-        else
+        std::uint64_t r, sden, mplus, mminus;
+        int k = 0;
+        if (scaled_u64(m, e, even, unequal_gaps, &r, &sden, &mplus, &mminus, &k)) {
+            g.exponent = k;
             shortest_digits(r, sden, mplus, mminus, even, g);
+        } else {
+            scaled_big_digits(m, e, even, unequal_gaps, g);
+        }
     }
     // Chosen here: plain notation for 1e-5 <= |v| < 1e9 (no exponent in OBJ files for
     // ordinary coordinates), exponent notation outside, as %g prints it.

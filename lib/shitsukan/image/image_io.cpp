@@ -20,6 +20,11 @@
 #endif
 
 #ifdef SHITSUKAN_USE_STB_IMAGE_WRITE
+// stb's zlib stream comes from fixed_huffman_zlib (the same bytes in a fraction of the time),
+// handed to stb through its documented hook.
+#include "shitsukan/image/fixed_huffman_zlib.hpp"
+#define STBIW_ZLIB_COMPRESS(data, size, out_size, quality) \
+    ::shitsukan::fixed_huffman_zlib(data, size, out_size, quality)
 #define STB_IMAGE_WRITE_STATIC
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #if defined(__GNUC__)

@@ -47,12 +47,20 @@ std::uint32_t crc32(const std::uint8_t* data, std::size_t size) {
 }
 
 // RFC 1950 §8.2: s1 = 1 + sum of bytes, s2 = sum of the s1 values, both modulo 65521 (the
-// largest prime below 2^16); the value is s2·65536 + s1. Start with 1.
+// largest prime below 2^16); the value is s2·65536 + s1. Start with 1. The sums are reduced
+// once every 5552 bytes, the most that cannot overflow 32 bits (zlib's NMAX): the same value.
 std::uint32_t adler32_update(std::uint32_t adler, const std::uint8_t* data, std::size_t size) {
-    std::uint32_t s1 = adler & 0xFFFFu, s2 = adler >> 16;
-    for (std::size_t i = 0; i < size; ++i) {
-        s1 = (s1 + data[i]) % 65521u;
-        s2 = (s2 + s1) % 65521u;
+    std::uint32_t s1 = (adler & 0xFFFFu) % 65521u, s2 = (adler >> 16) % 65521u;
+    while (size > 0) {
+        const std::size_t n = size < 5552 ? size : 5552;
+        for (std::size_t i = 0; i < n; ++i) {
+            s1 += data[i];
+            s2 += s1;
+        }
+        s1 %= 65521u;
+        s2 %= 65521u;
+        data += n;
+        size -= n;
     }
     return (s2 << 16) | s1;
 }

@@ -85,7 +85,7 @@ struct ParentStep {
     int sign = -1;
 };
 
-inline ParentStep parent_step(int odd_axes, int i) {
+constexpr ParentStep parent_step(int odd_axes, int i) {
     int skip = i / 2, axis = 0;
     while (!((odd_axes >> axis) & 1) || skip-- > 0) ++axis;  // the (i/2)-th odd axis
     return ParentStep{axis, (i % 2) ? +1 : -1};

@@ -8,7 +8,41 @@
 
 namespace shitsukan {
 namespace {
-inline int grid_index(int a, int b, int c) { return a + 3 * b + 9 * c; }
+constexpr int grid_index(int a, int b, int c) { return a + 3 * b + 9 * c; }
+
+// The 19 new nodes of a 27-node block in the order subdivide makes them (the 12 edge
+// midpoints, the 6 face centres, the centre; each group in c, b, a order), with their
+// parents' grid positions in parent_step's order: worked out at compile time, so subdivide
+// reads and computes exactly what walking the 27 positions and testing each would.
+struct BlockStep {
+    int index, odd_count, a, b, c;
+    int parents[6];
+};
+struct BlockPlan {
+    BlockStep steps[19];
+};
+constexpr BlockPlan make_block_plan() {
+    BlockPlan plan{};
+    int s = 0;
+    for (int odd_count = 1; odd_count <= 3; ++odd_count)
+        for (int c = 0; c <= 2; ++c)
+            for (int b = 0; b <= 2; ++b)
+                for (int a = 0; a <= 2; ++a) {
+                    const int odd_axes = (a == 1) | ((b == 1) << 1) | ((c == 1) << 2);
+                    if ((a == 1) + (b == 1) + (c == 1) != odd_count) continue;
+                    BlockStep& step = plan.steps[s++];
+                    step.index = grid_index(a, b, c), step.odd_count = odd_count;
+                    step.a = a, step.b = b, step.c = c;
+                    for (int k = 0; k < 2 * odd_count; ++k) {
+                        const ParentStep p = parent_step(odd_axes, k);
+                        step.parents[k] = grid_index(a + (p.axis == 0 ? p.sign : 0),
+                                                     b + (p.axis == 1 ? p.sign : 0),
+                                                     c + (p.axis == 2 ? p.sign : 0));
+                    }
+                }
+    return plan;
+}
+constexpr BlockPlan kBlockPlan = make_block_plan();
 }  // namespace
 
 Status TypeIIILattice::init(const FractalParams& params) {
@@ -47,22 +81,13 @@ void TypeIIILattice::subdivide(int n, const float corners[8], std::int32_t x0, s
                 grid[grid_index(2 * i, 2 * j, 2 * k)] = corners[i + 2 * j + 4 * k];
     // Steps (1)-(3), eqs. (1), (3), (4): the 12 edge midpoints, the 6 face centres, the
     // centre. A grid position is an odd multiple of h on the axes where its index is 1; its
-    // parents (the parent rule of fractal_node.hpp) are one grid step away along those axes.
-    for (int odd_count = 1; odd_count <= 3; ++odd_count)
-        for (int c = 0; c <= 2; ++c)
-            for (int b = 0; b <= 2; ++b)
-                for (int a = 0; a <= 2; ++a) {
-                    const int odd_axes = (a == 1) | ((b == 1) << 1) | ((c == 1) << 2);
-                    if ((a == 1) + (b == 1) + (c == 1) != odd_count) continue;
-                    float parents[6];
-                    for (int k = 0; k < 2 * odd_count; ++k) {
-                        const ParentStep p = parent_step(odd_axes, k);
-                        parents[k] = grid[grid_index(a + (p.axis == 0 ? p.sign : 0),
-                                                     b + (p.axis == 1 ? p.sign : 0),
-                                                     c + (p.axis == 2 ? p.sign : 0))];
-                    }
-                    grid[grid_index(a, b, c)] = node_from_parents(odd_count, parents, g(a, b, c));
-                }
+    // parents (the parent rule of fractal_node.hpp) are one grid step away along those axes
+    // (kBlockPlan lists them).
+    for (const BlockStep& step : kBlockPlan.steps) {
+        float parents[6];
+        for (int k = 0; k < 2 * step.odd_count; ++k) parents[k] = grid[step.parents[k]];
+        grid[step.index] = node_from_parents(step.odd_count, parents, g(step.a, step.b, step.c));
+    }
     block.x0 = x0, block.y0 = y0, block.z0 = z0;
     ++subdivisions_;
 }
