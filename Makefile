@@ -132,13 +132,16 @@ bench: bench-deps
 	$(BUILD)/bench $(BENCH_ARGS)
 
 # docs/MEASUREMENTS.md generated from the bench's output (kept as docs/bench_output.txt) by
-# tools/bench_measurements.py; MEASUREMENTS_FROM=<saved output> skips running the bench.
+# tools/bench_measurements.py, with the CPU time of all figures (paper_figures' `bench:` line);
+# MEASUREMENTS_FROM=<saved output> skips running the bench.
 MEASUREMENTS_FROM ?=
 measurements: bench-deps
 	$(call ensure_packages,$(PY_REQUIRED))
 ifeq ($(MEASUREMENTS_FROM),)
 	@$(SUBMAKE) $(BUILD)/bench
 	$(BUILD)/bench $(BENCH_ARGS) > $(BUILD)/bench_output.txt
+	@$(SUBMAKE) $(BUILD)/paper_figures
+	$(BUILD)/paper_figures --jobs $(JOBS) | grep '^bench:' >> $(BUILD)/bench_output.txt
 	cp $(BUILD)/bench_output.txt docs/bench_output.txt
 	python3 tools/bench_measurements.py docs/bench_output.txt docs/MEASUREMENTS.md
 else
