@@ -2,7 +2,6 @@
 
 #include <cstdint>
 #include <cstdio>
-#include <vector>
 
 #include "shitsukan/core/output_file.hpp"
 #include "shitsukan/image/png16.hpp"
@@ -38,24 +37,6 @@
 #endif
 
 namespace shitsukan {
-
-namespace detail {
-bool zlib_compress(const std::uint8_t* data, std::size_t size, std::vector<std::uint8_t>* out) {
-#ifdef SHITSUKAN_USE_STB_IMAGE_WRITE
-    if (size > 0x7FFF0000u) return false;
-    int length = 0;
-    unsigned char* z = stbi_zlib_compress(const_cast<unsigned char*>(data), int(size), &length,
-                                          stbi_write_png_compression_level);
-    if (z == nullptr) return false;
-    out->assign(z, z + length);
-    STBIW_FREE(z);
-    return true;
-#else
-    (void)data, (void)size, (void)out;
-    return false;
-#endif
-}
-}  // namespace detail
 
 namespace {
 
