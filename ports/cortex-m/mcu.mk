@@ -85,8 +85,8 @@ MCU_LDS_rv32  := ports/riscv/virt.ld
 # RV32: the same, and the float add/multiply/divide (soft_single.hpp: 1.3 KB less flash, which
 # the marble firmware's goal needs; 5-12 % more instructions per lattice node and marble or wood
 # pixel, 13 % fewer per rasterized pixel: make bench-mcu).
-MCU_SOFT_rv32 := ports/riscv/soft_float_sub.cpp ports/riscv/soft_float_compare.cpp \
-                 ports/riscv/soft_double.cpp ports/riscv/soft_single.cpp
+MCU_SOFT_rv32 := ports/cortex-m/soft_float_sub.cpp ports/riscv/soft_float_compare.cpp \
+                 ports/cortex-m/soft_double.cpp ports/riscv/soft_single.cpp
 MCU_PORT_rv32 := ports/riscv/semihosting.cpp ports/riscv/startup.cpp $(MCU_SOFT_rv32)
 MCU_SIZE_rv32 := riscv64-unknown-elf-size
 MCU_BENCH_rv32 := -DBENCH_CORE='"RV32"'

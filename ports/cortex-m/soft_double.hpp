@@ -1,6 +1,6 @@
 // ports/cortex-m/soft_double.hpp — IEEE 754 binary64 addition, multiplication and division on
 // the bits, with round-to-nearest-even, subnormals, infinities and NaNs, for the FPU-less
-// Cortex-M0 (soft_double.cpp) and RV32IMAC (../riscv/soft_double.cpp).
+// Cortex-M0 and RV32IMAC (soft_double.cpp, for both).
 //
 // Why: libgcc's soft-fp double routines are 4.7 KB of flash on Armv6-M (__aeabi_dadd 1,724,
 // __aeabi_dmul 1,416, __aeabi_ddiv 1,592 bytes) and 4.0 KB on RV32, more than the library's
