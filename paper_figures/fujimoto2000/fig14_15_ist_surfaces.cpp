@@ -82,6 +82,15 @@ WrControlMesh fig15_mesh() {
     });
 }
 
+// The step-`level` sample positions (i + 1/2)/(B·N^level) of an axis inside [lo, hi] (and
+// inside (0, 1)): where measure_relief and plaid_share read the relief.
+std::vector<float> window_positions(const WrAxis& a, int level, float lo, float hi) {
+    std::vector<float> x;
+    for (float p : hierarchical_sample_positions(a.base_intervals, a.division, level))
+        if (p > 0.0f && p < 1.0f && p >= lo && p <= hi) x.push_back(p);
+    return x;
+}
+
 // The relief of a panel, measured on the heights its vertices carry: at the step-`level`
 // sample positions (i + 1/2)/(B·N^level) inside the window [u0, u1] x [v0, v1], the relief
 // r = H(F^-level(u), F^-level(v)) - H(u, v) (eq. 15's height minus the conventional one).
@@ -95,13 +104,8 @@ struct ReliefStats {
     double wrinkles = 0, roughness = 0, relief = 0;
 };
 ReliefStats measure_relief(const WrSurface& s, int level, float u0, float u1, float v0, float v1) {
-    auto positions = [&](const WrAxis& a, float lo, float hi) {
-        std::vector<float> x;
-        for (float p : hierarchical_sample_positions(a.base_intervals, a.division, level))
-            if (p > 0.0f && p < 1.0f && p >= lo && p <= hi) x.push_back(p);
-        return x;
-    };
-    const std::vector<float> us = positions(s.axis_u(), u0, u1), vs = positions(s.axis_v(), v0, v1);
+    const std::vector<float> us = window_positions(s.axis_u(), level, u0, u1),
+                             vs = window_positions(s.axis_v(), level, v0, v1);
     ReliefStats st;
     if (us.size() < 3 || vs.empty()) return st;
     std::vector<double> r(us.size() * vs.size()), h(r.size());
@@ -155,13 +159,8 @@ struct PlaidShare {
 };
 PlaidShare plaid_share(const WrSurface& s, int level, float u0, float u1, float v0, float v1) {
     const std::size_t m = std::size_t(s.axis_u().division) * std::size_t(s.axis_u().division);
-    auto positions = [&](const WrAxis& a, float lo, float hi) {
-        std::vector<float> x;
-        for (float p : hierarchical_sample_positions(a.base_intervals, a.division, level))
-            if (p > 0.0f && p < 1.0f && p >= lo && p <= hi) x.push_back(p);
-        return x;
-    };
-    const std::vector<float> us = positions(s.axis_u(), u0, u1), vs = positions(s.axis_v(), v0, v1);
+    const std::vector<float> us = window_positions(s.axis_u(), level, u0, u1),
+                             vs = window_positions(s.axis_v(), level, v0, v1);
     double additive = 0, crossing = 0, total = 0;
     std::vector<double> r(m * m), col(m), row(m);
     for (std::size_t j0 = 0; j0 + m <= vs.size(); j0 += m)
