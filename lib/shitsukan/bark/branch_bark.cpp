@@ -225,22 +225,30 @@ std::vector<std::uint8_t> cracked_springs(const BranchBark& bark, float t) {
 
 namespace {
 
+// Crack networks: the springs `joined` accepts, united when they share a triangle (a
+// union-find forest over the springs: find_network gives each one's network).
+template <class Joined>
+std::vector<int> join_through_triangles(const BranchBark& bark, Joined joined) {
+    std::vector<int> parent(bark.net.springs.size());
+    for (std::size_t s = 0; s < parent.size(); ++s) parent[s] = int(s);
+    for (const ConnectionTriangle& tri : bark.triangles)
+        for (int k = 0; k < 3; ++k)
+            for (int j = k + 1; j < 3; ++j) {
+                if (!joined(tri.spring[k]) || !joined(tri.spring[j])) continue;
+                const int a = find_network(parent, int(tri.spring[k]));
+                const int b = find_network(parent, int(tri.spring[j]));
+                if (a != b) parent[std::size_t(a)] = b;
+            }
+    return parent;
+}
+
 // Crossing paths: components of the crotch zone's cracked springs (joined through shared
 // triangles) that share a triangle with a cracked spring of each limb's zone.
 int crotch_crossing_paths(const BranchBark& bark, const std::vector<std::uint8_t>& cracked,
                           const std::vector<int>& zone) {
     const std::size_t m = cracked.size();
-    std::vector<int> parent(m), touches(m, 0);
-    for (std::size_t s = 0; s < m; ++s) parent[s] = int(s);
     auto in_crotch = [&](std::uint32_t s) { return cracked[s] && zone[s] == 0; };
-    for (const ConnectionTriangle& tri : bark.triangles)
-        for (int k = 0; k < 3; ++k)
-            for (int j = k + 1; j < 3; ++j)
-                if (in_crotch(tri.spring[k]) && in_crotch(tri.spring[j])) {
-                    const int a = find_network(parent, int(tri.spring[k]));
-                    const int b = find_network(parent, int(tri.spring[j]));
-                    if (a != b) parent[std::size_t(a)] = b;
-                }
+    std::vector<int> parent = join_through_triangles(bark, in_crotch), touches(m, 0);
     for (const ConnectionTriangle& tri : bark.triangles)  // the limbs' cracks each path meets
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t s = tri.spring[k];
@@ -271,9 +279,8 @@ Status crotch_crack_stats(const BranchBark& bark, float t, float depth, CrotchCr
     for (std::size_t i = 0; i < x.size(); ++i)
         area[limb_zone(bark.params.shape, x[i], depth)] += bark.node_area[i];
     const std::vector<std::uint8_t> cracked = cracked_springs(bark, t);
-    std::vector<int> parent(springs.size()), zone(springs.size());
+    std::vector<int> zone(springs.size());
     for (std::size_t s = 0; s < springs.size(); ++s) {
-        parent[s] = int(s);
         zone[s] = limb_zone(bark.params.shape, (x[springs[s].i] + x[springs[s].j]) * 0.5f, depth);
         if (!intact_at(springs[s], t)) broken[zone[s]] += 1;
         const double g = double(springs[s].growth_rate) * bark.params.growth.duration;
@@ -283,14 +290,8 @@ Status crotch_crack_stats(const BranchBark& bark, float t, float depth, CrotchCr
             crotch_growth[k] += g, crotch_edges[k] += 1;
         }
     }
-    for (const ConnectionTriangle& tri : bark.triangles)  // networks: share a triangle
-        for (int k = 0; k < 3; ++k)
-            for (int j = k + 1; j < 3; ++j) {
-                if (!cracked[tri.spring[k]] || !cracked[tri.spring[j]]) continue;
-                const int a = find_network(parent, int(tri.spring[k]));
-                const int b = find_network(parent, int(tri.spring[j]));
-                if (a != b) parent[std::size_t(a)] = b;
-            }
+    std::vector<int> parent =
+        join_through_triangles(bark, [&](std::uint32_t s) { return cracked[s] != 0; });
     std::vector<int> mask(springs.size(), 0), count(springs.size(), 0);
     for (std::size_t s = 0; s < springs.size(); ++s) {
         if (!cracked[s]) continue;
