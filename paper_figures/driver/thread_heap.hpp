@@ -3,7 +3,7 @@
 //
 //   const long before = shitsukan::figures::thread_heap_bytes();
 //   std::vector<int> v(1000);
-//   const long grown = figures::thread_heap_bytes() - before;  // >= 4000 where counted
+//   const long grown = shitsukan::figures::thread_heap_bytes() - before;  // >= 4000 where counted
 //
 // The driver runs figures on several threads at once, so a process-wide figure (glibc's
 // mallinfo2) moves with the other jobs' allocations; this counts only what the calling thread
