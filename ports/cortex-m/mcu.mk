@@ -87,7 +87,7 @@ MCU_LDS_rv32  := ports/riscv/virt.ld
 # pixel, 13 % fewer per rasterized pixel: make bench-mcu).
 MCU_SOFT_rv32 := ports/cortex-m/soft_float_sub.cpp ports/riscv/soft_float_compare.cpp \
                  ports/cortex-m/soft_double.cpp ports/riscv/soft_single.cpp
-MCU_PORT_rv32 := ports/riscv/semihosting.cpp ports/riscv/startup.cpp $(MCU_SOFT_rv32)
+MCU_PORT_rv32 := ports/cortex-m/semihosting.cpp ports/riscv/startup.cpp $(MCU_SOFT_rv32)
 MCU_SIZE_rv32 := riscv64-unknown-elf-size
 MCU_BENCH_rv32 := -DBENCH_CORE='"RV32"'
 

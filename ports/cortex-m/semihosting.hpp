@@ -1,6 +1,7 @@
-// ports/cortex-m/semihosting.hpp — Arm semihosting (bkpt 0xAB): text to the debugger's or
-// QEMU's console and the program's exit, with no UART driver. A real board without a debugger
-// attached replaces these two functions (e.g. with a UART write and a reset loop).
+// ports/cortex-m/semihosting.hpp — semihosting (Arm: bkpt 0xAB; RISC-V: ebreak): text to
+// the debugger's or QEMU's console and the program's exit, with no UART driver. A real board
+// without a debugger attached replaces these two functions (e.g. with a UART write and a
+// reset loop).
 #pragma once
 
 namespace shitsukan::port {
