@@ -16,22 +16,7 @@ const { spawn } = require('child_process');
 const fs = require('fs');
 const os = require('os');
 const path = require('path');
-
-function parse(argv) {
-  const o = { url: null, wait: 'true', timeout: 120, screenshot: null, size: '1280x720', evaluate: null };
-  for (let i = 0; i < argv.length; ++i) {
-    const a = argv[i];
-    if (a === '--wait') o.wait = argv[++i];
-    else if (a === '--timeout') o.timeout = Number(argv[++i]);
-    else if (a === '--screenshot') o.screenshot = argv[++i];
-    else if (a === '--size') o.size = argv[++i];
-    else if (a === '--eval') o.evaluate = argv[++i];
-    else if (!o.url) o.url = a;
-    else throw new Error('unexpected argument ' + a);
-  }
-  if (!o.url) throw new Error('usage: bidi.js URL [--wait EXPR] [--eval EXPR] [--timeout S] [--screenshot F] [--size WxH]');
-  return o;
-}
+const { parseArgs, waitAndReport } = require('./driver_common.js');
 
 // Starts Firefox on a free port (0: Firefox picks one and names it on stderr).
 function startFirefox(profile, width, height) {
@@ -52,7 +37,7 @@ function startFirefox(profile, width, height) {
 }
 
 async function main() {
-  const o = parse(process.argv.slice(2));
+  const o = parseArgs(process.argv.slice(2), 'bidi.js', '1280x720');
   const [width, height] = o.size.split('x').map(Number);
   const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'sk-firefox-'));
   let browser = null, errors = 0;
@@ -97,30 +82,11 @@ async function main() {
       if (r.type !== 'success') return undefined;
       return r.result.value;
     };
-    const deadline = Date.now() + o.timeout * 1000;
-    let value;
-    for (;;) {
-      value = await evaluate(o.wait);
-      if (value) break;
-      if (errors) {
-        process.stderr.write('bidi: the page logged an error; stopped waiting for: ' + o.wait + '\n');
-        return finish(3);
-      }
-      if (Date.now() > deadline) {
-        process.stderr.write('bidi: timed out after ' + o.timeout + ' s waiting for: ' + o.wait + '\n');
-        process.stderr.write('bidi: page text: ' + (await evaluate('document.body ? document.body.innerText.slice(0, 2000) : ""')) + '\n');
-        return finish(4);
-      }
-      await new Promise((r) => setTimeout(r, 100));
-    }
-    if (o.evaluate) value = await evaluate(o.evaluate);
-    process.stdout.write((typeof value === 'string' ? value : JSON.stringify(value)) + '\n');
-    if (o.screenshot) {
-      const shot = await send('browsingContext.captureScreenshot', { context });
-      fs.writeFileSync(o.screenshot, Buffer.from(shot.data, 'base64'));
-    }
-    await new Promise((r) => setTimeout(r, 200));  // late console messages
-    return finish(errors ? 3 : 0);
+    return finish(await waitAndReport('bidi', o, {
+      evaluate,
+      screenshot: async () => (await send('browsingContext.captureScreenshot', { context })).data,
+      errors: () => errors,
+    }));
   } catch (e) {
     process.stderr.write('bidi: ' + e.message + '\n');
     return finish(1);

@@ -16,25 +16,10 @@ const { spawn } = require('child_process');
 const fs = require('fs');
 const os = require('os');
 const path = require('path');
-
-function parse(argv) {
-  const o = { url: null, wait: 'true', timeout: 120, screenshot: null, size: '1280x900', evaluate: null };
-  for (let i = 0; i < argv.length; ++i) {
-    const a = argv[i];
-    if (a === '--wait') o.wait = argv[++i];
-    else if (a === '--timeout') o.timeout = Number(argv[++i]);
-    else if (a === '--screenshot') o.screenshot = argv[++i];
-    else if (a === '--size') o.size = argv[++i];
-    else if (a === '--eval') o.evaluate = argv[++i];
-    else if (!o.url) o.url = a;
-    else throw new Error('unexpected argument ' + a);
-  }
-  if (!o.url) throw new Error('usage: cdp.js URL [--wait EXPR] [--eval EXPR] [--timeout S] [--screenshot F] [--size WxH]');
-  return o;
-}
+const { parseArgs, waitAndReport } = require('./driver_common.js');
 
 async function main() {
-  const o = parse(process.argv.slice(2));
+  const o = parseArgs(process.argv.slice(2), 'cdp.js', '1280x900');
   const [width, height] = o.size.split('x').map(Number);
   const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'sk-chromium-'));
   const browser = spawn(process.env.CHROMIUM || 'chromium',
@@ -96,31 +81,11 @@ async function main() {
       if (r.exceptionDetails) return undefined;
       return r.result.value;
     };
-    const deadline = Date.now() + o.timeout * 1000;
-    let value;
-    for (;;) {
-      value = await evaluate(o.wait);
-      if (value) break;
-      if (errors) {  // an uncaught exception or console error: no point waiting longer
-        process.stderr.write('cdp: the page logged an error; stopped waiting for: ' + o.wait + '\n');
-        return finish(3);
-      }
-      if (Date.now() > deadline) {
-        process.stderr.write('cdp: timed out after ' + o.timeout + ' s waiting for: ' + o.wait + '\n');
-        const body = await evaluate('document.body ? document.body.innerText.slice(0, 2000) : ""');
-        process.stderr.write('cdp: page text: ' + body + '\n');
-        return finish(4);
-      }
-      await new Promise((r) => setTimeout(r, 100));
-    }
-    if (o.evaluate) value = await evaluate(o.evaluate);
-    process.stdout.write((typeof value === 'string' ? value : JSON.stringify(value)) + '\n');
-    if (o.screenshot) {
-      const shot = await send('Page.captureScreenshot', { format: 'png' }, sessionId);
-      fs.writeFileSync(o.screenshot, Buffer.from(shot.data, 'base64'));
-    }
-    await new Promise((r) => setTimeout(r, 200));  // late console messages
-    return finish(errors ? 3 : 0);
+    return finish(await waitAndReport('cdp', o, {
+      evaluate,
+      screenshot: async () => (await send('Page.captureScreenshot', { format: 'png' }, sessionId)).data,
+      errors: () => errors,
+    }));
   } catch (e) {
     process.stderr.write('cdp: ' + e.message + '\n');
     return finish(1);
