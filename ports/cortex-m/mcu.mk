@@ -69,8 +69,8 @@ MCU_LDS_m0  := ports/cortex-m/microbit.ld ports/cortex-m/sections.ld
 # The M0's soft-float run-time pieces in place of libgcc's larger ones (same results; see each
 # file): subtraction, comparisons, double add/multiply/divide, signed division. Not the float
 # add/multiply/divide of soft_single.hpp: 1.4 KB less flash, but 25 % more instructions per
-# lattice node and marble pixel on the M0 (make bench-mcu), and the marble firmware meets its
-# goal without them.
+# lattice node and marble pixel on the M0 (make bench-mcu), and the lattice and marble
+# firmwares meet their goals without them.
 MCU_SOFT_m0 := ports/cortex-m/soft_float_sub.cpp ports/cortex-m/soft_float_compare.cpp \
                ports/cortex-m/soft_double.cpp ports/cortex-m/signed_divide.cpp
 MCU_PORT_m0 := $(MCU_ARM_PORT) $(MCU_SOFT_m0)

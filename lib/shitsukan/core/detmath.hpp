@@ -8,7 +8,7 @@
 //   float ef = det_expf_fast(-2.0f), lf = det_logf_fast(3.0f), sf = det_sinf_fast(0.5f);
 //                              // float arithmetic only (no software double on a Cortex-M4F)
 //   double d = det_exp(0.25), g = det_log(10.0), sn = det_sin(0.1), cs = det_cos(0.1);
-//   constexpr double e = det_exp_constexpr(-0.9);   // det_exp(-0.9)'s bits, at compile time
+//   constexpr double ec = det_exp_constexpr(-0.9);  // det_exp(-0.9)'s bits, at compile time
 //   float h = det_sin(0.5f);   // det_sin, det_cos, det_tan, det_acos, det_asin, det_atan,
 //                              // det_atan2, det_pow: float and double overloads, like
 //                              // std::sin & co. (the float ones are the ...f functions)
