@@ -122,6 +122,7 @@ constexpr double det_exp_constexpr(double x) {
         x, [](double v) { return detail::exact_floor(v); },
         [](double s, int k) { return detail::exact_scale_by_pow2(s, k); });
 }
+
 double det_sin(double x);
 double det_cos(double x);
 double det_tan(double x);

@@ -75,7 +75,7 @@ float level_amplitude(int n, float beta);
 // `constexpr LevelAmplitudes amps = level_amplitudes(beta);` holds level_amplitude(n, beta)'s
 // bits (det_exp_constexpr: det_exp's steps; tests/test_solid_lattice.cpp compares them), so
 // a lattice given them (TypeIIILattice::init(params, amps)) links no double arithmetic: on a
-// soft-float microcontroller 2.6-3.1 KB of flash (ports/PORTING.md). Call it in a constant
+// soft-float microcontroller 2.9-3.6 KB of flash (ports/PORTING.md). Call it in a constant
 // expression only (detmath.hpp's det_exp_constexpr says why).
 struct LevelAmplitudes {
     float beta = -1.0f;                  // the beta they are for (-1: none, so none accepts them)
