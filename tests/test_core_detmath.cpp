@@ -7,7 +7,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <ios>
 #include <initializer_list>
+#include <limits>
 
 #include "shitsukan/core/detmath.hpp"
 #include "shitsukan/core/prng.hpp"
@@ -283,4 +285,55 @@ TEST_CASE("detmath float-arithmetic digest: fixed bits at every optimisation lev
         add(det_sinf_fast(x * 37.0f));
     }
     CHECK(digest.h == 0x2c5acc37dd3d0b04ull);  // ports/cortex-m transcript line "detmath fast"
+}
+
+// det_exp_constexpr: det_exp's steps evaluated by the compiler. Arguments over det_exp's whole
+// domain, with its edges: results that are subnormal doubles (x below -708, where ldexp
+// rounds: det_exp_constexpr's own scaling must round once, as ldexp does), the cut-offs at
+// -745 and 709, zeros, infinities; every one computed at compile time and compared bit for
+// bit with det_exp at run time.
+namespace {
+constexpr int kExpSamples = 6000;
+struct ExpSamples {
+    double x[kExpSamples] = {}, e[kExpSamples] = {};
+};
+constexpr ExpSamples make_exp_samples() {
+    ExpSamples s;
+    for (int i = 0; i < kExpSamples; ++i) {
+        double x = 0.0;
+        if (i < 4000)  // the whole domain, at irregular steps
+            x = -746.0 + double(i) * (1456.0 / 4000.0) + double(i % 7) * 1.0e-3;
+        else if (i < 5500)  // the subnormal results, densely
+            x = -745.0 + double(i - 4000) * (37.0 / 1500.0) + double(i % 11) * 1.0e-9;
+        else  // near 0, where r is everything
+            x = double(i - 5750) * 1.0e-3 + double(i % 3) * 1.0e-17;
+        s.x[i] = x;
+    }
+    const double edges[] = {0.0, -0.0, -745.0, -744.99, 709.0, 708.99, -708.4, -709.1,
+                            std::numeric_limits<double>::infinity(),
+                            -std::numeric_limits<double>::infinity()};
+    for (int i = 0; i < int(sizeof edges / sizeof edges[0]); ++i) s.x[i] = edges[i];
+    for (int i = 0; i < kExpSamples; ++i) s.e[i] = det_exp_constexpr(s.x[i]);
+    return s;
+}
+constexpr ExpSamples kExpAtCompileTime = make_exp_samples();
+static_assert(det_exp_constexpr(0.0) == 1.0, "e^0 = 1");
+}  // namespace
+
+TEST_CASE("det_exp_constexpr: det_exp's bits, computed by the compiler, over det_exp's domain") {
+    int differ = 0, subnormal = 0;
+    for (int i = 0; i < kExpSamples; ++i) {
+        const double x = kExpAtCompileTime.x[i], at_run_time = det_exp(x);
+        std::uint64_t a, b;
+        std::memcpy(&a, &kExpAtCompileTime.e[i], 8);
+        std::memcpy(&b, &at_run_time, 8);
+        if (a != b && ++differ <= 5)
+            MESSAGE("x = " << x << ": compile time bits " << std::hex << a << ", run time "
+                           << b);
+        if (at_run_time > 0.0 && at_run_time < 0x1p-1022) ++subnormal;
+    }
+    CHECK(differ == 0);
+    CHECK(subnormal > 1000);  // the rounding ldexp does was really exercised
+    const double nan = det_exp_constexpr(std::numeric_limits<double>::quiet_NaN());
+    CHECK(nan != nan);
 }

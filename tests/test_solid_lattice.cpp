@@ -3,7 +3,9 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <ios>
 #include <string>
 #include <vector>
 
@@ -488,4 +490,69 @@ TEST_CASE("fractal lattices refuse corners beyond kMaxFractalCorner, build finit
     CHECK(validate_fractal_params(p, 12).code() == StatusCode::invalid_argument);
     p.corners[5] = -kMaxFractalCorner;
     CHECK(validate_fractal_params(p, 12).ok());
+}
+
+// level_amplitudes: eq. (2) computed by the compiler (det_exp_constexpr), for a lattice on a
+// device that should link no double arithmetic. Over many betas (the presets' among them,
+// steps from 0 to 40, and betas whose deepest levels fall below the smallest float and
+// double) every level's float must be level_amplitude's at run time, bit for bit.
+namespace {
+constexpr int kBetaCount = 420;
+struct AmplitudeSamples {
+    LevelAmplitudes a[kBetaCount];
+};
+constexpr AmplitudeSamples make_amplitude_samples() {
+    AmplitudeSamples s{};
+    for (int i = 0; i < kBetaCount; ++i) {
+        float beta = float(i) * 0.0953f + float(i % 5) * 1.0e-5f;  // 0 .. 40
+        if (i == 0) beta = kOkada1987Beta;
+        if (i == 1) beta = FractalParams{}.beta;
+        if (i == 2) beta = 0.0f;
+        if (i == 3) beta = 30.85f;  // level 24 at e^-709.6: a subnormal double
+        if (i == 4) beta = 1.0e30f;  // every level past the first: 0
+        s.a[i] = level_amplitudes(beta);
+    }
+    return s;
+}
+constexpr AmplitudeSamples kAmplitudes = make_amplitude_samples();
+}  // namespace
+
+TEST_CASE("level_amplitudes: eq. (2) at compile time, level_amplitude's bits for every beta") {
+    int differ = 0;
+    for (const LevelAmplitudes& a : kAmplitudes.a) {
+        for (int n = 1; n <= kTypeIIIMaxDepth; ++n) {
+            const float run = level_amplitude(n, a.beta);
+            std::uint32_t x, y;
+            std::memcpy(&x, &a.v[n], 4);
+            std::memcpy(&y, &run, 4);
+            if (x != y && ++differ <= 5)
+                MESSAGE("beta " << a.beta << " level " << n << ": compile time bits " << std::hex
+                                << x << ", run time " << y);
+        }
+    }
+    CHECK(differ == 0);
+    CHECK(kOkada1987Amplitudes.beta == kOkada1987Beta);
+    for (int n = 1; n <= kTypeIIIMaxDepth; ++n)
+        CHECK(kOkada1987Amplitudes.v[n] == level_amplitude(n, kOkada1987Beta));
+    static_assert(level_amplitudes(0.5f).v[1] == 1.0f, "L^(1) = 1 (eq. (2)'s closed form)");
+}
+
+TEST_CASE("Type III with amplitudes computed at compile time: the same lattice") {
+    const FractalParams p = okada1987_lattice_params();
+    TypeIIILattice at_run_time, precomputed;
+    REQUIRE(at_run_time.init(p).ok());
+    REQUIRE(precomputed.init(p, kOkada1987Amplitudes).ok());
+    for (int i = 0; i < 2000; ++i) {
+        const Vec3 q{float(i % 61) + 0.3f, float((i * 7) % 64) + 0.6f, float((i * 13) % 64)};
+        const float a = at_run_time.turbulence(q), b = precomputed.turbulence(q);
+        REQUIRE(std::memcmp(&a, &b, 4) == 0);
+    }
+    // Amplitudes for another beta are refused, naming both.
+    FractalParams other = p;
+    other.beta = 0.5f;
+    const Status s = precomputed.init(other, kOkada1987Amplitudes);
+    CHECK(s.code() == StatusCode::invalid_argument);
+    CHECK(std::string(s.message()) ==
+          "Type III lattice: the amplitudes are for beta 0.9, the parameters' beta is 0.5");
+    CHECK(precomputed.init(p, LevelAmplitudes{}).code() == StatusCode::invalid_argument);
 }

@@ -29,6 +29,8 @@ firmwares() {
             m0) name="Cortex-M0, soft-float, -Os, newlib-nano"; size_tool=arm-none-eabi-size ;;
             rv32) name="RV32IMAC, soft-float, -Os, picolibc"; size_tool=riscv64-unknown-elf-size ;;
         esac
+        # mcu.mk's MCU_FP_FLAGS: every Status checked, none printed (core/status.hpp)
+        name="$name, Status without arguments"
         for variant in lattice marble; do
             elf="$dir/$core-$variant.elf"
             out=$(bash "$here/qemu_run.sh" "$core" "$elf") || { echo "footprint-mcu: $core $variant failed: $out"; fail=1; continue; }

@@ -1,8 +1,9 @@
 // ports/cortex-m/footprint_main.cpp — the two firmwares of the footprint goals, built by
 // `make footprint-mcu` for the Cortex-M4F and run under QEMU (so the numbers are of programs
 // that work):
-//   FOOTPRINT_LATTICE   a Type III lattice (okada1987's R = 6, no table) and D(P) at 4096
-//                       points: the digest of the values
+//   FOOTPRINT_LATTICE   a Type III lattice (okada1987's R = 6, no table, eq. (2)'s
+//                       amplitudes computed at compile time) and D(P) at 4096 points: the
+//                       digest of the values
 //   FOOTPRINT_MARBLE    okada1987's marble cube (fig. 10a's scene and shader maths) at
 //                       128 x 128 in 8-row bands, D(P) from the Type III lattice (no 1.1 MB
 //                       table): the digest of the frame
@@ -104,7 +105,9 @@ struct TypeIIIMarbleShader {
 
 int main() {
     paint_stack();
-    if (!g_lattice.init(okada1987_lattice_params())) return 1;
+    // eq. (2)'s amplitudes computed by the compiler for the preset's beta: no double
+    // arithmetic on the device (the same floats as level_amplitude's at run time)
+    if (!g_lattice.init(okada1987_lattice_params(), kOkada1987Amplitudes)) return 1;
     Fnv h;
 #if defined(FOOTPRINT_LATTICE)
     for (int i = 0; i < 4096; ++i) {

@@ -7,12 +7,11 @@
 namespace shitsukan {
 
 namespace {
-constexpr double kLn2Hi = 6.93147180369123816490e-01;  // ln 2 split in two (fdlibm), so
-constexpr double kLn2Lo = 1.90821492927058770002e-10;  // e·ln2 is exact in the high part
+using detail::kLn2Hi;  // ln 2 split in two (detmath.hpp)
+using detail::kLn2Lo;
 
 // Series coefficients, computed by the compiler (IEEE double, the same on every host).
 constexpr int kLogTerms = 12;  // 1/1, 1/3, ..., 1/23
-constexpr int kExpTerms = 14;  // 1/0!, 1/1!, ..., 1/13!
 
 struct Coefficients {
     double v[16];
@@ -24,20 +23,8 @@ constexpr Coefficients inverse_odd() {
     return c;
 }
 
-constexpr Coefficients inverse_factorial() {
-    Coefficients c{};
-    double f = 1.0;
-    for (int n = 0; n < kExpTerms; ++n) {
-        if (n > 0) f *= double(n);  // n! is exact in double up to 22!
-        c.v[n] = 1.0 / f;
-    }
-    return c;
-}
-
 constexpr Coefficients kInvOddTable = inverse_odd();
-constexpr Coefficients kInvFactorialTable = inverse_factorial();
 constexpr const double* kInvOdd = kInvOddTable.v;
-constexpr const double* kInvFactorial = kInvFactorialTable.v;
 }  // namespace
 
 double det_log(double x) {
@@ -61,18 +48,10 @@ double det_log(double x) {
 }
 
 double det_exp(double x) {
-    if (std::isnan(x)) return x;
-    if (x > 709.0) return HUGE_VAL;
-    if (x < -745.0) return 0.0;
-    // x = k·ln2 + r, |r| <= ln2/2; e^x = 2^k · e^r, e^r by its Taylor series.
-    double kd = std::floor(x / (kLn2Hi + kLn2Lo) + 0.5);
-    int k = int(kd);
-    double r = (x - kd * kLn2Hi) - kd * kLn2Lo;
-    // e^r = sum r^n/n!, n = 0..13, by Horner with compile-time 1/n!: for |r| <= ln2/2 the first
-    // omitted term r^14/14! is < 5e-18, below half an ulp.
-    double sum = kInvFactorial[kExpTerms - 1];
-    for (int n = kExpTerms - 2; n >= 0; --n) sum = sum * r + kInvFactorial[n];
-    return std::ldexp(sum, k);
+    // detmath.hpp's exp_steps with the C library's floor and ldexp (both exact or correctly
+    // rounded: det_exp_constexpr's own give the same bits).
+    return detail::exp_steps(
+        x, [](double v) { return std::floor(v); }, [](double s, int k) { return std::ldexp(s, k); });
 }
 
 // ---- float functions: evaluated in double from exact reductions, rounded once to float ----

@@ -8,6 +8,7 @@
 //   float ef = det_expf_fast(-2.0f), lf = det_logf_fast(3.0f), sf = det_sinf_fast(0.5f);
 //                              // float arithmetic only (no software double on a Cortex-M4F)
 //   double d = det_exp(0.25), g = det_log(10.0), sn = det_sin(0.1), cs = det_cos(0.1);
+//   constexpr double ec = det_exp_constexpr(-0.9);  // det_exp(-0.9)'s bits, at compile time
 //   float h = det_sin(0.5f);   // det_sin, det_cos, det_tan, det_acos, det_asin, det_atan,
 //                              // det_atan2, det_pow: float and double overloads, like
 //                              // std::sin & co. (the float ones are the ...f functions)
@@ -34,13 +35,94 @@
 // Domains and special values follow C99 Annex F (NaN in, NaN out; sin(+-inf) = NaN;
 // acos/asin outside [-1, 1] = NaN; pow's zeros, infinities, negative bases with integer y).
 // Cost: double arithmetic (software on a single-precision FPU such as the Cortex-M4F).
+// det_exp_constexpr: det_exp as a constant expression (below), for values known when the
+// program is built: no double arithmetic is linked for them.
 // small-device: yes (no allocation)
 #pragma once
+
+#include <limits>
 
 namespace shitsukan {
 
 double det_log(double x);  // natural log, x > 0 (NaN for x < 0 or NaN, -inf for 0)
 double det_exp(double x);  // e^x (0 below -745, +inf above 709)
+
+namespace detail {
+constexpr double kLn2Hi = 6.93147180369123816490e-01;  // ln 2 split in two (fdlibm), so
+constexpr double kLn2Lo = 1.90821492927058770002e-10;  // k·ln2 is exact in the high part
+constexpr int kExpTerms = 14;                          // 1/0!, 1/1!, ..., 1/13!
+
+struct ExpCoefficients {
+    double v[kExpTerms];
+};
+// Computed by the compiler (IEEE double, the same on every host).
+constexpr ExpCoefficients inverse_factorials() {
+    ExpCoefficients c{};
+    double f = 1.0;
+    for (int n = 0; n < kExpTerms; ++n) {
+        if (n > 0) f *= double(n);  // n! is exact in double up to 22!
+        c.v[n] = 1.0 / f;
+    }
+    return c;
+}
+inline constexpr ExpCoefficients kInverseFactorials = inverse_factorials();
+
+// det_exp's steps, given a floor and a scaling s·2^k: det_exp passes std::floor and
+// std::ldexp, det_exp_constexpr its own below. Both pairs are exact (floor) or correctly
+// rounded (ldexp: one rounding), and every other step is one IEEE operation in the same
+// order, so both give the same bits.
+template <class Floor, class ScaleByPow2>
+constexpr double exp_steps(double x, Floor floor_of, ScaleByPow2 scale) {
+    if (x != x) return x;  // NaN
+    if (x > 709.0) return std::numeric_limits<double>::infinity();
+    if (x < -745.0) return 0.0;
+    // x = k·ln2 + r, |r| <= ln2/2; e^x = 2^k · e^r, e^r by its Taylor series.
+    const double kd = floor_of(x / (kLn2Hi + kLn2Lo) + 0.5);
+    const int k = int(kd);
+    const double r = (x - kd * kLn2Hi) - kd * kLn2Lo;
+    // e^r = sum r^n/n!, n = 0..13, by Horner with compile-time 1/n!: for |r| <= ln2/2 the first
+    // omitted term r^14/14! is < 5e-18, below half an ulp.
+    double sum = kInverseFactorials.v[kExpTerms - 1];
+    for (int n = kExpTerms - 2; n >= 0; --n) sum = sum * r + kInverseFactorials.v[n];
+    return scale(sum, k);
+}
+
+// floor(v) for |v| < 2^53: the truncation is exact, one step down for a negative fraction.
+constexpr double exact_floor(double v) {
+    const double t = double(static_cast<long long>(v));
+    return t > v ? t - 1.0 : t;
+}
+// 2^k for -1022 <= k <= 1023, by squaring (every factor and product an exact power of 2).
+constexpr double exact_pow2(int k) {
+    double p = 1.0, b = k < 0 ? 0.5 : 2.0;
+    for (int n = k < 0 ? -k : k; n != 0;) {
+        if (n & 1) p *= b;
+        n >>= 1;
+        if (n != 0) b *= b;  // at most 2^512 (no overflow: a constant expression must not)
+    }
+    return p;
+}
+// s·2^k rounded once, as ldexp does, for s in [0.5, 2) and -1086 <= k <= 1023 (det_exp's k
+// is in [-1075, 1023]): below 2^-1022 the product by 2^(k + 64) is still normal, so exact,
+// and the product by 2^-64 is the one rounding.
+constexpr double exact_scale_by_pow2(double s, int k) {
+    if (k >= -1022) return s * exact_pow2(k);
+    return (s * exact_pow2(k + 64)) * exact_pow2(-64);
+}
+}  // namespace detail
+
+// det_exp as a constant expression, with det_exp's bits (tests/test_core_detmath.cpp compares
+// them over the whole domain). For values known when the program is built, e.g.
+// `constexpr double e = det_exp_constexpr(-0.9);`: a small device then links no double
+// arithmetic for them (solid/fractal_params.hpp's level_amplitudes). At run time call det_exp:
+// evaluated in your own code this would follow your compiler's flags (an a·b + c contracted
+// into an FMA without -ffp-contract=off gives other bits).
+constexpr double det_exp_constexpr(double x) {
+    return detail::exp_steps(
+        x, [](double v) { return detail::exact_floor(v); },
+        [](double s, int k) { return detail::exact_scale_by_pow2(s, k); });
+}
+
 double det_sin(double x);
 double det_cos(double x);
 double det_tan(double x);

@@ -325,12 +325,21 @@ void keep_text(Keeper& k, const char* str, int n) {
     ++k.index;
 }
 
+// SHITSUKAN_STATUS_NO_ARGUMENTS (status.hpp): the arguments are not kept, so none of the
+// keeping above is linked.
+#if defined(SHITSUKAN_STATUS_NO_ARGUMENTS)
+constexpr bool kKeepArguments = false;
+#else
+constexpr bool kKeepArguments = true;
+#endif
+
 }  // namespace
 
 Status Status::error(StatusCode code, const char* format, ...) {
     Status s;
     s.code_ = code == StatusCode::ok ? StatusCode::invalid_argument : code;
     s.format_ = format != nullptr ? format : "(no message)";
+    if (!kKeepArguments) return s;  // message(): the format, every conversion a '?'
     Keeper k;
     k.arguments = s.arguments_;
     k.narrow = &s.narrow_;

@@ -32,6 +32,13 @@
 // valid until kMessageSlots more message() calls; copy the text to keep it longer, or use
 // format_message(), which writes into your buffer and returns the full length.
 //
+// SHITSUKAN_STATUS_NO_ARGUMENTS, defined when compiling core/status.cpp (the switch for the
+// smallest devices, e.g. an 8 KB Cortex-M0 firmware that checks every Status but never prints
+// one): error() keeps the code and the format but no arguments, so the argument walk
+// (1.9-2.8 KB of flash with the double conversions it needs, ports/PORTING.md) is not linked;
+// message() is then the format with every conversion shown as '?' ("fractal lattice: R must
+// be in [0, ?] (got ?)"). The codes and sizeof(Status) are the same either way.
+//
 // Status is [[nodiscard]]: every function returning one warns (an error under -Werror, as
 // CI builds) when its result is dropped. Where ignoring it is really meant, say so with a
 // (void) cast and a comment. An object used after its builder failed with the Status

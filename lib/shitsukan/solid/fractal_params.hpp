@@ -6,6 +6,8 @@
 //   Status s = validate_fractal_params(p, kTypeIMaxDepth);
 //   std::int64_t n = lattice_side(p.R);       // 2^R + 1 points a side (okada1987 §2.2)
 //   float a = level_amplitude(3, p.beta);   // L_r^(3) = exp(-2·beta), eq. (2)
+//   constexpr LevelAmplitudes amps = level_amplitudes(0.9f);  // the same, at compile time
+//   static_assert(amps.v[1] == 1.0f, "L^(1) = 1");
 //   return s;
 //
 // Parameters and ranges
@@ -38,6 +40,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "shitsukan/core/detmath.hpp"
 #include "shitsukan/core/status.hpp"
 
 namespace shitsukan {
@@ -67,6 +70,24 @@ inline std::uint64_t lattice_bytes(int R) {
 // okada1987 eq. (2): L_r^(n) = L_r^(n-1)·e^-beta = e^-(n-1)·beta, n = 1..R. Computed with
 // det_exp so every platform and every lattice type uses the same float.
 float level_amplitude(int n, float beta);
+
+// The amplitudes of levels 1..kTypeIIIMaxDepth for one beta, as a constant expression:
+// `constexpr LevelAmplitudes amps = level_amplitudes(beta);` holds level_amplitude(n, beta)'s
+// bits (det_exp_constexpr: det_exp's steps; tests/test_solid_lattice.cpp compares them), so
+// a lattice given them (TypeIIILattice::init(params, amps)) links no double arithmetic: on a
+// soft-float microcontroller 2.9-3.6 KB of flash (ports/PORTING.md). Call it in a constant
+// expression only (detmath.hpp's det_exp_constexpr says why).
+struct LevelAmplitudes {
+    float beta = -1.0f;                  // the beta they are for (-1: none, so none accepts them)
+    float v[kTypeIIIMaxDepth + 1] = {};  // v[n] = L^(n), n = 1..kTypeIIIMaxDepth (v[0] unused)
+};
+constexpr LevelAmplitudes level_amplitudes(float beta) {
+    LevelAmplitudes a;
+    a.beta = beta;
+    for (int n = 1; n <= kTypeIIIMaxDepth; ++n)
+        a.v[n] = float(det_exp_constexpr(-double(n - 1) * double(beta)));  // level_amplitude's
+    return a;
+}
 
 // Largest |corner value| (chosen here: 1e30; the paper's corners are 0). Every point is a mean
 // of at most eight earlier points plus the level's random value (|g| < 7, times e^{-(n-1)

@@ -10,6 +10,9 @@
 //                                                    // all zero until init(): .bss if static
 //   Status s = lattice.init(p);                      // hash noise only (see below)
 //   if (!s) return s;
+//   constexpr LevelAmplitudes amps = level_amplitudes(0.9f);  // beta known when building:
+//   s = lattice.init(p, amps);        // eq. (2) computed by the compiler, the same values
+//   if (!s) return s;
 //   float v = lattice.node_value(7, 1 << 19, 3);     // one node, 0 <= x, y, z <= 2^R
 //   float d = lattice.turbulence(Vec3{3.5f, 8.25f, 1.0f});   // eq. (6), clamped like Type I
 //
@@ -49,6 +52,10 @@ static_assert((kTypeIIIRowCache & (kTypeIIIRowCache - 1)) == 0, "row cache: a po
 class TypeIIILattice {
 public:
     Status init(const FractalParams& params);
+    // The same with eq. (2)'s amplitudes computed before (level_amplitudes(params.beta), at
+    // compile time: no double arithmetic linked); refused (invalid_argument) when they are
+    // for another beta.
+    Status init(const FractalParams& params, const LevelAmplitudes& amplitudes);
 
     int depth() const { return R_; }
     std::int64_t side() const { return lattice_side(R_); }
@@ -82,6 +89,8 @@ private:
         float v[27] = {};
     };
 
+    Status check_params(const FractalParams& params) const;
+    void start(const FractalParams& params);  // after the amplitudes are set
     const float* unit_cell_corners(std::int32_t ix, std::int32_t iy, std::int32_t iz);
     void subdivide(int n, const float corners[8], std::int32_t x0, std::int32_t y0,
                    std::int32_t z0);

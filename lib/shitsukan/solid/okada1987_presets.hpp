@@ -7,12 +7,16 @@
 //   FractalLattice lattice;
 //   Status s = lattice.build(okada1987_lattice_params());      // 65^3, beta 0.9, seed 1987
 //   if (!s) return s;
+//   TypeIIILattice small;                       // no table; eq. (2) computed by the compiler
+//   s = small.init(okada1987_lattice_params(), kOkada1987Amplitudes);
+//   if (!s) return s;
 //   SolidMaterial marble = okada1987_marble();                  // k = 16, six stripes
 //   SolidMaterial wood   = okada1987_wood();                    // k = 1.6
 //   SolidMaterial single = okada1989_marble();                  // one layer through the middle
 //   Vec3 p{0.1f, 0.2f, -0.3f};                                  // a point of the object
 //   Vec3 rgb = solid_color(marble, lattice.view(), object_to_lattice(p));
 //   #include "shitsukan/solid/lattice_store.hpp"
+//   #include "shitsukan/solid/lattice_type3.hpp"
 //   #include "shitsukan/solid/object_mapping.hpp"
 //
 // Given by the papers: R = 6 (the 65^3 lattice), k = 16 for marble, k = 1.6 for wood
@@ -45,6 +49,9 @@ namespace shitsukan {
 
 constexpr int kOkada1987R = 6;
 constexpr float kOkada1987Beta = FractalParams{}.beta;  // the library's default, one reason
+// eq. (2)'s amplitudes for kOkada1987Beta, computed by the compiler (fractal_params.hpp): for
+// TypeIIILattice::init(okada1987_lattice_params(), kOkada1987Amplitudes) on a small device.
+inline constexpr LevelAmplitudes kOkada1987Amplitudes = level_amplitudes(kOkada1987Beta);
 constexpr std::uint32_t kOkada1987Seed = 1987u;
 constexpr float kOkada1987MarbleK = 16.0f;  // okada1987 §4.4
 constexpr float kOkada1987WoodK = 1.6f;     // okada1987 §4.4
