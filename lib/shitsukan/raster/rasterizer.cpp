@@ -28,9 +28,11 @@
 #if defined(__GNUC__) || defined(__clang__)
 #define SHITSUKAN_RASTER_FLATTEN __attribute__((flatten))
 #define SHITSUKAN_RASTER_NOINLINE __attribute__((noinline))
+#define SHITSUKAN_RASTER_INLINE inline __attribute__((always_inline))
 #else
 #define SHITSUKAN_RASTER_FLATTEN
 #define SHITSUKAN_RASTER_NOINLINE
+#define SHITSUKAN_RASTER_INLINE inline
 #endif
 
 namespace shitsukan {
@@ -89,7 +91,7 @@ struct DrawContext {
 // q = floor(a / b), r = a - q·b in [0, b), for b > 0: shift and subtract on 32-bit words
 // (Armv7-M divides 32 bits in hardware; libgcc's 64-bit __aeabi_ldivmod is 700 bytes and
 // slow). Runs once per edge per band, never per row.
-inline void floor_divmod(i64 a, i64 b, i64* q, i64* r) {
+SHITSUKAN_RASTER_INLINE void floor_divmod(i64 a, i64 b, i64* q, i64* r) {
     const bool negative = a < 0;
     std::uint64_t n = negative ? 0u - std::uint64_t(a) : std::uint64_t(a);
     const std::uint64_t d = std::uint64_t(b);
@@ -120,7 +122,8 @@ inline void floor_divmod(i64 a, i64 b, i64* q, i64* r) {
 }
 
 // ceil(a / 256), exact for negative a too (an arithmetic shift, no division).
-inline i64 ceil_div_subpixel(i64 a) { return -((-a) >> kSubpixelBits); }
+// |a| < 2^31 (a snapped coordinate, below 2^28, minus half a pixel): in 32 bits.
+inline i64 ceil_div_subpixel(i64 a) { return -((-std::int32_t(a)) >> kSubpixelBits); }
 
 // a·b for |a|, |b| < 2^31 (differences of snapped coordinates, which stay below 2^29): one
 // 32 x 32 -> 64-bit multiply (SMULL on a Cortex-M4F) instead of a 64 x 64-bit one. Exact.
@@ -361,11 +364,12 @@ inline double clip_orientation(const ClipSpaceVertex corners[3]) {
 }
 
 // Rasterizes one sub-triangle into the band, with the facing decided for its whole source
-// triangle. Returns true when it touches the band's rows.
+// triangle; area2 is its snapped_area2 (the caller has it). Returns true when it touches the
+// band's rows.
 bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& a,
-                     const ScreenVertex& b, const ScreenVertex& c, bool front) {
+                     const ScreenVertex& b, const ScreenVertex& c, i64 area2, bool front,
+                     bool original) {
     const FrameBand& band = *ctx.band;
-    i64 area2 = snapped_area2(a, b, c);
     if (area2 == 0) return false;  // covers no pixel centre
 
     // Sort the corners by y: v0 top, v1 middle, v2 bottom.
@@ -409,8 +413,9 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
     float lb_dx = per_area(c.y - a.y), lb_dy = per_area(a.x - c.x);
     float lc_dx = per_area(a.y - b.y), lc_dy = per_area(b.x - a.x);
     float dz_b = b.z - a.z, dz_c = c.z - a.z;
-    const bool unclipped =
-        a.bary == Vec3{1, 0, 0} && b.bary == Vec3{0, 1, 0} && c.bary == Vec3{0, 0, 1};
+    // original: the caller knows a, b, c are the source triangle's corners (not clipped).
+    const bool unclipped = original || (a.bary == Vec3{1, 0, 0} && b.bary == Vec3{0, 1, 0} &&
+                                        c.bary == Vec3{0, 0, 1});
 
     Fragment& f = ctx.f;
     f.triangle = src.index;
@@ -563,13 +568,20 @@ bool plane_direction(Vec3 e1, Vec3 e2, Vec3* direction) {
     return true;
 }
 
+// is_finite of every component of a and b, as one test: 0·v is 0 for a finite v and NaN for
+// inf or NaN, and a sum of zeros is 0 (inline, no call per vector: it runs for every triangle
+// of every band).
+inline bool all_finite(Vec3 a, Vec3 b) {
+    return (a.x * 0.0f + a.y * 0.0f + a.z * 0.0f) + (b.x * 0.0f + b.y * 0.0f + b.z * 0.0f) == 0.0f;
+}
+
 // Whether plane_direction finds the plane nonzero, mostly without its exact products:
 // rounding is monotonic, so when the rounded products of a component, u·v and w·z, differ
 // (neither NaN), the exact ones differ too and that component is nonzero. Only a triangle
 // whose rounded products all agree (degenerate, or nearly) takes the exact test.
 inline bool plane_is_nonzero(Vec3 e1, Vec3 e2) {
     auto differ = [](float a, float b) { return a < b || a > b; };
-    if (is_finite(e1) && is_finite(e2) &&
+    if (all_finite(e1, e2) &&
         (differ(e1.y * e2.z, e1.z * e2.y) || differ(e1.z * e2.x, e1.x * e2.z) ||
          differ(e1.x * e2.y, e1.y * e2.x)))
         return true;
@@ -586,8 +598,8 @@ inline bool in_world(const SourceTriangle& src) {
     const Vec3 e2 = src.v[2].object_position - src.v[0].object_position;
     const bool has_plane = plane_is_nonzero(e1, e2);
     const Vec3 w0 = src.v[0].world_position;
-    return has_plane && is_finite(w0) && is_finite(src.v[1].world_position - w0) &&
-           is_finite(src.v[2].world_position - w0);
+    return has_plane && all_finite(w0, w0) &&
+           all_finite(src.v[1].world_position - w0, src.v[2].world_position - w0);
 }
 
 // The rest of step 1 once the object positions are in src: the world positions, then the plane
@@ -783,13 +795,20 @@ void bin_vertex(const Camera& camera, const Mat4& mvp, Vec3 p, BinnedVertex* v) 
 // The world position and normals of a vertex that a drawable triangle uses (normals: which of
 // them the plane supplies), the values prepare() and place_in_world() make for each corner.
 void bin_vertex_attributes(const MeshContext& mc, std::uint32_t i, BinnedVertex* v) {
-    v->world_position = model_point(*mc.model, mc.mesh->positions[i]);
+    const Vec3 w = model_point(*mc.model, mc.mesh->positions[i]);
+    v->world_position = w;
+    const float bound = 0x1p126f;  // |a - b| <= 2^127 < FLT_MAX for two such values
+    v->near_world = std::fabs(w.x) <= bound && std::fabs(w.y) <= bound && std::fabs(w.z) <= bound;
     v->normals = std::uint8_t(vertex_normals(mc, i, &v->object_normal, &v->normal));
 }
 
-inline ScreenVertex kept_corner(const BinnedVertex& v, int k) {
-    return ScreenVertex{v.x, v.y, v.z, v.inv_w,
-                        Vec3{k == 0 ? 1.0f : 0.0f, k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f}};
+// The screen corner of a kept vertex. Its barycentrics are not set: raster_triangle reads them
+// only for a piece of a clipped triangle.
+inline void kept_corner(const BinnedVertex& v, ScreenVertex* s) {
+    s->x = v.x;
+    s->y = v.y;
+    s->z = v.z;
+    s->inv_w = v.inv_w;
 }
 
 // bin_triangle from the kept vertices (a vertex left unmapped: bin_triangle itself).
@@ -806,24 +825,54 @@ TriangleRows bin_kept_triangle(const Camera& camera, const MeshView& mesh, const
     return rows_of(camera, cull, area2, a.y, b.y, c.y);
 }
 
+// q - p and r - p of one attribute, into the differences, and p into the first vertex.
+template <class V>
+inline void differences(V p, V q, V r, V* first, V* dq, V* dr) {
+    *first = p;
+    *dq = q - p;
+    *dr = r - p;
+}
+
 // prepare() from the kept vertices: their world positions (already in src) and normals, the
-// plane's where a vertex asks for it.
+// plane's where a vertex asks for it. Without the plane the differences are made straight from
+// the kept vertices and the mesh's arrays (the same subtractions as attribute_differences).
 void prepare_kept(const MeshContext& mc, const BinnedVertex* const kept[3], SourceTriangle* t) {
     const MeshView& mesh = *mc.mesh;
-    int needs_plane[3];
-    for (int k = 0; k < 3; ++k) {
-        const std::uint32_t i = t->corner_index[k];
-        VertexData& v = t->v[k];
-        v.uv = mesh.uvs ? mesh.uvs[i] : Vec2{0, 0};
-        v.color = mesh.colors ? mesh.colors[i] : Vec3{1, 1, 1};
-        v.object_normal = kept[k]->object_normal;
-        v.normal = kept[k]->normal;
-        needs_plane[k] = kept[k]->normals;
-    }
-    if (needs_plane[0] + needs_plane[1] + needs_plane[2] > 0) plane_normals(mc, needs_plane, t);
-    attribute_differences(t);
+    const std::uint32_t* i = t->corner_index;
     t->flat = mesh.normals == nullptr;
     t->ready = true;
+    VertexData& p = t->v[0];
+    if (mesh.uvs)
+        differences(mesh.uvs[i[0]], mesh.uvs[i[1]], mesh.uvs[i[2]], &p.uv, &t->dq.uv, &t->dr.uv);
+    else
+        differences(Vec2{0, 0}, Vec2{0, 0}, Vec2{0, 0}, &p.uv, &t->dq.uv, &t->dr.uv);
+    const Vec3 white{1, 1, 1};
+    if (mesh.colors)
+        differences(mesh.colors[i[0]], mesh.colors[i[1]], mesh.colors[i[2]], &p.color,
+                    &t->dq.color, &t->dr.color);
+    else
+        differences(white, white, white, &p.color, &t->dq.color, &t->dr.color);
+    differences(p.object_position, t->v[1].object_position, t->v[2].object_position,
+                &p.object_position, &t->dq.object_position, &t->dr.object_position);
+    differences(p.world_position, t->v[1].world_position, t->v[2].world_position,
+                &p.world_position, &t->dq.world_position, &t->dr.world_position);
+    const int needs_plane[3] = {kept[0]->normals, kept[1]->normals, kept[2]->normals};
+    if (needs_plane[0] + needs_plane[1] + needs_plane[2] == 0) {
+        differences(kept[0]->normal, kept[1]->normal, kept[2]->normal, &p.normal, &t->dq.normal,
+                    &t->dr.normal);
+        differences(kept[0]->object_normal, kept[1]->object_normal, kept[2]->object_normal,
+                    &p.object_normal, &t->dq.object_normal, &t->dr.object_normal);
+        return;
+    }
+    for (int k = 0; k < 3; ++k) {
+        t->v[k].object_normal = kept[k]->object_normal;
+        t->v[k].normal = kept[k]->normal;
+    }
+    plane_normals(mc, needs_plane, t);
+    differences(t->v[0].normal, t->v[1].normal, t->v[2].normal, &p.normal, &t->dq.normal,
+                &t->dr.normal);
+    differences(t->v[0].object_normal, t->v[1].object_normal, t->v[2].object_normal,
+                &p.object_normal, &t->dq.object_normal, &t->dr.object_normal);
 }
 
 // Steps 1-5 for a handed triangle whose three vertices bin_mesh kept: the object positions and
@@ -848,19 +897,28 @@ bool draw_kept_triangle(DrawContext& ctx, SourceTriangle* src, const BinnedVerte
         src->v[k].object_position = mesh.positions[index[k]];
         src->v[k].world_position = kept[k]->world_position;
     }
-    if (!in_world(*src)) {
+    // in_world: with every world position within +-2^126 their differences are finite, and
+    // only the plane is left to test.
+    const bool placed =
+        a.near_world && b.near_world && c.near_world
+            ? plane_is_nonzero(src->v[1].object_position - src->v[0].object_position,
+                               src->v[2].object_position - src->v[0].object_position)
+            : in_world(*src);
+    if (!placed) {
         ++local->triangles_rejected;
         return true;
     }
     if ((a.outcode & b.outcode & c.outcode & kOutsideBits) != 0) return true;
-    const ScreenVertex s[3] = {kept_corner(a, 0), kept_corner(b, 1), kept_corner(c, 2)};
+    ScreenVertex s[3];  // no default member values: not zeroed
+    for (int k = 0; k < 3; ++k) kept_corner(*kept[k], &s[k]);
     const i64 area2 = snapped_area2(s[0], s[1], s[2]);  // decide_facing, unclipped
     const bool front = area2 < 0;
     if (area2 == 0 || (cull == CullMode::back && !front) || (cull == CullMode::front && front))
         return true;
     // Its rows meet the band (bin_mesh's rows_of gave them): raster_triangle would prepare it.
     prepare_kept(ctx.mesh, kept, src);
-    if (raster_triangle(ctx, *src, s[0], s[1], s[2], front)) ++local->triangles_drawn;
+    if (raster_triangle(ctx, *src, s[0], s[1], s[2], area2, front, true))
+        ++local->triangles_drawn;
     return true;
 }
 
@@ -924,7 +982,9 @@ void draw_triangle(DrawContext& ctx, SourceTriangle* src, const Camera& camera, 
     // ---- 5. Walk each piece of the fan ----
     bool drawn = false;
     for (int k = 1; k + 1 < count; ++k)
-        drawn = raster_triangle(ctx, *src, s[0], s[k], s[k + 1], front) || drawn;
+        drawn = raster_triangle(ctx, *src, s[0], s[k], s[k + 1],
+                                snapped_area2(s[0], s[k], s[k + 1]), front, !clipped) ||
+                drawn;
     if (drawn) ++local->triangles_drawn;
 }
 

@@ -184,7 +184,7 @@ struct BinnedVertex {  // written by bin_mesh; read by draw_binned_mesh
     float z = 0, inv_w = 0;      // depth and 1 / w_clip
     std::uint16_t outcode = 0;   // the clip-space outcode
     std::uint8_t normals = 0;    // which normals the triangle's plane supplies, or "not made"
-    std::uint8_t unused = 0;
+    std::uint8_t near_world = 0; // 1: world position within +-2^126 (differences stay finite)
     Vec3 world_position;         // the model matrix times the position
     Vec3 normal, object_normal;  // the mesh's normal, normalised, in world and object space
 };
