@@ -72,7 +72,7 @@ struct MeshContext {
 // A sub-triangle corner after the divide: fixed-point screen position, depth, 1/w and the
 // barycentric coordinates in the original triangle.
 struct ScreenVertex {  // no default member values: arrays of these are not zeroed
-    i64 x, y;          // pixels · 256
+    std::int32_t x, y;  // pixels · 256, |x|, |y| < kMaxFixed = 2^28 (differences fit 32 bits)
     float z;           // depth in [0, 1]
     float inv_w;       // 1 / w_clip, for perspective-correct interpolation
     Vec3 bary;
@@ -121,9 +121,12 @@ SHITSUKAN_RASTER_INLINE void floor_divmod(i64 a, i64 b, i64* q, i64* r) {
     *r = fr;
 }
 
-// ceil(a / 256), exact for negative a too (an arithmetic shift, no division).
-// |a| < 2^31 (a snapped coordinate, below 2^28, minus half a pixel): in 32 bits.
-inline i64 ceil_div_subpixel(i64 a) { return -((-std::int32_t(a)) >> kSubpixelBits); }
+// The first row (or column) whose centre lies at or past the snapped coordinate v:
+// ceil((v - 128) / 256), exact for negative v too (an arithmetic shift, no division), in 32
+// bits (|v| < kMaxFixed = 2^28).
+inline int first_centre_from(std::int32_t v) {
+    return -((std::int32_t(kHalfPixel) - v) >> kSubpixelBits);
+}
 
 // a·b for |a|, |b| < 2^31 (differences of snapped coordinates, which stay below 2^29): one
 // 32 x 32 -> 64-bit multiply (SMULL on a Cortex-M4F) instead of a 64 x 64-bit one. Exact.
@@ -183,13 +186,13 @@ constexpr float kMaxFixed = 268435456.0f;
 
 // v·256 rounded half away from zero. false (and nothing stored) for NaN or a value beyond
 // kMaxFixed: converting those to an integer would be undefined behaviour.
-inline bool to_fixed(float v, i64* out) {
+inline bool to_fixed(float v, std::int32_t* out) {
     float s = v * float(kSubpixel);
     if (!(s > -kMaxFixed && s < kMaxFixed)) return false;
     // |s ± 0.5| < 2^28 + 1: through int32 the same truncation is one FPU conversion (an int64
     // one is libgcc's __aeabi_f2lz, by way of software double: about 100 instructions on a
     // Cortex-M4F, six per triangle).
-    *out = i64(std::int32_t(s < 0.0f ? s - 0.5f : s + 0.5f));
+    *out = std::int32_t(s < 0.0f ? s - 0.5f : s + 0.5f);
     return true;
 }
 
@@ -394,9 +397,9 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
 
     // Rows whose centre lies in [v0.y, v2.y): the top vertex row is in, the bottom one is
     // out (the top-left rule for horizontal edges), intersected with the band.
-    i64 row_begin = ceil_div_subpixel(v0->y - kHalfPixel);
-    i64 row_end = ceil_div_subpixel(v2->y - kHalfPixel);
-    i64 band_begin = band.y0, band_end = i64(band.y0) + band.color.height;
+    int row_begin = first_centre_from(v0->y);
+    int row_end = first_centre_from(v2->y);
+    const int band_begin = band.y0, band_end = band.y0 + band.color.height;  // validate_band
     if (row_begin < band_begin) row_begin = band_begin;
     if (row_end > band_end) row_end = band_end;
     if (row_begin >= row_end) return false;
@@ -423,9 +426,9 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
     const int width = band.frame_width;
     // Rows [y_begin, y_mid) lie above the middle vertex (short edge v0 -> v1), rows [y_mid,
     // y_end) below it (v1 -> v2): a centre y·256 + 128 < v1.y <=> y < ceil((v1.y - 128) / 256).
-    const int y_begin = int(row_begin), y_end = int(row_end);
-    const i64 mid = ceil_div_subpixel(v1->y - kHalfPixel);
-    const int y_mid = int(mid < row_begin ? row_begin : (mid > row_end ? row_end : mid));
+    const int y_begin = row_begin, y_end = row_end;
+    const int mid = first_centre_from(v1->y);
+    const int y_mid = mid < row_begin ? row_begin : (mid > row_end ? row_end : mid);
     EdgeWalk long_edge, short_edge;
     long_edge.start(*v0, *v2, y_begin);
     if (y_mid > y_begin)
@@ -712,7 +715,8 @@ void add_stats(const RasterStats& local, long fragments, RasterStats* stats) {
 // Flattened (its helpers inlined into it, in this function only): it runs for every triangle of
 // the frame, and the calls cost as much as the arithmetic (bin_mesh alone was 870 instructions
 // per triangle of the 48 x 24 UV sphere on a Cortex-M4F).
-TriangleRows rows_of(const Camera& camera, CullMode cull, i64 area2, i64 y0, i64 y1, i64 y2);
+TriangleRows rows_of(const Camera& camera, CullMode cull, i64 area2, std::int32_t y0,
+                     std::int32_t y1, std::int32_t y2);
 
 SHITSUKAN_RASTER_FLATTEN
 TriangleRows bin_triangle(const Camera& camera, const MeshView& mesh, const Mat4& mvp,
@@ -741,14 +745,15 @@ TriangleRows bin_triangle(const Camera& camera, const MeshView& mesh, const Mat4
 
 // The rows of a triangle drawn without clipping, from its snapped area (twice, signed) and
 // the rows of its corners (none: zero area or culled).
-TriangleRows rows_of(const Camera& camera, CullMode cull, i64 area2, i64 y0, i64 y1, i64 y2) {
+TriangleRows rows_of(const Camera& camera, CullMode cull, i64 area2, std::int32_t y0,
+                     std::int32_t y1, std::int32_t y2) {
     const TriangleRows none{0, 0};
     const bool front = area2 < 0;
     if (area2 == 0 || (cull == CullMode::back && !front) || (cull == CullMode::front && front))
         return none;
-    const i64 top = y0 < y1 ? (y0 < y2 ? y0 : y2) : (y1 < y2 ? y1 : y2);
-    const i64 bottom = y0 > y1 ? (y0 > y2 ? y0 : y2) : (y1 > y2 ? y1 : y2);
-    i64 begin = ceil_div_subpixel(top - kHalfPixel), end = ceil_div_subpixel(bottom - kHalfPixel);
+    const std::int32_t top = y0 < y1 ? (y0 < y2 ? y0 : y2) : (y1 < y2 ? y1 : y2);
+    const std::int32_t bottom = y0 > y1 ? (y0 > y2 ? y0 : y2) : (y1 > y2 ? y1 : y2);
+    int begin = first_centre_from(top), end = first_centre_from(bottom);
     if (begin < 0) begin = 0;
     if (end > camera.height) end = camera.height;
     if (begin >= end) return none;
@@ -786,8 +791,8 @@ void bin_vertex(const Camera& camera, const Mat4& mvp, Vec3 p, BinnedVertex* v) 
     if ((outcode & kClipPlaneBits) != 0 || !finite_clip(c.clip) || !(c.clip.w >= kMinClipW) ||
         !to_screen(camera, c, &screen))
         return;
-    v->x = std::int32_t(screen.x);  // |x|, |y| < kMaxFixed = 2^28
-    v->y = std::int32_t(screen.y);
+    v->x = screen.x;
+    v->y = screen.y;
     v->z = screen.z;
     v->inv_w = screen.inv_w;
 }
