@@ -817,17 +817,20 @@ inline void kept_corner(const BinnedVertex& v, ScreenVertex* s) {
 }
 
 // bin_triangle from the kept vertices (a vertex left unmapped: bin_triangle itself).
+// A triangle drawn from its kept vertices marks them: their attributes are made (bin_mesh).
 TriangleRows bin_kept_triangle(const Camera& camera, const MeshView& mesh, const Mat4& mvp,
-                               CullMode cull, int t, const BinnedVertex* vertices,
+                               CullMode cull, int t, BinnedVertex* vertices,
                                ClipSpaceVertex corners[3]) {
     const std::uint32_t* index = mesh.indices + 3 * std::size_t(t);
-    const BinnedVertex &a = vertices[index[0]], &b = vertices[index[1]], &c = vertices[index[2]];
+    BinnedVertex &a = vertices[index[0]], &b = vertices[index[1]], &c = vertices[index[2]];
     if (a.x == kUnmapped || b.x == kUnmapped || c.x == kUnmapped)
         return bin_triangle(camera, mesh, mvp, cull, t, corners);
     if ((a.outcode & b.outcode & c.outcode & kOutsideBits) != 0) return TriangleRows{0, 0};
     // snapped_area2 of the kept corners, in the same 64-bit integers
     const i64 area2 = wide_product(b.x - a.x, c.y - a.y) - wide_product(c.x - a.x, b.y - a.y);
-    return rows_of(camera, cull, area2, a.y, b.y, c.y);
+    const TriangleRows rows = rows_of(camera, cull, area2, a.y, b.y, c.y);
+    if (rows.end != 0) a.normals = b.normals = c.normals = 0;
+    return rows;
 }
 
 // q - p and r - p of one attribute, into the differences, and p into the first vertex.
@@ -841,7 +844,9 @@ inline void differences(V p, V q, V r, V* first, V* dq, V* dr) {
 // prepare() from the kept vertices: their world positions (already in src) and normals, the
 // plane's where a vertex asks for it. Without the plane the differences are made straight from
 // the kept vertices and the mesh's arrays (the same subtractions as attribute_differences).
-void prepare_kept(const MeshContext& mc, const BinnedVertex* const kept[3], SourceTriangle* t) {
+// p0, e1, e2: the first object position and the edges from it (draw_kept_triangle made them).
+void prepare_kept(const MeshContext& mc, const BinnedVertex* const kept[3], Vec3 p0, Vec3 e1,
+                  Vec3 e2, SourceTriangle* t) {
     const MeshView& mesh = *mc.mesh;
     const std::uint32_t* i = t->corner_index;
     t->flat = mesh.normals == nullptr;
@@ -857,9 +862,10 @@ void prepare_kept(const MeshContext& mc, const BinnedVertex* const kept[3], Sour
                     &t->dq.color, &t->dr.color);
     else
         differences(white, white, white, &p.color, &t->dq.color, &t->dr.color);
-    differences(p.object_position, t->v[1].object_position, t->v[2].object_position,
-                &p.object_position, &t->dq.object_position, &t->dr.object_position);
-    differences(p.world_position, t->v[1].world_position, t->v[2].world_position,
+    p.object_position = p0;
+    t->dq.object_position = e1;
+    t->dr.object_position = e2;
+    differences(kept[0]->world_position, kept[1]->world_position, kept[2]->world_position,
                 &p.world_position, &t->dq.world_position, &t->dr.world_position);
     const int needs_plane[3] = {kept[0]->normals, kept[1]->normals, kept[2]->normals};
     if (needs_plane[0] + needs_plane[1] + needs_plane[2] == 0) {
@@ -870,6 +876,7 @@ void prepare_kept(const MeshContext& mc, const BinnedVertex* const kept[3], Sour
         return;
     }
     for (int k = 0; k < 3; ++k) {
+        t->v[k].object_position = mesh.positions[i[k]];  // plane_normals' edges, as prepare's
         t->v[k].object_normal = kept[k]->object_normal;
         t->v[k].normal = kept[k]->normal;
     }
@@ -898,17 +905,20 @@ bool draw_kept_triangle(DrawContext& ctx, SourceTriangle* src, const BinnedVerte
         return false;
     src->index = t;
     src->corner_index = index;
-    for (int k = 0; k < 3; ++k) {
-        src->v[k].object_position = mesh.positions[index[k]];
-        src->v[k].world_position = kept[k]->world_position;
-    }
+    const Vec3 p0 = mesh.positions[index[0]];
+    const Vec3 e1 = mesh.positions[index[1]] - p0, e2 = mesh.positions[index[2]] - p0;
     // in_world: with every world position within +-2^126 their differences are finite, and
     // only the plane is left to test.
-    const bool placed =
-        a.near_world && b.near_world && c.near_world
-            ? plane_is_nonzero(src->v[1].object_position - src->v[0].object_position,
-                               src->v[2].object_position - src->v[0].object_position)
-            : in_world(*src);
+    bool placed;
+    if (a.near_world && b.near_world && c.near_world) {
+        placed = plane_is_nonzero(e1, e2);
+    } else {
+        for (int k = 0; k < 3; ++k) {
+            src->v[k].object_position = mesh.positions[index[k]];
+            src->v[k].world_position = kept[k]->world_position;
+        }
+        placed = in_world(*src);
+    }
     if (!placed) {
         ++local->triangles_rejected;
         return true;
@@ -921,7 +931,7 @@ bool draw_kept_triangle(DrawContext& ctx, SourceTriangle* src, const BinnedVerte
     if (area2 == 0 || (cull == CullMode::back && !front) || (cull == CullMode::front && front))
         return true;
     // Its rows meet the band (bin_mesh's rows_of gave them): raster_triangle would prepare it.
-    prepare_kept(ctx.mesh, kept, src);
+    prepare_kept(ctx.mesh, kept, p0, e1, e2, src);
     if (raster_triangle(ctx, *src, s[0], s[1], s[2], area2, front, true))
         ++local->triangles_drawn;
     return true;
@@ -1058,13 +1068,8 @@ Status bin_mesh(const Camera& camera, const MeshView& mesh, const DrawOptions& o
     }
     for (int i = 0; i < mesh.vertex_count; ++i)
         bin_vertex(camera, mvp, mesh.positions[i], &vertices[i]);
-    for (int t = 0; t < mesh.triangle_count; ++t) {
+    for (int t = 0; t < mesh.triangle_count; ++t)
         rows[t] = bin_kept_triangle(camera, mesh, mvp, options.cull, t, vertices, corners);
-        if (rows[t].end == 0) continue;
-        const std::uint32_t* index = mesh.indices + 3 * std::size_t(t);
-        for (int k = 0; k < 3; ++k)  // a vertex of a drawable triangle: its attributes are made
-            if (vertices[index[k]].x != kUnmapped) vertices[index[k]].normals = 0;
-    }
     const MeshContext mc{&mesh, &options.model, &normal_matrix};
     for (int i = 0; i < mesh.vertex_count; ++i)
         if (vertices[i].normals != kNormalsNotMade)
