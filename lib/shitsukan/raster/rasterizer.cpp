@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <utility>
 
 #include "shitsukan/raster/clip.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
@@ -366,6 +367,21 @@ inline double clip_orientation(const ClipSpaceVertex corners[3]) {
     return x0 * (y1 * w2 - y2 * w1) - y0 * (x1 * w2 - x2 * w1) + w0 * (x1 * y2 - x2 * y1);
 }
 
+// The corners sorted by y: v0 top, v1 middle, v2 bottom.
+SHITSUKAN_RASTER_INLINE void sort_by_y(const ScreenVertex& a, const ScreenVertex& b,
+                                       const ScreenVertex& c, const ScreenVertex** v0,
+                                       const ScreenVertex** v1, const ScreenVertex** v2) {
+    const ScreenVertex* top = &a;
+    const ScreenVertex* middle = &b;
+    const ScreenVertex* bottom = &c;
+    if (middle->y < top->y) std::swap(top, middle);
+    if (bottom->y < middle->y) std::swap(middle, bottom);
+    if (middle->y < top->y) std::swap(top, middle);
+    *v0 = top;
+    *v1 = middle;
+    *v2 = bottom;
+}
+
 // Rasterizes one sub-triangle into the band, with the facing decided for its whole source
 // triangle; area2 is its snapped_area2 (the caller has it). Returns true when it touches the
 // band's rows.
@@ -375,25 +391,8 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
     const FrameBand& band = *ctx.band;
     if (area2 == 0) return false;  // covers no pixel centre
 
-    // Sort the corners by y: v0 top, v1 middle, v2 bottom.
-    const ScreenVertex* v0 = &a;
-    const ScreenVertex* v1 = &b;
-    const ScreenVertex* v2 = &c;
-    if (v1->y < v0->y) {
-        const ScreenVertex* t = v0;
-        v0 = v1;
-        v1 = t;
-    }
-    if (v2->y < v1->y) {
-        const ScreenVertex* t = v1;
-        v1 = v2;
-        v2 = t;
-    }
-    if (v1->y < v0->y) {
-        const ScreenVertex* t = v0;
-        v0 = v1;
-        v1 = t;
-    }
+    const ScreenVertex *v0, *v1, *v2;  // top, middle, bottom
+    sort_by_y(a, b, c, &v0, &v1, &v2);
 
     // Rows whose centre lies in [v0.y, v2.y): the top vertex row is in, the bottom one is
     // out (the top-left rule for horizontal edges), intersected with the band.
