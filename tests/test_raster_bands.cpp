@@ -352,3 +352,65 @@ TEST_CASE("bin_mesh and draw_binned_mesh refuse too few kept vertices") {
                                       int(kept.size()), shade, nullptr);
     CHECK(d.code() == StatusCode::invalid_argument);
 }
+
+TEST_CASE("bin_mesh: a binned-away triangle counts the binned-away triangles from it on") {
+    Scene scene;
+    const MeshView sphere = scene.sphere.view();
+    const DrawOptions opt = scene_options(0, CullMode::back);
+    std::vector<TriangleRows> rows(std::size_t(sphere.triangle_count)), kept_rows = rows;
+    std::vector<BinnedVertex> kept(std::size_t(sphere.vertex_count));
+    REQUIRE(bin_mesh(scene.cam, sphere, opt, rows.data(), int(rows.size())).ok());
+    REQUIRE(bin_mesh(scene.cam, sphere, opt, kept_rows.data(), int(kept_rows.size()), kept.data(),
+                     int(kept.size()))
+                .ok());
+    for (const std::vector<TriangleRows>* r : {&rows, &kept_rows}) {
+        // The walk of draw_binned_mesh steps over a whole run at once: begin is the run's length
+        // from this triangle (the back faces of a sphere come in runs of many).
+        bool counted = true;
+        int longest = 0;
+        const int n = int(r->size());
+        for (int t = 0; t < n; ++t) {
+            const TriangleRows& row = (*r)[std::size_t(t)];
+            if (row.end != 0) continue;
+            const int next = t + 1 < n && (*r)[std::size_t(t + 1)].end == 0
+                                 ? (*r)[std::size_t(t + 1)].begin
+                                 : 0;
+            counted = counted && row.begin == next + 1;
+            longest = row.begin > longest ? row.begin : longest;
+        }
+        CHECK(counted);
+        CHECK(longest > 10);
+    }
+}
+
+TEST_CASE("bin_mesh keeps the world position and normals of each vertex of a drawn triangle") {
+    Scene scene;
+    const MeshView sphere = scene.sphere.view();
+    const DrawOptions opt = scene_options(0, CullMode::back);  // rotated and moved
+    std::vector<TriangleRows> rows(std::size_t(sphere.triangle_count));
+    std::vector<BinnedVertex> kept(std::size_t(sphere.vertex_count));
+    REQUIRE(bin_mesh(scene.cam, sphere, opt, rows.data(), int(rows.size()), kept.data(),
+                     int(kept.size()))
+                .ok());
+    CHECK(sizeof(BinnedVertex) == 56);  // the RAM ports/PORTING.md states per vertex
+    const Mat4 normal_matrix = transpose(inverse(opt.model));
+    int checked = 0;
+    bool world = true, normals = true;
+    for (int t = 0; t < sphere.triangle_count; ++t) {
+        if (rows[std::size_t(t)].end == 0) continue;
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t i = sphere.indices[3 * t + k];
+            const BinnedVertex& v = kept[i];
+            const Vec3 w = transform_point(opt.model, sphere.positions[i]);  // the same bits
+            world = world && std::memcmp(&v.world_position, &w, sizeof w) == 0 && v.near_world;
+            const Vec3 on = normalize(sphere.normals[i]);
+            const Vec3 n = normalize(transform_vector(normal_matrix, on));
+            normals = normals && v.normals == 0 && length(v.object_normal - on) < 1e-6f &&
+                      length(v.normal - n) < 1e-6f;
+            ++checked;
+        }
+    }
+    CHECK(checked > 100);
+    CHECK(world);
+    CHECK(normals);
+}

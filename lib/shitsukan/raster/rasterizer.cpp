@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <utility>
 
 #include "shitsukan/raster/clip.hpp"
 #include "shitsukan/raster/rasterizer.hpp"
@@ -28,9 +29,11 @@
 #if defined(__GNUC__) || defined(__clang__)
 #define SHITSUKAN_RASTER_FLATTEN __attribute__((flatten))
 #define SHITSUKAN_RASTER_NOINLINE __attribute__((noinline))
+#define SHITSUKAN_RASTER_INLINE inline __attribute__((always_inline))
 #else
 #define SHITSUKAN_RASTER_FLATTEN
 #define SHITSUKAN_RASTER_NOINLINE
+#define SHITSUKAN_RASTER_INLINE inline
 #endif
 
 namespace shitsukan {
@@ -70,7 +73,7 @@ struct MeshContext {
 // A sub-triangle corner after the divide: fixed-point screen position, depth, 1/w and the
 // barycentric coordinates in the original triangle.
 struct ScreenVertex {  // no default member values: arrays of these are not zeroed
-    i64 x, y;          // pixels · 256
+    std::int32_t x, y;  // pixels · 256, |x|, |y| < kMaxFixed = 2^28 (differences fit 32 bits)
     float z;           // depth in [0, 1]
     float inv_w;       // 1 / w_clip, for perspective-correct interpolation
     Vec3 bary;
@@ -89,7 +92,7 @@ struct DrawContext {
 // q = floor(a / b), r = a - q·b in [0, b), for b > 0: shift and subtract on 32-bit words
 // (Armv7-M divides 32 bits in hardware; libgcc's 64-bit __aeabi_ldivmod is 700 bytes and
 // slow). Runs once per edge per band, never per row.
-inline void floor_divmod(i64 a, i64 b, i64* q, i64* r) {
+SHITSUKAN_RASTER_INLINE void floor_divmod(i64 a, i64 b, i64* q, i64* r) {
     const bool negative = a < 0;
     std::uint64_t n = negative ? 0u - std::uint64_t(a) : std::uint64_t(a);
     const std::uint64_t d = std::uint64_t(b);
@@ -119,8 +122,16 @@ inline void floor_divmod(i64 a, i64 b, i64* q, i64* r) {
     *r = fr;
 }
 
-// ceil(a / 256), exact for negative a too (an arithmetic shift, no division).
-inline i64 ceil_div_subpixel(i64 a) { return -((-a) >> kSubpixelBits); }
+// The first row (or column) whose centre lies at or past the snapped coordinate v:
+// ceil((v - 128) / 256), exact for negative v too (an arithmetic shift, no division), in 32
+// bits (|v| < kMaxFixed = 2^28).
+inline int first_centre_from(std::int32_t v) {
+    return -((std::int32_t(kHalfPixel) - v) >> kSubpixelBits);
+}
+
+// a·b for |a|, |b| < 2^31 (differences of snapped coordinates, which stay below 2^29): one
+// 32 x 32 -> 64-bit multiply (SMULL on a Cortex-M4F) instead of a 64 x 64-bit one. Exact.
+inline i64 wide_product(i64 a, i64 b) { return i64(std::int32_t(a)) * std::int32_t(b); }
 
 // The first pixel column whose centre lies at or right of the edge e0 -> e1, on consecutive
 // scanlines (e0.y <= yc < e1.y). Exact: x_edge = e0.x + dx·(yc - e0.y)/dy is compared as a
@@ -131,40 +142,37 @@ inline i64 ceil_div_subpixel(i64 a) { return -((-a) >> kSubpixelBits); }
 // (centre 256·x + 128 >= x_edge <=> x >= N / D); from one row to the next N grows by
 // 256·dx, so the walk keeps the quotient and remainder and adds that step's quotient and
 // remainder: two divisions when the walk starts, none per row, the same columns exactly.
+// The column and the step's quotient fit 32 bits (|x_edge| and |dx| stay below 2^29 / 256 and
+// 2^29); the remainders, up to 256·dy, need 64.
 struct EdgeWalk {  // no default member values: three per piece, zeroing them cost a memset
-    i64 column;          // ceil(N / D) on the current row
-    i64 slack;           // column·D - N, in [0, D)
-    i64 d;               // D = 256·dy
-    i64 step_q, step_r;  // 256·dx = step_q·D + step_r, 0 <= step_r < D
-    i64 next_y;          // the row the walk is on
-    bool started;        // set false before the first at_row
+    std::int32_t column;  // ceil(N / D) on the current row
+    std::int32_t step_q;  // 256·dx = step_q·D + step_r, 0 <= step_r < D
+    i64 slack;            // column·D - N, in [0, D)
+    i64 d;                // D = 256·dy
+    i64 step_r;
 
-    // The column on row y; rows must come in increasing order, one by one. The step is
-    // inline (a call per row and edge cost as much as the step), the start out of line.
-    i64 at_row(const ScreenVertex& e0, const ScreenVertex& e1, i64 y) {
-        if (!started || y != next_y) return start(e0, e1, y);
-        // N += step: ceil moves by step_q, and by one more when the slack runs out
+    // The walk on to the next row: N += step, ceil moves by step_q, and by one more when the
+    // slack runs out. Inline (a call per row and edge cost as much as the step).
+    void next_row() {
         column += step_q;
         slack -= step_r;
         if (slack < 0) {
             slack += d;
             column += 1;
         }
-        next_y = y + 1;
-        return column;
     }
-    SHITSUKAN_RASTER_NOINLINE i64 start(const ScreenVertex& e0, const ScreenVertex& e1, i64 y) {
-        const i64 dy = e1.y - e0.y, yc = y * kSubpixel + kHalfPixel;
+    // The walk's start on row y (e0.y <= y·256 + 128 < e1.y), out of line.
+    SHITSUKAN_RASTER_NOINLINE void start(const ScreenVertex& e0, const ScreenVertex& e1, int y) {
+        const i64 dy = e1.y - e0.y, yc = i64(y) * kSubpixel + kHalfPixel;
         d = kSubpixel * dy;
-        const i64 n = e0.x * dy + (e1.x - e0.x) * (yc - e0.y) - kHalfPixel * dy;
-        i64 q, r;
+        const i64 n = wide_product(e0.x, dy) + wide_product(e1.x - e0.x, yc - e0.y) -
+                      kHalfPixel * dy;
+        i64 q, r, sq;
         floor_divmod(n, d, &q, &r);
-        column = r == 0 ? q : q + 1;
+        column = std::int32_t(r == 0 ? q : q + 1);
         slack = r == 0 ? 0 : d - r;
-        floor_divmod(kSubpixel * (e1.x - e0.x), d, &step_q, &step_r);
-        started = true;
-        next_y = y + 1;
-        return column;
+        floor_divmod(kSubpixel * (e1.x - e0.x), d, &sq, &step_r);
+        step_q = std::int32_t(sq);
     }
 };
 
@@ -179,13 +187,13 @@ constexpr float kMaxFixed = 268435456.0f;
 
 // v·256 rounded half away from zero. false (and nothing stored) for NaN or a value beyond
 // kMaxFixed: converting those to an integer would be undefined behaviour.
-inline bool to_fixed(float v, i64* out) {
+inline bool to_fixed(float v, std::int32_t* out) {
     float s = v * float(kSubpixel);
     if (!(s > -kMaxFixed && s < kMaxFixed)) return false;
     // |s ± 0.5| < 2^28 + 1: through int32 the same truncation is one FPU conversion (an int64
     // one is libgcc's __aeabi_f2lz, by way of software double: about 100 instructions on a
     // Cortex-M4F, six per triangle).
-    *out = i64(std::int32_t(s < 0.0f ? s - 0.5f : s + 0.5f));
+    *out = std::int32_t(s < 0.0f ? s - 0.5f : s + 0.5f);
     return true;
 }
 
@@ -235,6 +243,47 @@ inline Vec3 model_vector(const Mat4& m, Vec3 v) {
 
 bool plane_direction(Vec3 e1, Vec3 e2, Vec3* direction);
 
+// The plane's unit normals, object and world, for the vertices whose own normal cannot serve
+// (needs_plane[k]: 0 no; 1 for the world normal; 2 for both normals).
+void plane_normals(const MeshContext& mc, const int needs_plane[3], SourceTriangle* t) {
+    // The direction is nonzero and finite (place_in_world checked it), normalized in float.
+    Vec3 direction{0.0f, 0.0f, 1.0f};
+    (void)plane_direction(t->v[1].object_position - t->v[0].object_position,
+                          t->v[2].object_position - t->v[0].object_position, &direction);
+    const Vec3 object_n = normalize_or(direction, Vec3{0.0f, 0.0f, 1.0f});
+    const Vec3 world_n = normalize_or(model_vector(*mc.normal_matrix, object_n), object_n);
+    for (int k = 0; k < 3; ++k) {
+        // 2: the plane's normals (normalising M·object_n again would give world_n).
+        if (needs_plane[k] == 2) t->v[k].object_normal = object_n;
+        if (needs_plane[k] != 0) t->v[k].normal = world_n;
+    }
+}
+
+// The differences v[1] - v[0] and v[2] - v[0] that interpolate() reads, attribute by attribute.
+void attribute_differences(SourceTriangle* t) {
+    for (int k = 0; k < 2; ++k) {
+        VertexData& d = k == 0 ? t->dq : t->dr;
+        const VertexData& q = t->v[k + 1];
+        const VertexData& p = t->v[0];
+        d.object_position = q.object_position - p.object_position;
+        d.world_position = q.world_position - p.world_position;
+        d.normal = q.normal - p.normal;
+        d.object_normal = q.object_normal - p.object_normal;
+        d.color = q.color - p.color;
+        d.uv = q.uv - p.uv;
+    }
+}
+
+// A vertex's normals: the mesh's, normalised, in object space and (by the normal matrix) in
+// world space. Returns which of them the triangle's plane must supply (0 none, 1 the world
+// normal, 2 both).
+inline int vertex_normals(const MeshContext& mc, std::uint32_t i, Vec3* object_normal,
+                          Vec3* normal) {
+    const MeshView& mesh = *mc.mesh;
+    if (!(mesh.normals && normalize(mesh.normals[i], object_normal))) return 2;
+    return normalize(model_vector(*mc.normal_matrix, *object_normal), normal) ? 0 : 1;
+}
+
 // The per-vertex attributes of the original triangle: world position, world and object
 // normals (the plane's when the mesh has none), uv and colour. The plane's unit normal is
 // made only when a vertex needs it (a mesh without normals, or a normal that cannot be
@@ -248,36 +297,10 @@ void prepare(const MeshContext& mc, SourceTriangle* t) {
         // v.world_position: set by fetch_corners (step 1), the same model_point.
         v.uv = mesh.uvs ? mesh.uvs[i] : Vec2{0, 0};
         v.color = mesh.colors ? mesh.colors[i] : Vec3{1, 1, 1};
-        if (!(mesh.normals && normalize(mesh.normals[i], &v.object_normal)))
-            needs_plane[k] = 2;
-        else
-            needs_plane[k] =
-                normalize(model_vector(*mc.normal_matrix, v.object_normal), &v.normal) ? 0 : 1;
+        needs_plane[k] = vertex_normals(mc, i, &v.object_normal, &v.normal);
     }
-    if (needs_plane[0] + needs_plane[1] + needs_plane[2] > 0) {
-        // The direction is nonzero and finite (fetch_corners checked it), normalized in float.
-        Vec3 direction{0.0f, 0.0f, 1.0f};
-        (void)plane_direction(t->v[1].object_position - t->v[0].object_position,
-                              t->v[2].object_position - t->v[0].object_position, &direction);
-        const Vec3 object_n = normalize_or(direction, Vec3{0.0f, 0.0f, 1.0f});
-        const Vec3 world_n = normalize_or(model_vector(*mc.normal_matrix, object_n), object_n);
-        for (int k = 0; k < 3; ++k) {
-            // 2: the plane's normals (normalising M·object_n again would give world_n).
-            if (needs_plane[k] == 2) t->v[k].object_normal = object_n;
-            if (needs_plane[k] != 0) t->v[k].normal = world_n;
-        }
-    }
-    for (int k = 0; k < 2; ++k) {
-        VertexData& d = k == 0 ? t->dq : t->dr;
-        const VertexData& q = t->v[k + 1];
-        const VertexData& p = t->v[0];
-        d.object_position = q.object_position - p.object_position;
-        d.world_position = q.world_position - p.world_position;
-        d.normal = q.normal - p.normal;
-        d.object_normal = q.object_normal - p.object_normal;
-        d.color = q.color - p.color;
-        d.uv = q.uv - p.uv;
-    }
+    if (needs_plane[0] + needs_plane[1] + needs_plane[2] > 0) plane_normals(mc, needs_plane, t);
+    attribute_differences(t);
     t->flat = mesh.normals == nullptr;
     t->ready = true;
 }
@@ -326,7 +349,7 @@ inline float to_float_via_int32(i64 n) {
 // a counter-clockwise (front) triangle of the world has a negative area here.
 SHITSUKAN_RASTER_NOINLINE i64 snapped_area2(const ScreenVertex& a, const ScreenVertex& b,
                                              const ScreenVertex& c) {
-    return (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+    return wide_product(b.x - a.x, c.y - a.y) - wide_product(c.x - a.x, b.y - a.y);
 }
 
 // The orientation of the original triangle in homogeneous clip space: det of the rows
@@ -344,46 +367,47 @@ inline double clip_orientation(const ClipSpaceVertex corners[3]) {
     return x0 * (y1 * w2 - y2 * w1) - y0 * (x1 * w2 - x2 * w1) + w0 * (x1 * y2 - x2 * y1);
 }
 
+// The corners sorted by y: v0 top, v1 middle, v2 bottom.
+SHITSUKAN_RASTER_INLINE void sort_by_y(const ScreenVertex& a, const ScreenVertex& b,
+                                       const ScreenVertex& c, const ScreenVertex** v0,
+                                       const ScreenVertex** v1, const ScreenVertex** v2) {
+    const ScreenVertex* top = &a;
+    const ScreenVertex* middle = &b;
+    const ScreenVertex* bottom = &c;
+    if (middle->y < top->y) std::swap(top, middle);
+    if (bottom->y < middle->y) std::swap(middle, bottom);
+    if (middle->y < top->y) std::swap(top, middle);
+    *v0 = top;
+    *v1 = middle;
+    *v2 = bottom;
+}
+
 // Rasterizes one sub-triangle into the band, with the facing decided for its whole source
-// triangle. Returns true when it touches the band's rows.
+// triangle; area2 is its snapped_area2 (the caller has it). Returns true when it touches the
+// band's rows.
 bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& a,
-                     const ScreenVertex& b, const ScreenVertex& c, bool front) {
+                     const ScreenVertex& b, const ScreenVertex& c, i64 area2, bool front,
+                     bool original) {
     const FrameBand& band = *ctx.band;
-    i64 area2 = snapped_area2(a, b, c);
     if (area2 == 0) return false;  // covers no pixel centre
 
-    // Sort the corners by y: v0 top, v1 middle, v2 bottom.
-    const ScreenVertex* v0 = &a;
-    const ScreenVertex* v1 = &b;
-    const ScreenVertex* v2 = &c;
-    if (v1->y < v0->y) {
-        const ScreenVertex* t = v0;
-        v0 = v1;
-        v1 = t;
-    }
-    if (v2->y < v1->y) {
-        const ScreenVertex* t = v1;
-        v1 = v2;
-        v2 = t;
-    }
-    if (v1->y < v0->y) {
-        const ScreenVertex* t = v0;
-        v0 = v1;
-        v1 = t;
-    }
+    const ScreenVertex *v0, *v1, *v2;  // top, middle, bottom
+    sort_by_y(a, b, c, &v0, &v1, &v2);
 
     // Rows whose centre lies in [v0.y, v2.y): the top vertex row is in, the bottom one is
     // out (the top-left rule for horizontal edges), intersected with the band.
-    i64 row_begin = ceil_div_subpixel(v0->y - kHalfPixel);
-    i64 row_end = ceil_div_subpixel(v2->y - kHalfPixel);
-    i64 band_begin = band.y0, band_end = i64(band.y0) + band.color.height;
+    int row_begin = first_centre_from(v0->y);
+    int row_end = first_centre_from(v2->y);
+    const int band_begin = band.y0, band_end = band.y0 + band.color.height;  // validate_band
     if (row_begin < band_begin) row_begin = band_begin;
     if (row_end > band_end) row_end = band_end;
     if (row_begin >= row_end) return false;
     if (!src.ready) prepare(ctx.mesh, &src);
 
     // Is the middle vertex right of the long edge v0 -> v2? Then the long edge is the left.
-    bool middle_right = (v1->x - v0->x) * (v2->y - v0->y) - (v2->x - v0->x) * (v1->y - v0->y) > 0;
+    bool middle_right = wide_product(v1->x - v0->x, v2->y - v0->y) -
+                            wide_product(v2->x - v0->x, v1->y - v0->y) >
+                        0;
 
     // Barycentrics around corner a (1/256 pixel units): lambda_b = (p - a) x (c - a) / area,
     // lambda_c = (b - a) x (p - a) / area; float division (differences < 2^29, via int32).
@@ -391,37 +415,47 @@ bool raster_triangle(DrawContext& ctx, SourceTriangle& src, const ScreenVertex& 
     float lb_dx = per_area(c.y - a.y), lb_dy = per_area(a.x - c.x);
     float lc_dx = per_area(a.y - b.y), lc_dy = per_area(b.x - a.x);
     float dz_b = b.z - a.z, dz_c = c.z - a.z;
-    const bool unclipped =
-        a.bary == Vec3{1, 0, 0} && b.bary == Vec3{0, 1, 0} && c.bary == Vec3{0, 0, 1};
+    // original: the caller knows a, b, c are the source triangle's corners (not clipped).
+    const bool unclipped = original || (a.bary == Vec3{1, 0, 0} && b.bary == Vec3{0, 1, 0} &&
+                                        c.bary == Vec3{0, 0, 1});
 
     Fragment& f = ctx.f;
     f.triangle = src.index;
     f.front_facing = front;
-    const i64 width = band.frame_width;
-    EdgeWalk long_edge, upper_edge, lower_edge;
-    long_edge.started = upper_edge.started = lower_edge.started = false;
-    for (i64 y = row_begin; y < row_end; ++y) {
-        i64 yc = y * kSubpixel + kHalfPixel;
-        // The short edge on this row: v0 -> v1 above the middle vertex, v1 -> v2 below.
-        i64 x_long = long_edge.at_row(*v0, *v2, y);
-        i64 x_short = yc < v1->y ? upper_edge.at_row(*v0, *v1, y) : lower_edge.at_row(*v1, *v2, y);
-        i64 x_begin = middle_right ? x_long : x_short;
-        i64 x_end = middle_right ? x_short : x_long;
+    const int width = band.frame_width;
+    // Rows [y_begin, y_mid) lie above the middle vertex (short edge v0 -> v1), rows [y_mid,
+    // y_end) below it (v1 -> v2): a centre y·256 + 128 < v1.y <=> y < ceil((v1.y - 128) / 256).
+    const int y_begin = row_begin, y_end = row_end;
+    const int mid = first_centre_from(v1->y);
+    const int y_mid = mid < row_begin ? row_begin : (mid > row_end ? row_end : mid);
+    EdgeWalk long_edge, short_edge;
+    long_edge.start(*v0, *v2, y_begin);
+    if (y_mid > y_begin)
+        short_edge.start(*v0, *v1, y_begin);
+    else
+        short_edge.start(*v1, *v2, y_begin);
+    for (int y = y_begin; y < y_end; ++y) {
+        if (y == y_mid && y != y_begin) short_edge.start(*v1, *v2, y);
+        const int x_long = long_edge.column, x_short = short_edge.column;
+        long_edge.next_row();
+        short_edge.next_row();
+        int x_begin = middle_right ? x_long : x_short;
+        int x_end = middle_right ? x_short : x_long;
         if (x_begin < 0) x_begin = 0;
         if (x_end > width) x_end = width;
         if (x_begin >= x_end) continue;
 
-        int band_row = int(y - band.y0);
+        int band_row = y - band.y0;
         Rgb8* color_row = band.color.row(band_row);
         float* depth_row = band.depth.row(band_row);
         // |yc - a.y| and |256·x + 128 - a.x| stay below 2^29 (coordinates below kMaxFixed =
         // 2^28): in int32 (the latter stepped by 256 per pixel), converted by the FPU (an int64
         // one is libgcc's __aeabi_l2f per pixel on a Cortex-M4F): the same integers and floats.
-        float ry = float(std::int32_t(yc - a.y));
+        float ry = float(std::int32_t(i64(y) * kSubpixel + kHalfPixel - a.y));
         float lb_row = ry * lb_dy, lc_row = ry * lc_dy;
-        f.y = int(y);
-        std::int32_t rx_fixed = std::int32_t(x_begin * kSubpixel + kHalfPixel - a.x);
-        for (int x = int(x_begin); x < int(x_end); ++x, rx_fixed += std::int32_t(kSubpixel)) {
+        f.y = y;
+        std::int32_t rx_fixed = std::int32_t(i64(x_begin) * kSubpixel + kHalfPixel - a.x);
+        for (int x = x_begin; x < x_end; ++x, rx_fixed += std::int32_t(kSubpixel)) {
             float rx = float(rx_fixed);
             float lb = lb_row + rx * lb_dx;  // screen-space (affine) barycentrics
             float lc = lc_row + rx * lc_dx;
@@ -536,13 +570,20 @@ bool plane_direction(Vec3 e1, Vec3 e2, Vec3* direction) {
     return true;
 }
 
+// is_finite of every component of a and b, as one test: 0·v is 0 for a finite v and NaN for
+// inf or NaN, and a sum of zeros is 0 (inline, no call per vector: it runs for every triangle
+// of every band).
+inline bool all_finite(Vec3 a, Vec3 b) {
+    return (a.x * 0.0f + a.y * 0.0f + a.z * 0.0f) + (b.x * 0.0f + b.y * 0.0f + b.z * 0.0f) == 0.0f;
+}
+
 // Whether plane_direction finds the plane nonzero, mostly without its exact products:
 // rounding is monotonic, so when the rounded products of a component, u·v and w·z, differ
 // (neither NaN), the exact ones differ too and that component is nonzero. Only a triangle
 // whose rounded products all agree (degenerate, or nearly) takes the exact test.
 inline bool plane_is_nonzero(Vec3 e1, Vec3 e2) {
     auto differ = [](float a, float b) { return a < b || a > b; };
-    if (is_finite(e1) && is_finite(e2) &&
+    if (all_finite(e1, e2) &&
         (differ(e1.y * e2.z, e1.z * e2.y) || differ(e1.z * e2.x, e1.x * e2.z) ||
          differ(e1.x * e2.y, e1.y * e2.x)))
         return true;
@@ -550,20 +591,26 @@ inline bool plane_is_nonzero(Vec3 e1, Vec3 e2) {
     return plane_direction(e1, e2, &unused);
 }
 
-// The rest of step 1 once the object positions are in src: the plane test and the world
-// positions. A projective model can send a corner to w ~ 0: world positions (and the
+// Whether a triangle whose object and world positions are in src has a plane and a place in
+// the world. A projective model can send a corner to w ~ 0: world positions (and the
 // differences the fragments interpolate) overflow to inf and NaN (fuzz_raster finding). Such a
-// triangle has no place in the world: rejected like a degenerate one (false). The world
-// positions are kept for prepare(), which would otherwise compute them again.
-bool place_in_world(const Mat4& model, SourceTriangle* src) {
-    const Vec3 e1 = src->v[1].object_position - src->v[0].object_position;
-    const Vec3 e2 = src->v[2].object_position - src->v[0].object_position;
+// triangle has no place in the world: rejected like a degenerate one (false).
+inline bool in_world(const SourceTriangle& src) {
+    const Vec3 e1 = src.v[1].object_position - src.v[0].object_position;
+    const Vec3 e2 = src.v[2].object_position - src.v[0].object_position;
     const bool has_plane = plane_is_nonzero(e1, e2);
+    const Vec3 w0 = src.v[0].world_position;
+    return has_plane && all_finite(w0, w0) &&
+           all_finite(src.v[1].world_position - w0, src.v[2].world_position - w0);
+}
+
+// The rest of step 1 once the object positions are in src: the world positions, then the plane
+// test (in_world). The world positions are kept for prepare(), which would otherwise compute
+// them again.
+bool place_in_world(const Mat4& model, SourceTriangle* src) {
     for (int k = 0; k < 3; ++k)
         src->v[k].world_position = model_point(model, src->v[k].object_position);
-    const Vec3 w0 = src->v[0].world_position;
-    return has_plane && is_finite(w0) && is_finite(src->v[1].world_position - w0) &&
-           is_finite(src->v[2].world_position - w0);
+    return in_world(*src);
 }
 
 // ---- 1. Fetch the three corners, into clip space ----
@@ -667,7 +714,8 @@ void add_stats(const RasterStats& local, long fragments, RasterStats* stats) {
 // Flattened (its helpers inlined into it, in this function only): it runs for every triangle of
 // the frame, and the calls cost as much as the arithmetic (bin_mesh alone was 870 instructions
 // per triangle of the 48 x 24 UV sphere on a Cortex-M4F).
-TriangleRows rows_of(const Camera& camera, CullMode cull, i64 area2, i64 y0, i64 y1, i64 y2);
+TriangleRows rows_of(const Camera& camera, CullMode cull, i64 area2, std::int32_t y0,
+                     std::int32_t y1, std::int32_t y2);
 
 SHITSUKAN_RASTER_FLATTEN
 TriangleRows bin_triangle(const Camera& camera, const MeshView& mesh, const Mat4& mvp,
@@ -696,22 +744,35 @@ TriangleRows bin_triangle(const Camera& camera, const MeshView& mesh, const Mat4
 
 // The rows of a triangle drawn without clipping, from its snapped area (twice, signed) and
 // the rows of its corners (none: zero area or culled).
-TriangleRows rows_of(const Camera& camera, CullMode cull, i64 area2, i64 y0, i64 y1, i64 y2) {
+TriangleRows rows_of(const Camera& camera, CullMode cull, i64 area2, std::int32_t y0,
+                     std::int32_t y1, std::int32_t y2) {
     const TriangleRows none{0, 0};
     const bool front = area2 < 0;
     if (area2 == 0 || (cull == CullMode::back && !front) || (cull == CullMode::front && front))
         return none;
-    const i64 top = y0 < y1 ? (y0 < y2 ? y0 : y2) : (y1 < y2 ? y1 : y2);
-    const i64 bottom = y0 > y1 ? (y0 > y2 ? y0 : y2) : (y1 > y2 ? y1 : y2);
-    i64 begin = ceil_div_subpixel(top - kHalfPixel), end = ceil_div_subpixel(bottom - kHalfPixel);
+    const std::int32_t top = y0 < y1 ? (y0 < y2 ? y0 : y2) : (y1 < y2 ? y1 : y2);
+    const std::int32_t bottom = y0 > y1 ? (y0 > y2 ? y0 : y2) : (y1 > y2 ? y1 : y2);
+    int begin = first_centre_from(top), end = first_centre_from(bottom);
     if (begin < 0) begin = 0;
     if (end > camera.height) end = camera.height;
     if (begin >= end) return none;
     return TriangleRows{std::uint16_t(begin), std::uint16_t(end)};
 }
 
+// A binned-away triangle (end 0) keeps in begin the number of binned-away triangles from it
+// on (at most 65,535), so that a band's walk steps over a run of them at once: the triangles
+// of a mesh that face away come in long runs (the 48 x 24 UV sphere's 1,342 in 27).
+void count_empty_runs(TriangleRows* rows, int n) {
+    unsigned run = 0;
+    for (int t = n - 1; t >= 0; --t) {
+        run = rows[t].end == 0 ? (run < 65535u ? run + 1u : 65535u) : 0u;
+        if (rows[t].end == 0) rows[t].begin = std::uint16_t(run);
+    }
+}
+
 // ---- Binning with the vertices kept: each vertex transformed, divided and snapped once ----
 constexpr std::int32_t kUnmapped = std::numeric_limits<std::int32_t>::min();  // never snapped
+constexpr std::uint8_t kNormalsNotMade = 0xff;  // BinnedVertex::normals: no triangle needs them
 
 // A vertex's clip-space outcode and, when a triangle of it could take the fast path there
 // (finite, inside the guard band and the near plane, w >= kMinClipW, mappable), its screen
@@ -720,63 +781,158 @@ SHITSUKAN_RASTER_FLATTEN
 void bin_vertex(const Camera& camera, const Mat4& mvp, Vec3 p, BinnedVertex* v) {
     v->x = kUnmapped;
     v->outcode = 0;
+    v->normals = kNormalsNotMade;
     if (!is_finite(p)) return;
     const ClipSpaceVertex c{transform_homogeneous(mvp, p), Vec3{0, 0, 0}};
-    v->outcode = clip_outcode(c.clip);
+    const unsigned outcode = clip_outcode(c.clip);
+    v->outcode = std::uint16_t(outcode);  // kClipPlaneBits | kOutsideBits: 11 bits
     ScreenVertex screen;  // no default member values: not zeroed
-    if ((v->outcode & kClipPlaneBits) != 0 || !finite_clip(c.clip) || !(c.clip.w >= kMinClipW) ||
+    if ((outcode & kClipPlaneBits) != 0 || !finite_clip(c.clip) || !(c.clip.w >= kMinClipW) ||
         !to_screen(camera, c, &screen))
         return;
-    v->x = std::int32_t(screen.x);  // |x|, |y| < kMaxFixed = 2^28
-    v->y = std::int32_t(screen.y);
+    v->x = screen.x;
+    v->y = screen.y;
     v->z = screen.z;
     v->inv_w = screen.inv_w;
 }
 
-inline ScreenVertex kept_corner(const BinnedVertex& v, int k) {
-    return ScreenVertex{v.x, v.y, v.z, v.inv_w,
-                        Vec3{k == 0 ? 1.0f : 0.0f, k == 1 ? 1.0f : 0.0f, k == 2 ? 1.0f : 0.0f}};
+// The world position and normals of a vertex that a drawable triangle uses (normals: which of
+// them the plane supplies), the values prepare() and place_in_world() make for each corner.
+void bin_vertex_attributes(const MeshContext& mc, std::uint32_t i, BinnedVertex* v) {
+    const Vec3 w = model_point(*mc.model, mc.mesh->positions[i]);
+    v->world_position = w;
+    const float bound = 0x1p126f;  // |a - b| <= 2^127 < FLT_MAX for two such values
+    v->near_world = std::fabs(w.x) <= bound && std::fabs(w.y) <= bound && std::fabs(w.z) <= bound;
+    v->normals = std::uint8_t(vertex_normals(mc, i, &v->object_normal, &v->normal));
+}
+
+// The screen corner of a kept vertex. Its barycentrics are not set: raster_triangle reads them
+// only for a piece of a clipped triangle.
+inline void kept_corner(const BinnedVertex& v, ScreenVertex* s) {
+    s->x = v.x;
+    s->y = v.y;
+    s->z = v.z;
+    s->inv_w = v.inv_w;
 }
 
 // bin_triangle from the kept vertices (a vertex left unmapped: bin_triangle itself).
+// A triangle drawn from its kept vertices marks them: their attributes are made (bin_mesh).
 TriangleRows bin_kept_triangle(const Camera& camera, const MeshView& mesh, const Mat4& mvp,
-                               CullMode cull, int t, const BinnedVertex* vertices,
+                               CullMode cull, int t, BinnedVertex* vertices,
                                ClipSpaceVertex corners[3]) {
     const std::uint32_t* index = mesh.indices + 3 * std::size_t(t);
-    const BinnedVertex &a = vertices[index[0]], &b = vertices[index[1]], &c = vertices[index[2]];
+    BinnedVertex &a = vertices[index[0]], &b = vertices[index[1]], &c = vertices[index[2]];
     if (a.x == kUnmapped || b.x == kUnmapped || c.x == kUnmapped)
         return bin_triangle(camera, mesh, mvp, cull, t, corners);
     if ((a.outcode & b.outcode & c.outcode & kOutsideBits) != 0) return TriangleRows{0, 0};
     // snapped_area2 of the kept corners, in the same 64-bit integers
-    const i64 area2 = (i64(b.x) - a.x) * (i64(c.y) - a.y) - (i64(c.x) - a.x) * (i64(b.y) - a.y);
-    return rows_of(camera, cull, area2, a.y, b.y, c.y);
+    const i64 area2 = wide_product(b.x - a.x, c.y - a.y) - wide_product(c.x - a.x, b.y - a.y);
+    const TriangleRows rows = rows_of(camera, cull, area2, a.y, b.y, c.y);
+    if (rows.end != 0) a.normals = b.normals = c.normals = 0;
+    return rows;
 }
 
-// Steps 1-5 for a handed triangle whose three vertices bin_mesh kept: the object positions,
-// plane test and world positions (place_in_world), then the kept screen positions instead of
-// transforming, testing and dividing the corners again. false: a vertex was not kept (the
-// general path then draws the triangle).
+// q - p and r - p of one attribute, into the differences, and p into the first vertex.
+template <class V>
+inline void differences(V p, V q, V r, V* first, V* dq, V* dr) {
+    *first = p;
+    *dq = q - p;
+    *dr = r - p;
+}
+
+// prepare() from the kept vertices: their world positions (already in src) and normals, the
+// plane's where a vertex asks for it. Without the plane the differences are made straight from
+// the kept vertices and the mesh's arrays (the same subtractions as attribute_differences).
+// p0, e1, e2: the first object position and the edges from it (draw_kept_triangle made them).
+void prepare_kept(const MeshContext& mc, const BinnedVertex* const kept[3], Vec3 p0, Vec3 e1,
+                  Vec3 e2, SourceTriangle* t) {
+    const MeshView& mesh = *mc.mesh;
+    const std::uint32_t* i = t->corner_index;
+    t->flat = mesh.normals == nullptr;
+    t->ready = true;
+    VertexData& p = t->v[0];
+    if (mesh.uvs)
+        differences(mesh.uvs[i[0]], mesh.uvs[i[1]], mesh.uvs[i[2]], &p.uv, &t->dq.uv, &t->dr.uv);
+    else
+        differences(Vec2{0, 0}, Vec2{0, 0}, Vec2{0, 0}, &p.uv, &t->dq.uv, &t->dr.uv);
+    const Vec3 white{1, 1, 1};
+    if (mesh.colors)
+        differences(mesh.colors[i[0]], mesh.colors[i[1]], mesh.colors[i[2]], &p.color,
+                    &t->dq.color, &t->dr.color);
+    else
+        differences(white, white, white, &p.color, &t->dq.color, &t->dr.color);
+    p.object_position = p0;
+    t->dq.object_position = e1;
+    t->dr.object_position = e2;
+    differences(kept[0]->world_position, kept[1]->world_position, kept[2]->world_position,
+                &p.world_position, &t->dq.world_position, &t->dr.world_position);
+    const int needs_plane[3] = {kept[0]->normals, kept[1]->normals, kept[2]->normals};
+    if (needs_plane[0] + needs_plane[1] + needs_plane[2] == 0) {
+        differences(kept[0]->normal, kept[1]->normal, kept[2]->normal, &p.normal, &t->dq.normal,
+                    &t->dr.normal);
+        differences(kept[0]->object_normal, kept[1]->object_normal, kept[2]->object_normal,
+                    &p.object_normal, &t->dq.object_normal, &t->dr.object_normal);
+        return;
+    }
+    for (int k = 0; k < 3; ++k) {
+        t->v[k].object_position = mesh.positions[i[k]];  // plane_normals' edges, as prepare's
+        t->v[k].object_normal = kept[k]->object_normal;
+        t->v[k].normal = kept[k]->normal;
+    }
+    plane_normals(mc, needs_plane, t);
+    differences(t->v[0].normal, t->v[1].normal, t->v[2].normal, &p.normal, &t->dq.normal,
+                &t->dr.normal);
+    differences(t->v[0].object_normal, t->v[1].object_normal, t->v[2].object_normal,
+                &p.object_normal, &t->dq.object_normal, &t->dr.object_normal);
+}
+
+// Steps 1-5 for a handed triangle whose three vertices bin_mesh kept: the object positions and
+// the kept world positions, the plane test (in_world), the kept screen positions and normals
+// instead of transforming, testing, dividing and normalising the corners again. false: a vertex
+// was not kept (the general path then draws the triangle).
 bool draw_kept_triangle(DrawContext& ctx, SourceTriangle* src, const BinnedVertex* vertices,
                         int t, RasterStats* local) {
     const CullMode cull = ctx.cull;
     const MeshView& mesh = *ctx.mesh.mesh;
     const std::uint32_t* index = mesh.indices + 3 * std::size_t(t);
-    const BinnedVertex &a = vertices[index[0]], &b = vertices[index[1]], &c = vertices[index[2]];
-    if (a.x == kUnmapped || b.x == kUnmapped || c.x == kUnmapped) return false;
+    const BinnedVertex* const kept[3] = {&vertices[index[0]], &vertices[index[1]],
+                                         &vertices[index[2]]};
+    const BinnedVertex &a = *kept[0], &b = *kept[1], &c = *kept[2];
+    if (a.x == kUnmapped || b.x == kUnmapped || c.x == kUnmapped ||
+        a.normals == kNormalsNotMade || b.normals == kNormalsNotMade ||
+        c.normals == kNormalsNotMade)
+        return false;
     src->index = t;
     src->corner_index = index;
-    for (int k = 0; k < 3; ++k) src->v[k].object_position = mesh.positions[index[k]];
-    if (!place_in_world(*ctx.mesh.model, src)) {
+    const Vec3 p0 = mesh.positions[index[0]];
+    const Vec3 e1 = mesh.positions[index[1]] - p0, e2 = mesh.positions[index[2]] - p0;
+    // in_world: with every world position within +-2^126 their differences are finite, and
+    // only the plane is left to test.
+    bool placed;
+    if (a.near_world && b.near_world && c.near_world) {
+        placed = plane_is_nonzero(e1, e2);
+    } else {
+        for (int k = 0; k < 3; ++k) {
+            src->v[k].object_position = mesh.positions[index[k]];
+            src->v[k].world_position = kept[k]->world_position;
+        }
+        placed = in_world(*src);
+    }
+    if (!placed) {
         ++local->triangles_rejected;
         return true;
     }
     if ((a.outcode & b.outcode & c.outcode & kOutsideBits) != 0) return true;
-    const ScreenVertex s[3] = {kept_corner(a, 0), kept_corner(b, 1), kept_corner(c, 2)};
+    ScreenVertex s[3];  // no default member values: not zeroed
+    for (int k = 0; k < 3; ++k) kept_corner(*kept[k], &s[k]);
     const i64 area2 = snapped_area2(s[0], s[1], s[2]);  // decide_facing, unclipped
     const bool front = area2 < 0;
     if (area2 == 0 || (cull == CullMode::back && !front) || (cull == CullMode::front && front))
         return true;
-    if (raster_triangle(ctx, *src, s[0], s[1], s[2], front)) ++local->triangles_drawn;
+    // Its rows meet the band (bin_mesh's rows_of gave them): raster_triangle would prepare it.
+    prepare_kept(ctx.mesh, kept, p0, e1, e2, src);
+    if (raster_triangle(ctx, *src, s[0], s[1], s[2], area2, front, true))
+        ++local->triangles_drawn;
     return true;
 }
 
@@ -797,13 +953,18 @@ Status check_draw_inputs(const Camera& camera, const FrameBand& band, const Mesh
 // The first triangle from t on whose rows meet the band [band_begin, band_end) (n when none):
 // a loop of its own, so that the walk over a band's binned-away
 // triangles (most of the mesh) keeps its few values in registers (22 instructions per
-// triangle and band on a Cortex-M4F inside draw_mesh_rows' loop).
+// triangle and band on a Cortex-M4F inside draw_mesh_rows' loop). A run of binned-away
+// triangles is stepped over at once (count_empty_runs).
 SHITSUKAN_RASTER_NOINLINE int next_in_band(const TriangleRows* rows, int t, int n, int band_begin,
                                            int band_end) {
-    for (; t < n; ++t) {
+    while (t < n) {
         const TriangleRows r = rows[t];
-        if (r.end == 0) continue;  // binned away from every band (most of a mesh: culled)
+        if (r.end == 0) {  // binned away from every band (most of a mesh: culled)
+            t += r.begin > 1 ? int(r.begin) : 1;
+            continue;
+        }
         if (r.end > band_begin && r.begin < band_end && r.begin < r.end) return t;
+        ++t;
     }
     return n;
 }
@@ -835,7 +996,9 @@ void draw_triangle(DrawContext& ctx, SourceTriangle* src, const Camera& camera, 
     // ---- 5. Walk each piece of the fan ----
     bool drawn = false;
     for (int k = 1; k + 1 < count; ++k)
-        drawn = raster_triangle(ctx, *src, s[0], s[k], s[k + 1], front) || drawn;
+        drawn = raster_triangle(ctx, *src, s[0], s[k], s[k + 1],
+                                snapped_area2(s[0], s[k], s[k + 1]), front, !clipped) ||
+                drawn;
     if (drawn) ++local->triangles_drawn;
 }
 
@@ -899,12 +1062,18 @@ Status bin_mesh(const Camera& camera, const MeshView& mesh, const DrawOptions& o
     if (vertices == nullptr) {
         for (int t = 0; t < mesh.triangle_count; ++t)
             rows[t] = bin_triangle(camera, mesh, mvp, options.cull, t, corners);
+        count_empty_runs(rows, mesh.triangle_count);
         return Status::success();
     }
     for (int i = 0; i < mesh.vertex_count; ++i)
         bin_vertex(camera, mvp, mesh.positions[i], &vertices[i]);
     for (int t = 0; t < mesh.triangle_count; ++t)
         rows[t] = bin_kept_triangle(camera, mesh, mvp, options.cull, t, vertices, corners);
+    const MeshContext mc{&mesh, &options.model, &normal_matrix};
+    for (int i = 0; i < mesh.vertex_count; ++i)
+        if (vertices[i].normals != kNormalsNotMade)
+            bin_vertex_attributes(mc, std::uint32_t(i), &vertices[i]);
+    count_empty_runs(rows, mesh.triangle_count);
     return Status::success();
 }
 

@@ -159,7 +159,9 @@ Status draw_mesh(const Camera& camera, const FrameBand& band, const MeshView& me
 // indices of each triangle it is handed before reading them (bin_mesh checked every index): a
 // mesh changed since with a bad index gives invalid_argument, possibly after part of the band.
 struct TriangleRows {
-    std::uint16_t begin = 0, end = 0;  // frame rows [begin, end); empty: nothing to draw
+    // frame rows [begin, end); end 0: nothing to draw, and begin then counts the triangles
+    // from this one on that have nothing to draw (a band's walk steps over them at once)
+    std::uint16_t begin = 0, end = 0;
 };
 Status bin_mesh(const Camera& camera, const MeshView& mesh, const DrawOptions& options,
                 TriangleRows* rows, int capacity);
@@ -167,19 +169,24 @@ Status draw_binned_mesh(const Camera& camera, const FrameBand& band, const MeshV
                         const DrawOptions& options, const TriangleRows* rows, int capacity,
                         FragmentShader shader, void* user, RasterStats* stats = nullptr);
 
-// With the vertices kept (20 bytes per vertex of caller memory more): bin_mesh transforms,
+// With the vertices kept (56 bytes per vertex of caller memory more): bin_mesh transforms,
 // divides and snaps each vertex once (a vertex is shared by about six triangles) and keeps its
-// screen position; draw_binned_mesh then sets a triangle up from its vertices' kept positions
-// instead of its corners again (a triangle with a vertex that needs clipping or cannot be
-// mapped takes the general path). Same pixels and statistics as draw_mesh.
+// screen position, and for each vertex of a triangle that can be drawn its world position and
+// normals; draw_binned_mesh then sets a triangle up from its vertices' kept values instead of
+// its corners again (a triangle with a vertex that needs clipping or cannot be mapped takes the
+// general path). Same pixels and statistics as draw_mesh.
 //   BinnedVertex kept[kMaxVertices];
 //   s = bin_mesh(camera, mesh, opt, rows, kMaxTriangles, kept, kMaxVertices);
 //   s = draw_binned_mesh(camera, band, mesh, opt, rows, kMaxTriangles, kept, kMaxVertices, shader,
 //                        user);
 struct BinnedVertex {  // written by bin_mesh; read by draw_binned_mesh
-    std::int32_t x = 0, y = 0;  // snapped screen position (1/256 pixel), or "not kept"
-    float z = 0, inv_w = 0;     // depth and 1 / w_clip
-    std::uint32_t outcode = 0;  // the clip-space outcode
+    std::int32_t x = 0, y = 0;   // snapped screen position (1/256 pixel), or "not kept"
+    float z = 0, inv_w = 0;      // depth and 1 / w_clip
+    std::uint16_t outcode = 0;   // the clip-space outcode
+    std::uint8_t normals = 0;    // which normals the triangle's plane supplies, or "not made"
+    std::uint8_t near_world = 0; // 1: world position within +-2^126 (differences stay finite)
+    Vec3 world_position;         // the model matrix times the position
+    Vec3 normal, object_normal;  // the mesh's normal, normalised, in world and object space
 };
 Status bin_mesh(const Camera& camera, const MeshView& mesh, const DrawOptions& options,
                 TriangleRows* rows, int capacity, BinnedVertex* vertices, int vertex_capacity);
