@@ -555,4 +555,23 @@ TEST_CASE("Type III with amplitudes computed at compile time: the same lattice")
     CHECK(std::string(s.message()) ==
           "Type III lattice: the amplitudes are for beta 0.9, the parameters' beta is 0.5");
     CHECK(precomputed.init(p, LevelAmplitudes{}).code() == StatusCode::invalid_argument);
+    // A table marked with the right beta but not filled by level_amplitudes is refused too
+    // (all zero: a flat lattice; a level above the one before; a first level other than 1).
+    LevelAmplitudes unfilled;
+    unfilled.beta = p.beta;
+    const Status z = precomputed.init(p, unfilled);
+    CHECK(z.code() == StatusCode::invalid_argument);
+    CHECK(std::string(z.message()) ==
+          "Type III lattice: the amplitudes are not eq. (2)'s (level 1 is 0): fill them with "
+          "level_amplitudes(beta)");
+    LevelAmplitudes rising = kOkada1987Amplitudes;
+    rising.v[4] = rising.v[3] * 1.5f;
+    CHECK(precomputed.init(p, rising).code() == StatusCode::invalid_argument);
+    LevelAmplitudes scaled = kOkada1987Amplitudes;
+    scaled.v[1] = 0.5f;
+    CHECK(precomputed.init(p, scaled).code() == StatusCode::invalid_argument);
+    LevelAmplitudes negative = kOkada1987Amplitudes;
+    negative.v[p.R] = -0.0001f;
+    CHECK(precomputed.init(p, negative).code() == StatusCode::invalid_argument);
+    CHECK(precomputed.init(p, kOkada1987Amplitudes).ok());
 }

@@ -6,7 +6,7 @@
 //   Status s = validate_fractal_params(p, kTypeIMaxDepth);
 //   std::int64_t n = lattice_side(p.R);       // 2^R + 1 points a side (okada1987 §2.2)
 //   float a = level_amplitude(3, p.beta);   // L_r^(3) = exp(-2·beta), eq. (2)
-//   constexpr LevelAmplitudes amps = level_amplitudes(0.9f);  // the same, at compile time
+//   constexpr LevelAmplitudes amps = level_amplitudes(FractalParams{}.beta);  // at compile time
 //   static_assert(amps.v[1] == 1.0f, "L^(1) = 1");
 //   return s;
 //
@@ -74,9 +74,11 @@ float level_amplitude(int n, float beta);
 // The amplitudes of levels 1..kTypeIIIMaxDepth for one beta, as a constant expression:
 // `constexpr LevelAmplitudes amps = level_amplitudes(beta);` holds level_amplitude(n, beta)'s
 // bits (det_exp_constexpr: det_exp's steps; tests/test_solid_lattice.cpp compares them), so
-// a lattice given them (TypeIIILattice::init(params, amps)) links no double arithmetic: on a
+// a lattice given them (TypeIIILattice::init(params, amps)) links no double arithmetic (with
+// --gc-sections or link-time optimisation, which drop the unused init(params)): on a
 // soft-float microcontroller 2.9-3.6 KB of flash (ports/PORTING.md). Call it in a constant
-// expression only (detmath.hpp's det_exp_constexpr says why).
+// expression only (detmath.hpp's det_exp_constexpr says why). init(params, amps) refuses a
+// table for another beta, and one that is not eq. (2)'s (L^(1) = 1, non-increasing, >= 0).
 struct LevelAmplitudes {
     float beta = -1.0f;                  // the beta they are for (-1: none, so none accepts them)
     float v[kTypeIIIMaxDepth + 1] = {};  // v[n] = L^(n), n = 1..kTypeIIIMaxDepth (v[0] unused)

@@ -71,6 +71,17 @@ Status TypeIIILattice::init(const FractalParams& params, const LevelAmplitudes& 
                              "Type III lattice: the amplitudes are for beta %g, the parameters' "
                              "beta is %g",
                              double(amplitudes.beta), double(params.beta));
+    // A table filled by level_amplitudes: L^(1) = 1, then non-increasing and >= 0 (eq. (2)
+    // with beta >= 0). Float compares only, so checking it links no double arithmetic.
+    for (int n = 1; n <= params.R; ++n) {
+        const float bound = n == 1 ? 1.0f : amplitudes.v[n - 1];
+        if (!(amplitudes.v[n] >= 0.0f && amplitudes.v[n] <= bound) ||
+            (n == 1 && !(amplitudes.v[1] == 1.0f)))
+            return Status::error(StatusCode::invalid_argument,
+                                 "Type III lattice: the amplitudes are not eq. (2)'s (level %d is "
+                                 "%g): fill them with level_amplitudes(beta)",
+                                 n, double(amplitudes.v[n]));
+    }
     for (int n = 1; n <= params.R; ++n) amplitude_[n] = amplitudes.v[n];
     start(params);
     return Status::success();

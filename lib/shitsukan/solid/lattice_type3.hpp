@@ -10,7 +10,7 @@
 //                                                    // all zero until init(): .bss if static
 //   Status s = lattice.init(p);                      // hash noise only (see below)
 //   if (!s) return s;
-//   constexpr LevelAmplitudes amps = level_amplitudes(0.9f);  // beta known when building:
+//   constexpr LevelAmplitudes amps = level_amplitudes(FractalParams{}.beta);  // at build time:
 //   s = lattice.init(p, amps);        // eq. (2) computed by the compiler, the same values
 //   if (!s) return s;
 //   float v = lattice.node_value(7, 1 << 19, 3);     // one node, 0 <= x, y, z <= 2^R
