@@ -4,6 +4,14 @@
 #include <cmath>
 #include <cstdint>
 
+// Every operation here is meant in the format of its type, rounded once (the bits the
+// compiler's constant evaluation gives too: det_exp_constexpr). A target that evaluates
+// float and double in a wider format (FLT_EVAL_METHOD 1 or 2: x87 without SSE2) would give
+// other bits: refused here rather than differing silently.
+#if defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ > 0
+#error "shitsukan's deterministic maths needs FLT_EVAL_METHOD 0 (e.g. -msse2 -mfpmath=sse on i386)"
+#endif
+
 namespace shitsukan {
 
 namespace {
