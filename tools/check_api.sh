@@ -4,7 +4,8 @@
 #   2. the umbrella header includes every header (tools/gen_umbrella.sh writes it)
 #   3. the archive exports only shitsukan symbols (std:: template instances are weak, shared)
 #   4. a program with its own stb_image_write implementation links and runs; built without the
-#      stb header (as `make install` on a bare machine), PNGs still work
+#      stb header (as `make install` on a bare machine), PNGs still work; core/status.cpp
+#      built with SHITSUKAN_STATUS_NO_ARGUMENTS keeps codes and formats
 #   5. a dropped Status is a compile error under -Werror (and the checked form compiles)
 #   6. README.md's module map lists what the tree holds, and nothing else
 #   7. required outputs are references, not pointers every function null-checks
@@ -55,6 +56,11 @@ run $CXX $CXXFLAGS -DSHITSUKAN_NO_STB -Ilib -c lib/shitsukan/image/image_io.cpp 
 run $CXX $CXXFLAGS -Ilib tests/consumer/png_without_stb.cpp "$api/image_io_nostb.o" "$library" \
   -o "$api/png_without_stb" || exit 1
 "$api/png_without_stb" "$api/nostb.png" || exit 1
+# the small devices' switch: a Status without its arguments (ports/PORTING.md section 7)
+run $CXX $CXXFLAGS -DSHITSUKAN_STATUS_NO_ARGUMENTS -Ilib tests/consumer/status_no_arguments.cpp \
+  lib/shitsukan/core/status.cpp lib/shitsukan/core/format_number.cpp \
+  -o "$api/status_no_arguments" || exit 1
+"$api/status_no_arguments" || exit 1
 
 # 5.
 $CXX $CPPFLAGS -std=c++17 -Wall -Werror -DSHITSUKAN_CHECKED -fsyntax-only \

@@ -97,9 +97,7 @@ MCU_TRANSCRIPTS := $(foreach c,$(MCU_CORES),$(MCU_DIR)/$(c)/transcript.elf)
 MCU_SOFT_CHECKS := $(foreach c,m0 rv32,$(MCU_DIR)/$(c)/soft_double_check.elf)
 test-mcu: mcu-deps
 	@$(SUBMAKE) $(MCU_TRANSCRIPTS) $(MCU_SOFT_CHECKS) $(MCU_DIR)/host_transcript \
-	  $(MCU_DIR)/host_clang_O0 $(MCU_DIR)/png_fnv $(MCU_DIR)/status_no_arguments \
-	  $(BUILD)/paper_figures
-	$(MCU_DIR)/status_no_arguments
+	  $(MCU_DIR)/host_clang_O0 $(MCU_DIR)/png_fnv $(BUILD)/paper_figures
 	bash ports/cortex-m/qemu_run.sh m0 $(MCU_DIR)/m0/soft_double_check.elf
 	bash ports/cortex-m/qemu_run.sh rv32 $(MCU_DIR)/rv32/soft_double_check.elf
 	bash ports/cortex-m/test_mcu.sh $(MCU_DIR) $(BUILD)/paper_figures
@@ -128,8 +126,8 @@ bench-mcu: mcu-deps
 # -DSHITSUKAN_STATUS_NO_ARGUMENTS (core/status.hpp): the firmwares check every Status but
 # print none, so a Status keeps its code and format without the arguments, and the argument
 # walk is not linked: 1.9 KB less flash on the M0's lattice firmware, 2.5-2.8 KB on the M4F
-# and RV32 ones (what a porter who prints messages pays). The library's Status on every other build (host, transcript, bench) keeps
-# them.
+# and RV32 ones (what a porter who prints messages pays). Every other build (host,
+# transcript, bench) keeps the arguments.
 # RV32: -msave-restore (prologues and epilogues through shared libgcc routines): 0.9 KB less.
 MCU_FP_FLAGS := -flto -fno-inline-small-functions -DSHITSUKAN_STATUS_NO_ARGUMENTS
 MCU_FP_FLAGS_rv32 := -msave-restore
@@ -151,14 +149,6 @@ $(MCU_DIR)/host_transcript: ports/cortex-m/host_main.cpp ports/cortex-m/transcri
 	@mkdir -p $(@D)
 	$(CXX) $(CPPFLAGS) $(CXXFLAGS) -Iports/cortex-m -o $@ ports/cortex-m/host_main.cpp \
 	  ports/cortex-m/transcript.cpp $(LIBRARY)
-
-# core/status.cpp with the footprint firmwares' SHITSUKAN_STATUS_NO_ARGUMENTS (MCU_FP_FLAGS).
-$(MCU_DIR)/status_no_arguments: tests/mcu/status_no_arguments.cpp lib/shitsukan/core/status.cpp \
-                                lib/shitsukan/core/format_number.cpp $(FLAGS_STAMP)
-	@mkdir -p $(@D)
-	$(CXX) -std=c++17 -O2 -Wall -Wextra -ffp-contract=off -DSHITSUKAN_STATUS_NO_ARGUMENTS -Ilib \
-	  -o $@ tests/mcu/status_no_arguments.cpp lib/shitsukan/core/status.cpp \
-	  lib/shitsukan/core/format_number.cpp
 
 $(MCU_DIR)/png_fnv: tests/mcu/png_fnv.cpp
 	@mkdir -p $(@D)

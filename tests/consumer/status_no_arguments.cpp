@@ -1,7 +1,8 @@
-// tests/mcu/status_no_arguments.cpp — core/status.cpp built with SHITSUKAN_STATUS_NO_ARGUMENTS
-// (the footprint firmwares' switch, ports/cortex-m/mcu.mk): a Status keeps its code and its
-// format, every conversion prints as '?', and a success is still "ok". Built on the host with
-// the switch and run by `make test-mcu`; exits 1 (printing what differs) otherwise.
+// tests/consumer/status_no_arguments.cpp — core/status.cpp built with
+// SHITSUKAN_STATUS_NO_ARGUMENTS (the footprint firmwares' switch, ports/cortex-m/mcu.mk): a
+// Status keeps its code and its format, every conversion prints as '?', and a success is still
+// "ok". Built on the host with the switch and run by `make check-api` (tools/check_api.sh);
+// exits 1 (printing what differs) otherwise.
 #include <cstdio>
 #include <cstring>
 
