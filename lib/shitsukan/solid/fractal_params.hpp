@@ -86,8 +86,13 @@ struct LevelAmplitudes {
 constexpr LevelAmplitudes level_amplitudes(float beta) {
     LevelAmplitudes a;
     a.beta = beta;
-    for (int n = 1; n <= kTypeIIIMaxDepth; ++n)
-        a.v[n] = float(det_exp_constexpr(-double(n - 1) * double(beta)));  // level_amplitude's
+    for (int n = 1; n <= kTypeIIIMaxDepth; ++n) {
+        const double d = det_exp_constexpr(-double(n - 1) * double(beta));  // level_amplitude's
+        // At most half the smallest float subnormal (2^-150, a tie to even) the float is +0.
+        // Said outright because clang's constant evaluation (LLVM 14 at least) rounds a
+        // subnormal double up to 2^-149 where the run-time conversion gives 0.
+        a.v[n] = d <= 0x1p-150 ? 0.0f : float(d);
+    }
     return a;
 }
 
