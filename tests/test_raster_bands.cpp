@@ -335,6 +335,30 @@ TEST_CASE("clear_band == fill, row by row, for any width and a stride wider than
     }
 }
 
+TEST_CASE("clear_band on rows that overlap (stride below the width) fills them, defined") {
+    // A view validate_band refuses, but clear_band checks nothing: each row is filled on its
+    // own (a copy of row 0 onto an overlapping row would be memcpy of overlapping ranges,
+    // which the sanitizer build reports).
+    for (int stride : {0, 1, 5, 7}) {
+        const int width = 8, height = 3, used = stride * (height - 1) + width;
+        std::vector<Rgb8> color(std::size_t(used + 4), Rgb8{1, 2, 3});
+        std::vector<float> depth(std::size_t(used + 4), 7.0f);
+        clear_band(make_band(RgbView{color.data(), width, height, stride},
+                             FloatView{depth.data(), width, height, stride}, 0, width, height),
+                   Rgb8{24, 26, 32});
+        bool filled = true;
+        for (std::size_t i = 0; i < color.size(); ++i) {
+            const bool inside = i < std::size_t(used);
+            const Rgb8 want = inside ? Rgb8{24, 26, 32} : Rgb8{1, 2, 3};
+            const float want_depth = inside ? std::numeric_limits<float>::infinity() : 7.0f;
+            filled = filled && std::memcmp(&color[i], &want, sizeof want) == 0 &&
+                     depth[i] == want_depth;
+        }
+        INFO("stride " << stride);
+        CHECK(filled);
+    }
+}
+
 TEST_CASE("bin_mesh and draw_binned_mesh refuse too few kept vertices") {
     Scene scene;
     const MeshView box = scene.box.view();
