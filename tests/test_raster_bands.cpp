@@ -526,3 +526,159 @@ TEST_CASE("bin_mesh keeps the world position and normals of each vertex of a dra
             CHECK(r.full.fragments_shaded > 100);
         }
 }
+
+namespace {
+
+// The edge cases, and triangles out along the view at 1 to 1e38 units (the vertices of some far
+// apart: a model that sends them out by 2^125 puts their differences beyond the float range),
+// and one at 3e38.
+TriangleMesh far_mesh() {
+    TriangleMesh m = edge_case_mesh();
+    const Vec3 ahead{-0.37f, -0.82f, -2.86f};  // about the view direction, 3 units from the origin
+    for (float scale : {1.0f, 2.5f, 1e30f, 1e38f})
+        for (float half_width : {0.2f, 0.6f, 4.2f})
+            for (float y : {-0.3f, 0.4f}) {
+                const Vec3 c = ahead + Vec3{0.3f * y, y, 0.0f};
+                const Vec3 n{0.1f, 0.2f, 1.0f};
+                const std::uint32_t a = m.add_vertex((c + Vec3{-half_width, -0.2f, 0}) * scale, n,
+                                                     {0, 0});
+                const std::uint32_t b = m.add_vertex((c + Vec3{half_width, -0.1f, 0.1f}) * scale,
+                                                     Vec3{0, 1, 0}, {1, 0});
+                const std::uint32_t d = m.add_vertex((c + Vec3{0.1f, 0.3f, -0.1f}) * scale, n,
+                                                     {0, 1});
+                if (y < 0) m.add_triangle(a, b, d);
+                else m.add_triangle(a, d, b);
+            }
+    const std::uint32_t a = m.add_vertex({0, 0, -3e38f}, {0, 0, 1}, {0, 0});
+    const std::uint32_t b = m.add_vertex({3e37f, 0, -3e38f}, {0, 0, 1}, {1, 0});
+    const std::uint32_t c = m.add_vertex({0, 3e37f, -3e38f}, {0, 0, 1}, {0, 1});
+    m.add_triangle(a, b, c);
+    while (m.colors.size() < m.positions.size()) m.colors.push_back({0.9f, 0.1f, 0.5f});
+    return m;
+}
+
+// A model matrix whose w row scales by 2^-125: world positions 2^125 times the object ones (a
+// vertex 2 units out is beyond 2^126), clip positions finite (points nearly at infinity, in
+// view with a far plane at 1e38).
+Mat4 far_out_model() {
+    Mat4 m = Mat4::rotate_y(0.1f);
+    m.m[3][3] = 0x1p-125f;
+    return m;
+}
+// A projective model: w = 1 + 0.3 x - 0.2 y (through 0, and negative, over the mesh).
+Mat4 projective_model() {
+    Mat4 m = Mat4::identity();
+    m.m[3][0] = 0.3f;
+    m.m[3][1] = -0.2f;
+    return m;
+}
+
+// Kept vertices that a drawn triangle uses (normals made, from the mesh) with a world position
+// beyond 2^126 (near_world 0): the kept path must then test the world positions (in_world).
+int far_kept_vertices(const std::vector<BinnedVertex>& kept, int vertex_count) {
+    int n = 0;
+    for (int i = 0; i < vertex_count; ++i)
+        n += kept[std::size_t(i)].normals == 0 && kept[std::size_t(i)].near_world == 0;
+    return n;
+}
+
+}  // namespace
+
+// The edge cases' camera with its far plane at 1e38 (points at infinity in view at depth 1).
+Camera far_camera() {
+    return perspective_camera({0.4f, 0.9f, 3.2f}, {0, 0, 0}, {0, 1, 0}, 50.0f, 101, 77, 0.05f,
+                              1e38f);
+}
+
+TEST_CASE("binned with kept vertices == draw_mesh: world beyond 2^126, huge and projective") {
+    const Camera cam = far_camera();
+    REQUIRE(validate_camera(cam).ok());
+    const TriangleMesh mesh = far_mesh();
+    const MeshView view = mesh.view();
+    int far_vertices[3] = {0, 0, 0};
+    for (int model = 0; model < 3; ++model)
+        for (CullMode cull : {CullMode::back, CullMode::none}) {
+            DrawOptions opt;
+            opt.cull = cull;
+            opt.model = model == 0 ? Mat4::rotate_y(0.2f)
+                                   : (model == 1 ? far_out_model() : projective_model());
+            std::vector<BinnedVertex> kept;
+            const BinnedComparison r = compare_binned(cam, view, opt, kept, {16, 5});
+            INFO("model " << model << ", cull " << int(cull));
+            check_same(r);
+            CHECK(r.full.fragments_shaded > 500);
+            CHECK(r.kept_rejected > 0);
+            far_vertices[model] = far_kept_vertices(kept, view.vertex_count);
+            CHECK(far_vertices[model] > 0);  // the in_world fallback of the kept path
+        }
+    CHECK(far_vertices[1] > far_vertices[0] + 10);  // the model sends the near ones out too
+}
+
+TEST_CASE("kept vertices binned again into the same array: nothing of the earlier bin is read") {
+    Scene scene;
+    std::vector<BinnedVertex> kept;  // one array for every bin below, never cleared
+    const TriangleMesh far = far_mesh();
+    const MeshView sphere = scene.sphere.view(), box = scene.box.view(), edges = far.view();
+    // A near plane that cuts the sphere (its nearest vertices before it: not mapped, their
+    // triangles clipped), and the eye on the other side (the vertices drawn before face away).
+    const Camera close = perspective_camera({-0.6f, 0.05f, 1.2f}, {-0.6f, 0, 0}, {0, 1, 0}, 60.0f,
+                                            101, 77, 0.5f, 100.0f);
+    const Camera behind =
+        perspective_camera({-1.0f, -0.6f, -3.0f}, {-0.6f, 0, 0}, {0, 1, 0}, 50.0f, 101, 77);
+    DrawOptions near_model, far_model;
+    near_model.model = Mat4::rotate_y(0.2f);
+    far_model.model = far_out_model();
+    struct Step {
+        const Camera* camera;
+        const MeshView* mesh;
+        DrawOptions options;
+    };
+    const Camera far_cam = far_camera();
+    const Step steps[] = {{&scene.cam, &sphere, scene_options(0, CullMode::back)},
+                          {&close, &sphere, scene_options(0, CullMode::back)},
+                          {&scene.cam, &sphere, scene_options(0, CullMode::back)},
+                          {&behind, &sphere, scene_options(0, CullMode::back)},
+                          {&far_cam, &edges, near_model},  // grows the array
+                          {&far_cam, &edges, far_model},   // world positions now beyond 2^126
+                          {&scene.cam, &sphere, scene_options(0, CullMode::none)},
+                          {&scene.cam, &box, scene_options(1, CullMode::back)}};
+    for (int k = 0; k < int(sizeof steps / sizeof steps[0]); ++k) {
+        const Step& s = steps[k];
+        const BinnedComparison r = compare_binned(*s.camera, *s.mesh, s.options, kept, {16, 5});
+        INFO("step " << k);
+        check_same(r);
+        CHECK(r.full.fragments_shaded > 100);
+        if (k == 1) CHECK(r.full.triangles_clipped > 4);
+    }
+}
+
+TEST_CASE("a run of more than 65,535 binned-away triangles: counted up to 65,535, stepped over") {
+    const Camera cam = perspective_camera({0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 50.0f, 40, 24);
+    TriangleMesh m;
+    const std::uint32_t a = m.add_vertex({-1, -1, 0}, {0, 0, 1}, {0, 0});
+    const std::uint32_t b = m.add_vertex({1, -1, 0}, {0, 0, 1}, {1, 0});
+    const std::uint32_t c = m.add_vertex({0, 1, 0}, {0, 0, 1}, {0, 1});
+    const std::uint32_t d = m.add_vertex({-1, 0.5f, -0.5f}, {0, 0, 1}, {0, 0});
+    const std::uint32_t e = m.add_vertex({1, 0.5f, -0.5f}, {0, 0, 1}, {1, 0});
+    const std::uint32_t f = m.add_vertex({0, -1, -0.5f}, {0, 0, 1}, {0, 1});
+    const int run = 70000;
+    for (int t = 0; t < run; ++t) m.add_triangle(a, c, b);  // back-facing: binned away
+    m.add_triangle(d, f, e);                                 // the first drawn one
+    for (int t = 0; t < 100; ++t) m.add_triangle(d, e, f);
+    m.add_triangle(a, b, c);
+    const MeshView view = m.view();
+    DrawOptions opt;
+    std::vector<TriangleRows> rows(std::size_t(view.triangle_count));
+    REQUIRE(bin_mesh(cam, view, opt, rows.data(), int(rows.size())).ok());
+    CHECK(rows[0].end == 0);
+    CHECK(rows[0].begin == 65535);
+    CHECK(rows[std::size_t(run - 65535)].begin == 65535);
+    CHECK(rows[std::size_t(run - 65534)].begin == 65534);
+    CHECK(rows[std::size_t(run - 1)].begin == 1);
+    CHECK(rows[std::size_t(run)].end != 0);
+    CHECK(rows[std::size_t(run + 1)].begin == 100);
+    std::vector<BinnedVertex> kept;
+    const BinnedComparison r = compare_binned(cam, view, opt, kept, {16, 5});
+    check_same(r);
+    CHECK(r.full.fragments_shaded > 100);
+}
