@@ -1,7 +1,9 @@
 // ports/cortex-m/bench_main.cpp — instructions per lattice node, per marble pixel, per
 // rasterized pixel and per triangle on the device, counted by QEMU `-icount shift=0`
 // (icount.hpp). `make bench-mcu` runs it on every core (bench_mcu.sh) and prints `bench:`
-// lines; the counts include the loop and call overhead of each measured call.
+// lines; the counts include the loop and call overhead of each measured call. Outside the counted
+// runs the UV sphere's frame binned with its vertices kept is compared with the unbinned one
+// (every fragment's fields and every pixel, hashed): a difference fails the firmware.
 // BENCH_CORE names the core in the lines. BENCH_SMALL_RAM (the Cortex-M0's 16 KB): the Type I
 // build is measured on a 9^3 lattice (R = 3, 2.9 KB) instead of 65^3 (1.1 MB), the marble
 // and the fig. 10a cube take D(P) from the Type III lattice, the bands are 4 rows instead of
@@ -93,6 +95,38 @@ bool draw_in_bands(Draw draw) {
 }
 Rgb8 flat_shader(const Fragment& f, void*) { return Rgb8{std::uint8_t(f.x), std::uint8_t(f.y), 0}; }
 
+// FNV-1a (32 bits) of n bytes, folded into h.
+void fnv1a(std::uint32_t* h, const void* bytes, std::uint32_t n) {
+    const unsigned char* p = static_cast<const unsigned char*>(bytes);
+    for (std::uint32_t i = 0; i < n; ++i) *h = (*h ^ p[i]) * 16777619u;
+}
+// A shader for the frame comparisons (not measured): the FNV-1a of every field of the fragment,
+// folded into *user in the order the fragments come, and its low bytes as the colour.
+Rgb8 fragment_hash_shader(const Fragment& f, void* user) {
+    std::uint32_t h = 2166136261u;
+    const Vec3* vectors[5] = {&f.object_position, &f.world_position, &f.normal,
+                              &f.object_normal, &f.color};
+    for (const Vec3* v : vectors) fnv1a(&h, v, sizeof *v);
+    fnv1a(&h, &f.uv, sizeof f.uv);
+    const std::int32_t ints[4] = {f.x, f.y, f.triangle, f.front_facing ? 1 : 0};
+    fnv1a(&h, ints, sizeof ints);
+    fnv1a(&h, &f.depth, sizeof f.depth);
+    fnv1a(static_cast<std::uint32_t*>(user), &h, sizeof h);
+    return Rgb8{std::uint8_t(h), std::uint8_t(h >> 8), std::uint8_t(h >> 16)};
+}
+// The frame drawn band by band with fragment_hash_shader, outside any counted region: the
+// fragments' hash (fragments) and the FNV-1a of every band's colour and depth (pixels).
+template <class Draw>
+bool hash_frame(Draw draw, std::uint32_t* fragments, std::uint32_t* pixels) {
+    *fragments = *pixels = 2166136261u;
+    return draw_in_bands([&](const FrameBand& b) {
+        if (!draw(b, fragments)) return false;
+        fnv1a(pixels, g_color, sizeof g_color);
+        fnv1a(pixels, g_depth, sizeof g_depth);
+        return true;
+    });
+}
+
 bool bench_lattice() {
     FractalParams p = okada1987_lattice_params();
     p.R = kBenchR;
@@ -154,6 +188,33 @@ std::uint32_t g_sphere_idx[kSphereIndices];
 TriangleRows g_sphere_rows[kSphereIndices / 3];
 BinnedVertex g_sphere_kept[kSphereVertices];  // the vertices bin_mesh keeps (56 bytes each)
 
+// The binned frame with the kept vertices against the unbinned one on the device, after the
+// counted runs: every fragment (all its fields, in order) and every pixel and depth the same.
+bool same_binned_frame(const Camera& cam, const MeshView& sphere, const DrawOptions& opt) {
+    std::uint32_t unbinned_fragments, unbinned_pixels, kept_fragments, kept_pixels;
+    if (!hash_frame(
+            [&](const FrameBand& b, std::uint32_t* h) {
+                return bool(draw_mesh(cam, b, sphere, opt, fragment_hash_shader, h));
+            },
+            &unbinned_fragments, &unbinned_pixels))
+        return false;
+    if (!bin_mesh(cam, sphere, opt, g_sphere_rows, kSphereIndices / 3, g_sphere_kept,
+                  kSphereVertices))
+        return false;
+    if (!hash_frame(
+            [&](const FrameBand& b, std::uint32_t* h) {
+                return bool(draw_binned_mesh(cam, b, sphere, opt, g_sphere_rows,
+                                             kSphereIndices / 3, g_sphere_kept, kSphereVertices,
+                                             fragment_hash_shader, h));
+            },
+            &kept_fragments, &kept_pixels))
+        return false;
+    if (kept_fragments == unbinned_fragments && kept_pixels == unbinned_pixels) return true;
+    put("bench: FAILED (" BENCH_CORE "): the UV sphere binned with its vertices kept is not the "
+        "unbinned frame\n");
+    return false;
+}
+
 bool bench_sphere(const Camera& cam) {
     MeshView sphere;
     if (!make_uv_sphere_arrays(1.2f, kSlices, kStacks, g_sphere_pos, g_sphere_nrm, g_sphere_uv,
@@ -209,7 +270,7 @@ bool bench_sphere(const Camera& cam) {
     bench_line("rasterized UV sphere 48x24 128x128 in 16-row bands, flat shader, binned, "
                "shading alone (frame minus set-up only)", nb > ns ? nb - ns : 0,
                std::uint32_t(binned.fragments_shaded), "rasterized pixel");
-    return true;
+    return same_binned_frame(cam, sphere, opt);
 }
 #endif
 

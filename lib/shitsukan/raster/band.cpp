@@ -59,13 +59,20 @@ void fill_depth_row(float* row, int width) {
 }  // namespace
 
 // Depth +inf: any finite fragment depth is nearer than an empty pixel. Row by row (a band's
-// rows are its stride apart); the first colour row is copied to the others whole.
+// rows are its stride apart); the first colour row is copied to the others whole. A stride
+// below the width (a view validate_band refuses) makes rows overlap, which memcpy must not
+// copy: each row is then filled on its own (the same bytes).
 void clear_band(const FrameBand& band, Rgb8 background) {
     if (!band.color.empty()) {
         fill_color_row(band.color.row(0), band.color.width, background);
-        for (int y = 1; y < band.color.height; ++y)
-            std::memcpy(band.color.row(y), band.color.row(0),
-                        std::size_t(band.color.width) * sizeof(Rgb8));
+        const bool disjoint_rows = band.color.stride >= band.color.width;
+        for (int y = 1; y < band.color.height; ++y) {
+            if (disjoint_rows)
+                std::memcpy(band.color.row(y), band.color.row(0),
+                            std::size_t(band.color.width) * sizeof(Rgb8));
+            else
+                fill_color_row(band.color.row(y), band.color.width, background);
+        }
     }
     if (!band.depth.empty())
         for (int y = 0; y < band.depth.height; ++y)

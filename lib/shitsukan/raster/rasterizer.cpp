@@ -785,6 +785,8 @@ void bin_vertex(const Camera& camera, const Mat4& mvp, Vec3 p, BinnedVertex* v) 
     if (!is_finite(p)) return;
     const ClipSpaceVertex c{transform_homogeneous(mvp, p), Vec3{0, 0, 0}};
     const unsigned outcode = clip_outcode(c.clip);
+    static_assert((kClipPlaneBits | kOutsideBits) <= 0xffffu,
+                  "BinnedVertex::outcode (16 bits) holds every outcode bit");
     v->outcode = std::uint16_t(outcode);  // kClipPlaneBits | kOutsideBits: 11 bits
     ScreenVertex screen;  // no default member values: not zeroed
     if ((outcode & kClipPlaneBits) != 0 || !finite_clip(c.clip) || !(c.clip.w >= kMinClipW) ||

@@ -175,12 +175,20 @@ Status draw_binned_mesh(const Camera& camera, const FrameBand& band, const MeshV
 // normals; draw_binned_mesh then sets a triangle up from its vertices' kept values instead of
 // its corners again (a triangle with a vertex that needs clipping or cannot be mapped takes the
 // general path). Same pixels and statistics as draw_mesh.
+// The kept array drawn must be the one the same bin_mesh call wrote, for the same mesh, camera
+// and options, unchanged since: bin_mesh marks every vertex slot of the mesh it bins anew (an
+// array may be binned again, for another mesh, camera or frame: no old value is read), but a
+// mesh grown after bin_mesh reaches slots that call never wrote, possibly an older frame's (not
+// supported: bin it again). BinnedVertex's fields are public for their size and layout only:
+// draw_binned_mesh trusts the values bin_mesh writes (|x|, |y| < 2^28, so the differences of
+// two fit 32 bits; the set-up subtracts them in int32) and checks none of them.
 //   BinnedVertex kept[kMaxVertices];
 //   s = bin_mesh(camera, mesh, opt, rows, kMaxTriangles, kept, kMaxVertices);
 //   s = draw_binned_mesh(camera, band, mesh, opt, rows, kMaxTriangles, kept, kMaxVertices, shader,
 //                        user);
-struct BinnedVertex {  // written by bin_mesh; read by draw_binned_mesh
-    std::int32_t x = 0, y = 0;   // snapped screen position (1/256 pixel), or "not kept"
+struct BinnedVertex {  // written by bin_mesh; read by draw_binned_mesh (never by hand)
+    std::int32_t x = 0, y = 0;   // snapped screen position (1/256 pixel, |x|, |y| < 2^28), or
+                                 // "not kept"
     float z = 0, inv_w = 0;      // depth and 1 / w_clip
     std::uint16_t outcode = 0;   // the clip-space outcode
     std::uint8_t normals = 0;    // which normals the triangle's plane supplies, or "not made"
