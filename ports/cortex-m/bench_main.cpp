@@ -95,6 +95,7 @@ bool draw_in_bands(Draw draw) {
 }
 Rgb8 flat_shader(const Fragment& f, void*) { return Rgb8{std::uint8_t(f.x), std::uint8_t(f.y), 0}; }
 
+#if !defined(BENCH_SMALL_RAM)  // the frame comparisons go with bench_sphere (below)
 // FNV-1a (32 bits) of n bytes, folded into h.
 void fnv1a(std::uint32_t* h, const void* bytes, std::uint32_t n) {
     const unsigned char* p = static_cast<const unsigned char*>(bytes);
@@ -126,6 +127,7 @@ bool hash_frame(Draw draw, std::uint32_t* fragments, std::uint32_t* pixels) {
         return true;
     });
 }
+#endif
 
 bool bench_lattice() {
     FractalParams p = okada1987_lattice_params();
