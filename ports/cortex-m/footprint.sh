@@ -3,11 +3,12 @@
 #   footprint.sh modules MAP    flash, initialised data and zeroed RAM per library module (and
 #                               the port, and the C runtime) in a firmware, summed from the GNU
 #                               ld map file's input sections after --gc-sections
-#   footprint.sh firmwares DIR  `make footprint-mcu`: runs DIR/{m4,m0,rv32}-{lattice,marble}.elf
-#                               (footprint_main.cpp) under QEMU and prints one `footprint:` line
-#                               each: flash = text + data, RAM = data + bss + the main stack's
-#                               high-water mark (the reserved stack itself not counted), with
-#                               the goal beside it where the port has one
+#   footprint.sh firmwares DIR  `make footprint-mcu`: runs DIR/{m4,m0,rv32}-{lattice,marble,
+#                               lattice_runtime_beta,lattice_messages}.elf (footprint_main.cpp)
+#                               under QEMU and prints one `footprint:` line each: flash = text
+#                               + data, RAM = data + bss + the main stack's high-water mark
+#                               (the reserved stack itself not counted), with the goal beside
+#                               it where the port has one
 set -euo pipefail
 here="$(dirname "$0")"
 
@@ -21,7 +22,7 @@ goal() {
 }
 
 firmwares() {
-    local dir="$1" fail=0 core variant elf out stack size_tool name g digest first
+    local dir="$1" fail=0 core variant elf out stack size_tool name g digest first status label
     local digest_lattice='' digest_marble=''
     for core in m4 m0 rv32; do
         case "$core" in
@@ -29,16 +30,14 @@ firmwares() {
             m0) name="Cortex-M0, soft-float, -Os, newlib-nano"; size_tool=arm-none-eabi-size ;;
             rv32) name="RV32IMAC, soft-float, -Os, picolibc"; size_tool=riscv64-unknown-elf-size ;;
         esac
-        # mcu.mk's MCU_FP_FLAGS: every Status checked, none printed (core/status.hpp)
-        name="$name, Status without arguments"
-        for variant in lattice marble; do
+        for variant in lattice marble lattice_runtime_beta lattice_messages; do
             elf="$dir/$core-$variant.elf"
             out=$(bash "$here/qemu_run.sh" "$core" "$elf") || { echo "footprint-mcu: $core $variant failed: $out"; fail=1; continue; }
             echo "$out"
             # the same frame and lattice on every core (the firmwares are built with -flto,
             # the transcripts without: these digests are the transcript's bits too)
             digest=$(echo "$out" | sed -n 's/.* fnv \([0-9a-f]*\),.*/\1/p')
-            first="digest_$variant"
+            first="digest_${variant%%_*}"  # the variants print the lattice firmware's digest
             if [ -z "${!first:-}" ]; then printf -v "$first" '%s' "$digest"
             elif [ "${!first}" != "$digest" ]; then
                 echo "footprint-mcu: $core $variant digest $digest differs from the first core's ${!first}"; fail=1
@@ -46,9 +45,17 @@ firmwares() {
             stack=$(echo "$out" | sed -n 's/.*main stack used \([0-9]*\) bytes/\1/p')
             reserved=$(( $(nm "$elf" 2>/dev/null | awk '$3 == "_estack" { e = $1 } $3 == "_sstack" { s = $1 } END { print "0x" e " - 0x" s }') ))
             g=$(goal "$core" "$variant")
-            "$size_tool" "$elf" | awk -v v="$variant" -v n="$name" -v s="$stack" -v r="$reserved" -v g="$g" 'NR == 2 {
+            # mcu.mk: every Status checked, none printed (core/status.hpp), but in the variant
+            # that measures what keeping the arguments costs
+            status="Status without arguments"
+            case "$variant" in
+                lattice_runtime_beta) label="lattice firmware, eq. (2)'s amplitudes computed on the device" ;;
+                lattice_messages) label="lattice firmware, messages kept"; status="Status with arguments" ;;
+                *) label="$variant firmware" ;;
+            esac
+            "$size_tool" "$elf" | awk -v v="$label" -v n="$name, $status" -v s="$stack" -v r="$reserved" -v g="$g" 'NR == 2 {
                 flash = $1 + $2
-                printf "footprint: %s firmware (%s): flash %d bytes%s, RAM %d bytes (data %d + bss %d + stack used %d)\n", \
+                printf "footprint: %s (%s): flash %d bytes%s, RAM %d bytes (data %d + bss %d + stack used %d)\n", \
                     v, n, flash, g == "" ? "" : sprintf(" (goal <= %d: %s)", g, flash <= g ? "met" : "MISSED"), \
                     $2 + $3 - r + s, $2, $3 - r, s }'
         done

@@ -7,8 +7,16 @@
 //   FOOTPRINT_MARBLE    okada1987's marble cube (fig. 10a's scene and shader maths) at
 //                       128 x 128 in 8-row bands, D(P) from the Type III lattice (no 1.1 MB
 //                       table): the digest of the frame
-// Both print the main stack's high-water mark (the stack is painted before the work).
+// Both print the main stack's high-water mark (the stack is painted before the work). Two
+// variants of the lattice firmware measure what ports/PORTING.md section 7's two choices save:
+//   FOOTPRINT_LATTICE_RUNTIME_BETA  the amplitudes computed on the device (init(params))
+//   FOOTPRINT_LATTICE_MESSAGES      built without SHITSUKAN_STATUS_NO_ARGUMENTS (mcu.mk)
+// Both print the lattice firmware's digest.
 #include <cstdint>
+
+#if defined(FOOTPRINT_LATTICE_RUNTIME_BETA) || defined(FOOTPRINT_LATTICE_MESSAGES)
+#define FOOTPRINT_LATTICE 1
+#endif
 
 #include "semihosting.hpp"
 #include "shitsukan/core/vec.hpp"
@@ -107,7 +115,11 @@ int main() {
     paint_stack();
     // eq. (2)'s amplitudes computed by the compiler for the preset's beta: no double
     // arithmetic on the device (the same floats as level_amplitude's at run time)
+#if defined(FOOTPRINT_LATTICE_RUNTIME_BETA)
+    if (!g_lattice.init(okada1987_lattice_params())) return 1;  // det_exp on the device
+#else
     if (!g_lattice.init(okada1987_lattice_params(), kOkada1987Amplitudes)) return 1;
+#endif
     Fnv h;
 #if defined(FOOTPRINT_LATTICE)
     for (int i = 0; i < 4096; ++i) {

@@ -125,16 +125,18 @@ bench-mcu: mcu-deps
 # firmwares is not measured (make bench-mcu builds its own, without either flag).
 # -DSHITSUKAN_STATUS_NO_ARGUMENTS (core/status.hpp): the firmwares check every Status but
 # print none, so a Status keeps its code and format without the arguments, and the argument
-# walk is not linked: 1.9 KB less flash on the M0's lattice firmware, 2.5-2.8 KB on the M4F
-# and RV32 ones (what a porter who prints messages pays). Every other build (host,
-# transcript, bench) keeps the arguments.
+# walk is not linked; the lattice_messages variant is built without it, so its footprint line
+# is what a porter who prints messages pays. Every other build (host, transcript, bench) keeps
+# the arguments.
 # RV32: -msave-restore (prologues and epilogues through shared libgcc routines): 0.9 KB less.
-MCU_FP_FLAGS := -flto -fno-inline-small-functions -DSHITSUKAN_STATUS_NO_ARGUMENTS
+MCU_FP_FLAGS := -flto -fno-inline-small-functions
+# The firmwares, and the two lattice variants that measure section 7's choices (footprint_main).
+MCU_FP_VARIANTS := lattice marble lattice_runtime_beta lattice_messages
 MCU_FP_FLAGS_rv32 := -msave-restore
 MCU_FP_SRCS = $(filter-out ports/cortex-m/transcript.cpp ports/cortex-m/device_main.cpp \
                  lib/shitsukan/render/solid_mesh.cpp,$(MCU_COMMON_SRCS)) ports/cortex-m/footprint_main.cpp
 footprint-mcu: mcu-deps
-	@$(SUBMAKE) $(foreach c,m4 m0 rv32,$(foreach v,lattice marble,$(MCU_DIR)/footprint/$(c)-$(v).elf))
+	@$(SUBMAKE) $(foreach c,m4 m0 rv32,$(foreach v,$(MCU_FP_VARIANTS),$(MCU_DIR)/footprint/$(c)-$(v).elf))
 	@bash ports/cortex-m/footprint.sh firmwares $(MCU_DIR)/footprint
 
 # The same program built by clang at -O0 (library sources included): same bits as gcc -O2.
@@ -180,7 +182,7 @@ $(MCU_DIR)/$(1)/transcript.elf: $(patsubst %.cpp,$(MCU_DIR)/$(1)/%.o,$(MCU_COMMO
 $(MCU_DIR)/footprint/$(1)-%.elf: $(MCU_FP_SRCS) $(MCU_PORT_$(1)) $(MCU_LDS_$(1)) $(FLAGS_STAMP) ports/cortex-m/mcu.mk
 	@mkdir -p $$(@D)
 	$(MCU_LINK_$(1)) $(MCU_CPU_$(1)) $(MCU_FLAGS) $(MCU_FP_FLAGS) $(MCU_FP_FLAGS_$(1)) \
-	  -DSHITSUKAN_TYPE3_ROW_CACHE=0 \
+	  $$(if $$(filter lattice_messages,$$*),,-DSHITSUKAN_STATUS_NO_ARGUMENTS) -DSHITSUKAN_TYPE3_ROW_CACHE=0 \
 	  -DFOOTPRINT_$$(shell echo $$* | tr a-z A-Z) $(MCU_LD_$(1)) \
 	  -Wl,--defsym=STACK_SIZE=$(if $(filter m0,$(1)),4096,8192) -Wl,-Map=$$(@:.elf=.map) -o $$@ \
 	  $(MCU_FP_SRCS) $(MCU_PORT_$(1))

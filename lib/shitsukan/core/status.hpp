@@ -34,9 +34,9 @@
 //
 // SHITSUKAN_STATUS_NO_ARGUMENTS, defined when compiling core/status.cpp (the switch for the
 // smallest devices, e.g. an 8 KB Cortex-M0 firmware that checks every Status but never prints
-// one): error() keeps the code and the format but no arguments, so the argument walk
-// (1.9-2.8 KB of flash with the double conversions it needs, ports/PORTING.md) is not linked;
-// message() is then the format with every conversion shown as '?' ("fractal lattice: R must
+// one): error() keeps the code and the format but no arguments, so the argument walk (2-3 KB
+// of flash with the double conversions it needs; make footprint-mcu measures it) is not
+// linked; message() is then the format with every conversion shown as '?' ("fractal lattice: R must
 // be in [0, ?] (got ?)"). The codes and sizeof(Status) are the same either way.
 //
 // Status is [[nodiscard]]: every function returning one warns (an error under -Werror, as

@@ -76,9 +76,10 @@ float level_amplitude(int n, float beta);
 // bits (det_exp_constexpr: det_exp's steps; tests/test_solid_lattice.cpp compares them), so
 // a lattice given them (TypeIIILattice::init(params, amps)) links no double arithmetic (with
 // --gc-sections or link-time optimisation, which drop the unused init(params)): on a
-// soft-float microcontroller 2.9-3.6 KB of flash (ports/PORTING.md). Call it in a constant
-// expression only (detmath.hpp's det_exp_constexpr says why). init(params, amps) refuses a
-// table for another beta, and one that is not eq. (2)'s (L^(1) = 1, non-increasing, >= 0).
+// soft-float microcontroller about 3 KB of flash (make footprint-mcu measures it). Call it in
+// a constant expression only (detmath.hpp's det_exp_constexpr says why). init(params, amps)
+// refuses a table for another beta, and one that is not eq. (2)'s (L^(1) = 1, non-increasing,
+// >= 0).
 struct LevelAmplitudes {
     float beta = -1.0f;                  // the beta they are for (-1: none, so none accepts them)
     float v[kTypeIIIMaxDepth + 1] = {};  // v[n] = L^(n), n = 1..kTypeIIIMaxDepth (v[0] unused)
