@@ -74,15 +74,14 @@ Status TypeIIILattice::init(const FractalParams& params, const LevelAmplitudes& 
     // A table filled by level_amplitudes: L^(1) = 1, then non-increasing and >= 0 (eq. (2)
     // with beta >= 0). Float compares only, so checking it links no double arithmetic.
     for (int n = 1; n <= params.R; ++n) {
-        const float bound = n == 1 ? 1.0f : amplitudes.v[n - 1];
-        if (!(amplitudes.v[n] >= 0.0f && amplitudes.v[n] <= bound) ||
-            (n == 1 && !(amplitudes.v[1] == 1.0f)))
+        const float v = amplitudes.v[n];
+        if (n == 1 ? !(v == 1.0f) : !(v >= 0.0f && v <= amplitudes.v[n - 1]))
             return Status::error(StatusCode::invalid_argument,
                                  "Type III lattice: the amplitudes are not eq. (2)'s (level %d is "
                                  "%g): fill them with level_amplitudes(beta)",
-                                 n, double(amplitudes.v[n]));
+                                 n, double(v));
     }
-    for (int n = 1; n <= params.R; ++n) amplitude_[n] = amplitudes.v[n];
+    for (int n = 1; n <= params.R; ++n) amplitude_[n] = amplitudes.v[n];  // only once valid
     start(params);
     return Status::success();
 }
