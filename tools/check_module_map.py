@@ -12,16 +12,13 @@ one line per problem.
 """
 import os, re, subprocess, sys
 
+from doc_block import block_after
+
 ENTRY = re.compile(r'(?:^|(?<=\s\s))([A-Za-z0-9_.-]+(?:/[A-Za-z0-9_.<> -]*?)*?(?:/|\.[a-z]{1,4}))(?=\s|$)')
 
 
 def module_map(readme):
-    text = open(readme, encoding='utf-8').read()
-    at = text.find('## How the code is laid out')
-    if at < 0:
-        sys.exit('check_module_map: %s has no "## How the code is laid out"' % readme)
-    start = text.index('```', at) + 3
-    return text[text.index('\n', start) + 1:text.index('```', start)].split('\n')
+    return block_after(readme, '## How the code is laid out', 'check_module_map')
 
 
 def entries(lines):

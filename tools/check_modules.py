@@ -9,17 +9,14 @@ module itself, core, or a module on its line. Exit status 1 with one line per pr
 """
 import os, re, sys
 
+from doc_block import block_after
+
 INCLUDE = re.compile(r'^\s*#\s*include\s*"shitsukan/([A-Za-z0-9_]+)/', re.M)
 
 
 def graph(design):
-    text = open(design, encoding='utf-8').read()
-    at = text.find('## Modules and the dependency direction')
-    if at < 0:
-        sys.exit('check_modules: %s has no "## Modules and the dependency direction"' % design)
-    start = text.index('```', at) + 3
     allowed = {}
-    for line in text[text.index('\n', start) + 1:text.index('```', start)].split('\n'):
+    for line in block_after(design, '## Modules and the dependency direction', 'check_modules'):
         m = re.match(r'^([a-z_]+)\s+<-\s+(.*)$', line)
         if not m:
             continue
