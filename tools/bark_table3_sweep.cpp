@@ -8,6 +8,9 @@
 //       -o build/bark_table3_sweep  &&  build/bark_table3_sweep [seeds]
 //   build/bark_table3_sweep views [seeds]   # the max in photograph views 32, 43 and 64
 //                                           # columns wide (photograph_views.hpp), as chosen
+//   build/bark_table3_sweep set D sigma hoop axial kappa [seeds]
+//                                           # one setting: means and the 43-column views' max;
+//                                           # tools/bark_table3_grid.sh runs a grid of them
 //
 // Every setting changes one value for all three species at once (no per-species tuning):
 // sigma, D, the final hoop and axial strains, a common scale on every kappa - 1, the relaxation
@@ -91,9 +94,39 @@ int print_views(int seeds) {
     return 0;
 }
 
+// One setting given on the command line (a grid is a loop over it): its means, the max in
+// 43-column views, for each species.
+int print_setting(int argc, char** argv) {
+    if (argc < 7) {
+        std::fprintf(stderr, "bark_table3_sweep: set D sigma hoop axial kappa [seeds]\n");
+        return 2;
+    }
+    Setting s{"set"};
+    s.D = float(std::atof(argv[2])), s.sigma = float(std::atof(argv[3]));
+    s.hoop = float(std::atof(argv[4])), s.axial = float(std::atof(argv[5]));
+    s.kappa = float(std::atof(argv[6]));
+    const int seeds = argc > 7 ? std::atoi(argv[7]) : 3;
+    const Species species[3] = {Species::camphor, Species::chinese_tallow, Species::pine};
+    Cell c[3];
+    for (int i = 0; i < 3; ++i) {
+        const Status st = species_cell(species[i], s, seeds, &c[i]);
+        if (!st) {
+            std::fprintf(stderr, "bark_table3_sweep: set: %s\n", st.message());
+            return 1;
+        }
+    }
+    std::printf("| D %.3f sigma %.4f hoop x%.3f axial x%.3f kappa-1 x%.3f | %.2f x %.2f | "
+                "%.2f x %.2f | %.2f x %.2f | %.2f | %.2f x %.2f | %.2f x %.2f | %.2f x %.2f |\n",
+                s.D, s.sigma, s.hoop, s.axial, s.kappa, c[0].w, c[0].h, c[1].w, c[1].h, c[2].w,
+                c[2].h, c[1].w / c[0].w, c[0].view_max_w[1], c[0].view_max_h[1],
+                c[1].view_max_w[1], c[1].view_max_h[1], c[2].view_max_w[1], c[2].view_max_h[1]);
+    return 0;
+}
+
 int main(int argc, char** argv) {
     if (argc > 1 && std::strcmp(argv[1], "views") == 0)
         return print_views(argc > 2 ? std::atoi(argv[2]) : 5);
+    if (argc > 1 && std::strcmp(argv[1], "set") == 0) return print_setting(argc, argv);
     const int seeds = argc > 1 ? std::atoi(argv[1]) : 3;
     Setting list[] = {{"as chosen"},      {"sigma 0.0125"},   {"sigma 0.025"},
                       {"D 0.45"},         {"D 0.70"},         {"hoop strain x0.85"},

@@ -368,6 +368,61 @@ bool number_checks(const SpeciesRun* const runs[3], const SeedStats stats[3], st
     return ok_all;
 }
 
+// The notes on what table03 reports and does not enforce: the widths' order and the max row.
+void reported_notes(const SpeciesRun* const runs[3], const SeedStats stats[3], std::string* md) {
+    const SeedStats &sc = stats[0], &st = stats[1], &sp = stats[2];
+    auto first_break = [&](const SpeciesRun& r, int family) {
+        for (const BreakEvent& e : r.run.breaks)
+            if (r.bark.net.springs[e.spring].family == family) return e.t / r.params.T;
+        return 1.0f;
+    };
+    *md += fmt("\nWidths: tallow's blocks come out narrower than camphor's strips (the paper: "
+               "1.70 against 1.58, both observed 1.5). The two species share every subscript-2 "
+               "value, so their vertical cracks start alike (first diagonal break at %.2f T and "
+               "%.2f T), and camphor's smaller G even widens their spacing (the estimate "
+               "column); only tallow's lower kappa1 adds horizontal cracks (first axial break at "
+               "%.2f T, camphor's at %.2f T), and the narrowing comes with them. With both "
+               "strains growing in proportion (Table 1's constant delta_r and delta_h) the "
+               "vertical cracks always come first. A sweep of the shared chosen values (sigma, "
+               "D, the two final strains, a common scale on every kappa - 1, the tolerance; "
+               "tools/bark_table3_sweep.cpp) and a grid of D, sigma and the two strains together "
+               "(tools/bark_table3_grid.sh, 228 settings; both in docs/papers/hirota1998.md §4) "
+               "reverse the order in no setting: tallow nears camphor's width only where "
+               "camphor's strips break into blocks (against *1), so it is reported, not tuned "
+               "in.\n",
+               double(first_break(*runs[0], 2)), double(first_break(*runs[1], 2)),
+               double(first_break(*runs[1], 1)), double(first_break(*runs[0], 1)));
+    *md += fmt("\nThe max row (chosen here, `bark/photograph_views.hpp`). §3.2 gives Table 3 as "
+               "the crack spacings measured 'on these patterns', the ones Fig. 5 sets beside "
+               "photographs; the observed column comes from trees of radius 5-10 cm (*3), and "
+               "camphor's '(>20)' says its strips run out of a picture about 20 cm tall. So the "
+               "max is the largest region in such a picture: each run is measured in views as "
+               "tall as the section and a third of the circumference wide (%d of %d columns: "
+               "the face a front view shows at least half-size, about the trunk's diameter), "
+               "over the regions a view shows whole; mean and max are means over the %d view "
+               "positions. A view shows %.0f camphor, %.0f tallow and %.0f pine regions; the "
+               "whole section's max, over hundreds, is beside it. The widths and camphor's "
+               "strips meet the paper's max; tallow's and pine's heights do not: their "
+               "distributions have a long tail (a tenth of the section's regions are taller "
+               "than %.2f and %.2f cm, %.2f and %.2f times the mean, where the paper's max is "
+               "1.31 and 1.51 times its mean): where a "
+               "horizontal crack stops short the blocks above and below it are one region, and "
+               "pine, whose horizontal cracks come only from sigma and the stress at crack tips "
+               "(the estimate column), keeps strips over half the section tall. A view cannot "
+               "be made smaller than the paper's own numbers allow (over 20 cm tall, a trunk of "
+               "radius 5 cm or more), and one that size still holds such a region; the paper's "
+               "max/mean ratios of 1.2-1.5 point to a narrower spread of sizes than this "
+               "model's; of the 228 shared settings of the grid (docs/papers/hirota1998.md §4) none "
+               "brings both within 30 %%. Reported, not tuned in.\n",
+               photograph_view_columns(runs[0]->params.N_R), runs[0]->params.N_R,
+               runs[0]->params.N_R, double(sc.avg(SeedStats::regions_per_view)),
+               double(st.avg(SeedStats::regions_per_view)),
+               double(sp.avg(SeedStats::regions_per_view)), double(st.avg(SeedStats::p90_h)),
+               double(sp.avg(SeedStats::p90_h)),
+               double(st.avg(SeedStats::p90_h) / st.avg(SeedStats::mean_h)),
+               double(sp.avg(SeedStats::p90_h) / sp.avg(SeedStats::mean_h)));
+}
+
 // Table 3's notes on the fig05 runs, and its numbers over the seeds: enforced where this model
 // meets them, reported where it does not.
 Status table03_checks(FigureContext& ctx, const SpeciesRun* const runs[3],
@@ -411,54 +466,7 @@ Status table03_checks(FigureContext& ctx, const SpeciesRun* const runs[3],
     *md += "\nThe estimate column is the shear-lag largest spacing (reconstructed, "
            "`bark/spacing_estimate.hpp`) with this model's own k, k_sh and final strains; the "
            "paper says its simulated spacings come out smaller than the estimate, as ours do.\n";
-    auto first_break = [&](const SpeciesRun& r, int family) {
-        for (const BreakEvent& e : r.run.breaks)
-            if (r.bark.net.springs[e.spring].family == family) return e.t / r.params.T;
-        return 1.0f;
-    };
-    *md += fmt("\nWidths: tallow's blocks come out narrower than camphor's strips (the paper: "
-               "1.70 against 1.58, both observed 1.5). The two species share every subscript-2 "
-               "value, so their vertical cracks start alike (first diagonal break at %.2f T and "
-               "%.2f T), and camphor's smaller G even widens their spacing (the estimate "
-               "column); only tallow's lower kappa1 adds horizontal cracks (first axial break at "
-               "%.2f T, camphor's at %.2f T), and the narrowing comes with them. With both "
-               "strains growing in proportion (Table 1's constant delta_r and delta_h) the "
-               "vertical cracks always come first. A sweep of the shared chosen values (sigma, "
-               "D, the two final strains, a common scale on every kappa - 1, the tolerance; "
-               "tools/bark_table3_sweep.cpp, its numbers in docs/papers/hirota1998.md §4) "
-               "reverses the order in no setting: tallow nears camphor's width only where "
-               "camphor's strips break into blocks (against *1), so it is reported, not tuned "
-               "in.\n",
-               double(first_break(*runs[0], 2)), double(first_break(*runs[1], 2)),
-               double(first_break(*runs[1], 1)), double(first_break(*runs[0], 1)));
-    *md += fmt("\nThe max row (chosen here, `bark/photograph_views.hpp`). §3.2 gives Table 3 as "
-               "the crack spacings measured 'on these patterns', the ones Fig. 5 sets beside "
-               "photographs; the observed column comes from trees of radius 5-10 cm (*3), and "
-               "camphor's '(>20)' says its strips run out of a picture about 20 cm tall. So the "
-               "max is the largest region in such a picture: each run is measured in views as "
-               "tall as the section and a third of the circumference wide (%d of %d columns: "
-               "the face a front view shows at least half-size, about the trunk's diameter), "
-               "over the regions a view shows whole; mean and max are means over the %d view "
-               "positions. A view shows %.0f camphor, %.0f tallow and %.0f pine regions; the "
-               "whole section's max, over hundreds, is beside it. The widths and camphor's "
-               "strips meet the paper's max; tallow's and pine's heights do not: their "
-               "distributions have a long tail (a tenth of the section's regions are taller "
-               "than %.2f and %.2f cm, %.2f and %.2f times the mean, where the paper's max is "
-               "1.31 and 1.51 times its mean): where a "
-               "horizontal crack stops short the blocks above and below it are one region, and "
-               "pine, whose horizontal cracks come only from sigma and the stress at crack tips "
-               "(the estimate column), keeps strips over half the section tall. A view cannot "
-               "be made smaller than the paper's own numbers allow (over 20 cm tall, a trunk of "
-               "radius 5 cm or more), and one that size still holds such a region; the paper's "
-               "max/mean ratios of 1.2-1.5 point to a narrower spread of sizes than this "
-               "model's. Reported, not tuned in.\n",
-               photograph_view_columns(runs[0]->params.N_R), runs[0]->params.N_R,
-               runs[0]->params.N_R, double(sc.avg(SeedStats::regions_per_view)),
-               double(st.avg(SeedStats::regions_per_view)),
-               double(sp.avg(SeedStats::regions_per_view)), double(st.avg(SeedStats::p90_h)),
-               double(sp.avg(SeedStats::p90_h)),
-               double(st.avg(SeedStats::p90_h) / st.avg(SeedStats::mean_h)),
-               double(sp.avg(SeedStats::p90_h) / sp.avg(SeedStats::mean_h)));
+    reported_notes(runs, stats, md);
     ctx.note(fmt("Measured in photograph views of a section of the trunk away from its cut ends "
                  "(see 'views' and 'section'); the whole section's and the whole cylinder's "
                  "numbers are beside them. Regions are the areas the crack map shows enclosed. %s",
