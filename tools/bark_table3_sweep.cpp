@@ -12,9 +12,11 @@
 //                                           # one setting: means and the 43-column views' max;
 //                                           # tools/bark_table3_grid.sh runs a grid of them
 //
-// Every setting changes one value for all three species at once (no per-species tuning):
+// Every setting (the list below; `set` takes one from the command line) changes values for all
+// three species at once (no per-species tuning):
 // sigma, D, the final hoop and axial strains, a common scale on every kappa - 1, the relaxation
 // tolerance. docs/papers/hirota1998.md §4 prints its output.
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -33,6 +35,7 @@ struct Setting {
 struct Cell {
     double w = 0, h = 0, max_w = 0, max_h = 0;
     double view_max_w[3] = {0, 0, 0}, view_max_h[3] = {0, 0, 0};  // kViewColumns' views
+    double view_max_h_lo[3] = {1e30, 1e30, 1e30};  // the smallest of the seeds' view max heights
 };
 
 const int kViewColumns[3] = {32, 43, 64};
@@ -64,6 +67,7 @@ Status species_cell(Species species, const Setting& s, int seeds, Cell* out) {
             SHITSUKAN_TRY(measure_photograph_views(bark, r, kViewColumns[v], views));
             out->view_max_w[v] += views.max_width / seeds;
             out->view_max_h[v] += views.max_height / seeds;
+            if (views.max_height < out->view_max_h_lo[v]) out->view_max_h_lo[v] = views.max_height;
         }
     }
     return Status::success();
@@ -94,18 +98,39 @@ int print_views(int seeds) {
     return 0;
 }
 
-// One setting given on the command line (a grid is a loop over it): its means, the max in
-// 43-column views, for each species.
+// A positive finite number from argv, or false with a message.
+bool positive_arg(const char* text, const char* name, double* out) {
+    char* end = nullptr;
+    const double v = std::strtod(text, &end);
+    if (end == text || *end != '\0' || !(v > 0) || !std::isfinite(v)) {
+        std::fprintf(stderr, "bark_table3_sweep: set: %s must be a positive number (got '%s')\n",
+                     name, text);
+        return false;
+    }
+    *out = v;
+    return true;
+}
+
+// One setting given on the command line (a grid is a loop over it): each species' means and
+// its max in 43-column views, to four decimals, and the smallest of the seeds' camphor view
+// max heights (table03 asks every seed's to span the section: '(>20)').
 int print_setting(int argc, char** argv) {
-    if (argc < 7) {
+    const char* names[6] = {"D", "sigma", "hoop", "axial", "kappa", "seeds"};
+    double v[6] = {0, 0, 0, 0, 0, 3};
+    if (argc < 7 || argc > 8) {
         std::fprintf(stderr, "bark_table3_sweep: set D sigma hoop axial kappa [seeds]\n");
         return 2;
     }
+    for (int i = 0; i + 2 < argc; ++i)
+        if (!positive_arg(argv[i + 2], names[i], &v[i])) return 2;
+    if (v[5] != std::floor(v[5]) || v[5] > 100) {
+        std::fprintf(stderr, "bark_table3_sweep: set: seeds must be a whole number in [1, 100]\n");
+        return 2;
+    }
     Setting s{"set"};
-    s.D = float(std::atof(argv[2])), s.sigma = float(std::atof(argv[3]));
-    s.hoop = float(std::atof(argv[4])), s.axial = float(std::atof(argv[5]));
-    s.kappa = float(std::atof(argv[6]));
-    const int seeds = argc > 7 ? std::atoi(argv[7]) : 3;
+    s.D = float(v[0]), s.sigma = float(v[1]), s.hoop = float(v[2]), s.axial = float(v[3]);
+    s.kappa = float(v[4]);
+    const int seeds = int(v[5]);
     const Species species[3] = {Species::camphor, Species::chinese_tallow, Species::pine};
     Cell c[3];
     for (int i = 0; i < 3; ++i) {
@@ -115,11 +140,13 @@ int print_setting(int argc, char** argv) {
             return 1;
         }
     }
-    std::printf("| D %.3f sigma %.4f hoop x%.3f axial x%.3f kappa-1 x%.3f | %.2f x %.2f | "
-                "%.2f x %.2f | %.2f x %.2f | %.2f | %.2f x %.2f | %.2f x %.2f | %.2f x %.2f |\n",
+    std::printf("| D %.3f sigma %.4f hoop x%.3f axial x%.3f kappa-1 x%.3f | %.4f x %.4f | "
+                "%.4f x %.4f | %.4f x %.4f | %.4f | %.4f x %.4f | %.4f x %.4f | %.4f x %.4f | "
+                "%.4f |\n",
                 s.D, s.sigma, s.hoop, s.axial, s.kappa, c[0].w, c[0].h, c[1].w, c[1].h, c[2].w,
                 c[2].h, c[1].w / c[0].w, c[0].view_max_w[1], c[0].view_max_h[1],
-                c[1].view_max_w[1], c[1].view_max_h[1], c[2].view_max_w[1], c[2].view_max_h[1]);
+                c[1].view_max_w[1], c[1].view_max_h[1], c[2].view_max_w[1], c[2].view_max_h[1],
+                c[0].view_max_h_lo[1]);
     return 0;
 }
 

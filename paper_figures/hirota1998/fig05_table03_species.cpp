@@ -386,7 +386,7 @@ void reported_notes(const SpeciesRun* const runs[3], const SeedStats stats[3], s
                "vertical cracks always come first. A sweep of the shared chosen values (sigma, "
                "D, the two final strains, a common scale on every kappa - 1, the tolerance; "
                "tools/bark_table3_sweep.cpp) and a grid of D, sigma and the two strains together "
-               "(tools/bark_table3_grid.sh, 228 settings; both in docs/papers/hirota1998.md §4) "
+               "(tools/bark_table3_grid.sh; both in docs/papers/hirota1998.md §4) "
                "reverse the order in no setting: tallow nears camphor's width only where "
                "camphor's strips break into blocks (against *1), so it is reported, not tuned "
                "in.\n",
@@ -412,8 +412,8 @@ void reported_notes(const SpeciesRun* const runs[3], const SeedStats stats[3], s
                "be made smaller than the paper's own numbers allow (over 20 cm tall, a trunk of "
                "radius 5 cm or more), and one that size still holds such a region; the paper's "
                "max/mean ratios of 1.2-1.5 point to a narrower spread of sizes than this "
-               "model's; of the 228 shared settings of the grid (docs/papers/hirota1998.md §4) none "
-               "brings both within 30 %%. Reported, not tuned in.\n",
+               "model's; no shared setting of the grid (docs/papers/hirota1998.md §4) brings both "
+               "within 30 %%. Reported, not tuned in.\n",
                photograph_view_columns(runs[0]->params.N_R), runs[0]->params.N_R,
                runs[0]->params.N_R, double(sc.avg(SeedStats::regions_per_view)),
                double(st.avg(SeedStats::regions_per_view)),
