@@ -27,9 +27,12 @@ using namespace shitsukan;
 
 namespace {
 
+// The chosen values (bark_params.hpp's defaults) unless a setting changes them; hoop, axial
+// and kappa scale the default final strains and every kappa - 1.
 struct Setting {
     const char* name;
-    float sigma = 0.0175f, D = 0.55f, hoop = 1.0f, axial = 1.0f, kappa = 1.0f, tol = 1e-3f;
+    float sigma = CylinderParams{}.sigma, D = CylinderParams{}.D;
+    float hoop = 1.0f, axial = 1.0f, kappa = 1.0f, tol = CylinderParams{}.tolerance;
 };
 
 struct Cell {
@@ -73,19 +76,25 @@ Status species_cell(Species species, const Setting& s, int seeds, Cell* out) {
     return Status::success();
 }
 
+// The three species under one setting, in Table 3's order; false after printing the error.
+bool species_cells(const Setting& s, int seeds, const char* what, Cell c[3]) {
+    const Species species[3] = {Species::camphor, Species::chinese_tallow, Species::pine};
+    for (int i = 0; i < 3; ++i) {
+        const Status st = species_cell(species[i], s, seeds, &c[i]);
+        if (!st) {
+            std::fprintf(stderr, "bark_table3_sweep: %s: %s\n", what, st.message());
+            return false;
+        }
+    }
+    return true;
+}
+
 }  // namespace
 
 // The max in photograph views of three widths, at the chosen values.
 int print_views(int seeds) {
-    const Species species[3] = {Species::camphor, Species::chinese_tallow, Species::pine};
     Cell c[3];
-    for (int i = 0; i < 3; ++i) {
-        const Status st = species_cell(species[i], Setting{"as chosen"}, seeds, &c[i]);
-        if (!st) {
-            std::fprintf(stderr, "bark_table3_sweep: views: %s\n", st.message());
-            return 1;
-        }
-    }
+    if (!species_cells(Setting{"as chosen"}, seeds, "views", c)) return 1;
     std::printf("| view (%d seeds) | camphor max | Chinese tallow max | pine max |\n"
                 "|---|---|---|---|\n",
                 seeds);
@@ -131,15 +140,8 @@ int print_setting(int argc, char** argv) {
     s.D = float(v[0]), s.sigma = float(v[1]), s.hoop = float(v[2]), s.axial = float(v[3]);
     s.kappa = float(v[4]);
     const int seeds = int(v[5]);
-    const Species species[3] = {Species::camphor, Species::chinese_tallow, Species::pine};
     Cell c[3];
-    for (int i = 0; i < 3; ++i) {
-        const Status st = species_cell(species[i], s, seeds, &c[i]);
-        if (!st) {
-            std::fprintf(stderr, "bark_table3_sweep: set: %s\n", st.message());
-            return 1;
-        }
-    }
+    if (!species_cells(s, seeds, "set", c)) return 1;
     std::printf("| D %.3f sigma %.4f hoop x%.3f axial x%.3f kappa-1 x%.3f | %.4f x %.4f | "
                 "%.4f x %.4f | %.4f x %.4f | %.4f | %.4f x %.4f | %.4f x %.4f | %.4f x %.4f | "
                 "%.4f |\n",
@@ -162,19 +164,12 @@ int main(int argc, char** argv) {
     list[1].sigma = 0.0125f, list[2].sigma = 0.025f, list[3].D = 0.45f, list[4].D = 0.70f;
     list[5].hoop = 0.85f, list[6].hoop = 1.15f, list[7].axial = 0.95f, list[8].axial = 1.05f;
     list[9].kappa = 0.9f, list[10].kappa = 1.1f, list[11].tol = 1e-4f;
-    const Species species[3] = {Species::camphor, Species::chinese_tallow, Species::pine};
     std::printf("| shared setting (%d seeds) | camphor | Chinese tallow | pine | tallow / camphor "
                 "width | paper's width order |\n|---|---|---|---|---|---|\n",
                 seeds);
     for (const Setting& s : list) {
         Cell c[3];
-        for (int i = 0; i < 3; ++i) {
-            const Status st = species_cell(species[i], s, seeds, &c[i]);
-            if (!st) {
-                std::fprintf(stderr, "bark_table3_sweep: %s: %s\n", s.name, st.message());
-                return 1;
-            }
-        }
+        if (!species_cells(s, seeds, s.name, c)) return 1;
         std::printf("| %s | %.2f x %.2f | %.2f x %.2f | %.2f x %.2f | %.2f | %s |\n", s.name,
                     c[0].w, c[0].h, c[1].w, c[1].h, c[2].w, c[2].h, c[1].w / c[0].w,
                     c[0].w < c[1].w && c[1].w < c[2].w ? "yes" : "no");

@@ -113,11 +113,11 @@ struct TypeIIIMarbleShader {
 
 int main() {
     paint_stack();
-    // eq. (2)'s amplitudes computed by the compiler for the preset's beta: no double
-    // arithmetic on the device (the same floats as level_amplitude's at run time)
 #if defined(FOOTPRINT_LATTICE_RUNTIME_BETA)
     if (!g_lattice.init(okada1987_lattice_params())) return 1;  // det_exp on the device
 #else
+    // eq. (2)'s amplitudes computed by the compiler for the preset's beta: no double
+    // arithmetic on the device (the same floats as level_amplitude's at run time)
     if (!g_lattice.init(okada1987_lattice_params(), kOkada1987Amplitudes)) return 1;
 #endif
     Fnv h;
